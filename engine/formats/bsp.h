@@ -6,6 +6,10 @@
 //   Node::children / Leaf / Face / Edge / TexInfo / Texture indices are in range,
 //   face edge loops are closed and have >= 3 edges, lightmap spans lie inside
 //   lightdata, texture mips lie inside their lump.
+// Further guarantees: node trees are acyclic, every node has at most one parent
+// and no path from a model's head node is deeper than kMaxTreeDepth (clip hulls
+// likewise), so recursive walks terminate with bounded depth; faces have at most
+// kMaxFaceEdges edges; vertices, planes and texinfo vectors are finite.
 // Coordinates are Quake's: x forward (east), y left (north), z up; units = texels
 // at scale 1.
 #pragma once
@@ -40,15 +44,19 @@ struct Edge {
   uint32_t v[2];  // vertex indices
 };
 
-enum TexInfoFlags : uint32_t { kTexSpecial = 1 };  // sky or turbulent: no lightmap
+// kTexSpecial: sky or turbulent, no lightmap. Set when the file says so and, in
+// addition, by the loader for every texinfo whose texture is kTexSky or kTexTurb.
+enum TexInfoFlags : uint32_t { kTexSpecial = 1 };
 
 struct TexInfo {
   glm::vec4 vecs[2];  // s = dot(xyz, vecs[0]) + vecs[0].w, likewise t
-  int32_t texture;    // index into BspWorld::textures, or -1 when the texture is missing
+  int32_t texture;    // index into BspWorld::textures; always valid: a missing or broken
+                      // texture points at a synthesized checker placeholder (logged once)
   uint32_t flags;
   float mipadjust;    // texels per world unit along the longer texture axis (>= 1e-3)
 };
 
+// kTexSky: names starting "sky" (any case); kTexTurb: names starting '*'.
 enum TextureKind : uint8_t { kTexNormal, kTexSky, kTexTurb /* '*' names */ };
 
 struct Texture {
@@ -71,6 +79,9 @@ enum FaceFlags : uint16_t {
 };
 
 constexpr int kMaxLightStyles = 4;
+constexpr uint32_t kMaxFaceEdges = 256;  // the loader rejects faces with more edges
+constexpr int kMaxTreeDepth = 1024;      // the loader rejects deeper node / clipnode trees
+constexpr int kMinContents = -14;        // clip hull contents lie in kMinContents..-1
 constexpr int kNoLightmap = -1;
 
 struct Face {
@@ -81,8 +92,9 @@ struct Face {
   uint16_t flags;            // FaceFlags
   uint8_t styles[kMaxLightStyles];  // 255 = unused
   int32_t light_offset;      // byte offset into lightdata, or kNoLightmap
-  int16_t texture_mins[2];   // floor(min s / 16) * 16, likewise t
-  int16_t extents[2];        // (ceil(max/16) - floor(min/16)) * 16; lightmap is extents/16+1 wide
+  int32_t texture_mins[2];   // floor(min s / 16) * 16, likewise t (s, t over the face's vertices)
+  int32_t extents[2];        // (ceil(max/16) - floor(min/16)) * 16; lightmap is extents/16+1 wide.
+                             // The loader rejects lit faces with extents over 2048 texels.
   // Renderer state (mutable, per level):
   uint32_t visframe;
   uint32_t draw_frame;       // frame in which the renderer last emitted this face
@@ -93,19 +105,21 @@ struct Face {
 struct Node {
   uint32_t plane;
   int32_t children[2];  // >= 0: node index; < 0: leaf index -(child + 1)
-  glm::vec3 mins, maxs; // bounding box (from the file's integer box, widened)
+  glm::vec3 mins, maxs; // bounding box (BSP29/2PSB: the file's integer box widened by 1 unit
+                        // each way, as old compilers truncated; BSP2: the file's float box)
   uint32_t first_face, num_faces;  // faces lying on this node's plane
-  int32_t parent;       // -1 for a head node
+  int32_t parent;       // -1 for a head node (or a node no head node reaches)
   uint32_t visframe;
 };
 
 struct Leaf {
-  int32_t contents;
-  int32_t vis_offset;   // into visdata, or -1 (everything visible)
-  glm::vec3 mins, maxs;
+  int32_t contents;     // Contents, kMinContents..-1
+  int32_t vis_offset;   // into visdata (< visdata_size), or -1 (everything visible)
+  glm::vec3 mins, maxs; // as Node::mins/maxs
   uint32_t first_marksurface, num_marksurfaces;
   uint8_t ambient[4];
-  int32_t parent;       // node index
+  int32_t parent;       // node index (the solid leaf 0 is shared: any one of its parents),
+                        // -1 when no node reachable from a head node refers to it
   uint32_t visframe;
 };
 
@@ -116,7 +130,8 @@ struct ClipNode {
 
 struct SubModel {
   glm::vec3 mins, maxs, origin;
-  int32_t headnode[4];  // [0] BSP node, [1..3] clip hulls
+  int32_t headnode[4];  // [0] BSP node (always valid); [1..3] clip hulls: clipnode index or
+                        // contents (kMinContents..-1; kContentsEmpty when the map has no clipnodes)
   uint32_t visleafs;    // leaves in the world PVS (model 0 only is meaningful)
   uint32_t first_face, num_faces;
 };
@@ -141,18 +156,24 @@ struct BspWorld {
   const uint8_t* visdata; uint32_t visdata_size;
   const uint8_t* lightdata; uint32_t lightdata_size;      // one byte per sample
   const uint8_t* lightdata_rgb;  // from a .lit file (3 bytes per sample) or nullptr
-  const char* entities; uint32_t entities_size;            // NUL-terminated copy
+  const char* entities; uint32_t entities_size;            // NUL-terminated copy; size = strlen
+  uint32_t placeholder_texture;  // index of the synthesized checker (always the last texture)
 
   // Counts of odd but valid input seen at load (reported, drawn correctly anyway).
   uint32_t edges_shared_by_more_than_two_faces;
+  uint32_t missing_textures;     // texture slots / texinfo references replaced by the placeholder
 };
 
 // Parses a BSP held in `data` (any alignment) into `level`. `name` is used in
 // error messages. On failure the level arena is popped back to where it was.
+// Everything the world points at is copied into `level`: `data` may be freed
+// afterwards. `scratch` is used for temporaries and restored before returning.
 Result<BspWorld*> load_bsp(const char* name, const uint8_t* data, size_t size, mem::Arena& level,
                            mem::Arena& scratch);
 
-// Reads a .lit file (QLIT, version 1) for an already loaded world; sets lightdata_rgb.
+// Reads a .lit file ("QLIT", int32 version 1, then 3 bytes per lightdata sample)
+// for an already loaded world; copies the samples into `level` and sets
+// lightdata_rgb. The file must hold at least 3 * lightdata_size sample bytes.
 Status load_lit(BspWorld& world, const char* name, const uint8_t* data, size_t size, mem::Arena& level);
 
 }  // namespace sb

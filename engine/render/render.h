@@ -13,15 +13,10 @@
 
 #include "engine/core/error.h"
 #include "engine/formats/bsp.h"
+#include "engine/world/view_params.h"  // ViewParams
 #include "memory/memory_system.h"
 
 namespace sb {
-
-struct ViewParams {
-  glm::vec3 origin{0.0f};
-  float yaw = 0.0f, pitch = 0.0f, roll = 0.0f;  // degrees; Quake's conventions (pitch > 0 looks down)
-  float fov_x = 90.0f;                          // horizontal field of view, degrees (10..170)
-};
 
 // The 8-bit target. zbuffer (optional) gets 1/z of every drawn world pixel, as
 // 16.16 fixed point scaled by 0x8000 (Quake's convention), for later model passes.
