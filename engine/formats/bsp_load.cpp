@@ -102,7 +102,7 @@ bool finite_in(float v, float limit) { return std::isfinite(v) && std::fabs(v) <
 // Copies a byte lump (lighting, visibility) into the level arena; never returns null on success.
 Status copy_bytes(LoadContext& c, int lump, const uint8_t** out, uint32_t* out_size, const char* what) {
   const LumpView& l = c.lumps[lump];
-  auto* p = static_cast<uint8_t*>(c.level->push(l.size ? l.size : 1, what));
+  auto* p = static_cast<uint8_t*>(mem_util::push_padded(*c.level, l.size, what));
   if (!p) return arena_error(c, lump, *c.level);
   if (l.size) std::memcpy(p, l.data, l.size);
   *out = p;
@@ -205,7 +205,7 @@ Status load_faces(LoadContext& c) {
   w.faces = push_records<Face>(c, n, "bsp faces");
   if (!w.faces) return arena_error(c, kLumpFaces, *c.level);
   mem::ArenaScope scope(*c.scratch);
-  uint8_t* uses = c.scratch->push_array<uint8_t>(w.num_edges ? w.num_edges : 1, "bsp edge use counts");
+  uint8_t* uses = mem_util::push_array_padded<uint8_t>(*c.scratch, w.num_edges, "bsp edge use counts");
   if (!uses) return arena_error(c, kLumpFaces, *c.scratch);
 
   for (uint32_t i = 0; i < n; ++i) {
@@ -376,9 +376,9 @@ Status load_leaves(LoadContext& c) {
 template <class ChildFn>
 Status check_tree(LoadContext& c, int lump, uint32_t n, ChildFn child, int32_t* parent_out) {
   mem::ArenaScope scope(*c.scratch);
-  uint32_t* parents = c.scratch->push_array<uint32_t>(n ? n : 1, "bsp tree indegree");
-  uint32_t* queue = c.scratch->push_array<uint32_t>(n ? n : 1, "bsp tree queue");
-  uint16_t* depth = c.scratch->push_array<uint16_t>(n ? n : 1, "bsp tree depth");
+  uint32_t* parents = mem_util::push_array_padded<uint32_t>(*c.scratch, n, "bsp tree indegree");
+  uint32_t* queue = mem_util::push_array_padded<uint32_t>(*c.scratch, n, "bsp tree queue");
+  uint16_t* depth = mem_util::push_array_padded<uint16_t>(*c.scratch, n, "bsp tree depth");
   if (!parents || !queue || !depth) return arena_error(c, lump, *c.scratch);
   for (uint32_t i = 0; i < n; ++i)
     for (int k = 0; k < 2; ++k) {
@@ -544,7 +544,7 @@ Status load_models(LoadContext& c) {
 Status load_entities(LoadContext& c) {
   const LumpView& l = c.lumps[kLumpEntities];
   BspWorld& w = *c.w;
-  auto* text = static_cast<char*>(c.level->push(size_t(l.size) + 1, "bsp entities"));
+  auto* text = static_cast<char*>(mem_util::push_padded(*c.level, size_t(l.size) + 1, "bsp entities"));
   if (!text) return arena_error(c, kLumpEntities, *c.level);
   if (l.size) std::memcpy(text, l.data, l.size);
   text[l.size] = 0;
@@ -555,7 +555,7 @@ Status load_entities(LoadContext& c) {
 
 Result<BspWorld*> load(LoadContext& c, const uint8_t* data, size_t size) {
   SB_TRY(read_header(c, data, size));
-  c.w = c.level->push_array<BspWorld>(1, "bsp world");
+  c.w = mem_util::push_array_padded<BspWorld>(*c.level, 1, "bsp world");
   if (!c.w) return make_error("%s: cannot store the world header", c.name);
   BspWorld& w = *c.w;
   std::snprintf(w.name, sizeof w.name, "%s", c.name);
@@ -602,7 +602,8 @@ Result<BspWorld*> load_bsp(const char* name, const uint8_t* data, size_t size, m
   c.name = name;
   c.level = &level;
   c.scratch = &scratch;
-  size_t level_mark = level.mark();
+  size_t level_mark = mem_util::align_mark(level);
+  mem_util::align_mark(scratch);
   mem::ArenaScope scratch_scope(scratch);
   Result<BspWorld*> r = bsp_detail::load(c, data, size);
   if (!r) level.pop_to(level_mark);
@@ -618,7 +619,7 @@ Status load_lit(BspWorld& world, const char* name, const uint8_t* data, size_t s
   if (size - 8 < need)
     return make_error("%s: %zu bytes of samples, %s needs %llu (3 x %u)", name, size - 8, world.name,
                       (unsigned long long)need, world.lightdata_size);
-  auto* rgb = static_cast<uint8_t*>(level.push(need ? size_t(need) : 1, "bsp lit"));
+  auto* rgb = static_cast<uint8_t*>(mem_util::push_padded(level, size_t(need), "bsp lit"));
   if (!rgb) {
     char msg[200];
     level.failure_message(msg, sizeof msg);

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "engine/formats/bsp.h"
+#include "engine/fs/padded_push.h"
 
 namespace sb::bsp_detail {
 
@@ -49,9 +50,10 @@ Error range_error(const LoadContext& c, int lump, uint32_t entry, const char* fi
 Error arena_error(const LoadContext& c, int lump, const mem::Arena& arena);
 
 // Allocates count zeroed records in the level arena (at least one, so pointers are never null).
+// All loader pushes go through mem_util (engine/fs/padded_push.h).
 template <class T>
 T* push_records(LoadContext& c, uint64_t count, const char* what) {
-  return c.level->push_array<T>(size_t(count ? count : 1), what);
+  return mem_util::push_array_padded<T>(*c.level, size_t(count ? count : 1), what);
 }
 
 // Textures lump -> w->textures (with the placeholder as the last slot).

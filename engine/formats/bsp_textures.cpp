@@ -39,8 +39,8 @@ void init_texture(Texture& t, const char* name) {
 
 // 16x16 checker with 8-texel squares at mip 0 (8 >> mip at mip levels), shared by all placeholder slots.
 const uint8_t* make_checker(LoadContext& c) {
-  auto* px = static_cast<uint8_t*>(c.level->push(miptex_pixel_bytes(kPlaceholderSize, kPlaceholderSize),
-                                                 "bsp placeholder texture"));
+  auto* px = static_cast<uint8_t*>(
+      mem_util::push_padded(*c.level, miptex_pixel_bytes(kPlaceholderSize, kPlaceholderSize), "bsp placeholder texture"));
   if (!px) return nullptr;
   uint8_t* p = px;
   for (int m = 0; m < 4; ++m) {
@@ -84,7 +84,7 @@ Status load_textures(LoadContext& c) {
     n = uint32_t(count);
   }
   w.textures = push_records<Texture>(c, uint64_t(n) + 1, "bsp textures");
-  c.texture_missing = c.scratch->push_array<uint8_t>(size_t(n) + 1, "bsp texture flags");
+  c.texture_missing = mem_util::push_array_padded<uint8_t>(*c.scratch, size_t(n) + 1, "bsp texture flags");
   if (!w.textures) return arena_error(c, kLumpTextures, *c.level);
   if (!c.texture_missing) return arena_error(c, kLumpTextures, *c.scratch);
   const uint8_t* checker = make_checker(c);
@@ -112,7 +112,7 @@ Status load_textures(LoadContext& c) {
     init_texture(t, view.name);
     t.width = view.width;
     t.height = view.height;
-    auto* px = static_cast<uint8_t*>(c.level->push(miptex_pixel_bytes(t.width, t.height), "bsp texture pixels"));
+    auto* px = static_cast<uint8_t*>(mem_util::push_padded(*c.level, miptex_pixel_bytes(t.width, t.height), "bsp texture pixels"));
     if (!px) return arena_error(c, kLumpTextures, *c.level);
     for (int m = 0; m < 4; ++m) {
       size_t bytes = size_t(t.width >> m) * (t.height >> m);
@@ -168,7 +168,7 @@ void resolve_animations(LoadContext& c) {
   BspWorld& w = *c.w;
   uint32_t n = w.num_textures;
   mem::ArenaScope scope(*c.scratch);
-  uint8_t* done = c.scratch->push_array<uint8_t>(n, "bsp anim flags");
+  uint8_t* done = mem_util::push_array_padded<uint8_t>(*c.scratch, n, "bsp anim flags");
   if (!done) {
     log_warning("%s: no scratch memory to resolve texture animations; textures will not animate", c.name);
     return;
@@ -199,7 +199,6 @@ void resolve_animations(LoadContext& c) {
     }
     for (int k = 0; k < nprim; ++k) bad |= prim[k] < 0;
     for (int k = 0; k < nalt; ++k) bad |= alt[k] < 0;
-    bad |= nprim == 0;
     if (bad) {
       log_warning("%s: texture animation '%s' has missing or bad frames; drawn without animation", c.name, ti.name);
       continue;
@@ -216,7 +215,7 @@ void resolve_animations(LoadContext& c) {
       t.anim_next = alt[(k + 1) % nalt];
       t.anim_total = uint16_t(nalt);
       t.anim_index = uint16_t(k);
-      t.alternate = prim[0];
+      t.alternate = nprim ? prim[0] : -1;  // an alternate-only sequence is allowed
     }
   }
 }

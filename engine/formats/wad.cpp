@@ -3,6 +3,8 @@
 
 #include <cstring>
 
+#include "engine/fs/padded_push.h"
+
 namespace sb {
 namespace {
 
@@ -51,7 +53,7 @@ Result<Wad> parse_wad(const char* wad_name, const uint8_t* data, size_t size, me
                       numlumps, infotableofs, size);
   Wad wad;
   wad.name = wad_name;
-  wad.lumps = into.push_array<WadLump>(numlumps ? size_t(numlumps) : 1, "wad directory");
+  wad.lumps = mem_util::push_array_padded<WadLump>(into, numlumps ? size_t(numlumps) : 1, "wad directory");
   if (!wad.lumps) {
     Error e = make_error("%s: ", wad_name);
     into.failure_message(e.message + std::strlen(e.message), sizeof e.message - std::strlen(e.message));

@@ -11,6 +11,7 @@
 #include <filesystem>
 
 #include "engine/core/log.h"
+#include "engine/fs/padded_push.h"
 
 namespace sb::fs {
 namespace {
@@ -96,7 +97,7 @@ Result<PakDirectory> parse_pak(const char* pak_name, const uint8_t* data, size_t
   uint32_t dir_offset = 0, dir_count = 0;
   SB_TRY(parse_pak_header(pak_name, data, size, size, &dir_offset, &dir_count));
   PakDirectory dir;
-  dir.entries = into.push_array<PakEntry>(dir_count ? dir_count : 1, "pak directory");
+  dir.entries = mem_util::push_array_padded<PakEntry>(into, dir_count ? dir_count : 1, "pak directory");
   if (!dir.entries) {
     Error e = make_error("%s: ", pak_name);
     into.failure_message(e.message + std::strlen(e.message), sizeof e.message - std::strlen(e.message));
@@ -129,12 +130,12 @@ Status FileSystem::add_pak(const char* pak_path, mem::Arena& permanent, bool* fo
     std::fclose(f);
     return st;
   }
-  size_t mark = permanent.mark();
+  size_t mark = mem_util::align_mark(permanent);
   Entry& e = entries_[count_];
   e.is_pak = true;
   std::snprintf(e.path, sizeof e.path, "%s", pak_path);
   e.pak.count = 0;
-  e.pak.entries = permanent.push_array<PakEntry>(dir_count ? dir_count : 1, "pak directory");
+  e.pak.entries = mem_util::push_array_padded<PakEntry>(permanent, dir_count ? dir_count : 1, "pak directory");
   if (!e.pak.entries) {
     std::fclose(f);
     Error err = make_error("%s: ", pak_path);
@@ -166,7 +167,7 @@ Status FileSystem::add_game_dir(const char* path, mem::Arena& permanent) {
     return make_error("%s: path too long (max %d bytes)", path, kMaxPathBytes - 12);
   if (count_ >= kMaxEntries) return make_error("%s: search path is full (%d entries)", path, kMaxEntries);
   int saved_count = count_;
-  size_t saved_mark = permanent.mark();
+  size_t saved_mark = mem_util::align_mark(permanent);
   Entry& dir = entries_[count_++];
   dir.is_pak = false;
   dir.pak = PakDirectory{};
@@ -256,8 +257,8 @@ Result<FileData> FileSystem::load(const char* name, mem::Arena& into) const {
         return make_error("%s: cannot determine the size of %s", name, path);
       }
     }
-    size_t mark = into.mark();
-    auto* bytes = static_cast<uint8_t*>(into.push(size_t(size) + 1, "file data"));
+    size_t mark = mem_util::align_mark(into);
+    auto* bytes = static_cast<uint8_t*>(mem_util::push_padded(into, size_t(size) + 1, "file data"));
     if (!bytes) {
       std::fclose(f);
       Error err = make_error("%s: ", name);

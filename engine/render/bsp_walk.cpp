@@ -83,8 +83,10 @@ void visit(Walk& w, int32_t child, uint32_t flags, int depth) {
       if (face.visframe != w.frame) continue;
       float facing = (face.flags & kFacePlaneBack) ? -d : d;
       if (!(facing > kBackfaceEpsilon)) continue;
-      face.draw_frame = w.frame;
-      if (add_face(w.table, w.world, w.view, fi, flags)) ++w.stats.faces_emitted;
+      if (add_face(w.table, w.world, w.view, fi, flags)) {
+        face.draw_frame = w.frame;
+        ++w.stats.faces_emitted;
+      }
     }
 
     child = node.children[side ^ 1];

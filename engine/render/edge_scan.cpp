@@ -54,9 +54,9 @@ struct Scan {
 
   // The head changes at px: the old head owns [span_start, px).
   bool head_changes(int px) {
-    bool ok = emit(top, span_start, px);
+    if (!emit(top, span_start, px)) return false;  // span_start stays: the caller closes the row from it
     span_start = px;
-    return ok;
+    return true;
   }
 
   bool enter(uint32_t s, int px) {

@@ -10,6 +10,7 @@
 #include "engine/render/span_draw.h"
 
 #include <cmath>
+#include <cstring>
 
 #include <glm/geometric.hpp>
 
@@ -63,10 +64,9 @@ namespace {
 
 constexpr double kMinZi = 1e-9;
 
-// (num / zi) in 16.16, clamped to [0, max]; NaN and negatives go to 0.
-inline int32_t to_fixed(double num, double zi, int32_t max) {
-  if (!(zi > kMinZi)) zi = kMinZi;
-  double q = num / zi * 65536.0;
+// v * 65536 in 16.16, clamped to [0, max]; NaN and negatives go to 0.
+inline int32_t to_fixed(double v, int32_t max) {
+  const double q = v * 65536.0;
   if (!(q > 0.0)) return 0;
   if (q > double(max)) return max;
   return int32_t(q);
@@ -78,57 +78,62 @@ inline int32_t max_fixed(int extent) {
   return int32_t((uint32_t(extent) << 16) - 1u);
 }
 
-// Walks every span in 16-pixel runs: exact u, v at each run's ends, linear in between.
-// plot(u, v) returns the palette index for 16.16 texel coordinates.
-template <class Plot>
+// Draws one span of `total` pixels starting at `dest`, whose first pixel centre is at
+// screen x = px, in runs of 16 pixels: exact coordinates at each run's ends (a span's last
+// run ends at its last pixel), linear in between. The exact values for the end of the next
+// run are computed before the current run is drawn, so the divide overlaps the drawing.
+// exact(px, &a, &b) gives the 16.16 coordinates at screen x = px (this row);
+// run(dest, n, a, b, da, db) draws n pixels from (a, b), stepping (da, db) per pixel.
+template <class Exact, class Run>
+inline void walk_span(uint8_t* dest, double px, int total, const Exact& exact, const Run& run) {
+  // Pixel offset (from a run's first pixel) of the exact sample that ends a run with
+  // `left` pixels still to draw: 16 for a full run (the next run's first pixel), else its
+  // last pixel.
+  auto end_offset = [](int left) { return left > 16 ? 16 : left - 1; };
+  int left = total;
+  int32_t u0, v0, u1, v1;
+  exact(px, &u0, &v0);
+  u1 = u0;
+  v1 = v0;
+  if (end_offset(left) > 0) exact(px + end_offset(left), &u1, &v1);
+  for (;;) {
+    const int n = left > 16 ? 16 : left;
+    const int after = left - n;
+    // The divide for the end of the next run, issued before drawing this one.
+    int32_t u2 = u1, v2 = v1;
+    if (after > 0 && end_offset(after) > 0) exact(px + double(n + end_offset(after)), &u2, &v2);
+    const int steps = end_offset(left);
+    const int32_t du = steps > 0 ? (u1 - u0) / steps : 0;  // truncation: never overshoots u1
+    const int32_t dv = steps > 0 ? (v1 - v0) / steps : 0;
+    run(dest, n, u0, v0, du, dv);
+    if (after <= 0) break;
+    dest += n;
+    px += double(n);
+    left = after;
+    u0 = u1;
+    v0 = v1;
+    u1 = u2;
+    v1 = v2;
+  }
+}
+
+// Every span of a planar surface: u, v = (u/z) / (1/z) from the gradients, clamped.
+template <class Run>
 void walk_spans(const Span* spans, uint32_t count, const SpanGradients& g, int32_t umax, int32_t vmax,
-                Framebuffer& fb, Plot plot) {
+                Framebuffer& fb, const Run& run) {
   for (uint32_t i = 0; i < count; ++i) {
-    const Span& sp = spans[i];
-    if (sp.count <= 0) continue;
-    uint8_t* dest = fb.pixels + ptrdiff_t(sp.y) * fb.stride + sp.x;
-    const double py = sp.y + 0.5;
+    const int x0 = spans[i].x, y = spans[i].y, total = spans[i].count;
+    if (total <= 0) continue;
+    const double py = y + 0.5;
     const double zrow = g.zi0 + g.ziy * py, urow = g.u0 + g.uy * py, vrow = g.v0 + g.vy * py;
-    double px = sp.x + 0.5;
-    int32_t u = to_fixed(urow + g.ux * px, zrow + g.zix * px, umax);
-    int32_t v = to_fixed(vrow + g.vx * px, zrow + g.zix * px, vmax);
-    int left = sp.count;
-    while (left > 0) {
-      // Issue the divide for the end of this run (the start of the next) before drawing it.
-      int n;
-      int32_t un, vn, du, dv;
-      if (left > 16) {
-        n = 16;
-        px += 16.0;
-        const double zi = zrow + g.zix * px;
-        un = to_fixed(urow + g.ux * px, zi, umax);
-        vn = to_fixed(vrow + g.vx * px, zi, vmax);
-        du = (un - u) / 16;
-        dv = (vn - v) / 16;
-      } else {
-        n = left;
-        un = u;
-        vn = v;
-        du = dv = 0;
-        if (n > 1) {
-          const double pl = px + double(n - 1);
-          const double zi = zrow + g.zix * pl;
-          un = to_fixed(urow + g.ux * pl, zi, umax);
-          vn = to_fixed(vrow + g.vx * pl, zi, vmax);
-          du = (un - u) / (n - 1);
-          dv = (vn - v) / (n - 1);
-        }
-      }
-      for (int k = 0; k < n; ++k) {
-        dest[k] = plot(u, v);
-        u += du;
-        v += dv;
-      }
-      dest += n;
-      u = un;
-      v = vn;
-      left -= n;
-    }
+    auto exact = [&](double px, int32_t* u, int32_t* v) {
+      double zi = zrow + g.zix * px;
+      if (!(zi > kMinZi)) zi = kMinZi;
+      const double z = 1.0 / zi;
+      *u = to_fixed((urow + g.ux * px) * z, umax);
+      *v = to_fixed((vrow + g.vx * px) * z, vmax);
+    };
+    walk_span(fb.pixels + ptrdiff_t(y) * fb.stride + x0, x0 + 0.5, total, exact, run);
   }
 }
 
@@ -139,14 +144,73 @@ inline int wrap(int i, int n) {
   return r < 0 ? r + n : r;
 }
 
+// Run drawers. Each copies what it reads into locals first: the destination is a byte
+// pointer, which may alias anything, so members would be reloaded after every store.
+
+struct SurfaceRun {
+  const uint8_t* texels;
+  int width;
+  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv) const {
+    const uint8_t* __restrict t = texels;
+    const int w = width;
+    for (int k = 0; k < n; ++k) {
+      dest[k] = t[(v >> 16) * w + (u >> 16)];
+      u += du;
+      v += dv;
+    }
+  }
+};
+
+template <bool kPow2>
+struct TextureRun {
+  const uint8_t* texels;
+  int tw, th, soff, toff;
+  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv) const {
+    const uint8_t* __restrict t = texels;
+    const int w = tw, h = th, so = soff, to = toff;
+    for (int k = 0; k < n; ++k) {
+      if constexpr (kPow2) {
+        dest[k] = t[(((v >> 16) + to) & (h - 1)) * w + (((u >> 16) + so) & (w - 1))];
+      } else {
+        dest[k] = t[wrap((v >> 16) + to, h) * w + wrap((u >> 16) + so, w)];
+      }
+      u += du;
+      v += dv;
+    }
+  }
+};
+
+template <bool kPow2>
+struct TurbRun {
+  const uint8_t* texels;
+  const int32_t* table;  // 128 entries, 16.16
+  int tw, th, smin, tmin, sidx, tidx;
+  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv) const {
+    const uint8_t* __restrict t = texels;
+    const int32_t* __restrict tab = table;
+    const int w = tw, h = th, s0 = smin, t0 = tmin, si = sidx, ti = tidx;
+    for (int k = 0; k < n; ++k) {
+      // s = u + smin is warped by the sine of floor(t) + phase, and vice versa.
+      const int s2 = ((u + tab[((v >> 16) + ti) & 127]) >> 16) + s0;
+      const int t2 = ((v + tab[((u >> 16) + si) & 127]) >> 16) + t0;
+      if constexpr (kPow2) {
+        dest[k] = t[(t2 & (h - 1)) * w + (s2 & (w - 1))];
+      } else {
+        dest[k] = t[wrap(t2, h) * w + wrap(s2, w)];
+      }
+      u += du;
+      v += dv;
+    }
+  }
+};
+
 }  // namespace
 
 // ---------------------------------------------------------------- 3. fetchers
 
 void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
                         int width, int height, Framebuffer& fb) {
-  walk_spans(spans, count, g, max_fixed(width), max_fixed(height), fb,
-             [surface, width](int32_t u, int32_t v) { return surface[(v >> 16) * width + (u >> 16)]; });
+  walk_spans(spans, count, g, max_fixed(width), max_fixed(height), fb, SurfaceRun{surface, width});
   draw_z_spans(spans, count, g, fb);
   count_coverage(spans, count, fb);
 }
@@ -154,17 +218,11 @@ void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& 
 void draw_texture_spans(const Span* spans, uint32_t count, const SpanGradients& g, const Texture& tex, int mip,
                         int smin, int tmin, int extent_s, int extent_t, Framebuffer& fb) {
   const int tw = int(tex.width >> mip), th = int(tex.height >> mip);
-  const uint8_t* texels = tex.mips[mip];
-  const int soff = smin >> mip, toff = tmin >> mip;
   const int32_t umax = max_fixed(extent_s >> mip), vmax = max_fixed(extent_t >> mip);
   if (is_pow2(uint32_t(tw)) && is_pow2(uint32_t(th))) {
-    walk_spans(spans, count, g, umax, vmax, fb, [=](int32_t u, int32_t v) {
-      return texels[(((v >> 16) + toff) & (th - 1)) * tw + (((u >> 16) + soff) & (tw - 1))];
-    });
+    walk_spans(spans, count, g, umax, vmax, fb, TextureRun<true>{tex.mips[mip], tw, th, smin >> mip, tmin >> mip});
   } else {
-    walk_spans(spans, count, g, umax, vmax, fb, [=](int32_t u, int32_t v) {
-      return texels[wrap((v >> 16) + toff, th) * tw + wrap((u >> 16) + soff, tw)];
-    });
+    walk_spans(spans, count, g, umax, vmax, fb, TextureRun<false>{tex.mips[mip], tw, th, smin >> mip, tmin >> mip});
   }
   draw_z_spans(spans, count, g, fb);
   count_coverage(spans, count, fb);
@@ -176,22 +234,13 @@ void draw_turb_spans(const Span* spans, uint32_t count, const SpanGradients& g, 
   for (int i = 0; i < 128; ++i) table[i] = turb_offset(i);
   const int phase = turb_phase(time);
   const int tw = int(tex.width), th = int(tex.height);
-  const uint8_t* texels = tex.mips[0];
-  // s = u + smin: the warp of s is indexed by floor(t) + phase, and vice versa.
-  const int sidx = smin + phase, tidx = tmin + phase;
   const int32_t umax = max_fixed(extent_s), vmax = max_fixed(extent_t);
   if (is_pow2(uint32_t(tw)) && is_pow2(uint32_t(th))) {
-    walk_spans(spans, count, g, umax, vmax, fb, [&](int32_t u, int32_t v) {
-      const int s2 = ((u + table[((v >> 16) + tidx) & 127]) >> 16) + smin;
-      const int t2 = ((v + table[((u >> 16) + sidx) & 127]) >> 16) + tmin;
-      return texels[(t2 & (th - 1)) * tw + (s2 & (tw - 1))];
-    });
+    walk_spans(spans, count, g, umax, vmax, fb,
+               TurbRun<true>{tex.mips[0], table, tw, th, smin, tmin, smin + phase, tmin + phase});
   } else {
-    walk_spans(spans, count, g, umax, vmax, fb, [&](int32_t u, int32_t v) {
-      const int s2 = ((u + table[((v >> 16) + tidx) & 127]) >> 16) + smin;
-      const int t2 = ((v + table[((u >> 16) + sidx) & 127]) >> 16) + tmin;
-      return texels[wrap(t2, th) * tw + wrap(s2, tw)];
-    });
+    walk_spans(spans, count, g, umax, vmax, fb,
+               TurbRun<false>{tex.mips[0], table, tw, th, smin, tmin, smin + phase, tmin + phase});
   }
   draw_z_spans(spans, count, g, fb);
   count_coverage(spans, count, fb);
@@ -223,57 +272,45 @@ struct SkyWalk {
 };
 
 template <bool kPow2>
+struct SkyRun {
+  const uint8_t* texels;
+  int tw, th, half;
+  int32_t fs, ft, bs, bt;  // layer offsets, 16.16
+  void operator()(uint8_t* __restrict dest, int n, int32_t q, int32_t r, int32_t dq, int32_t dr) const {
+    const uint8_t* __restrict t = texels;
+    const int w = tw, h = th, hw = half;
+    const int32_t o1 = fs, o2 = ft, o3 = bs, o4 = bt;
+    for (int k = 0; k < n; ++k) {
+      int s1 = (q + o1) >> 16, t1 = (r + o2) >> 16;
+      int s2 = (q + o3) >> 16, t2 = (r + o4) >> 16;
+      if constexpr (kPow2) {
+        s1 &= hw - 1; t1 &= h - 1; s2 &= hw - 1; t2 &= h - 1;
+      } else {
+        s1 = wrap(s1, hw); t1 = wrap(t1, h); s2 = wrap(s2, hw); t2 = wrap(t2, h);
+      }
+      const uint8_t c = t[t1 * w + s1];
+      dest[k] = c ? c : t[t2 * w + hw + s2];
+      q += dq;
+      r += dr;
+    }
+  }
+};
+
+template <bool kPow2>
 void sky_spans(const Span* spans, uint32_t count, const SkyWalk& w, const Texture& sky, double time,
                Framebuffer& fb) {
   const int tw = int(sky.width), th = int(sky.height), half = tw / 2;
-  const uint8_t* texels = sky.mips[0];
   // Layer offsets reduced modulo the layer size (exact), in 16.16.
   auto off = [](double o, int period) { return int32_t(std::floor(std::fmod(o, double(period)) * 65536.0)); };
-  const int32_t fs = off(kSkyFrontSpeed * time, half), ft = off(kSkyFrontSpeed * time, th);
-  const int32_t bs = off(kSkyBackSpeed * time, half), bt = off(kSkyBackSpeed * time, th);
-  auto fetch = [&](int32_t q, int32_t r) -> uint8_t {
-    int s1 = (q + fs) >> 16, t1 = (r + ft) >> 16;
-    int s2 = (q + bs) >> 16, t2 = (r + bt) >> 16;
-    if constexpr (kPow2) {
-      s1 &= half - 1; t1 &= th - 1; s2 &= half - 1; t2 &= th - 1;
-    } else {
-      s1 = wrap(s1, half); t1 = wrap(t1, th); s2 = wrap(s2, half); t2 = wrap(t2, th);
-    }
-    const uint8_t c = texels[t1 * tw + s1];
-    return c ? c : texels[t2 * tw + half + s2];
-  };
+  const SkyRun<kPow2> run{sky.mips[0], tw, th, half,
+                          off(kSkyFrontSpeed * time, half), off(kSkyFrontSpeed * time, th),
+                          off(kSkyBackSpeed * time, half), off(kSkyBackSpeed * time, th)};
   for (uint32_t i = 0; i < count; ++i) {
-    const Span& sp = spans[i];
-    if (sp.count <= 0) continue;
-    uint8_t* dest = fb.pixels + ptrdiff_t(sp.y) * fb.stride + sp.x;
-    const double py = sp.y + 0.5;
-    double px = sp.x + 0.5;
-    int32_t q, r;
-    w.at(px, py, &q, &r);
-    int left = sp.count;
-    while (left > 0) {
-      const int n = left > 16 ? 16 : left;
-      int32_t qn = q, rn = r, dq = 0, dr = 0;
-      if (left > 16) {
-        px += 16.0;
-        w.at(px, py, &qn, &rn);
-        dq = (qn - q) / 16;
-        dr = (rn - r) / 16;
-      } else if (n > 1) {
-        w.at(px + double(n - 1), py, &qn, &rn);
-        dq = (qn - q) / (n - 1);
-        dr = (rn - r) / (n - 1);
-      }
-      for (int k = 0; k < n; ++k) {
-        dest[k] = fetch(q, r);
-        q += dq;
-        r += dr;
-      }
-      dest += n;
-      q = qn;
-      r = rn;
-      left -= n;
-    }
+    const int x0 = spans[i].x, y = spans[i].y, total = spans[i].count;
+    if (total <= 0) continue;
+    const double py = y + 0.5;
+    auto exact = [&](double px, int32_t* q, int32_t* r) { w.at(px, py, q, r); };
+    walk_span(fb.pixels + ptrdiff_t(y) * fb.stride + x0, x0 + 0.5, total, exact, run);
   }
 }
 
@@ -295,14 +332,10 @@ void draw_sky_spans(const Span* spans, uint32_t count, const ViewState& view, co
 
 void draw_solid_spans(const Span* spans, uint32_t count, uint8_t color, Framebuffer& fb) {
   for (uint32_t i = 0; i < count; ++i) {
-    const Span& sp = spans[i];
-    if (sp.count <= 0) continue;
-    uint8_t* dest = fb.pixels + ptrdiff_t(sp.y) * fb.stride + sp.x;
-    for (int k = 0; k < sp.count; ++k) dest[k] = color;
-    if (fb.zbuffer) {
-      uint16_t* z = fb.zbuffer + ptrdiff_t(sp.y) * fb.width + sp.x;
-      for (int k = 0; k < sp.count; ++k) z[k] = 0;
-    }
+    const int x = spans[i].x, y = spans[i].y, n = spans[i].count;
+    if (n <= 0) continue;
+    std::memset(fb.pixels + ptrdiff_t(y) * fb.stride + x, color, size_t(n));
+    if (fb.zbuffer) std::memset(fb.zbuffer + ptrdiff_t(y) * fb.width + x, 0, size_t(n) * sizeof(uint16_t));
   }
   count_coverage(spans, count, fb);
 }
@@ -313,12 +346,22 @@ void draw_z_spans(const Span* spans, uint32_t count, const SpanGradients& g, Fra
   auto clampd = [](double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); };
   const int64_t step = int64_t(clampd(g.zix * kScale, -double(1ll << 40), double(1ll << 40)));
   for (uint32_t i = 0; i < count; ++i) {
-    const Span& sp = spans[i];
-    if (sp.count <= 0) continue;
-    uint16_t* z = fb.zbuffer + ptrdiff_t(sp.y) * fb.width + sp.x;
-    const double zi = g.zi0 + g.zix * (sp.x + 0.5) + g.ziy * (sp.y + 0.5);
+    const int x = spans[i].x, y = spans[i].y, n = spans[i].count;  // locals: the stores below may alias
+    if (n <= 0) continue;
+    uint16_t* __restrict z = fb.zbuffer + ptrdiff_t(y) * fb.width + x;
+    const double zi = g.zi0 + g.zix * (x + 0.5) + g.ziy * (y + 0.5);
     int64_t izi = int64_t(clampd(zi * kScale, -double(1ll << 40), double(1ll << 40)));
-    for (int k = 0; k < sp.count; ++k) {
+    // 1/z is linear along the span: when both ends are in range, every pixel is.
+    const int64_t last = izi + step * (n - 1);
+    constexpr int64_t kMax = (int64_t(0xffff) << 16) | 0xffff;
+    if (izi >= 0 && izi <= kMax && last >= 0 && last <= kMax) {
+      for (int k = 0; k < n; ++k) {
+        z[k] = uint16_t(izi >> 16);
+        izi += step;
+      }
+      continue;
+    }
+    for (int k = 0; k < n; ++k) {
       int64_t v = izi >> 16;
       z[k] = uint16_t(v < 0 ? 0 : (v > 0xffff ? 0xffff : v));
       izi += step;
@@ -329,9 +372,9 @@ void draw_z_spans(const Span* spans, uint32_t count, const SpanGradients& g, Fra
 void count_coverage(const Span* spans, uint32_t count, Framebuffer& fb) {
   if (!fb.coverage) return;
   for (uint32_t i = 0; i < count; ++i) {
-    const Span& sp = spans[i];
-    uint8_t* c = fb.coverage + ptrdiff_t(sp.y) * fb.width + sp.x;
-    for (int k = 0; k < sp.count; ++k) ++c[k];
+    const int x = spans[i].x, y = spans[i].y, n = spans[i].count;
+    uint8_t* __restrict c = fb.coverage + ptrdiff_t(y) * fb.width + x;
+    for (int k = 0; k < n; ++k) ++c[k];
   }
 }
 

@@ -87,7 +87,8 @@ int animated_texture(const BspWorld& world, int texture, double time) {
   if (texture < 0 || uint32_t(texture) >= world.num_textures) return texture;
   const Texture& base = world.textures[texture];
   if (base.anim_total == 0 || base.anim_next < 0) return texture;
-  const int frame = wrap(int64_t(std::floor(time * 5.0)), base.anim_total);
+  if (!std::isfinite(time)) time = 0.0;
+  const int frame = wrap(int64_t(std::fmod(std::floor(time * 5.0), double(base.anim_total))), base.anim_total);
   int t = texture;
   for (int step = 0; step <= base.anim_total; ++step) {
     if (t < 0 || uint32_t(t) >= world.num_textures) break;
@@ -98,9 +99,10 @@ int animated_texture(const BspWorld& world, int texture, double time) {
 }
 
 uint8_t sky_texel(const Texture& sky, const glm::vec3& dir, double time) {
+  if (!std::isfinite(time)) time = 0.0;
   double x = dir.x, y = dir.y, z = 3.0 * double(dir.z);
   double len = std::sqrt(x * x + y * y + z * z);
-  if (len > 0.0) {
+  if (len > 0.0 && std::isfinite(len)) {
     x /= len;
     y /= len;
   } else {
@@ -136,9 +138,14 @@ int32_t turb_offset(int i) {
   return table.v[i & 127];
 }
 
-int turb_phase(double time) { return wrap(int64_t(std::floor(time * kTurbSpeed)), 128); }
+int turb_phase(double time) {
+  if (!std::isfinite(time)) return 0;
+  return wrap(int64_t(std::fmod(std::floor(time * kTurbSpeed), 128.0)), 128);
+}
 
 uint8_t turb_texel(const Texture& tex, float s, float t, double time) {
+  if (!std::isfinite(s) || std::fabs(s) > 1e9f) s = 0.0f;  // keeps the integer conversions defined
+  if (!std::isfinite(t) || std::fabs(t) > 1e9f) t = 0.0f;
   const int phase = turb_phase(time);
   const int64_t si = int64_t(std::floor(double(s)));
   const int64_t ti = int64_t(std::floor(double(t)));

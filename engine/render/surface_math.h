@@ -3,6 +3,9 @@
 // texture animation, sky and turbulence. Everything else (projection,
 // rasterisation, perspective) the reference renderer does its own way.
 // Every function here is pure (no globals, no allocation) and deterministic.
+// Non-finite inputs never reach an integer conversion: a non-finite time counts as 0,
+// non-finite (or beyond +-1e9) s, t in turb_texel count as 0, a non-finite sky direction
+// as (1, 0, 0).
 #pragma once
 #include <cstdint>
 

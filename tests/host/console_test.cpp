@@ -5,12 +5,15 @@
 #include <string>
 #include <vector>
 
+#include "engine/formats/entities.h"
 #include "engine/host/camera_path.h"
 #include "engine/host/cmdline.h"
 #include "engine/host/console.h"
 #include "engine/host/content.h"
 #include "engine/host/lightstyles.h"
+#include "engine/world/world.h"
 #include "tests/host/host_test_util.h"
+#include "tests/support/quake_data.h"
 
 namespace sb::host {
 namespace {
@@ -171,7 +174,7 @@ TEST(CameraPath, DeterministicAndBetweenViewpoints) {
   pts[0].yaw = 0;
   pts[1].origin = glm::vec3(100, 0, 0);
   pts[1].yaw = 90;
-  CameraPath path{pts, 2};
+  CameraPath path{pts, nullptr, 2};
   ViewParams a = camera_path_view(path, 0, 100, 90.0f);
   ViewParams b = camera_path_view(path, 99, 100, 90.0f);
   ViewParams m = camera_path_view(path, 50, 100, 90.0f);
@@ -186,6 +189,42 @@ TEST(CameraPath, DeterministicAndBetweenViewpoints) {
     EXPECT_GE(v.yaw, -180.0f);
     EXPECT_LE(v.yaw, 180.0f);
     EXPECT_LT(std::abs(v.pitch), 90.0f);
+  }
+  // A cut never flies through the space between: each frame is at one end or the other.
+  const uint8_t cuts[2] = {0, 1};
+  CameraPath jump{pts, cuts, 2};
+  for (int f = 0; f < 100; ++f) {
+    float x = camera_path_view(jump, f, 100, 90.0f).origin.x;
+    EXPECT_TRUE(x == 0.0f || x == 100.0f) << f << ": " << x;
+  }
+}
+
+TEST(CameraPath, RealMapRouteStartsAtThePlayerStartAndStaysOutOfSolid) {
+  SB_REQUIRE_QUAKE_DATA();
+  std::vector<uint8_t> block(96u << 20);
+  static mem::MemorySystem memory;
+  static fs::FileSystem files;
+  char error[256];
+  ASSERT_TRUE(memory.init(block.data(), block.size(), error, sizeof error)) << error;
+  ASSERT_TRUE(open_search_path(files, sb::test::quake_dir().c_str(), "lq1", "lq1", memory.permanent).is_ok());
+  for (const char* map : {"start", "lq_e0m1"}) {
+    Result<BspWorld*> world = load_world(files, map, memory);
+    ASSERT_TRUE(world.is_ok()) << world.message();
+    Result<CameraPath> path = build_camera_path(*world.value(), memory.level);
+    ASSERT_TRUE(path.is_ok()) << path.message();
+    ASSERT_GE(path.value().count, 2) << map;
+    glm::vec3 start(0.0f);
+    Entity e;
+    ASSERT_TRUE(find_entity(std::string_view(world.value()->entities, world.value()->entities_size),
+                            "info_player_start", &e));
+    ASSERT_TRUE(entity_origin(e, &start));
+    EXPECT_FLOAT_EQ(path.value().points[0].origin.x, start.x) << map;
+    EXPECT_FLOAT_EQ(path.value().points[0].origin.z, start.z + 22.0f) << map;
+    for (int f = 0; f < 300; ++f) {
+      ViewParams v = camera_path_view(path.value(), f, 300, 90.0f);
+      int leaf = point_in_leaf(*world.value(), v.origin);
+      EXPECT_NE(world.value()->leaves[leaf].contents, kContentsSolid) << map << " frame " << f;
+    }
   }
 }
 

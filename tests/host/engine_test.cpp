@@ -166,7 +166,9 @@ TEST_F(HostTest, FlythroughPrintsFiguresThenRunsTheRestOfTheBuffer) {
   do {
     f = engine.frame();
     ++frames;
-    if (frames == 10) EXPECT_FALSE(contains(captured_log(), "after-flight"));  // held while flying
+    if (frames == 10) {
+      EXPECT_FALSE(contains(captured_log(), "after-flight"));  // held while flying
+    }
   } while (!f.quit && frames < 100);
   EXPECT_TRUE(f.quit);
   EXPECT_EQ(frames, 21);  // 20 flight frames, then the rest of the buffer (echo, quit)

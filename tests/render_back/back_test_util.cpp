@@ -9,11 +9,11 @@
 #include "tests/support/png_image.h"
 #include "tests/support/quake_data.h"
 
-namespace sb::test {
+namespace sb::test::back {
 
-TestWorld::TestWorld() { std::strcpy(w_.name, "test.bsp"); }
+HandWorld::HandWorld() { std::strcpy(w_.name, "test.bsp"); }
 
-int TestWorld::add_texture(const char* name, int w, int h, uint32_t seed, TextureKind kind) {
+int HandWorld::add_texture(const char* name, int w, int h, uint32_t seed, TextureKind kind) {
   std::mt19937 rng(seed);
   auto data = std::make_unique<std::vector<uint8_t>>();
   size_t total = 0;
@@ -37,7 +37,7 @@ int TestWorld::add_texture(const char* name, int w, int h, uint32_t seed, Textur
   return int(textures_.size() - 1);
 }
 
-int TestWorld::add_plane(glm::vec3 n, float d) {
+int HandWorld::add_plane(glm::vec3 n, float d) {
   Plane p{};
   p.normal = n;
   p.dist = d;
@@ -46,7 +46,7 @@ int TestWorld::add_plane(glm::vec3 n, float d) {
   return int(planes_.size() - 1);
 }
 
-int TestWorld::add_texinfo(glm::vec4 s, glm::vec4 t, int texture, uint32_t flags) {
+int HandWorld::add_texinfo(glm::vec4 s, glm::vec4 t, int texture, uint32_t flags) {
   TexInfo ti{};
   ti.vecs[0] = s;
   ti.vecs[1] = t;
@@ -58,7 +58,7 @@ int TestWorld::add_texinfo(glm::vec4 s, glm::vec4 t, int texture, uint32_t flags
   return int(texinfo_.size() - 1);
 }
 
-int TestWorld::add_face(int plane, int texinfo, int smin, int tmin, int ext_s, int ext_t, const uint8_t styles[4],
+int HandWorld::add_face(int plane, int texinfo, int smin, int tmin, int ext_s, int ext_t, const uint8_t styles[4],
                         uint32_t seed, uint16_t flags, bool lit) {
   Face f{};
   f.plane = uint32_t(plane);
@@ -82,7 +82,7 @@ int TestWorld::add_face(int plane, int texinfo, int smin, int tmin, int ext_s, i
   return int(faces_.size() - 1);
 }
 
-BspWorld& TestWorld::world() {
+BspWorld& HandWorld::world() {
   w_.planes = planes_.data();
   w_.num_planes = uint32_t(planes_.size());
   w_.texinfo = texinfo_.data();
@@ -114,7 +114,7 @@ render::ViewState make_view(glm::vec3 origin, float yaw, float pitch, float fov_
   return v;
 }
 
-std::vector<uint8_t> load_colormap() {
+std::vector<uint8_t> colormap_or_synthetic() {
   std::string dir = quake_dir();
   if (!dir.empty()) {
     auto bytes = read_file_bytes(dir + "/lq1/gfx/colormap.lmp");
@@ -142,7 +142,10 @@ std::vector<uint8_t> load_palette_or_grey() {
 
 TestMemory::TestMemory(size_t mib) : block(mib * mem::kMiB) {
   char err[256];
-  if (!mem.init(block.data(), block.size(), err, sizeof err)) std::abort();
+  if (!mem.init(block.data(), block.size(), err, sizeof err)) {
+    std::fprintf(stderr, "TestMemory(%zu MiB): %s\n", mib, err);
+    std::abort();
+  }
 }
 
 TestFramebuffer::TestFramebuffer(int w, int h, bool with_z, bool with_coverage)
@@ -182,4 +185,4 @@ bool dump_png(const std::string& path, const uint8_t* pixels, int width, int hei
   return write_indexed_png(path, img, load_palette_or_grey());
 }
 
-}  // namespace sb::test
+}  // namespace sb::test::back

@@ -12,13 +12,13 @@
 #include "engine/render/render_local.h"
 #include "memory/memory_system.h"
 
-namespace sb::test {
+namespace sb::test::back {
 
 // A BspWorld whose arrays live in this object's vectors. Only what the back end reads is
 // filled: planes, texinfo, textures, faces, lightdata.
-class TestWorld {
+class HandWorld {
  public:
-  TestWorld();
+  HandWorld();
   // Random texture of w x h (multiples of 16) with its 4 mips; returns its index.
   int add_texture(const char* name, int w, int h, uint32_t seed, TextureKind kind = kTexNormal);
   // Plane with normal n and dist d; returns its index.
@@ -44,7 +44,7 @@ render::ViewState make_view(glm::vec3 origin, float yaw, float pitch, float fov_
                             uint32_t frame = 1);
 
 // Real colormap when the Quake data is present, else a synthetic one (row r, index i -> (i + 4r) & 255).
-std::vector<uint8_t> load_colormap();
+std::vector<uint8_t> colormap_or_synthetic();
 std::vector<uint8_t> load_palette_or_grey();
 
 // A memory block of `mib` MiB with its MemorySystem.
@@ -71,4 +71,4 @@ bool exact_st(const BspWorld& world, const Face& face, const render::ViewState& 
 // Writes an indexed image through the palette to `path` as PNG (for looking at renders).
 bool dump_png(const std::string& path, const uint8_t* pixels, int width, int height, int stride);
 
-}  // namespace sb::test
+}  // namespace sb::test::back

@@ -12,7 +12,7 @@
 #include "engine/render/surface_math.h"
 #include "tests/render_back/back_test_util.h"
 
-namespace sb::test {
+namespace sb::test::back {
 namespace {
 
 using render::Span;
@@ -24,7 +24,7 @@ struct Agreement {
 
 // A big lit wall at x = 128 seen obliquely; every pixel of a 90-degree view hits it.
 struct WallScene {
-  TestWorld tw;
+  HandWorld tw;
   int face = 0;
   WallScene(bool turb = false) {
     int tex = tw.add_texture(turb ? "*water" : "wall", 64, 64, 21, turb ? kTexTurb : kTexNormal);
@@ -62,7 +62,7 @@ Agreement check_surface_spans(WallScene& sc, const render::ViewState& view, cons
                               TestFramebuffer& tf, bool model) {
   BspWorld& w = sc.tw.world();
   const Face& face = w.faces[sc.face];
-  auto cm = load_colormap();
+  auto cm = colormap_or_synthetic();
   std::vector<uint16_t> grid(size_t(render::light_grid_size(face)));
   const int gw = render::face_light_grid(w, face, nullptr, grid.data(), nullptr);
   const int sw = face.extents[0] >> mip, sh = face.extents[1] >> mip;
@@ -261,7 +261,7 @@ Agreement check_sky(const Texture& sky, const render::ViewState& view, double ti
 }
 
 struct SkyScene {
-  TestWorld tw;
+  HandWorld tw;
   int t = 0;
   SkyScene() {
     t = tw.add_texture("sky4", 256, 128, 77, kTexSky);
@@ -325,16 +325,25 @@ TEST(SpanDraw, TurbMatchesTurbTexel) {
       for (const Span& sp : spans)
         for (int x = sp.x; x < sp.x + sp.count; ++x) {
           const double py = sp.y + 0.5;
-          auto sf = [&](double px) { double s, t; exact_st(w, face, view, px, py, &s, &t); return s; };
-          auto tf2 = [&](double px) { double s, t; exact_st(w, face, view, px, py, &s, &t); return t; };
+          // Exact s, t clamped to the face's extents like the drawer.
+          auto sf = [&](double px) {
+            double s, t;
+            exact_st(w, face, view, px, py, &s, &t);
+            return std::clamp(s, double(face.texture_mins[0]), face.texture_mins[0] + face.extents[0] - 1e-6);
+          };
+          auto tf2 = [&](double px) {
+            double s, t;
+            exact_st(w, face, view, px, py, &s, &t);
+            return std::clamp(t, double(face.texture_mins[1]), face.texture_mins[1] + face.extents[1] - 1e-6);
+          };
           const double s = model ? run_model(sp, x, sf) : sf(x + 0.5);
           const double t = model ? run_model(sp, x, tf2) : tf2(x + 0.5);
           const uint8_t got = tf.pixels[size_t(sp.y) * W + x];
           ++a.pixels;
           if (got == render::turb_texel(tex, float(s), float(t), time)) { ++a.exact; continue; }
           bool near = false;
-          for (int dt = -1; dt <= 1 && !near; ++dt)
-            for (int ds = -1; ds <= 1 && !near; ++ds)
+          for (double dt = -1.0; dt <= 1.0 && !near; dt += 0.125)  // s, t within one texel
+            for (double ds = -1.0; ds <= 1.0 && !near; ds += 0.125)
               near = got == render::turb_texel(tex, float(s + ds), float(t + dt), time);
           ++(near ? a.off_by_one : a.other);
         }
@@ -361,4 +370,4 @@ TEST(SpanDraw, SolidAndCoverage) {
 }
 
 }  // namespace
-}  // namespace sb::test
+}  // namespace sb::test::back

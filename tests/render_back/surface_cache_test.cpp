@@ -12,7 +12,7 @@
 #include "engine/render/surface_math.h"
 #include "tests/render_back/back_test_util.h"
 
-namespace sb::test {
+namespace sb::test::back {
 namespace {
 
 using render::FrameSpans;
@@ -21,7 +21,7 @@ using render::SurfaceDraw;
 
 // N lit faces on the wall x = 128, each given one row of the screen.
 struct CacheScene {
-  TestWorld tw;
+  HandWorld tw;
   std::vector<int> faces;
   std::vector<Span> spans;
   std::vector<SurfaceDraw> surfs;
@@ -73,7 +73,7 @@ RenderStats draw(CacheScene& sc, TestMemory& tm, TestFramebuffer& tf, const int*
 TEST(SurfaceCache, ReusedAcrossFramesAndRebuiltOnLightChange) {
   CacheScene sc;
   TestMemory tm(32);
-  auto cm = load_colormap();
+  auto cm = colormap_or_synthetic();
   int ls[kMaxLightStyleSlots];
   for (int& v : ls) v = 256;
   render_new_level(sc.tw.world());
@@ -129,7 +129,7 @@ TEST(SurfaceCache, ReusedAcrossFramesAndRebuiltOnLightChange) {
 TEST(SurfaceCache, EvictedSurfacesAreRebuilt) {
   CacheScene sc;
   TestMemory tm(32);
-  auto cm = load_colormap();
+  auto cm = colormap_or_synthetic();
   render_new_level(sc.tw.world());
   tm.mem.begin_frame();
   TestFramebuffer f1(CacheScene::W, CacheScene::H);
@@ -146,10 +146,10 @@ int g_warnings = 0;
 void count_sink(void*, LogLevel level, const char*) { g_warnings += level == LogLevel::Warning; }
 
 TEST(SurfaceCache, ExhaustionFallsBackToUnlitTexture) {
-  // 16 MiB block: a 5 MiB cache. Faces of 2048 x 2048 texels need 4 MiB each at mip 0.
+  // 32 MiB block: a 10 MiB cache. Faces of 2048 x 2048 texels need 4 MiB each at mip 0.
   CacheScene sc(2048);
-  TestMemory tm(16);
-  auto cm = load_colormap();
+  TestMemory tm(32);
+  auto cm = colormap_or_synthetic();
   render_new_level(sc.tw.world());
   g_warnings = 0;
   set_log_sink(count_sink, nullptr);
@@ -162,13 +162,15 @@ TEST(SurfaceCache, ExhaustionFallsBackToUnlitTexture) {
   set_log_sink(nullptr, nullptr);
   EXPECT_TRUE(s1.cache_exhausted);
   EXPECT_TRUE(s2.cache_exhausted);
-  EXPECT_EQ(s1.surfaces_built, 1u);
+  EXPECT_EQ(s1.surfaces_built, 2u);
   EXPECT_EQ(g_warnings, 1) << "logged once per level";
   EXPECT_TRUE(tm.mem.cache.check_consistency());
-  // Rows other than the cached one are the unlit texture, exactly.
+  EXPECT_EQ(s2.surface_cache_hits, 2u);
+  EXPECT_EQ(s2.surfaces_built, 0u);
+  // Rows other than the two cached ones are the unlit texture, exactly.
   BspWorld& w = sc.tw.world();
   auto view = make_view({0, 0, 0}, 0, 0, 90, CacheScene::W, CacheScene::H);
-  for (int i = 1; i < CacheScene::H; ++i) {
+  for (int i = 2; i < CacheScene::H; ++i) {
     const Face& face = w.faces[sc.faces[i]];
     TestFramebuffer ref(CacheScene::W, CacheScene::H);
     const Texture& tex = w.textures[render::animated_texture(w, w.texinfo[face.texinfo].texture, 0.0)];
@@ -181,7 +183,7 @@ TEST(SurfaceCache, ExhaustionFallsBackToUnlitTexture) {
 }
 
 TEST(DrawSurfaces, EveryPixelOnceAcrossSurfaceKinds) {
-  TestWorld tw;
+  HandWorld tw;
   int wall = tw.add_texture("wall", 64, 64, 1);
   int water = tw.add_texture("*water", 64, 64, 2, kTexTurb);
   int sky = tw.add_texture("sky1", 256, 128, 3, kTexSky);
@@ -210,8 +212,8 @@ TEST(DrawSurfaces, EveryPixelOnceAcrossSurfaceKinds) {
     spans.insert(spans.end(), per[k].begin(), per[k].end());
   }
   FrameSpans fs{spans.data(), uint32_t(spans.size()), surfs.data(), uint32_t(surfs.size())};
-  TestMemory tm(16);
-  auto cm = load_colormap();
+  TestMemory tm(32);
+  auto cm = colormap_or_synthetic();
   render_new_level(w);
   tm.mem.begin_frame();
   TestFramebuffer tf(W, H);
@@ -228,4 +230,4 @@ TEST(DrawSurfaces, EveryPixelOnceAcrossSurfaceKinds) {
 }
 
 }  // namespace
-}  // namespace sb::test
+}  // namespace sb::test::back

@@ -9,13 +9,13 @@
 #include "engine/render/surface_math.h"
 #include "tests/render_back/back_test_util.h"
 
-namespace sb::test {
+namespace sb::test::back {
 namespace {
 
 using render::shade_at;
 
 TEST(SurfaceMath, LightGridSumsStylesAndClamps) {
-  TestWorld tw;
+  HandWorld tw;
   int tex = tw.add_texture("wall", 64, 64, 1);
   int pl = tw.add_plane({1, 0, 0}, 0);
   int ti = tw.add_texinfo({0, 1, 0, 0}, {0, 0, 1, 0}, tex);
@@ -79,7 +79,7 @@ TEST(SurfaceMath, ChooseMipThresholds) {
 }
 
 TEST(SurfaceMath, TextureTexelWraps) {
-  TestWorld tw;
+  HandWorld tw;
   int t = tw.add_texture("w", 48, 32, 3);
   const Texture& tex = tw.world().textures[t];
   for (int mip = 0; mip < 4; ++mip) {
@@ -91,7 +91,7 @@ TEST(SurfaceMath, TextureTexelWraps) {
 }
 
 TEST(SurfaceMath, AnimatedTextureFollowsChain) {
-  TestWorld tw;
+  HandWorld tw;
   int a = tw.add_texture("+0lava", 16, 16, 1);
   int b = tw.add_texture("+1lava", 16, 16, 2);
   int c = tw.add_texture("+2lava", 16, 16, 3);
@@ -109,7 +109,7 @@ TEST(SurfaceMath, AnimatedTextureFollowsChain) {
 }
 
 TEST(SurfaceMath, SkyFrontLayerOverBackLayer) {
-  TestWorld tw;
+  HandWorld tw;
   int t = tw.add_texture("sky1", 256, 128, 9, kTexSky);
   Texture& sky = tw.world().textures[t];
   auto* px = const_cast<uint8_t*>(sky.mips[0]);
@@ -124,7 +124,7 @@ TEST(SurfaceMath, SkyFrontLayerOverBackLayer) {
 }
 
 TEST(SurfaceMath, TurbulenceWarpsByTheOtherAxis) {
-  TestWorld tw;
+  HandWorld tw;
   int t = tw.add_texture("*water", 64, 64, 4, kTexTurb);
   const Texture& tex = tw.world().textures[t];
   EXPECT_EQ(render::turb_offset(0), 0);
@@ -163,7 +163,7 @@ void expect_builder_matches(const BspWorld& w, const Face& face, const int* ls, 
 }
 
 TEST(SurfaceBuilder, MatchesClosedFormEveryMip) {
-  TestWorld tw;
+  HandWorld tw;
   int t1 = tw.add_texture("a", 64, 64, 11);
   int t2 = tw.add_texture("b", 48, 80, 12);  // not a power of two
   int pl = tw.add_plane({1, 0, 0}, 0);
@@ -176,7 +176,7 @@ TEST(SurfaceBuilder, MatchesClosedFormEveryMip) {
       tw.add_face(pl, ti2, -1024, 16, 256, 16, one, 3),  tw.add_face(pl, ti2, 160, -2048, 16, 2048, three, 4),
       tw.add_face(pl, ti1, 0, 0, 64, 48, one, 5, 0, false)};
   BspWorld& w = tw.world();
-  auto cm = load_colormap();
+  auto cm = colormap_or_synthetic();
   int ls[kMaxLightStyleSlots];
   for (int i = 0; i < kMaxLightStyleSlots; ++i) ls[i] = 128 + 37 * i;
   for (int f : faces) {
@@ -186,4 +186,4 @@ TEST(SurfaceBuilder, MatchesClosedFormEveryMip) {
 }
 
 }  // namespace
-}  // namespace sb::test
+}  // namespace sb::test::back

@@ -343,29 +343,18 @@ RayCaster::RayCaster(const BspWorld& world) {
       uint32_t vi = se >= 0 ? world.edges[se].v[0] : world.edges[uint32_t(-int64_t(se))].v[1];
       rf.verts.push_back(glm::dvec3(world.vertices[vi]));
     }
-    glm::dvec3 centroid(0.0);
-    for (auto& v : rf.verts) centroid += v;
-    centroid /= double(rf.verts.size());
-    for (size_t k = 0; k < rf.verts.size(); ++k) {
-      glm::dvec3 a = rf.verts[k], b = rf.verts[(k + 1) % rf.verts.size()];
-      glm::dvec3 en = glm::cross(rf.normal, b - a);
-      double len = glm::length(en);
-      if (len < 1e-9) continue;
-      en /= len;
-      rf.edge_normals.push_back(en);
-      rf.edge_dists.push_back(glm::dot(en, a));
+    // Point in polygon by crossing number in the plane's dominant projection: exact for
+    // convex faces, and unbothered by the zero-area spikes and repeated vertices that real
+    // compilers leave in some faces (an edge-plane test would reject every point there).
+    glm::dvec3 an = glm::abs(rf.normal);
+    int k = an.x >= an.y && an.x >= an.z ? 0 : (an.y >= an.z ? 1 : 2);
+    rf.axis_u = (k + 1) % 3;
+    rf.axis_v = (k + 2) % 3;
+    for (const auto& v : rf.verts) {
+      rf.us.push_back(v[rf.axis_u]);
+      rf.vs.push_back(v[rf.axis_v]);
     }
-    // Inward: the centroid must be inside every edge plane.
-    int flip_votes = 0;
-    for (size_t k = 0; k < rf.edge_normals.size(); ++k)
-      flip_votes += glm::dot(rf.edge_normals[k], centroid) - rf.edge_dists[k] < 0 ? 1 : -1;
-    if (flip_votes > 0) {
-      for (size_t k = 0; k < rf.edge_normals.size(); ++k) {
-        rf.edge_normals[k] = -rf.edge_normals[k];
-        rf.edge_dists[k] = -rf.edge_dists[k];
-      }
-    }
-    if (rf.edge_normals.size() >= 3) faces_.push_back(std::move(rf));
+    if (rf.verts.size() >= 3) faces_.push_back(std::move(rf));
   }
 }
 
@@ -417,9 +406,13 @@ std::vector<uint32_t> RayCaster::cast(const render::ViewState& v) const {
                 double t = (f->dist - glm::dot(f->normal, o)) / denom;
                 if (!(t > 0.0) || t >= best) continue;
                 glm::dvec3 hit = o + t * dir;
-                bool in = true;
-                for (size_t k = 0; k < f->edge_normals.size(); ++k)
-                  if (glm::dot(f->edge_normals[k], hit) - f->edge_dists[k] < 0.0) { in = false; break; }
+                const double hu = hit[f->axis_u], hv = hit[f->axis_v];
+                bool in = false;
+                const size_t nv = f->us.size();
+                for (size_t a = nv - 1, b = 0; b < nv; a = b++) {
+                  double ua = f->us[a], va = f->vs[a], ub = f->us[b], vb = f->vs[b];
+                  if ((va > hv) != (vb > hv) && hu < ua + (hv - va) * (ub - ua) / (vb - va)) in = !in;
+                }
                 if (!in) continue;
                 best = t;
                 best_face = f->index;

@@ -115,8 +115,8 @@ class RayCaster {
     glm::dvec3 normal;  // towards the face's front
     double dist;
     std::vector<glm::dvec3> verts;
-    std::vector<glm::dvec3> edge_normals;  // inward, in the face plane
-    std::vector<double> edge_dists;
+    int axis_u, axis_v;            // the plane's two least-steep world axes
+    std::vector<double> us, vs;    // vertices projected on them, for a crossing-number test
   };
   std::vector<RefFace> faces_;
 };

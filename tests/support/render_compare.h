@@ -4,11 +4,13 @@
 // Every pixel whose palette index differs is put in the first class that explains it:
 //   Edge:      along a polygon edge: the reference's face at this pixel differs from the
 //              face at one of its 4-neighbours (sub-pixel edge placement, T-junctions);
-//   Texel:     a neighbouring texel: the actual colour equals the reference colour of the
-//              same face and mip at (u, v) moved by one texel in u, v or both (the real
-//              renderer steps texture coordinates linearly over 16-pixel runs and rounds);
-//              for turbulent faces s, t moved by one texel; for sky the ray through a
-//              neighbouring pixel (sub-pixel direction error);
+//   Texel:     a neighbouring texel (16-pixel interpolation rounding): the actual colour
+//              equals the reference colour of the same face and mip at texture coordinates
+//              moved by up to one texel in s, t or both, from either the exact coordinates
+//              or the ones a span drawer with one divide per 16 pixels reaches here (exact
+//              at the ends of the 16-pixel run, linear in between; runs start at the left
+//              end of the face's run of pixels in this row). Sky: the same in the sky
+//              layers' texel coordinates.
 //   Mip:       the actual colour equals the texel of the same face at the same point at the
 //              next or previous mip level (nearzi landed on the other side of a threshold);
 //   Unexplained: anything else.
@@ -25,8 +27,14 @@ enum class PixelClass : uint8_t { Match, Edge, Texel, Mip, Unexplained };
 
 struct MismatchBreakdown {
   uint64_t pixels = 0, mismatched = 0, edge = 0, texel = 0, mip = 0, unexplained = 0;
+  uint64_t interpolated = 0;  // of `texel`: exactly the texel the 16-pixel interpolation reaches
   void add(const MismatchBreakdown& o);
+  // Identical palette indices.
   double agreement() const { return pixels ? double(pixels - mismatched) / double(pixels) : 1.0; }
+  // Identical, or exactly what a perfect one-divide-per-16-pixels walker draws.
+  double interpolation_agreement() const {
+    return pixels ? double(pixels - mismatched + interpolated) / double(pixels) : 1.0;
+  }
   double unexplained_fraction() const { return pixels ? double(unexplained) / double(pixels) : 0.0; }
   std::string summary() const;  // "agreement 99.12% (mismatched 0.88%: edge 0.50%, ...)"
 };

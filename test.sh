@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# test.sh: build and run every test.
+#   1. default preset (RelWithDebInfo): build everything, ctest (all tests)
+#   2. sanitize preset (ASan + UBSan, Debug): build, ctest with label 'sanitize'
+# Installs missing Debian packages when run as root (else prints the apt-get line).
+# Data tests skip visibly when ../shared/quake (LibreQuake) is absent.
+set -euo pipefail
+cd "$(dirname "$0")"
+. .ci/deps.sh
+starbow_ensure_deps
+
+start=$(date +%s)
+stage() { echo; echo "== $* ($(( $(date +%s) - start )) s so far)"; }
+
+stage "configure + build: default preset"
+cmake --preset default
+cmake --build --preset default
+stage "ctest: default preset"
+ctest --preset default
+
+stage "configure + build: sanitize preset"
+cmake --preset sanitize
+cmake --build --preset sanitize
+stage "ctest: sanitize preset (label sanitize)"
+ctest --preset sanitize
+
+echo
+echo "all tests passed in $(( $(date +%s) - start )) s"
