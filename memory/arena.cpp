@@ -56,6 +56,7 @@ void* Arena::push_zero(size_t size, const char* name, size_t align) {
 
 void Arena::pop_to(size_t mark) {
   if (mark >= used_) return;
+  SB_UNPOISON(base_ + mark, used_ - mark);  // alignment gaps stay poisoned until now
 #ifndef NDEBUG
   std::memset(base_ + mark, 0xCD, used_ - mark);
 #endif

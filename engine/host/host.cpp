@@ -80,14 +80,17 @@ Status set_framebuffer_size(HostState& h, int width, int height) {
 namespace {
 
 void missing_content_message(const HostState& h, const char* basedir, const char* game) {
-  log_warning("no playable content: %s/%s has no maps/start.bsp.", basedir, game);
-  log_info("  Point Starbow at a Quake-format game folder, e.g.");
+  if (h.have_content)
+    log_warning("no map to show: %s/%s has no maps/start.bsp (use +viewmap <name>).", basedir, game);
+  else
+    log_warning("no game content found: %s/%s is not a readable game folder.", basedir, game);
+  log_info("  Point Starbow at a Quake-format game folder with -basedir <dir> -game <folder>, e.g.");
   log_info("    starbow -basedir /path/to/quake -game lq1 +viewmap start");
-  log_info("  (LibreQuake's lq1 folder works; with the source tree it lives in ../shared/quake).");
-  (void)h;
+  log_info("  (LibreQuake's lq1 folder works; beside the source tree it is ../shared/quake).");
 }
 
-Status init_content(HostState& h) {
+// Search path, palette and colormap. Missing content is reported, not fatal.
+void init_content(HostState& h) {
   const char* basedir = h.cmdline.basedir[0] ? h.cmdline.basedir : h.config.default_basedir;
   if (!basedir || !*basedir) basedir = ".";
   const char* game = h.cmdline.game[0] ? h.cmdline.game : kDefaultGame;
@@ -100,13 +103,19 @@ Status init_content(HostState& h) {
     fallback_palette_and_colormap(h.palette, h.colormap);
     if (h.have_content) log_warning("%s (drawing with a grey palette)", p.message());
   }
-  // Default startup: the + commands decide; without a map among them, view start.
+}
+
+// Default startup: the + commands decide; without a map among them, view start.
+Status queue_startup_commands(HostState& h) {
   if (!h.cmdline.has_map_command) {
-    if (h.have_content && h.files.exists("maps/start.bsp"))
+    if (h.have_content && h.files.exists("maps/start.bsp")) {
       SB_TRY(h.console.append("viewmap start"));
-    else
-      missing_content_message(h, basedir, game);
+    } else {
+      const char* basedir = h.cmdline.basedir[0] ? h.cmdline.basedir : h.config.default_basedir;
+      missing_content_message(h, basedir ? basedir : ".", h.cmdline.game[0] ? h.cmdline.game : kDefaultGame);
+    }
   }
+  if (h.cmdline.commands[0]) SB_TRY(h.console.append(h.cmdline.commands));
   return Status::ok();
 }
 
@@ -139,6 +148,8 @@ Status engine_init(const HostConfig& config) {
     h.console.set_cvar(*h.fov, fov);
   }
 
+  init_content(h);  // before the framebuffer: pak directories must find room in permanent
+
   // Framebuffer: reserve the largest size the platform may ask for, else the initial one.
   int w = clamp_int(h.cmdline.width ? h.cmdline.width : kDefaultWidth, kMinWidth, kMaxWidth);
   int ht = clamp_int(h.cmdline.height ? h.cmdline.height : kDefaultHeight, kMinHeight, kMaxHeight);
@@ -159,8 +170,7 @@ Status engine_init(const HostConfig& config) {
   SB_TRY(set_framebuffer_size(h, w, ht));
   std::memset(h.pixels, 0, size_t(h.fb_max_width) * size_t(h.fb_max_height));
 
-  SB_TRY(init_content(h));
-  if (h.cmdline.commands[0]) SB_TRY(h.console.append(h.cmdline.commands));
+  SB_TRY(queue_startup_commands(h));
   h.initialized = true;
   return Status::ok();
 }
