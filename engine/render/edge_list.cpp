@@ -161,7 +161,7 @@ bool add_face(EdgeTable& table, const BspWorld& world, const ViewState& view, ui
     if (slope < -limit) slope = -limit;
 
     FrontEdge& e = table.edges[table.num_edges];
-    e.x = int32_t(std::floor((x_first - 0.5) * 65536.0));
+    e.x = int32_t(std::ceil((x_first - 0.5) * 65536.0));  // ceil keeps ceil(x - 0.5) exact below 1/65536
     e.dx = int32_t(std::lround(slope * 65536.0));
     e.surf = surf | (down == clockwise ? kTrailingBit : 0u);
     e.ybottom = row_bottom;

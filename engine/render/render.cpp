@@ -41,7 +41,7 @@ Status render_world(const RenderInputs& in, Framebuffer& fb, mem::MemorySystem& 
 
   // The world's per-face renderer state (visframes, cache handles) is mutable by design;
   // the arrays live in the level arena, never in const storage.
-  BspWorld& world = const_cast<BspWorld&>(*in.world);
+  BspWorld& world = *in.world;
   const render::ViewState view = render::setup_view(world, v, fb.width, fb.height, memory.frame_number());
   render::FrameSpans spans;
   SB_TRY(render::build_spans(world, view, memory.frame(), &spans, &st));

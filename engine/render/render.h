@@ -32,11 +32,14 @@ constexpr int kMaxLightStyleSlots = 64;
 constexpr int kLightStyleNormal = 256;  // 'm' in Quake's style strings
 
 struct RenderInputs {
-  const BspWorld* world = nullptr;
+  BspWorld* world = nullptr;  // the renderer keeps per-face state (cache handles) in it
   ViewParams view;
   double time = 0.0;                       // seconds: sky scroll, turbulence, texture animation
   const int* lightstyles = nullptr;        // kMaxLightStyleSlots values, 256 = normal; nullptr = all normal
   const uint8_t* colormap = nullptr;       // 64 rows x 256 (row 0 brightest)
+  // Between the exact divides every 16 pixels: true = linear plus a second-order term that
+  // follows the perspective curve (default); false = purely linear, as Quake stepped.
+  bool span_second_order = true;
 };
 
 struct RenderStats {

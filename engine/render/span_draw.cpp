@@ -78,42 +78,79 @@ inline int32_t max_fixed(int extent) {
   return int32_t((uint32_t(extent) << 16) - 1u);
 }
 
+// Steps for one run of `steps` pixels from a (at pixel 0) to b (at pixel `steps`), 16.16.
+// Linear: d = (b - a) / steps, dd = 0. Second order: over a planar surface the true
+// coordinate is a Moebius function of x, and the chord between two exact samples misses it
+// by (delta / L) * zix * x (L - x) / zi(x). With 1/zi(x) taken as the mean of the two ends'
+// depths (z0 + z1) / 2, that is a parabola: per-pixel step d, changing by dd each pixel.
+// The result is accepted only when every step keeps the sign of b - a and the last pixel
+// lands between a and b, so the walk stays between its clamped ends; otherwise linear.
+struct RunSteps {
+  int32_t d, dd;
+};
+inline RunSteps run_steps(int32_t a, int32_t b, int steps, double curve) {
+  if (steps <= 0) return {0, 0};
+  const int64_t delta = int64_t(b) - int64_t(a);
+  const int32_t linear = int32_t(delta / steps);  // truncation: never overshoots b
+  if (curve == 0.0 || steps < 2) return {linear, 0};
+  const double c = double(delta) / steps * curve;  // C in f(k) = a + (delta/L) k + C k (L - k)
+  const double ddf = -2.0 * c;
+  if (!(ddf > -1e9 && ddf < 1e9)) return {linear, 0};
+  const int64_t dd = int64_t(ddf);
+  const int64_t bend = dd * steps * (steps - 1) / 2;  // sum of the step changes
+  const int64_t d0 = (delta - bend) / steps;
+  const int64_t last_step = d0 + dd * (steps - 1);
+  const int64_t reach = d0 * steps + bend;
+  const bool monotone = delta >= 0 ? (d0 >= 0 && last_step >= 0 && reach >= 0 && reach <= delta)
+                                   : (d0 <= 0 && last_step <= 0 && reach <= 0 && reach >= delta);
+  if (!monotone || d0 > INT32_MAX || d0 < INT32_MIN) return {linear, 0};
+  return {int32_t(d0), int32_t(dd)};
+}
+
 // Draws one span of `total` pixels starting at `dest`, whose first pixel centre is at
 // screen x = px, in runs of 16 pixels: exact coordinates at each run's ends (a span's last
-// run ends at its last pixel), linear in between. The exact values for the end of the next
-// run are computed before the current run is drawn, so the divide overlaps the drawing.
-// exact(px, &a, &b) gives the 16.16 coordinates at screen x = px (this row);
-// run(dest, n, a, b, da, db) draws n pixels from (a, b), stepping (da, db) per pixel.
+// run ends at its last pixel), interpolated in between (see run_steps). The exact values for
+// the end of the next run are computed before the current run is drawn, so the divide
+// overlaps the drawing.
+// exact(px, &a, &b, &z) gives the 16.16 coordinates and the depth z at screen x = px;
+// zix is d(1/z)/dx (0 for linear stepping);
+// run(dest, n, a, b, da, db, dda, ddb) draws n pixels from (a, b), stepping (da, db) per
+// pixel, the steps changing by (dda, ddb) per pixel.
 template <class Exact, class Run>
-inline void walk_span(uint8_t* dest, double px, int total, const Exact& exact, const Run& run) {
+inline void walk_span(uint8_t* dest, double px, int total, double zix, const Exact& exact, const Run& run) {
   // Pixel offset (from a run's first pixel) of the exact sample that ends a run with
   // `left` pixels still to draw: 16 for a full run (the next run's first pixel), else its
   // last pixel.
   auto end_offset = [](int left) { return left > 16 ? 16 : left - 1; };
   int left = total;
   int32_t u0, v0, u1, v1;
-  exact(px, &u0, &v0);
+  double z0, z1;
+  exact(px, &u0, &v0, &z0);
   u1 = u0;
   v1 = v0;
-  if (end_offset(left) > 0) exact(px + end_offset(left), &u1, &v1);
+  z1 = z0;
+  if (end_offset(left) > 0) exact(px + end_offset(left), &u1, &v1, &z1);
   for (;;) {
     const int n = left > 16 ? 16 : left;
     const int after = left - n;
     // The divide for the end of the next run, issued before drawing this one.
     int32_t u2 = u1, v2 = v1;
-    if (after > 0 && end_offset(after) > 0) exact(px + double(n + end_offset(after)), &u2, &v2);
+    double z2 = z1;
+    if (after > 0 && end_offset(after) > 0) exact(px + double(n + end_offset(after)), &u2, &v2, &z2);
     const int steps = end_offset(left);
-    const int32_t du = steps > 0 ? (u1 - u0) / steps : 0;  // truncation: never overshoots u1
-    const int32_t dv = steps > 0 ? (v1 - v0) / steps : 0;
-    run(dest, n, u0, v0, du, dv);
+    const double curve = zix * 0.5 * (z0 + z1);
+    const RunSteps su = run_steps(u0, u1, steps, curve), sv = run_steps(v0, v1, steps, curve);
+    run(dest, n, u0, v0, su.d, sv.d, su.dd, sv.dd);
     if (after <= 0) break;
     dest += n;
     px += double(n);
     left = after;
     u0 = u1;
     v0 = v1;
+    z0 = z1;
     u1 = u2;
     v1 = v2;
+    z1 = z2;
   }
 }
 
@@ -126,14 +163,16 @@ void walk_spans(const Span* spans, uint32_t count, const SpanGradients& g, int32
     if (total <= 0) continue;
     const double py = y + 0.5;
     const double zrow = g.zi0 + g.ziy * py, urow = g.u0 + g.uy * py, vrow = g.v0 + g.vy * py;
-    auto exact = [&](double px, int32_t* u, int32_t* v) {
+    auto exact = [&](double px, int32_t* u, int32_t* v, double* zout) {
       double zi = zrow + g.zix * px;
       if (!(zi > kMinZi)) zi = kMinZi;
       const double z = 1.0 / zi;
       *u = to_fixed((urow + g.ux * px) * z, umax);
       *v = to_fixed((vrow + g.vx * px) * z, vmax);
+      *zout = z;
     };
-    walk_span(fb.pixels + ptrdiff_t(y) * fb.stride + x0, x0 + 0.5, total, exact, run);
+    walk_span(fb.pixels + ptrdiff_t(y) * fb.stride + x0, x0 + 0.5, total, g.second_order ? g.zix : 0.0, exact,
+              run);
   }
 }
 
@@ -150,13 +189,16 @@ inline int wrap(int i, int n) {
 struct SurfaceRun {
   const uint8_t* texels;
   int width;
-  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv) const {
+  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu,
+                  int32_t ddv) const {
     const uint8_t* __restrict t = texels;
     const int w = width;
     for (int k = 0; k < n; ++k) {
       dest[k] = t[(v >> 16) * w + (u >> 16)];
       u += du;
       v += dv;
+      du += ddu;
+      dv += ddv;
     }
   }
 };
@@ -165,7 +207,8 @@ template <bool kPow2>
 struct TextureRun {
   const uint8_t* texels;
   int tw, th, soff, toff;
-  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv) const {
+  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu,
+                  int32_t ddv) const {
     const uint8_t* __restrict t = texels;
     const int w = tw, h = th, so = soff, to = toff;
     for (int k = 0; k < n; ++k) {
@@ -176,6 +219,8 @@ struct TextureRun {
       }
       u += du;
       v += dv;
+      du += ddu;
+      dv += ddv;
     }
   }
 };
@@ -185,7 +230,8 @@ struct TurbRun {
   const uint8_t* texels;
   const int32_t* table;  // 128 entries, 16.16
   int tw, th, smin, tmin, sidx, tidx;
-  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv) const {
+  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu,
+                  int32_t ddv) const {
     const uint8_t* __restrict t = texels;
     const int32_t* __restrict tab = table;
     const int w = tw, h = th, s0 = smin, t0 = tmin, si = sidx, ti = tidx;
@@ -200,6 +246,8 @@ struct TurbRun {
       }
       u += du;
       v += dv;
+      du += ddu;
+      dv += ddv;
     }
   }
 };
@@ -276,7 +324,8 @@ struct SkyRun {
   const uint8_t* texels;
   int tw, th, half;
   int32_t fs, ft, bs, bt;  // layer offsets, 16.16
-  void operator()(uint8_t* __restrict dest, int n, int32_t q, int32_t r, int32_t dq, int32_t dr) const {
+  void operator()(uint8_t* __restrict dest, int n, int32_t q, int32_t r, int32_t dq, int32_t dr, int32_t,
+                  int32_t) const {
     const uint8_t* __restrict t = texels;
     const int w = tw, h = th, hw = half;
     const int32_t o1 = fs, o2 = ft, o3 = bs, o4 = bt;
@@ -309,8 +358,11 @@ void sky_spans(const Span* spans, uint32_t count, const SkyWalk& w, const Textur
     const int x0 = spans[i].x, y = spans[i].y, total = spans[i].count;
     if (total <= 0) continue;
     const double py = y + 0.5;
-    auto exact = [&](double px, int32_t* q, int32_t* r) { w.at(px, py, q, r); };
-    walk_span(fb.pixels + ptrdiff_t(y) * fb.stride + x0, x0 + 0.5, total, exact, run);
+    auto exact = [&](double px, int32_t* q, int32_t* r, double* z) {
+      w.at(px, py, q, r);
+      *z = 0.0;
+    };
+    walk_span(fb.pixels + ptrdiff_t(y) * fb.stride + x0, x0 + 0.5, total, 0.0, exact, run);
   }
 }
 

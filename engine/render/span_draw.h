@@ -8,7 +8,12 @@
 //   uz(px, py) = u0  + ux  * px + uy  * py          (u/z; u in texels of the chosen mip,
 //   vz(px, py) = v0  + vx  * px + vy  * py           measured from texture_mins >> mip)
 // The drawers divide exactly at the first pixel of every 16-pixel run (and at the last pixel
-// of a span's final partial run) and step linearly in 16.16 fixed point in between.
+// of a span's final partial run) and step in 16.16 fixed point in between; the divide for
+// the next run is issued before the current run is drawn. Between the exact ends the step is
+// either linear (Quake's way) or, when second_order is set (the default), linear plus a
+// parabola that follows the perspective curve (one more add per coordinate per pixel; see
+// run_steps in span_draw.cpp). Either way a run never leaves the range between its two
+// (clamped) exact ends.
 // Every drawer writes only the pixels of the spans it is given, then (when fb.zbuffer /
 // fb.coverage are set) the 16-bit 1/z and the coverage count of those pixels.
 #pragma once
@@ -24,6 +29,7 @@ struct SpanGradients {
   double zi0, zix, ziy;
   double u0, ux, uy;
   double v0, vx, vy;
+  bool second_order = true;  // false: Quake's linear stepping between the exact samples
 };
 
 // Gradients of face `face` seen from `view`, texture coordinates at `mip`.

@@ -5,8 +5,10 @@
 //   [ SurfaceHeader (32 bytes) | texels: width x height palette indices, row-major ]
 //
 // A face holds one handle per mip level (Face::cache[mip]). A block is reused while the
-// light style values and the texture animation frame it was built with still hold;
-// otherwise it is rebuilt in place (same size). Evicted blocks are rebuilt on demand.
+// light style values and the texture animation frame it was built with (kept exactly in its
+// SurfaceHeader) still hold; otherwise it is rebuilt in place (same size). Evicted blocks are
+// rebuilt on demand. Face::cache_light_key[mip] records an FNV-1a hash of those inputs
+// (style values, then texture index) for diagnostics; the header is what is compared.
 // Internal to render/ (and tests).
 #pragma once
 #include <cstdint>

@@ -62,7 +62,8 @@ void draw_surfaces(BspWorld& world, const ViewState& view, const FrameSpans& fra
       continue;
     }
     if (face.flags & kFaceTurb) {
-      const SpanGradients g = face_gradients(world, face, view, 0);
+      SpanGradients g = face_gradients(world, face, view, 0);
+      g.second_order = in.span_second_order;
       draw_turb_spans(spans, n, g, tex, face.texture_mins[0], face.texture_mins[1], face.extents[0],
                       face.extents[1], in.time, fb);
       continue;
@@ -70,7 +71,8 @@ void draw_surfaces(BspWorld& world, const ViewState& view, const FrameSpans& fra
 
     const int mip = choose_mip(sd.nearzi, view.xscale, ti.mipadjust);
     ++stats.mip_counts[mip];
-    const SpanGradients g = face_gradients(world, face, view, mip);
+    SpanGradients g = face_gradients(world, face, view, mip);
+    g.second_order = in.span_second_order;
     SurfaceHeader h;
     const uint8_t* surface = fetch_surface(world, sd.face, mip, in, memory, stats, &h);
     if (surface) {

@@ -94,6 +94,24 @@ TEST_F(HostTest, TruncatedRealBspThenAGoodMap) {
   fs::remove_all(dir);
 }
 
+TEST_F(HostTest, GameFolderLayersOverTheBaseGame) {
+  SB_REQUIRE_QUAKE_DATA();
+  std::string dir = make_temp_dir("game");
+  std::vector<uint8_t> start = read_file(fs::path(quake_dir()) / "lq1/maps/start.bsp");
+  write_file(fs::path(dir) / "lq1/maps/base_only.bsp", start);
+  write_file(fs::path(dir) / "lq1/maps/both.bsp", start);
+  write_file(fs::path(dir) / "mymod/maps/mod_only.bsp", start);
+  write_file(fs::path(dir) / "mymod/maps/both.bsp", {1, 2, 3});  // the mod's copy wins: broken on purpose
+  EngineSession engine({"-basedir", dir, "-game", "mymod", "+map", "base_only", "+map", "mod_only", "+map", "both"});
+  ASSERT_TRUE(engine.init_status().is_ok()) << engine.init_status().message();
+  engine.frame();
+  std::string log = captured_log();
+  EXPECT_TRUE(contains(log, "map base_only: 1105 faces")) << log;
+  EXPECT_TRUE(contains(log, "map mod_only: 1105 faces")) << log;
+  EXPECT_TRUE(contains(log, "error: map both: ")) << log;
+  fs::remove_all(dir);
+}
+
 TEST_F(HostTest, BadCommandsReportAndKeepRunning) {
   SB_REQUIRE_QUAKE_DATA();
   EngineSession engine({"-basedir", quake_dir(), "-game", "lq1", "+viewmap", "start"});

@@ -3,15 +3,13 @@
 //
 // Per map: 50 viewpoints at 320x200, 3 at 640x480, 2 at a wide 12:5 aspect with fov 100,
 // 2 with roll; times and light styles vary per view. Requirements per map:
-//   - at least 99.5% of pixels are identical, or differ only because render_world walks
-//     texture coordinates linearly over 16-pixel runs (one divide per 16 pixels, by design)
-//     where the reference is exact per pixel: the colour is exactly the texel that such a
-//     walk reaches (render_compare.h models it from the reference's own geometry);
-//   - at least 93% of pixels carry the very same palette index as the exact reference.
-//     (Measured 94.3-95.8% at the time of writing. The 16-pixel walk alone costs about 5% at
-//     320x200 - its error grows with the square of the run's angle - so 98% identical is
-//     out of reach for any one-divide-per-16-pixels renderer; this floor catches
-//     regressions, and the figure above carries the precision requirement.)
+//   - at least 98% of pixels carry the very same palette index as the exact reference.
+//     render_world divides exactly every 16 pixels and steps in between with a second-order
+//     term that follows the perspective curve (span_draw.h); Quake's purely linear stepping
+//     measured 94.3-95.8% identical here at 320x200 (its error grows with the square of the
+//     run's angle), the second-order step 99.4-99.7%.
+//   - the mismatches are explained: along a polygon edge, or a neighbouring texel of the
+//     same face and mip (the stepped coordinate rounding the other way);
 //   - under 0.5% of pixels differ for no known reason (see render_compare.h for the classes:
 //     polygon edge, neighbouring texel, other mip, unexplained), other mip included;
 //   - render_world writes every pixel exactly once.
@@ -134,8 +132,7 @@ TEST_P(AgreementTest, MatchesReferenceRenderer) {
   }
 
   EXPECT_EQ(coverage_errors, 0u) << map << ": pixels not written exactly once";
-  EXPECT_GE(total.interpolation_agreement(), 0.995) << map << ": " << total.summary();
-  EXPECT_GE(total.agreement(), 0.93) << map << ": " << total.summary();
+  EXPECT_GE(total.agreement(), 0.98) << map << ": " << total.summary();
   EXPECT_LT(double(total.unexplained + total.mip) / double(total.pixels), 0.005) << map << ": " << total.summary();
 }
 

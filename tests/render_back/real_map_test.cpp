@@ -44,7 +44,8 @@ TEST(RealMap, SurfaceBuilderMatchesClosedFormOnEveryLitFace) {
     uint64_t texels = 0, bad = 0, faces = 0;
     std::vector<uint16_t> grid;
     std::vector<uint8_t> out;
-    for (uint32_t fi = 0; fi < w.num_faces; ++fi) {
+    const uint32_t stride = std::string(map) == "start" ? 1 : 7;  // every face of start, a sample of the big map
+    for (uint32_t fi = 0; fi < w.num_faces; fi += stride) {
       const Face& f = w.faces[fi];
       if (f.flags & (kFaceSky | kFaceTurb)) continue;
       if (f.extents[0] <= 0 || f.extents[1] <= 0) continue;
