@@ -32,12 +32,15 @@ bool MemorySystem::init(void* block, size_t size, char* error, size_t error_size
   frame_[1].init("frame", at, p.frame_each); at += p.frame_each;
   scratch.init("scratch", at, p.scratch);
 
-  auto* slots = permanent.push_array<CacheSlot>(kCacheSlots, "cache slot table");
+  // One slot per KiB of cache (a lit surface is rarely smaller), between 1024 and kCacheSlots.
+  size_t want = p.cache / 1024;
+  uint32_t slot_count = uint32_t(want < 1024 ? 1024 : (want > kCacheSlots ? kCacheSlots : want));
+  auto* slots = permanent.push_array<CacheSlot>(slot_count, "cache slot table");
   if (!slots) {
     permanent.failure_message(error, error_size);
     return false;
   }
-  cache.init("cache", cache_base, p.cache, slots, kCacheSlots);
+  cache.init("cache", cache_base, p.cache, slots, slot_count);
   frame_index_ = 0;
   frame_number_ = 0;
   return true;

@@ -35,7 +35,7 @@ using ReportLine = void (*)(void* user, const char* line);
 
 class MemorySystem {
  public:
-  static constexpr uint32_t kCacheSlots = 1u << 16;
+  static constexpr uint32_t kCacheSlots = 1u << 16;  // most cache blocks at once
 
   // Carves the regions out of block. Returns false with a message when the block
   // is too small to hold even the minimum plan.

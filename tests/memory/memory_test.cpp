@@ -150,6 +150,14 @@ TEST(MemorySystem, RegionsTileTheBlockAndFramesFlip) {
   EXPECT_NE(text.find("cache slot table"), std::string::npos);
 }
 
+TEST(MemorySystem, TheDocumentedMinimumBlockWorks) {
+  std::vector<uint8_t> block(kMinBlockMiB * kMiB);
+  MemorySystem m;
+  char err[256];
+  ASSERT_TRUE(m.init(block.data(), block.size(), err, sizeof err)) << err;
+  EXPECT_TRUE(m.cache.alloc(4096, "surface", 1).valid());
+}
+
 TEST(MemorySystem, RejectsATinyBlock) {
   std::vector<uint8_t> block(1 * kMiB);
   MemorySystem m;
