@@ -85,6 +85,26 @@ std::vector<uint32_t> face_vertex_indices(const BspWorld& w, const Face& f) {
     const Edge& e = w.edges[se >= 0 ? se : -int64_t(se)];
     idx.push_back(se >= 0 ? e.v[0] : e.v[1]);
   }
+  // Zero-area spikes (real maps have them: a vertex that goes out and straight back) would
+  // make the edge-plane test reject the whole face: drop such vertices, and repeated ones.
+  bool changed = true;
+  while (changed && idx.size() > 3) {
+    changed = false;
+    for (size_t i = 0; i < idx.size() && idx.size() > 3; ++i) {
+      const dvec3 a = to_d(w.vertices[idx[(i + idx.size() - 1) % idx.size()]]);
+      const dvec3 b = to_d(w.vertices[idx[i]]);
+      const dvec3 c = to_d(w.vertices[idx[(i + 1) % idx.size()]]);
+      const dvec3 d1 = b - a, d2 = c - b;
+      const double l1 = glm::length(d1), l2 = glm::length(d2);
+      const bool repeated = l1 < 1e-9;
+      const bool spike = glm::length(glm::cross(d1, d2)) <= 1e-2 * l1 * l2 && glm::dot(d1, d2) < 0;  // turns back
+      if (repeated || spike) {
+        idx.erase(idx.begin() + long(i));
+        changed = true;
+        break;
+      }
+    }
+  }
   return idx;
 }
 
