@@ -7,8 +7,8 @@ namespace sb::mem {
 RegionPlan region_plan(size_t total) {
   size_t sixteenth = (total / 16) & ~size_t(63);
   RegionPlan p;
-  p.permanent = sixteenth;
-  p.level = sixteenth * 6;
+  p.permanent = sixteenth * 2;  // framebuffer + zbuffer up to 1920x1080, tables, pak directories
+  p.level = sixteenth * 5;
   p.cache = sixteenth * 5;
   p.frame_each = sixteenth;
   p.scratch = total - (p.permanent + p.level + p.cache + 2 * p.frame_each);

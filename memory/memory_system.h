@@ -28,7 +28,7 @@ constexpr size_t kMinBlockMiB = 16;
 struct RegionPlan {
   size_t permanent, level, cache, frame_each, scratch;
 };
-// Splits `total` bytes among the regions (sixteenths: 1 / 6 / 5 / 1+1 / 2).
+// Splits `total` bytes among the regions (sixteenths: 2 / 5 / 5 / 1+1 / 2).
 RegionPlan region_plan(size_t total);
 
 using ReportLine = void (*)(void* user, const char* line);

@@ -69,3 +69,22 @@ namespace sb::platform {
 int run_headless(const char* program, int argc, const char* const* argv);
 
 }  // namespace sb::platform
+
+namespace sb::platform {
+
+// Console lines typed into the terminal, read without blocking (poll + read on
+// stdin). next() returns the complete lines that arrived since the last call,
+// '\n'-separated, or nullptr; the text stays valid until the next call. Stops at
+// end of input. Used by the windowed platform: type "viewmap lq_e1m1" + Enter.
+class StdinLines {
+ public:
+  const char* next();
+
+ private:
+  char pending_[1024] = {};
+  size_t used_ = 0;
+  char ready_[1025] = {};
+  bool closed_ = false;
+};
+
+}  // namespace sb::platform

@@ -5,7 +5,8 @@
 //   render size (clamped to 320x200..1920x1080); the 8-bit frame is expanded through
 //   the palette into a streaming ARGB texture and scaled once at present (by an
 //   integer factor when the window holds one, else to fit, keeping the aspect).
-//   -frames N quits after N frames (tests); + commands work as in `starbow`.
+//   -frames N quits after N frames (tests); + commands work as in `starbow`, and
+//   console lines typed into the terminal run as they arrive.
 //
 // No display: when SDL cannot start video, or it picked the offscreen / dummy
 // driver by itself (no DISPLAY: SDL 2.26 falls back to offscreen), we say so and
@@ -149,6 +150,9 @@ int run_window(int argc, char** argv, const host::CommandLine& cl) {
   bool mouse_look = SDL_SetRelativeMouseMode(SDL_TRUE) == 0;
   if (!mouse_look) std::printf("starbow_sdl: relative mouse mode unavailable (%s); mouse look off\n", SDL_GetError());
 
+  std::printf("starbow_sdl: type console commands here (e.g. 'viewmap lq_e1m1', 'help'); Esc in the window quits\n");
+  std::fflush(stdout);
+  platform::StdinLines typed;
   double last = platform::now_seconds();
   double title_at = last, render_ms_sum = 0.0;
   int title_frames = 0;
@@ -173,6 +177,7 @@ int run_window(int argc, char** argv, const host::CommandLine& cl) {
     SDL_GetRendererOutputSize(p.renderer, &dw, &dh);  // resize: render at the drawable size
     in.width = clamp_int(dw, host::kMinWidth, host::kMaxWidth);
     in.height = clamp_int(dh, host::kMinHeight, host::kMaxHeight);
+    in.commands = typed.next();
 
     double now = platform::now_seconds();
     double t0 = now;
