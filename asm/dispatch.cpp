@@ -1,0 +1,110 @@
+// asm/dispatch.cpp: choosing the variant of each kernel once, and the scalar override.
+//
+// The tuned table takes, per kernel, the variant that measured fastest on the machines we
+// have (bench/asm_bench.cpp prints the figures; see asm/README.md or the issue notes) among
+// those the CPU supports. x86-64: CPU detection with __builtin_cpu_supports (a compiler
+// builtin: no OS header). ARM: NEON is a build-time property (aarch64 always; armv7 when
+// the build enables it), so the choice is made by the compiler.
+#include <atomic>
+#include <cstdio>
+
+#include "asm/variants.h"
+
+namespace sb::simd {
+namespace detail {
+
+const Kernels kScalar = {"scalar", surface_span_scalar, surface_block_scalar, z_span_scalar, expand_palette_scalar};
+
+namespace {
+
+#if defined(SB_SIMD_X86)
+bool cpu_has_avx2() {
+  __builtin_cpu_init();
+  return __builtin_cpu_supports("avx2") != 0;
+}
+#endif
+
+struct Choice {
+  Kernels tuned;
+  char line[160];
+};
+
+Choice make_choice() {
+  Choice c{kScalar, {}};
+  c.tuned.name = "tuned";
+#if defined(SB_SIMD_X86)
+  c.tuned.surface_span = kSse2.surface_span;
+  c.tuned.surface_block = kSse2.surface_block;
+  c.tuned.z_span = kSse2.z_span;
+  c.tuned.expand_palette = kSse2.expand_palette;
+  const char *span = "sse2", *block = "sse2", *z = "sse2", *pal = "sse2";
+  if (cpu_has_avx2()) {
+    c.tuned.surface_span = kAvx2.surface_span;
+    c.tuned.surface_block = kAvx2.surface_block;
+    c.tuned.z_span = kAvx2.z_span;
+    span = block = z = "avx2";
+  }
+#elif defined(SB_SIMD_HAVE_NEON)
+  c.tuned.surface_span = kNeon.surface_span;
+  c.tuned.surface_block = kNeon.surface_block;
+  c.tuned.z_span = kNeon.z_span;
+  c.tuned.expand_palette = kNeon.expand_palette;
+  const char *span = "neon", *block = "neon", *z = "neon", *pal = "neon";
+#else
+  const char *span = "scalar", *block = "scalar", *z = "scalar", *pal = "scalar";
+#endif
+  std::snprintf(c.line, sizeof c.line, "surface_span=%s surface_block=%s z_span=%s expand_palette=%s", span, block,
+                z, pal);
+  return c;
+}
+
+const Choice& choice() {
+  static const Choice c = make_choice();  // once, at first use
+  return c;
+}
+
+std::atomic<bool> g_forced{false};
+
+}  // namespace
+}  // namespace detail
+
+const Kernels& active() {
+  return detail::g_forced.load(std::memory_order_relaxed) ? detail::kScalar : detail::choice().tuned;
+}
+
+const Kernels& scalar_kernels() { return detail::kScalar; }
+
+void force_scalar(bool on) { detail::g_forced.store(on, std::memory_order_relaxed); }
+bool scalar_forced() { return detail::g_forced.load(std::memory_order_relaxed); }
+
+int variant_count() {
+  int n = 2;  // scalar, tuned
+#if defined(SB_SIMD_X86)
+  n += 2;
+#endif
+#if defined(SB_SIMD_HAVE_NEON)
+  n += 1;
+#endif
+  return n;
+}
+
+Variant variant(int i) {
+  if (i == 0) return {&detail::kScalar, true};
+#if defined(SB_SIMD_X86)
+  if (i == 1) return {&detail::kSse2, true};
+  if (i == 2) return {&detail::kAvx2, detail::cpu_has_avx2()};
+  i -= 2;
+#endif
+#if defined(SB_SIMD_HAVE_NEON)
+  if (i == 1) return {&detail::kNeon, true};
+  i -= 1;
+#endif
+  if (i == 1) return {&detail::choice().tuned, true};
+  return {nullptr, false};
+}
+
+const char* describe_active() {
+  return detail::g_forced.load(std::memory_order_relaxed) ? "all scalar (forced)" : detail::choice().line;
+}
+
+}  // namespace sb::simd

@@ -1,0 +1,54 @@
+// asm/kernels.h: SIMD kernels beside their scalar references, and the dispatch that picks
+// one variant per kernel once, at the first call of active() (CPU detection on x86-64 with
+// __builtin_cpu_supports; NEON is chosen at compile time where the target has it).
+//
+//   kernel          contract               variants (when built and the CPU has them)
+//   surface_span    asm/surface_span.h     scalar, sse2, avx2 (gather), neon
+//   surface_block   asm/surface_block.h    scalar, sse2, avx2 (gather), neon
+//   z_span          asm/z_span.h           scalar, sse2, avx2, neon
+//   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gather), neon
+//
+// Every variant of a kernel writes exactly the bytes its scalar reference writes
+// (tests/asm checks it on random and edge inputs). Not here yet: the alias-model span
+// drawer and the single-pass texture + light span drawer (issue 4 lists them for later).
+//
+// The engine calls through active(); force_scalar(true) makes active() the scalar table
+// (a host console variable can call it so benchmarks compare). The tables are plain data,
+// valid for the program's lifetime; nothing here allocates or includes an OS header.
+#pragma once
+#include "asm/palette_expand.h"
+#include "asm/surface_block.h"
+#include "asm/surface_span.h"
+#include "asm/z_span.h"
+
+namespace sb::simd {
+
+struct Kernels {
+  const char* name;  // "scalar", "sse2", "avx2", "neon", or "tuned" for the chosen mix
+  SurfaceSpanFn surface_span;
+  SurfaceBlockFn surface_block;
+  ZSpanFn z_span;
+  ExpandPaletteFn expand_palette;
+};
+
+// The table the engine uses: the tuned mix for this CPU, or the scalar one when forced.
+const Kernels& active();
+const Kernels& scalar_kernels();
+
+// Force the scalar references (true) or return to the tuned choice (false).
+void force_scalar(bool on);
+bool scalar_forced();
+
+// Every variant table compiled into this build, scalar first, then the tuned mix
+// ("tuned", always supported), for tests and benchmarks. supported = the CPU can run it.
+struct Variant {
+  const Kernels* kernels;
+  bool supported;
+};
+int variant_count();
+Variant variant(int i);
+
+// One line naming the chosen variant of each kernel (logs, benchmark headers).
+const char* describe_active();
+
+}  // namespace sb::simd

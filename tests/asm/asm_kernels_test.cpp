@@ -1,0 +1,333 @@
+// Differential tests of every asm/ kernel variant the CPU supports against the scalar
+// reference, on random and edge inputs: span lengths 0, 1, 15, 16, 17 and 1920, texture
+// wrap (negative and large offsets, non-power-of-two sizes), extreme gradients and light,
+// every mip level. Each test prints which variants ran and which it skipped (CPU lacks).
+// Buffers are exactly sized (AddressSanitizer sees scalar over-reads) and destinations carry
+// guard bytes (no variant may write outside its output).
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "asm/kernels.h"
+
+namespace {
+
+using sb::simd::Kernels;
+
+// The supported non-scalar variants; prints one line per variant (ran or skipped).
+std::vector<const Kernels*> tuned_variants(const char* kernel) {
+  std::vector<const Kernels*> out;
+  for (int i = 1; i < sb::simd::variant_count(); ++i) {
+    const sb::simd::Variant v = sb::simd::variant(i);
+    if (!v.kernels) continue;
+    if (v.supported) {
+      std::printf("[ asm      ] %s: variant %s runs\n", kernel, v.kernels->name);
+      out.push_back(v.kernels);
+    } else {
+      std::printf("[ asm      ] %s: variant %s SKIPPED (this CPU lacks it)\n", kernel, v.kernels->name);
+    }
+  }
+  return out;
+}
+
+constexpr int kGuard = 64;
+constexpr uint8_t kGuardByte = 0xa5;
+
+// ---------------------------------------------------------------- surface span
+
+struct SpanCase {
+  int n, width, height;
+  int32_t u, v, du, dv, ddu, ddv;
+};
+
+// All u_k, v_k of the case within the surface (the kernel's contract)?
+bool span_valid(const SpanCase& c) {
+  int64_t u = c.u, v = c.v, du = c.du, dv = c.dv;
+  const int64_t umax = (int64_t(c.width) << 16) - 1, vmax = (int64_t(c.height) << 16) - 1;
+  for (int k = 0; k < c.n; ++k) {
+    if (u < 0 || u > umax || v < 0 || v > vmax) return false;
+    u += du;
+    v += dv;
+    du += c.ddu;
+    dv += c.ddv;
+  }
+  return true;
+}
+
+// Steps from a to b over n - 1 pixels, with a random second-order term when it stays valid
+// (otherwise linear, which always is).
+void make_steps(std::mt19937& rng, int n, int32_t a, int32_t b, int32_t* d, int32_t* dd, bool curve) {
+  const int steps = n > 1 ? n - 1 : 1;
+  *d = int32_t((int64_t(b) - int64_t(a)) / steps);
+  *dd = 0;
+  if (!curve || n < 3) return;
+  const int64_t delta = int64_t(b) - int64_t(a);
+  std::uniform_real_distribution<double> bend(-1.0, 1.0);
+  const double c = bend(rng) * 2.0 / steps;
+  const int64_t dd2 = int64_t(-2.0 * double(delta) / steps * c / steps);
+  const int64_t d0 = (delta - dd2 * steps * (steps - 1) / 2) / steps;
+  if (d0 > INT32_MAX || d0 < INT32_MIN || dd2 > INT32_MAX || dd2 < INT32_MIN) return;
+  *d = int32_t(d0);
+  *dd = int32_t(dd2);
+}
+
+SpanCase random_span(std::mt19937& rng, int n, int width, int height, bool curve) {
+  std::uniform_int_distribution<int64_t> ur(0, (int64_t(width) << 16) - 1), vr(0, (int64_t(height) << 16) - 1);
+  SpanCase c{n, width, height, 0, 0, 0, 0, 0, 0};
+  for (int attempt = 0; attempt < 8; ++attempt) {
+    c.u = int32_t(ur(rng));
+    c.v = int32_t(vr(rng));
+    const int32_t u1 = int32_t(ur(rng)), v1 = int32_t(vr(rng));
+    make_steps(rng, n, c.u, u1, &c.du, &c.ddu, curve);
+    make_steps(rng, n, c.v, v1, &c.dv, &c.ddv, curve);
+    if (span_valid(c)) return c;
+    make_steps(rng, n, c.u, u1, &c.du, &c.ddu, false);
+    make_steps(rng, n, c.v, v1, &c.dv, &c.ddv, false);
+    if (span_valid(c)) return c;
+  }
+  return SpanCase{n, width, height, 0, 0, 0, 0, 0, 0};
+}
+
+// Runs `c` through the reference and the variant, comparing the n bytes and the guards.
+void check_span(const Kernels& k, const SpanCase& c, const std::vector<uint8_t>& texels, const char* what) {
+  std::vector<uint8_t> want(size_t(c.n) + 2 * kGuard, kGuardByte), got(want);
+  sb::simd::surface_span_scalar(want.data() + kGuard, c.n, texels.data(), c.width, c.height, c.u, c.v, c.du, c.dv,
+                                c.ddu, c.ddv);
+  k.surface_span(got.data() + kGuard, c.n, texels.data(), c.width, c.height, c.u, c.v, c.du, c.dv, c.ddu, c.ddv);
+  ASSERT_EQ(want, got) << k.name << " " << what << ": n " << c.n << " surface " << c.width << "x" << c.height
+                       << " u " << c.u << " v " << c.v << " du " << c.du << " dv " << c.dv << " ddu " << c.ddu
+                       << " ddv " << c.ddv;
+}
+
+std::vector<uint8_t> random_bytes(std::mt19937& rng, size_t n) {
+  std::vector<uint8_t> b(n);
+  for (auto& x : b) x = uint8_t(rng());
+  return b;
+}
+
+TEST(AsmSurfaceSpan, EveryVariantMatchesScalar) {
+  std::mt19937 rng(1234);
+  const int lengths[] = {0, 1, 2, 3, 7, 8, 9, 15, 16, 17, 31, 32, 33, 320, 1919, 1920};
+  struct Size {
+    int w, h;
+  };
+  const Size sizes[] = {{1, 1}, {2, 2}, {1, 4}, {4, 1}, {3, 7}, {16, 16}, {2, 64}, {64, 2}, {33, 17}, {128, 64},
+                        {512, 512}, {4096, 8}, {8, 4096}};
+  int cases = 0, curved = 0;
+  for (const Kernels* k : tuned_variants("surface_span")) {
+    for (const Size& s : sizes) {
+      const std::vector<uint8_t> texels = random_bytes(rng, size_t(s.w) * size_t(s.h));
+      for (int n : lengths) {
+        for (int rep = 0; rep < 6; ++rep) {
+          const SpanCase c = random_span(rng, n, s.w, s.h, rep % 2 == 1);
+          check_span(*k, c, texels, "random");
+          ++cases;
+          curved += c.ddu != 0 || c.ddv != 0;
+        }
+        // Extreme gradients: corner to corner in one step, the whole surface per pixel,
+        // standing still, and the last texel (the gathers' clamped read).
+        const int32_t umax = (s.w << 16) - 1, vmax = (s.h << 16) - 1;
+        SpanCase c{n, s.w, s.h, 0, 0, 0, 0, 0, 0};
+        make_steps(rng, n, 0, umax, &c.du, &c.ddu, false);
+        make_steps(rng, n, vmax, 0, &c.dv, &c.ddv, false);
+        c.v = vmax;
+        check_span(*k, c, texels, "corner to corner");
+        check_span(*k, SpanCase{n, s.w, s.h, umax, vmax, 0, 0, 0, 0}, texels, "last texel");
+        check_span(*k, SpanCase{n, s.w, s.h, umax, 0, n > 1 ? -umax / (n - 1) : 0, 0, 0, 0}, texels, "backwards");
+        // A strongly bending second-order walk: steps shrink to zero over the span.
+        if (n > 2) {
+          SpanCase b{n, s.w, s.h, 0, 0, 0, 0, 0, 0};
+          const int64_t steps = n - 1;
+          const int64_t dd = -int64_t(umax) * 2 / (steps * steps);
+          b.ddu = int32_t(dd);
+          b.du = int32_t(-dd * (steps - 1));
+          if (span_valid(b)) {
+            check_span(*k, b, texels, "bending");
+            ++curved;
+          }
+        }
+        cases += 4;
+      }
+    }
+  }
+  std::printf("[ asm      ] surface_span: %d cases compared (%d with a second-order term)\n", cases, curved);
+  EXPECT_GT(curved, cases / 8);
+}
+
+// ---------------------------------------------------------------- surface block builder
+
+struct BlockCase {
+  int mip, width, height, tw, th, soff, toff, grid_width;
+};
+
+// The closed form of asm/surface_block.h, independent of both implementations.
+uint8_t closed_form(const BlockCase& c, const std::vector<uint16_t>& grid, const std::vector<uint8_t>& tex,
+                    const std::vector<uint8_t>& cm, int x, int y) {
+  const int b = 16 >> c.mip, s = 2 * (4 - c.mip);
+  const int gx = x / b, fx = x % b, gy = y / b, fy = y % b;
+  auto g = [&](int dx, int dy) { return int64_t(grid[size_t((gy + dy) * c.grid_width + gx + dx)]); };
+  const int64_t num = (g(0, 0) * (b - fx) + g(1, 0) * fx) * (b - fy) + (g(0, 1) * (b - fx) + g(1, 1) * fx) * fy;
+  auto pmod = [](int i, int n) { return ((i % n) + n) % n; };
+  const uint8_t t = tex[size_t(pmod(y + c.toff, c.th) * c.tw + pmod(x + c.soff, c.tw))];
+  return cm[size_t(((num >> s) & 0xff00) + t)];
+}
+
+enum class Light { kRandom, kBrightest, kDarkest, kZero, kAlternating, kSmooth };
+
+void check_block(const Kernels* k, std::mt19937& rng, const BlockCase& c, Light light, bool closed) {
+  const int b = 16 >> c.mip;
+  const int gh = c.height / b + 1;
+  std::vector<uint16_t> grid(size_t(c.grid_width) * size_t(gh));
+  for (size_t i = 0; i < grid.size(); ++i) {
+    switch (light) {
+      case Light::kRandom: grid[i] = uint16_t(rng() % 0x4000); break;
+      case Light::kBrightest: grid[i] = 0; break;
+      case Light::kDarkest: grid[i] = 0x3fff; break;
+      case Light::kZero: grid[i] = 64; break;
+      case Light::kAlternating: grid[i] = (i % 2) ? 0x3fff : 0; break;
+      case Light::kSmooth: grid[i] = uint16_t(64 + (i * 37) % 0x3f00); break;
+    }
+  }
+  const std::vector<uint8_t> tex = random_bytes(rng, size_t(c.tw) * size_t(c.th));
+  const std::vector<uint8_t> cm = random_bytes(rng, 64 * 256);
+  const size_t size = size_t(c.width) * size_t(c.height);
+  std::vector<uint8_t> want(size + 2 * kGuard, kGuardByte);
+  sb::simd::surface_block_scalar(grid.data(), c.grid_width, tex.data(), c.tw, c.th, c.mip, c.soff, c.toff, c.width,
+                                 c.height, cm.data(), want.data() + kGuard);
+  if (closed) {
+    for (int y = 0; y < c.height; ++y)
+      for (int x = 0; x < c.width; ++x)
+        ASSERT_EQ(want[kGuard + size_t(y) * c.width + x], closed_form(c, grid, tex, cm, x, y))
+            << "scalar reference vs closed form, mip " << c.mip << " at " << x << "," << y;
+  }
+  if (!k) return;
+  std::vector<uint8_t> got(size + 2 * kGuard, kGuardByte);
+  k->surface_block(grid.data(), c.grid_width, tex.data(), c.tw, c.th, c.mip, c.soff, c.toff, c.width, c.height,
+                   cm.data(), got.data() + kGuard);
+  ASSERT_EQ(want, got) << k->name << ": mip " << c.mip << " surface " << c.width << "x" << c.height << " texture "
+                       << c.tw << "x" << c.th << " offsets " << c.soff << "," << c.toff << " light "
+                       << int(light);
+}
+
+TEST(AsmSurfaceBlock, ScalarReferenceMatchesClosedForm) {
+  std::mt19937 rng(99);
+  for (int mip = 0; mip < 4; ++mip) {
+    const int b = 16 >> mip;
+    for (Light light : {Light::kRandom, Light::kDarkest, Light::kAlternating}) {
+      const BlockCase c{mip, 96 >> mip, 48 >> mip, 64 >> mip, 32 >> mip, -3 * b, 5 * b, 96 / 16 + 3};
+      check_block(nullptr, rng, c, light, true);
+    }
+  }
+}
+
+TEST(AsmSurfaceBlock, EveryVariantMatchesScalarEveryMip) {
+  std::mt19937 rng(4321);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int mip = 0; mip < 4; ++mip) {
+      const int b = 16 >> mip;
+      // Face extents (mip 0 texels, multiples of 16) and texture sizes (multiples of 16).
+      const int extents[] = {16, 32, 48, 64, 80, 128, 240, 256, 272, 1024, 4096};
+      const int texsizes[] = {16, 32, 48, 64, 80, 128, 256};
+      for (int ew : extents) {
+        for (int rep = 0; rep < 4; ++rep) {
+          const int eh = extents[rng() % 7];
+          const int tw = texsizes[rng() % 7], th = texsizes[rng() % 7];
+          // texture_mins: multiples of 16, negative and positive, beyond the texture size.
+          const int smin = (int(rng() % 129) - 64) * 16, tmin = (int(rng() % 129) - 64) * 16;
+          const BlockCase c{mip, ew >> mip, eh >> mip, tw >> mip, th >> mip, smin >> mip, tmin >> mip,
+                            ew / 16 + 1 + int(rng() % 3)};
+          const Light light = rep == 0 ? Light::kRandom : Light(rng() % 6);
+          check_block(k, rng, c, light, false);
+          ++cases;
+        }
+      }
+      // Edge shapes: one block; one block row; one block column; texture one block wide.
+      check_block(k, rng, BlockCase{mip, b, b, b, b, 0, 0, 2}, Light::kRandom, false);
+      check_block(k, rng, BlockCase{mip, 4096 >> mip, b, 16 >> mip, 16 >> mip, -b, 0, 257}, Light::kRandom, false);
+      check_block(k, rng, BlockCase{mip, b, 4096 >> mip, 256 >> mip, 16 >> mip, 0, -7 * b, 2}, Light::kRandom, false);
+      check_block(k, rng, BlockCase{mip, 48 >> mip, 48 >> mip, b, b, 3 * b, 2 * b, 4}, Light::kAlternating, false);
+      // Wider than the tuned variants' block column limit: they fall back to the reference.
+      check_block(k, rng, BlockCase{mip, 4352 >> mip, b, 64 >> mip, 64 >> mip, 0, 0, 273}, Light::kRandom, false);
+      cases += 5;
+    }
+  }
+  std::printf("[ asm      ] surface_block: %d cases compared\n", cases);
+}
+
+// ---------------------------------------------------------------- z span
+
+TEST(AsmZSpan, EveryVariantMatchesScalar) {
+  std::mt19937 rng(77);
+  const int lengths[] = {0, 1, 2, 7, 8, 9, 15, 16, 17, 31, 33, 320, 1919, 1920};
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("z_span")) {
+    for (int n : lengths) {
+      for (int rep = 0; rep < 24; ++rep) {
+        uint32_t zi = rng(), last = rng();
+        if (rep == 0) zi = 0, last = 0xffffffffu;  // the whole range, rising
+        if (rep == 1) zi = 0xffffffffu, last = 0;  // falling
+        if (rep == 2) last = zi;                   // flat
+        if (rep == 3) zi = 0x7fff8000u, last = 0x80008000u;  // across the sign bit
+        const uint32_t step = n > 1 ? uint32_t((int64_t(last) - int64_t(zi)) / (n - 1)) : rng();
+        std::vector<uint16_t> want(size_t(n) + 2 * kGuard, 0xa5a5), got(want);
+        sb::simd::z_span_scalar(want.data() + kGuard, n, zi, step);
+        k->z_span(got.data() + kGuard, n, zi, step);
+        ASSERT_EQ(want, got) << k->name << ": n " << n << " zi " << zi << " step " << step;
+        ++cases;
+      }
+    }
+  }
+  std::printf("[ asm      ] z_span: %d cases compared\n", cases);
+}
+
+// ---------------------------------------------------------------- palette expansion
+
+TEST(AsmExpandPalette, EveryVariantMatchesScalarEveryScale) {
+  std::mt19937 rng(5);
+  uint32_t palette[256];
+  for (auto& p : palette) p = rng();
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("expand_palette")) {
+    for (int scale : {1, 2, 3, 4, 5, 7, 8, 9, 16}) {
+      for (int width : {0, 1, 3, 4, 7, 8, 9, 15, 16, 17, 320, 333}) {
+        const int height = 1 + int(rng() % 3);
+        const int src_stride = width + int(rng() % 5);
+        const std::vector<uint8_t> src = random_bytes(rng, size_t(src_stride) * size_t(height) + 1);
+        const ptrdiff_t dst_stride = ptrdiff_t(width) * scale + ptrdiff_t(rng() % 9);
+        const size_t dst_size = size_t(dst_stride) * size_t(height) * size_t(scale);
+        std::vector<uint32_t> want(dst_size + 2 * kGuard, 0xdeadbeefu), got(want);
+        sb::simd::expand_palette_scalar(src.data(), src_stride, width, height, palette, want.data() + kGuard,
+                                        dst_stride, scale);
+        k->expand_palette(src.data(), src_stride, width, height, palette, got.data() + kGuard, dst_stride, scale);
+        ASSERT_EQ(want, got) << k->name << ": width " << width << " height " << height << " scale " << scale;
+        ++cases;
+      }
+    }
+  }
+  std::printf("[ asm      ] expand_palette: %d cases compared\n", cases);
+}
+
+// ---------------------------------------------------------------- dispatch
+
+TEST(AsmDispatch, ForceScalarSwitchesTheActiveTable) {
+  std::printf("[ asm      ] tuned choice: %s\n", sb::simd::describe_active());
+  const bool before = sb::simd::scalar_forced();
+  sb::simd::force_scalar(true);
+  EXPECT_EQ(&sb::simd::active(), &sb::simd::scalar_kernels());
+  EXPECT_EQ(sb::simd::active().surface_span, &sb::simd::surface_span_scalar);
+  sb::simd::force_scalar(false);
+  EXPECT_STREQ(sb::simd::active().name, "tuned");
+  EXPECT_NE(sb::simd::active().surface_span, nullptr);
+  EXPECT_NE(sb::simd::active().surface_block, nullptr);
+  EXPECT_NE(sb::simd::active().z_span, nullptr);
+  EXPECT_NE(sb::simd::active().expand_palette, nullptr);
+  sb::simd::force_scalar(before);
+}
+
+}  // namespace

@@ -1,0 +1,248 @@
+// tools/bsp/brushes.cpp: see brushes.h.
+#include "tools/bsp/brushes.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <set>
+
+namespace sb::tools::bsp {
+
+int contents_rank(int c) {
+  switch (c) {
+    case kContentsSolid: case kContentsSky: case kContentsDetail: case kContentsClip: return 4;
+    case kContentsLava: return 3;
+    case kContentsSlime: return 2;
+    case kContentsWater: return 1;
+    default: return 0;
+  }
+}
+
+int output_contents(int c) {
+  if (c == kContentsDetail || c == kContentsClip) return kContentsSolid;
+  return c;
+}
+
+bool is_liquid(int c) { return c == kContentsWater || c == kContentsSlime || c == kContentsLava; }
+
+namespace {
+
+std::string where(const MapFile& map, int line) { return map.path + ":" + std::to_string(line); }
+
+double brush_volume(const Brush& b, const PlaneSet& planes) {
+  if (b.sides.empty() || b.sides[0].w.empty()) return 0;
+  Vec3 ref = b.sides[0].w[0];
+  double v = 0;
+  for (const BrushSide& s : b.sides) {
+    if (s.w.size() < 3) continue;
+    double h = -planes[s.plane].distance(ref);  // ref is behind every side
+    v += winding_area(s.w) * h / 3.0;
+  }
+  return v;
+}
+
+}  // namespace
+
+bool make_brush_windings(Brush* b, const PlaneSet& planes) {
+  std::vector<BrushSide> kept;
+  b->bounds = Bounds();
+  for (size_t i = 0; i < b->sides.size(); ++i) {
+    BrushSide s = b->sides[i];
+    Winding w = base_winding(planes[s.plane]);
+    for (size_t j = 0; j < b->sides.size() && !w.empty(); ++j) {
+      if (j == i) continue;
+      int pj = b->sides[j].plane;
+      if (pj == s.plane) continue;
+      if (pj == (s.plane ^ 1)) { w.clear(); break; }
+      w = clip_winding(w, planes[pj], false, 0.001);
+    }
+    if (w.size() < 3) {
+      if (!s.bevel) continue;
+      s.w.clear();
+      kept.push_back(s);
+      continue;
+    }
+    s.w = std::move(w);
+    for (const Vec3& p : s.w) b->bounds.add(p);
+    kept.push_back(std::move(s));
+  }
+  b->sides = std::move(kept);
+  int real = 0;
+  for (const BrushSide& s : b->sides)
+    if (!s.w.empty()) ++real;
+  if (real < 4 || b->bounds.empty()) return false;
+  for (int i = 0; i < 3; ++i)
+    if (b->bounds.mins[i] < -kWorldExtent * 0.5 || b->bounds.maxs[i] > kWorldExtent * 0.5) return false;
+  return brush_volume(*b, planes) > 0.1;
+}
+
+bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, PlaneSet& planes, Brush* out) {
+  *out = Brush();
+  out->contents = kContentsSolid;
+  out->line = b.line;
+  std::set<int> have;
+  for (const BrushSide& s : b.sides) {
+    if (s.w.empty()) continue;
+    out->sides.push_back({s.plane, -1, {}, false, false});
+    have.insert(s.plane);
+  }
+  // Axial bevels at the bounds.
+  for (int axis = 0; axis < 3; ++axis)
+    for (int dir = 0; dir < 2; ++dir) {
+      Vec3 n(0.0);
+      n[axis] = dir == 0 ? 1.0 : -1.0;
+      double d = dir == 0 ? b.bounds.maxs[axis] : -b.bounds.mins[axis];
+      int p = planes.find_or_add(n, d);
+      if (have.insert(p).second) out->sides.push_back({p, -1, {}, false, true});
+    }
+  // Edge bevels: planes through an edge, parallel to an axis, with the whole brush behind.
+  for (const BrushSide& s : b.sides) {
+    const Winding& w = s.w;
+    for (size_t i = 0; i < w.size(); ++i) {
+      Vec3 a = w[i], e = w[(i + 1) % w.size()] - w[i];
+      double len = glm::length(e);
+      if (len < 0.5) continue;
+      e /= len;
+      for (int axis = 0; axis < 3; ++axis) {
+        Vec3 ax(0.0);
+        ax[axis] = 1.0;
+        Vec3 n = glm::cross(e, ax);
+        double nl = glm::length(n);
+        if (nl < 0.1) continue;
+        n /= nl;
+        for (int sign = 0; sign < 2; ++sign) {
+          Vec3 nn = sign ? -n : n;
+          if (std::fabs(nn.x) > 1 - 1e-6 || std::fabs(nn.y) > 1 - 1e-6 || std::fabs(nn.z) > 1 - 1e-6) continue;
+          double d = glm::dot(nn, a);
+          bool behind = true;
+          for (const BrushSide& t : b.sides) {
+            for (const Vec3& v : t.w)
+              if (glm::dot(nn, v) - d > 0.1) { behind = false; break; }
+            if (!behind) break;
+          }
+          if (!behind) continue;
+          int p = planes.find_or_add(nn, d);
+          if (have.insert(p).second) out->sides.push_back({p, -1, {}, false, true});
+        }
+      }
+    }
+  }
+  // Push every plane out by the box corner it faces.
+  for (BrushSide& s : out->sides) {
+    const Plane& p = planes[s.plane];
+    Vec3 corner;
+    for (int i = 0; i < 3; ++i) corner[i] = p.normal[i] < 0 ? hull_maxs[i] : hull_mins[i];
+    s.plane = planes.find_or_add(p.normal, p.dist - glm::dot(p.normal, corner));
+  }
+  return make_brush_windings(out, planes);
+}
+
+void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vector<ModelSource>* models,
+                  std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings) {
+  models->clear();
+  models->push_back(ModelSource{0, {}});
+  keep_entity->assign(map.entities.size(), true);
+  // TrenchBroom layers marked "omit from export": their ids.
+  std::set<std::string> omitted_layers;
+  for (const MapEntity& e : map.entities)
+    if (e.classname() == "func_group" && e.get("_tb_type") == "_tb_layer" &&
+        e.get("_tb_layer_omit_from_export") == "1")
+      omitted_layers.insert(std::string(e.get("_tb_id")));
+
+  for (size_t ei = 0; ei < map.entities.size(); ++ei) {
+    MapEntity& e = map.entities[ei];
+    std::string_view cls = e.classname();
+    std::string_view layer = e.get("_tb_layer");
+    bool omitted = (!layer.empty() && omitted_layers.count(std::string(layer))) ||
+                   (cls == "func_group" && omitted_layers.count(std::string(e.get("_tb_id"))) &&
+                    e.get("_tb_type") == "_tb_layer");
+    if (omitted) {
+      (*keep_entity)[ei] = false;
+      continue;
+    }
+    bool world = ei == 0 || cls == "func_group" || cls == "func_detail" || cls == "func_detail_wall" ||
+                 cls == "func_detail_illusionary";
+    bool detail = cls == "func_detail" || cls == "func_detail_wall";
+    if (ei != 0 && world) (*keep_entity)[ei] = false;
+    if (e.brushes.empty()) continue;
+    ModelSource* model = &(*models)[0];
+    if (!world) {
+      models->push_back(ModelSource{int(ei), {}});
+      model = &models->back();
+      e.set("model", "*" + std::to_string(models->size() - 1));
+    }
+    for (const MapBrush& mb : e.brushes) {
+      stats->map_brushes++;
+      Brush b;
+      b.line = mb.line;
+      bool bad = false, hint = false, origin = false, clip = false;
+      int liquid = 0;
+      bool sky = false;
+      std::set<int> seen;
+      struct PendingTex { std::string texture; double vecs[2][4]; };
+      std::vector<PendingTex> pending;  // texinfo is made only for brushes that are kept
+      for (const MapFace& f : mb.faces) {
+        Vec3 n;
+        double d;
+        if (!plane_from_points(f.points[0], f.points[1], f.points[2], &n, &d)) {
+          warnings->push_back(where(map, f.line) + ": brush face has no plane (collinear or invalid points): brush at line " +
+                              std::to_string(mb.line) + " skipped");
+          bad = true;
+          break;
+        }
+        int p = planes.find_or_add(n, d);
+        if (!seen.insert(p).second) continue;  // duplicate plane
+        TexClass tc = classify_texture(f.texture);
+        if (tc == TexClass::Hint) hint = true;
+        if (tc == TexClass::Origin) origin = true;
+        if (tc == TexClass::Clip) clip = true;
+        if (tc == TexClass::Sky) sky = true;
+        if (tc == TexClass::Water && !liquid) liquid = kContentsWater;
+        if (tc == TexClass::Slime && !liquid) liquid = kContentsSlime;
+        if (tc == TexClass::Lava && !liquid) liquid = kContentsLava;
+        BrushSide s;
+        s.plane = p;
+        s.nodraw = tc == TexClass::Skip || tc == TexClass::Clip || tc == TexClass::Hint ||
+                   (f.texture.size() > 4 && classify_texture(f.texture) != TexClass::Normal &&
+                    f.texture.find("skip") != std::string::npos);
+        double vecs[2][4];
+        face_texture_vecs(f, planes[p].normal, vecs);
+        bool finite = true;
+        for (auto& row : vecs)
+          for (double v : row) finite = finite && std::isfinite(v);
+        if (!finite) {
+          warnings->push_back(where(map, f.line) + ": texture axes are not finite: brush at line " +
+                              std::to_string(mb.line) + " skipped");
+          bad = true;
+          break;
+        }
+        s.texinfo = -1;
+        b.sides.push_back(std::move(s));
+        pending.push_back({f.texture, {}});
+        std::memcpy(pending.back().vecs, vecs, sizeof vecs);
+      }
+      if (bad) { stats->skipped++; continue; }
+      if (hint || origin) { stats->hint_dropped++; continue; }
+      for (size_t i = 0; i < b.sides.size(); ++i)
+        if (!b.sides[i].nodraw) b.sides[i].plane_tex = int(i);
+      b.contents = clip ? kContentsClip : sky ? kContentsSky : liquid ? liquid : detail ? kContentsDetail : kContentsSolid;
+      if (!make_brush_windings(&b, planes)) {
+        warnings->push_back(where(map, mb.line) + ": brush has no volume: skipped");
+        stats->skipped++;
+        continue;
+      }
+      for (BrushSide& side : b.sides)
+        if (side.plane_tex >= 0) {
+          const PendingTex& pt = pending[size_t(side.plane_tex)];
+          side.texinfo = textures.texinfo_index(pt.vecs, pt.texture);
+        }
+      if (b.contents == kContentsClip) stats->clip++;
+      if (b.contents == kContentsDetail) stats->detail++;
+      if (is_liquid(b.contents)) stats->liquid++;
+      if (b.contents == kContentsSky) stats->sky++;
+      model->brushes.push_back(std::move(b));
+    }
+  }
+}
+
+}  // namespace sb::tools::bsp

@@ -1,0 +1,79 @@
+// tools/bsp/brushes.h: .map entities to convex brushes, grouped by output model.
+//
+// Contents (internal values; the output uses Quake's -1..-6):
+//   kContentsEmpty -1, Solid -2, Water -3, Slime -4, Lava -5, Sky -6 as Quake;
+//   kContentsDetail: func_detail brushes: solid in the output, chosen as splitters only after
+//   every structural face; kContentsClip: "clip" brushes, solid in clip hulls 1 and 2 only.
+// A brush's contents come from its textures: sky* -> sky, '*' names -> water/slime/lava by
+// name, clip -> clip; hint and origin brushes are dropped (noted as unsupported); a face
+// textured skip/nodraw is not drawn (its brush still bounds space).
+// Models: model 0 is worldspawn plus func_group / TrenchBroom layers / func_detail; every
+// other entity with brushes becomes the next submodel (its entity gets "model" "*N").
+// A brush with a bad plane (collinear points, NaN) or no volume is skipped with a warning
+// naming the file and line.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "tools/bsp/geom.h"
+#include "tools/bsp/map_file.h"
+#include "tools/bsp/textures.h"
+
+namespace sb::tools::bsp {
+
+constexpr int kContentsEmpty = -1;
+constexpr int kContentsSolid = -2;
+constexpr int kContentsWater = -3;
+constexpr int kContentsSlime = -4;
+constexpr int kContentsLava = -5;
+constexpr int kContentsSky = -6;
+constexpr int kContentsDetail = -100;
+constexpr int kContentsClip = -101;
+
+// Which contents win where brushes overlap: a brush's faces inside a brush of equal or
+// higher rank are removed. Solid, sky and detail rank highest; then lava, slime, water.
+int contents_rank(int contents);
+// The contents written to the file for an internal value.
+int output_contents(int contents);
+bool is_liquid(int contents);
+
+struct BrushSide {
+  int plane = -1;    // PlaneSet index, normal pointing out of the brush
+  int texinfo = -1;  // -1 for bevel / hull sides
+  Winding w;         // the side's polygon (empty for bevels that touch in an edge only)
+  bool nodraw = false;
+  bool bevel = false;
+  int plane_tex = -1;  // while building: index of the .map face's texture projection
+};
+
+struct Brush {
+  std::vector<BrushSide> sides;
+  int contents = kContentsSolid;
+  Bounds bounds;
+  int line = 0;  // .map line of the brush (messages)
+};
+
+struct ModelSource {
+  int entity = 0;              // index into MapFile::entities
+  std::vector<Brush> brushes;  // drawn hull; clip brushes included with kContentsClip
+};
+
+struct BrushStats {
+  int map_brushes = 0, skipped = 0, detail = 0, clip = 0, liquid = 0, sky = 0, hint_dropped = 0;
+};
+
+// Builds every model's brushes. `keep_entity[i]` says whether entity i stays in the entity
+// lump (func_group / func_detail / omitted layers are dropped). Submodel entities get their
+// "model" key set in `map`.
+void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vector<ModelSource>* models,
+                  std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings);
+
+// Recomputes every side's winding from the planes; drops sides with no polygon.
+// False when fewer than 4 sides remain (no volume).
+bool make_brush_windings(Brush* b, const PlaneSet& planes);
+
+// The brush grown by the box hull_mins..hull_maxs (Minkowski sum): axial and edge bevel
+// planes first, then every plane pushed out by the box corner it faces. Contents: solid.
+bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, PlaneSet& planes, Brush* out);
+
+}  // namespace sb::tools::bsp

@@ -1,0 +1,387 @@
+// tools/bsp/compile.cpp: see compile.h.
+#include "tools/bsp/compile.h"
+
+#include <chrono>
+#include <cstdarg>
+#include <cstdio>
+#include <cstring>
+#include <thread>
+
+#include "engine/formats/entities.h"
+#include "tools/bsp/brushes.h"
+#include "tools/bsp/csg.h"
+#include "tools/bsp/emit.h"
+#include "tools/bsp/map_file.h"
+#include "tools/bsp/textures.h"
+#include "tools/bsp/tree.h"
+
+namespace sb::tools::bsp {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point t) {
+  return std::chrono::duration<double>(Clock::now() - t).count();
+}
+
+struct Ctx {
+  const BspOptions& opt;
+  CompileReport* rep;
+  LogFn log;
+  void* user;
+  void say(bool verbose_only, const char* fmt, ...) __attribute__((format(printf, 3, 4))) {
+    if (opt.quiet || (verbose_only && !opt.verbose) || !log) return;
+    char line[1024];
+    va_list ap;
+    va_start(ap, fmt);
+    std::vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    log(user, line);
+  }
+  void add_time(const char* stage, double s) {
+    for (StageTime& t : rep->times)
+      if (t.name == stage) { t.seconds += s; return; }
+    rep->times.push_back({stage, s});
+  }
+};
+
+std::string replace_ext(const std::string& path, const char* ext) {
+  size_t slash = path.find_last_of('/');
+  size_t dot = path.find_last_of('.');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return path + ext;
+  return path.substr(0, dot) + ext;
+}
+
+std::string dir_of(const std::string& path) {
+  size_t slash = path.find_last_of('/');
+  return slash == std::string::npos ? std::string(".") : path.substr(0, slash);
+}
+
+std::string entities_text(const MapFile& map, const std::vector<bool>& keep) {
+  std::string out;
+  for (size_t i = 0; i < map.entities.size(); ++i) {
+    if (!keep[i]) continue;
+    out += "{\n";
+    for (const auto& kv : map.entities[i].pairs) out += "\"" + kv.first + "\" \"" + kv.second + "\"\n";
+    out += "}\n";
+  }
+  return out;
+}
+
+bool write_text(const std::string& path, const std::string& text) {
+  FILE* f = std::fopen(path.c_str(), "wb");
+  if (!f) return false;
+  bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
+  ok = (std::fclose(f) == 0) && ok;
+  return ok;
+}
+
+// PRT1: world leaves as PVS leaves (output leaf index - 1), portals between two of them.
+// A portal's winding (clockwise seen from its front) faces the first leaf written.
+std::string portal_text(const Tree& tree, const std::vector<int>& leaf_index, int visleafs, int* count) {
+  std::string body;
+  *count = 0;
+  char buf[128];
+  for (const Portal& p : tree.portals) {
+    if (!p.alive) continue;
+    int a = p.nodes[0] == tree.outside ? -1 : leaf_index[size_t(p.nodes[0])];
+    int b = p.nodes[1] == tree.outside ? -1 : leaf_index[size_t(p.nodes[1])];
+    if (a <= 0 || b <= 0) continue;
+    std::snprintf(buf, sizeof buf, "%zu %d %d", p.w.size(), a - 1, b - 1);
+    body += buf;
+    for (const Vec3& v : p.w) {
+      std::snprintf(buf, sizeof buf, " (%.6g %.6g %.6g )", v.x, v.y, v.z);
+      body += buf;
+    }
+    body += "\n";
+    ++*count;
+  }
+  return "PRT1\n" + std::to_string(visleafs) + "\n" + std::to_string(*count) + "\n" + body;
+}
+
+struct HullTrees {
+  int head[3] = {0, -1, -1};
+};
+
+}  // namespace
+
+Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* log_user) {
+  *rep = CompileReport();
+  Ctx c{opt, rep, log, log_user};
+  auto t_total = Clock::now();
+  auto t = Clock::now();
+  MapFile map;
+  SB_TRY(read_map(opt.map_path.c_str(), &map));
+  rep->warnings = map.warnings;
+  int map_brushes = 0;
+  for (const MapEntity& e : map.entities) map_brushes += int(e.brushes.size());
+  c.add_time("parse", seconds_since(t));
+  c.say(false, "parse: %s: %zu entities, %d brushes, %s format (%.2f s)", opt.map_path.c_str(), map.entities.size(),
+        map_brushes, map.valve_faces > 0 ? (map.standard_faces > 0 ? "mixed" : "Valve 220") : "standard",
+        seconds_since(t));
+
+  t = Clock::now();
+  TextureSet textures;
+  int wads = textures.load_wads(map.entities[0].get("wad"), dir_of(opt.map_path), opt.wads, &rep->warnings);
+  PlaneSet planes;
+  std::vector<ModelSource> models;
+  std::vector<bool> keep;
+  BrushStats bstats;
+  build_models(map, textures, planes, &models, &keep, &bstats, &rep->warnings);
+  rep->brushes = bstats.map_brushes;
+  rep->skipped_brushes = bstats.skipped;
+  rep->models = int(models.size());
+  c.add_time("brushes", seconds_since(t));
+  c.say(false, "brushes: %d brushes (%d skipped, %d detail, %d clip, %d liquid, %d sky, %d hint/origin dropped), %d models, %d WADs (%.2f s)",
+        bstats.map_brushes, bstats.skipped, bstats.detail, bstats.clip, bstats.liquid, bstats.sky,
+        bstats.hint_dropped, int(models.size()), wads, seconds_since(t));
+
+  // Point entity origins for the flood fill.
+  std::vector<Vec3> origins;
+  std::vector<size_t> origin_entity;
+  for (size_t i = 1; i < map.entities.size(); ++i) {
+    const MapEntity& e = map.entities[i];
+    if (!keep[i] || !e.brushes.empty()) continue;
+    const std::string* o = e.find("origin");
+    glm::vec3 v;
+    if (!o || !parse_vec3(*o, &v)) continue;
+    origins.push_back(Vec3(v));
+    origin_entity.push_back(i);
+  }
+
+  BspData& bsp = rep->bsp;
+  Emitter emitter(&bsp, planes, textures, opt.subdivide);
+  emitter.begin();
+  std::string prt;
+  const Vec3 hull_min[3] = {Vec3(0.0), Vec3(-16, -16, -24), Vec3(-32, -32, -24)};
+  const Vec3 hull_max[3] = {Vec3(0.0), Vec3(16, 16, 32), Vec3(32, 32, 64)};
+  int total_csg = 0;
+  for (size_t m = 0; m < models.size(); ++m) {
+    const ModelSource& src = models[m];
+    bool world = m == 0;
+    // ---- hull 0
+    std::vector<Brush> drawn;
+    for (const Brush& b : src.brushes)
+      if (b.contents != kContentsClip) drawn.push_back(b);
+    t = Clock::now();
+    std::vector<Face> faces;
+    CsgStats cs;
+    csg_faces(drawn, planes, &faces, &cs);
+    total_csg += cs.faces_out;
+    c.add_time("csg", seconds_since(t));
+    if (world)
+      c.say(false, "csg: %d brushes -> %d faces (%d merged, %d liquid back faces) (%.2f s)", cs.brushes, cs.faces_out,
+            cs.merged, cs.back_faces, seconds_since(t));
+    t = Clock::now();
+    Tree tree;
+    TreeStats ts;
+    build_tree(std::move(faces), planes, &tree, &ts);
+    c.add_time("bsp", seconds_since(t));
+    rep->bsp_faces_in += ts.faces_in;
+    rep->bsp_faces_after += ts.faces_after;
+    if (world)
+      c.say(false, "bsp: %d faces -> %d (+%.1f%% from splits), %d nodes, %d leaves, depth %d (%.2f s)", ts.faces_in,
+            ts.faces_after, ts.split_percent(), ts.nodes, ts.leaves, ts.max_depth, seconds_since(t));
+    t = Clock::now();
+    build_portals(&tree, planes, &ts);
+    set_leaf_contents(&tree, drawn, planes);
+    c.add_time("portals", seconds_since(t));
+    if (world) {
+      rep->portals = ts.portals;
+      c.say(false, "portals: %d (%.2f s)", ts.portals, seconds_since(t));
+      t = Clock::now();
+      if (opt.fill) {
+        LeakInfo leak;
+        int filled = flood_fill_entities(&tree, planes, origins, true, &leak);
+        rep->filled_leaves = filled;
+        if (leak.leaked) {
+          rep->leaked = true;
+          const MapEntity& e = map.entities[origin_entity[size_t(leak.entity)]];
+          const Vec3& o = origins[size_t(leak.entity)];
+          char msg[512];
+          std::snprintf(msg, sizeof msg, "leak: %.*s at (%g %g %g) (%s:%d) reaches the outside; no outside fill, no .prt",
+                        int(e.classname().size()), e.classname().data(), o.x, o.y, o.z, opt.map_path.c_str(), e.line);
+          rep->leak_message = msg;
+          c.say(false, "%s", msg);
+          if (opt.write_files) {
+            std::string pts;
+            char line[128];
+            // The path, with points every 8 units along each segment for editors.
+            for (size_t i = 0; i < leak.path.size(); ++i) {
+              if (i > 0) {
+                Vec3 a = leak.path[i - 1], b = leak.path[i];
+                int steps = int(glm::length(b - a) / 8.0);
+                for (int s = 1; s < steps; ++s) {
+                  Vec3 p = a + (b - a) * (double(s) / steps);
+                  std::snprintf(line, sizeof line, "%g %g %g\n", p.x, p.y, p.z);
+                  pts += line;
+                }
+              }
+              std::snprintf(line, sizeof line, "%g %g %g\n", leak.path[i].x, leak.path[i].y, leak.path[i].z);
+              pts += line;
+            }
+            std::string out = opt.bsp_path.empty() ? replace_ext(opt.map_path, ".bsp") : opt.bsp_path;
+            rep->pts_path = replace_ext(out, ".pts");
+            if (!write_text(rep->pts_path, pts)) return make_error("%s: cannot write the leak file", rep->pts_path.c_str());
+          }
+        } else if (origins.empty()) {
+          rep->warnings.push_back("no point entities: outside removal skipped");
+        }
+        c.say(false, "fill: %d leaves filled (%.2f s)", filled, seconds_since(t));
+      }
+      c.add_time("fill", seconds_since(t));
+    }
+    t = Clock::now();
+    std::vector<std::vector<int>> leaves_of_face;
+    face_front_leaves(tree, planes, &leaves_of_face);
+    std::vector<bool> visible(tree.faces.size());
+    for (size_t f = 0; f < tree.faces.size(); ++f) visible[f] = tree.faces[f].texinfo >= 0 && !leaves_of_face[f].empty();
+    prune_solid(&tree, visible);
+    std::vector<int> leaf_index;
+    int first_leaf = int(bsp.leaves.size());
+    DModel dm{};
+    HullTrees heads;
+    heads.head[0] = emitter.emit_hull0(tree, visible, leaves_of_face, &leaf_index, &dm.first_face, &dm.num_faces);
+    if (world) {
+      rep->visleafs = int(bsp.leaves.size()) - first_leaf;
+      if (!rep->leaked && opt.fill) {
+        int count = 0;
+        prt = portal_text(tree, leaf_index, rep->visleafs, &count);
+      }
+    }
+    c.add_time("emit", seconds_since(t));
+
+    // ---- clip hulls: brushes expanded here (the PlaneSet grows); the trees are built on
+    // worker threads that only read it, then emitted in hull order (deterministic).
+    t = Clock::now();
+    if (opt.clip_hulls) {
+      std::vector<Brush> hb[3];
+      for (int h = 1; h <= 2; ++h)
+        for (const Brush& b : src.brushes) {
+          if (is_liquid(b.contents)) continue;
+          Brush e;
+          if (expand_brush(b, hull_min[h], hull_max[h], planes, &e)) hb[h].push_back(std::move(e));
+        }
+      Tree ht[3];
+      std::string hull_warning[3];
+      int pruned[3] = {0, 0, 0}, csg_count[3] = {0, 0, 0};
+      auto work = [&](int h) {
+        std::vector<Face> hf;
+        CsgStats hcs;
+        csg_faces(hb[h], planes, &hf, &hcs);
+        csg_count[h] = hcs.faces_out;
+        TreeStats hts;
+        build_tree(std::move(hf), planes, &ht[h], &hts);
+        build_portals(&ht[h], planes, &hts);
+        set_leaf_contents(&ht[h], hb[h], planes);
+        if (world && opt.fill && !rep->leaked && !origins.empty() && !fill_from_outside(&ht[h], planes, origins))
+          hull_warning[h] = "hull " + std::to_string(h) + ": an entity reaches the outside; hull not filled";
+        pruned[h] = prune_equal(&ht[h]);
+      };
+      if (opt.threads > 1) {
+        std::thread worker(work, 1);
+        work(2);
+        worker.join();
+      } else {
+        work(1);
+        work(2);
+      }
+      for (int h = 1; h <= 2; ++h) {
+        if (!hull_warning[h].empty()) rep->warnings.push_back(hull_warning[h]);
+        size_t before = bsp.clipnodes.size();
+        heads.head[h] = emitter.emit_clip(ht[h]);
+        if (world)
+          c.say(true, "hull %d: %zu brushes -> %d faces, %d nodes pruned, %zu clipnodes", h, hb[h].size(), csg_count[h],
+                pruned[h], bsp.clipnodes.size() - before);
+      }
+    } else {
+      heads.head[1] = heads.head[2] = kContentsEmpty;
+    }
+    c.add_time("hulls", seconds_since(t));
+    Bounds mb;
+    for (const Brush& b : src.brushes) mb.add(b.bounds);
+    for (int i = 0; i < 3; ++i) {
+      dm.mins[i] = mb.empty() ? 0.f : float(mb.mins[i]);
+      dm.maxs[i] = mb.empty() ? 0.f : float(mb.maxs[i]);
+      dm.origin[i] = 0;
+    }
+    dm.headnode[0] = heads.head[0];
+    dm.headnode[1] = heads.head[1];
+    dm.headnode[2] = heads.head[2];
+    dm.headnode[3] = bsp.clipnodes.empty() ? kContentsEmpty : 0;
+    dm.visleafs = world ? rep->visleafs : 0;
+    bsp.models.push_back(dm);
+  }
+  rep->csg_faces = total_csg;
+  rep->split_percent = rep->bsp_faces_in ? 100.0 * (rep->bsp_faces_after - rep->bsp_faces_in) / rep->bsp_faces_in : 0;
+  c.say(false, "hulls: %zu clipnodes (%.2f s)", bsp.clipnodes.size(), [&] {
+    for (const StageTime& s : rep->times)
+      if (s.name == "hulls") return s.seconds;
+    return 0.0;
+  }());
+
+  t = Clock::now();
+  bsp.texinfo = textures.texinfo();
+  textures.build_lump(&bsp.textures, &rep->warnings);
+  rep->missing_textures = textures.missing_count();
+  bsp.entities = entities_text(map, keep);
+  c.add_time("textures", seconds_since(t));
+
+  t = Clock::now();
+  if (opt.write_files) {
+    std::string out = opt.bsp_path.empty() ? replace_ext(opt.map_path, ".bsp") : opt.bsp_path;
+    SB_TRY(write_bsp(out.c_str(), bsp, BspFormat::Auto, &rep->format_written));
+    std::string prt_path = replace_ext(out, ".prt");
+    if (!prt.empty()) {
+      if (!write_text(prt_path, prt)) return make_error("%s: cannot write the portal file", prt_path.c_str());
+      rep->prt_path = prt_path;
+    } else {
+      std::remove(prt_path.c_str());  // a stale .prt would describe another tree
+    }
+    if (!rep->leaked) std::remove(replace_ext(out, ".pts").c_str());
+  } else {
+    std::string why;
+    rep->format_written = fits_bsp29(bsp, &why) ? BspFormat::Bsp29 : BspFormat::Bsp2;
+  }
+  c.add_time("write", seconds_since(t));
+  rep->total_seconds = seconds_since(t_total);
+  for (const std::string& w : rep->warnings) c.say(false, "warning: %s", w.c_str());
+  if (!opt.quiet && log) {
+    std::string s = summary_text(*rep);
+    size_t start = 0;
+    while (start < s.size()) {
+      size_t end = s.find('\n', start);
+      if (end == std::string::npos) end = s.size();
+      log(log_user, s.substr(start, end - start).c_str());
+      start = end + 1;
+    }
+  }
+  return Status::ok();
+}
+
+std::string summary_text(const CompileReport& r) {
+  const BspData& b = r.bsp;
+  char buf[2048];
+  std::string s;
+  std::snprintf(buf, sizeof buf,
+                "summary: %s, %d models, %d brushes (%d skipped)\n"
+                "  faces %zu (csg %d, split +%.1f%%), nodes %zu, leaves %zu (%d visleafs), clipnodes %zu\n"
+                "  planes %zu, vertices %zu, edges %zu, surfedges %zu, marksurfaces %zu, texinfo %zu, textures %zu KiB (%d missing)\n"
+                "  portals %d, filled leaves %d%s\n",
+                r.format_written == BspFormat::Bsp29 ? "BSP29" : "BSP2", r.models, r.brushes, r.skipped_brushes,
+                b.faces.size(), r.csg_faces, r.split_percent, b.nodes.size(), b.leaves.size(), r.visleafs,
+                b.clipnodes.size(), b.planes.size(), b.vertices.size() / 3, b.edges.size(), b.surfedges.size(),
+                b.marksurfaces.size(), b.texinfo.size(), b.textures.size() / 1024, r.missing_textures, r.portals,
+                r.filled_leaves, r.leaked ? ", LEAKED" : "");
+  s += buf;
+  s += "  times:";
+  for (const StageTime& t : r.times) {
+    std::snprintf(buf, sizeof buf, " %s %.2f s,", t.name.c_str(), t.seconds);
+    s += buf;
+  }
+  std::snprintf(buf, sizeof buf, " total %.2f s", r.total_seconds);
+  s += buf;
+  return s;
+}
+
+}  // namespace sb::tools::bsp

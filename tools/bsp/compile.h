@@ -1,0 +1,59 @@
+// tools/bsp/compile.h: sbbsp's entry point as a library: .map in, BspData (+ .prt / .pts) out.
+//
+//   stages: parse -> brushes -> per model: [hull 0: csg -> bsp -> portals -> contents ->
+//           flood fill (world) -> face visibility -> prune -> emit] + [hulls 1, 2: expand ->
+//           csg -> bsp -> portals -> contents -> fill from outside (world) -> prune -> emit]
+//           -> textures lump -> entities -> write
+// Output is deterministic for the same input, whatever the thread count (threads only build
+// independent hull trees; every index is assigned on the calling thread).
+// Progress lines go through `log` (plain lines such as "csg: 253 brushes -> 1905 faces (0.02 s)").
+#pragma once
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "tools/common/bsp_data.h"
+
+namespace sb::tools::bsp {
+
+struct BspOptions {
+  std::string map_path;
+  std::string bsp_path;            // empty: map_path with ".bsp"
+  std::vector<std::string> wads;   // -wad: WAD files or folders to search
+  double subdivide = 240;          // texels; 0 disables
+  bool fill = true;                // outside removal (-nofill disables)
+  bool clip_hulls = true;          // -noclip: hulls 1 and 2 left empty
+  bool write_files = true;         // false: compile into memory only (tests)
+  int threads = 2;                 // >1: clip hulls 1 and 2 are built on two threads
+  bool verbose = false, quiet = false;
+};
+
+struct StageTime {
+  std::string name;
+  double seconds = 0;
+};
+
+struct CompileReport {
+  BspData bsp;
+  BspFormat format_written = BspFormat::Bsp29;
+  bool leaked = false;
+  std::string leak_message;        // "leak: info_player_start at (0 0 0) reaches the outside"
+  std::string pts_path, prt_path;  // written files (empty when not written)
+  std::vector<std::string> warnings;
+  std::vector<StageTime> times;
+  int brushes = 0, skipped_brushes = 0, models = 0;
+  int csg_faces = 0, bsp_faces_in = 0, bsp_faces_after = 0;
+  double split_percent = 0;
+  int portals = 0, visleafs = 0, filled_leaves = 0;
+  int missing_textures = 0;
+  double total_seconds = 0;
+};
+
+using LogFn = void (*)(void* user, const char* line);
+
+Status compile_map(const BspOptions& opt, CompileReport* report, LogFn log = nullptr, void* log_user = nullptr);
+
+// Writes the PRT1 text; exposed for tests.
+std::string summary_text(const CompileReport& r);
+
+}  // namespace sb::tools::bsp

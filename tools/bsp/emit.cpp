@@ -1,0 +1,287 @@
+// tools/bsp/emit.cpp: see emit.h.
+#include "tools/bsp/emit.h"
+
+#include <cmath>
+
+namespace sb::tools::bsp {
+namespace {
+
+constexpr double kWeld = 0.01;
+
+double snap(double v) {
+  double r = std::floor(v + 0.5);
+  return std::fabs(v - r) < kWeld ? r : v;
+}
+
+void set_bounds(const Bounds& b, float mins[3], float maxs[3]) {
+  for (int i = 0; i < 3; ++i) {
+    if (b.empty()) {
+      mins[i] = maxs[i] = 0;
+      continue;
+    }
+    mins[i] = float(std::floor(b.mins[i]));
+    maxs[i] = float(std::ceil(b.maxs[i]));
+  }
+}
+
+}  // namespace
+
+void Emitter::begin() {
+  DLeaf solid{};
+  solid.contents = kContentsSolid;
+  solid.visofs = -1;
+  bsp_->leaves.push_back(solid);
+  bsp_->edges.push_back(DEdge{{0, 0}});
+}
+
+int Emitter::plane_index(int canonical) {
+  auto it = plane_map_.find(canonical);
+  if (it != plane_map_.end()) return it->second;
+  const Plane& p = planes_[canonical];
+  DPlane d{};
+  for (int i = 0; i < 3; ++i) d.normal[i] = float(p.normal[i]);
+  d.dist = float(p.dist);
+  d.type = p.type;
+  int idx = int(bsp_->planes.size());
+  bsp_->planes.push_back(d);
+  plane_map_[canonical] = idx;
+  return idx;
+}
+
+uint32_t Emitter::vertex(const Vec3& v0) {
+  Vec3 v(snap(v0.x), snap(v0.y), snap(v0.z));
+  int64_t cx = int64_t(std::floor(v.x)), cy = int64_t(std::floor(v.y)), cz = int64_t(std::floor(v.z));
+  int64_t key = (cx * 73856093) ^ (cy * 19349663) ^ (cz * 83492791);
+  std::vector<uint32_t>& bucket = vertex_hash_[key];
+  for (uint32_t i : bucket) {
+    const float* p = &bsp_->vertices[size_t(i) * 3];
+    if (std::fabs(p[0] - v.x) < kWeld && std::fabs(p[1] - v.y) < kWeld && std::fabs(p[2] - v.z) < kWeld) return i;
+  }
+  uint32_t idx = uint32_t(bsp_->vertices.size() / 3);
+  bsp_->vertices.push_back(float(v.x));
+  bsp_->vertices.push_back(float(v.y));
+  bsp_->vertices.push_back(float(v.z));
+  bucket.push_back(idx);
+  return idx;
+}
+
+int32_t Emitter::edge(uint32_t a, uint32_t b) {
+  // An edge walked b -> a by an earlier face, not yet shared: reuse it backwards.
+  uint64_t back_key = (uint64_t(b) << 32) | a;
+  auto it = open_edges_.find(back_key);
+  if (it != open_edges_.end()) {
+    int32_t e = it->second;
+    open_edges_.erase(it);
+    return -e;
+  }
+  int32_t e = int32_t(bsp_->edges.size());
+  bsp_->edges.push_back(DEdge{{a, b}});
+  uint64_t key = (uint64_t(a) << 32) | b;
+  if (!open_edges_.emplace(key, e).second) stats_.new_edges_for_sharing++;
+  return e;
+}
+
+void Emitter::emit_polygon(const Face& f, const Winding& w0, std::vector<uint32_t>* out_ids) {
+  std::vector<uint32_t> vs;
+  vs.reserve(w0.size());
+  for (const Vec3& p : w0) {
+    uint32_t v = vertex(p);
+    if (!vs.empty() && vs.back() == v) continue;
+    vs.push_back(v);
+  }
+  while (vs.size() > 1 && vs.front() == vs.back()) vs.pop_back();
+  if (vs.size() < 3) return;
+  DFace d{};
+  d.plane = plane_index(f.plane & ~1);
+  d.side = f.plane & 1;
+  d.first_edge = int32_t(bsp_->surfedges.size());
+  d.num_edges = int32_t(vs.size());
+  d.texinfo = f.texinfo;
+  for (uint8_t& s : d.styles) s = 255;
+  d.lightofs = -1;
+  for (size_t i = 0; i < vs.size(); ++i) bsp_->surfedges.push_back(edge(vs[i], vs[(i + 1) % vs.size()]));
+  out_ids->push_back(uint32_t(bsp_->faces.size()));
+  bsp_->faces.push_back(d);
+  stats_.faces_out++;
+}
+
+void Emitter::emit_face(const Face& f, std::vector<uint32_t>* out_ids) {
+  stats_.faces_before_subdivide++;
+  const DTexInfo& ti = textures_.texinfo()[size_t(f.texinfo)];
+  std::vector<Winding> work{f.w};
+  if ((ti.flags & 1) || subdivide_ <= 0) {
+    emit_polygon(f, f.w, out_ids);
+    return;
+  }
+  bool split_any = false;
+  while (!work.empty()) {
+    Winding w = std::move(work.back());
+    work.pop_back();
+    bool done = true;
+    for (int axis = 0; axis < 2 && done; ++axis) {
+      Vec3 n(ti.vecs[axis][0], ti.vecs[axis][1], ti.vecs[axis][2]);
+      double len = glm::length(n);
+      if (len < 1e-9) continue;
+      double lo = 1e30, hi = -1e30;
+      for (const Vec3& p : w) {
+        double s = glm::dot(p, n) + ti.vecs[axis][3];
+        lo = std::min(lo, s);
+        hi = std::max(hi, s);
+      }
+      if (hi - lo <= subdivide_) continue;
+      Plane cut;
+      cut.normal = n / len;
+      cut.dist = (lo + subdivide_ - ti.vecs[axis][3]) / len;
+      cut.type = 3;
+      Winding front, back;
+      split_winding(w, cut, &front, &back, 0.01);
+      if (front.empty() || back.empty()) continue;
+      work.push_back(std::move(front));
+      work.push_back(std::move(back));
+      done = false;
+      split_any = true;
+    }
+    if (done) emit_polygon(f, w, out_ids);
+  }
+  if (split_any) stats_.subdivided++;
+}
+
+int Emitter::emit_node(const Tree& tree, int n, const std::vector<bool>& face_visible, const std::vector<int>& leaf_index,
+                       std::vector<std::vector<uint32_t>>* face_ids_of) {
+  const TreeNode& node = tree.nodes[size_t(n)];
+  if (node.is_leaf()) return -(leaf_index[size_t(n)] + 1);
+  int idx = int(bsp_->nodes.size());
+  bsp_->nodes.emplace_back();
+  uint32_t first = uint32_t(bsp_->faces.size());
+  Bounds b;
+  for (int f : node.faces) {
+    if (!face_visible[size_t(f)]) continue;
+    emit_face(tree.faces[size_t(f)], &(*face_ids_of)[size_t(f)]);
+    b.add(tree.faces[size_t(f)].bounds);
+  }
+  uint32_t count = uint32_t(bsp_->faces.size()) - first;
+  int c0 = emit_node(tree, node.children[0], face_visible, leaf_index, face_ids_of);
+  int c1 = emit_node(tree, node.children[1], face_visible, leaf_index, face_ids_of);
+  DNode& d = bsp_->nodes[size_t(idx)];
+  d.plane = plane_index(node.plane);
+  d.children[0] = c0;
+  d.children[1] = c1;
+  d.first_face = first;
+  d.num_faces = count;
+  // Bounds: faces here plus the children's boxes.
+  for (int c : {c0, c1}) {
+    const float* mn;
+    const float* mx;
+    if (c >= 0) {
+      mn = bsp_->nodes[size_t(c)].mins;
+      mx = bsp_->nodes[size_t(c)].maxs;
+    } else if (-(c + 1) != 0) {
+      mn = bsp_->leaves[size_t(-(c + 1))].mins;
+      mx = bsp_->leaves[size_t(-(c + 1))].maxs;
+    } else {
+      continue;
+    }
+    if (mn[0] > mx[0]) continue;
+    b.add(Vec3(mn[0], mn[1], mn[2]));
+    b.add(Vec3(mx[0], mx[1], mx[2]));
+  }
+  set_bounds(b, d.mins, d.maxs);
+  if (b.empty()) {  // nothing visible below: an inverted box that culls everything
+    for (int i = 0; i < 3; ++i) {
+      d.mins[i] = 0;
+      d.maxs[i] = 0;
+    }
+  }
+  return idx;
+}
+
+int Emitter::emit_hull0(const Tree& tree, const std::vector<bool>& face_visible,
+                        const std::vector<std::vector<int>>& leaves_of_face, std::vector<int>* leaf_index,
+                        int* first_face, int* num_faces) {
+  leaf_index->assign(tree.nodes.size(), -1);
+  // Leaves in tree order (front first).
+  std::vector<int> order;
+  std::vector<int> stack{tree.root};
+  while (!stack.empty()) {
+    int n = stack.back();
+    stack.pop_back();
+    const TreeNode& node = tree.nodes[size_t(n)];
+    if (node.is_leaf()) {
+      order.push_back(n);
+      continue;
+    }
+    stack.push_back(node.children[1]);
+    stack.push_back(node.children[0]);
+  }
+  int first_leaf = int(bsp_->leaves.size());
+  for (int n : order) {
+    const TreeNode& node = tree.nodes[size_t(n)];
+    int oc = output_contents(node.contents);
+    if (oc == kContentsSolid) {
+      (*leaf_index)[size_t(n)] = 0;
+      continue;
+    }
+    (*leaf_index)[size_t(n)] = int(bsp_->leaves.size());
+    DLeaf l{};
+    l.contents = oc;
+    l.visofs = -1;
+    set_bounds(node.bounds, l.mins, l.maxs);
+    bsp_->leaves.push_back(l);
+  }
+  *first_face = int(bsp_->faces.size());
+  std::vector<std::vector<uint32_t>> face_ids_of(tree.faces.size());
+  int head;
+  if (tree.nodes[size_t(tree.root)].is_leaf()) {
+    // A model needs a node: one whose children are both the root leaf.
+    head = int(bsp_->nodes.size());
+    DNode d{};
+    if (planes_.size() > 0) {
+      d.plane = plane_index(0);
+    } else {
+      d.plane = int(bsp_->planes.size());
+      bsp_->planes.push_back(DPlane{{0, 0, 1}, 0, 2});
+    }
+    int c = -((*leaf_index)[size_t(tree.root)] + 1);
+    d.children[0] = d.children[1] = c;
+    bsp_->nodes.push_back(d);
+  } else {
+    head = emit_node(tree, tree.root, face_visible, *leaf_index, &face_ids_of);
+  }
+  *num_faces = int(bsp_->faces.size()) - *first_face;
+  // Marksurfaces.
+  std::vector<std::vector<uint32_t>> marks(bsp_->leaves.size() - size_t(first_leaf));
+  for (size_t f = 0; f < tree.faces.size(); ++f) {
+    if (face_ids_of[f].empty()) continue;
+    for (int leaf : leaves_of_face[f]) {
+      int out = (*leaf_index)[size_t(leaf)];
+      if (out <= 0) continue;
+      auto& m = marks[size_t(out - first_leaf)];
+      m.insert(m.end(), face_ids_of[f].begin(), face_ids_of[f].end());
+    }
+  }
+  for (size_t i = 0; i < marks.size(); ++i) {
+    DLeaf& l = bsp_->leaves[size_t(first_leaf) + i];
+    l.first_marksurface = uint32_t(bsp_->marksurfaces.size());
+    l.num_marksurfaces = uint32_t(marks[i].size());
+    bsp_->marksurfaces.insert(bsp_->marksurfaces.end(), marks[i].begin(), marks[i].end());
+  }
+  return head;
+}
+
+int Emitter::emit_clip_node(const Tree& tree, int n) {
+  const TreeNode& node = tree.nodes[size_t(n)];
+  if (node.is_leaf()) return output_contents(node.contents);
+  int idx = int(bsp_->clipnodes.size());
+  bsp_->clipnodes.emplace_back();
+  int c0 = emit_clip_node(tree, node.children[0]);
+  int c1 = emit_clip_node(tree, node.children[1]);
+  DClipNode& d = bsp_->clipnodes[size_t(idx)];
+  d.plane = plane_index(node.plane);
+  d.children[0] = c0;
+  d.children[1] = c1;
+  return idx;
+}
+
+int Emitter::emit_clip(const Tree& tree) { return emit_clip_node(tree, tree.root); }
+
+}  // namespace sb::tools::bsp

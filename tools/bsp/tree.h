@@ -1,0 +1,98 @@
+// tools/bsp/tree.h: the BSP tree of one model and hull: build from CSG faces, portals,
+// leaf contents, flood fill from entities (outside removal, leaks), face visibility.
+//
+// Building: at each node the splitter is the face plane that splits the fewest faces;
+// ties prefer axial planes, then the most even split of face counts. Sets of more than 256
+// faces choose among axial planes only while any remain (cheaper, and it split less on the
+// LibreQuake maps). Structural faces are
+// used before detail faces. Faces on the splitter (either orientation) live on that node;
+// the others go to the children, split by the node plane when they cross it. A region with
+// no faces left is a leaf.
+// Portals: the head node's box (the faces' bounds grown by 32 units) is bounded by six
+// portals to the "outside" node; each node's plane is cut into a portal by the portals
+// bounding that node, and those portals are split by the node's plane into its children.
+// Leaf contents: a point inside the leaf (the mean of its portal vertices) is tested against
+// the brushes; the highest-ranked brush holding it gives the contents, empty otherwise.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "tools/bsp/csg.h"
+
+namespace sb::tools::bsp {
+
+struct TreeNode {
+  int plane = -1;  // canonical (even) PlaneSet index; -1 for leaves
+  int children[2] = {-1, -1};
+  std::vector<int> faces;  // Tree::faces lying on this plane
+  int contents = kContentsEmpty;  // leaves
+  Bounds bounds;                   // leaves: of the portals; nodes: of the children
+  std::vector<int> portals;        // leaves (and, while cutting, nodes)
+  bool reached = false;            // flood fill
+  int flood_parent_portal = -1;    // leak path
+  bool is_leaf() const { return plane < 0; }
+};
+
+struct Portal {
+  Winding w;       // normal (winding_normal) == planes[plane].normal
+  int plane = -1;  // oriented index
+  int nodes[2] = {-1, -1};  // [0] in front of the plane, [1] behind
+  bool alive = true;
+};
+
+struct TreeStats {
+  int faces_in = 0, faces_after = 0, nodes = 0, leaves = 0, portals = 0, max_depth = 0;
+  double split_percent() const { return faces_in ? 100.0 * (faces_after - faces_in) / faces_in : 0; }
+};
+
+struct Tree {
+  std::vector<TreeNode> nodes;
+  std::vector<Face> faces;
+  std::vector<Portal> portals;
+  int root = -1;
+  int outside = -1;  // index of the outside pseudo-leaf in nodes
+  Bounds box;
+};
+
+void build_tree(std::vector<Face> faces, const PlaneSet& planes, Tree* tree, TreeStats* stats);
+// Builds portals between all leaves (and the outside pseudo-leaf).
+void build_portals(Tree* tree, const PlaneSet& planes, TreeStats* stats);
+// Leaf contents from the brushes (see the header comment).
+void set_leaf_contents(Tree* tree, const std::vector<Brush>& brushes, const PlaneSet& planes);
+
+// Whether the flood passes through a leaf of these contents.
+inline bool passable(int contents) {
+  return contents == kContentsEmpty || contents == kContentsWater || contents == kContentsSlime ||
+         contents == kContentsLava;
+}
+
+// Leaf holding a point (points on a plane go to the front).
+int point_leaf(const Tree& tree, const PlaneSet& planes, const Vec3& p);
+
+struct LeakInfo {
+  bool leaked = false;
+  int entity = -1;                // index into the caller's list of origins
+  std::vector<Vec3> path;         // entity origin .. a point outside
+};
+
+// Marks leaves reachable from `origins` through portals between passable leaves. Sky
+// leaves next to a reached leaf are kept too. With fill_unreached, every other leaf becomes
+// solid. A leak (a passable path from the outside to an origin) is reported instead and
+// nothing is filled. Origins in solid leaves are ignored. Returns the number of leaves filled.
+int flood_fill_entities(Tree* tree, const PlaneSet& planes, const std::vector<Vec3>& origins, bool fill_unreached,
+                        LeakInfo* leak);
+// Clip hulls: every leaf reachable from the outside becomes solid; returns false (and fills
+// nothing) when the outside reaches one of the origins.
+bool fill_from_outside(Tree* tree, const PlaneSet& planes, const std::vector<Vec3>& origins);
+
+// For every node face: the non-solid leaves in front of it that it touches. Faces touching
+// none (or with texinfo -1) get an empty list.
+void face_front_leaves(const Tree& tree, const PlaneSet& planes, std::vector<std::vector<int>>* leaves_of_face);
+
+// Collapses nodes whose children are both solid leaves and that keep no visible face
+// (`face_visible[f]`). Returns the number of nodes removed.
+int prune_solid(Tree* tree, const std::vector<bool>& face_visible);
+// Clip hulls: collapses nodes whose children are leaves of equal output contents.
+int prune_equal(Tree* tree);
+
+}  // namespace sb::tools::bsp

@@ -1,0 +1,182 @@
+// tools/light/light.cpp: see light.h. Loads the checked engine view of the BSP, lights the
+// faces on worker threads, and writes the lighting lump and face styles back.
+#include "tools/light/light.h"
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <thread>
+
+#include "engine/core/log.h"
+#include "engine/formats/bsp.h"
+#include "memory/arena.h"
+#include "tools/light/light_entities.h"
+#include "tools/light/light_face.h"
+#include "tools/light/light_trace.h"
+
+namespace sb::tools {
+namespace {
+
+// The engine's view of a BspData (sb::load_bsp: every index checked, texture_mins and
+// extents computed exactly as the engine does). Owns its heap block (tool code).
+class EngineWorld {
+ public:
+  Status load(const char* name, const BspData& bsp) {
+    std::vector<uint8_t> bytes;
+    BspFormat used;
+    Status st = serialize_bsp(bsp, bsp.format, &bytes, &used);
+    if (!st) return make_error("%s: cannot re-serialise for checking: %s", name, st.message());
+    size_t level = bytes.size() * 6 + (32u << 20), scratch = bytes.size() * 2 + (16u << 20);
+    block_.reset(new uint8_t[level + scratch]);
+    level_.init("light level", block_.get(), level);
+    scratch_.init("light scratch", block_.get() + level, scratch);
+    Result<BspWorld*> r = load_bsp(name, bytes.data(), bytes.size(), level_, scratch_);
+    if (!r) return r.error();
+    world_ = r.value();
+    return Status::ok();
+  }
+  const BspWorld* world() const { return world_; }
+
+ private:
+  std::unique_ptr<uint8_t[]> block_;
+  mem::Arena level_, scratch_;
+  BspWorld* world_ = nullptr;
+};
+
+}  // namespace
+
+Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts_in, LightStats* stats,
+                 std::vector<uint8_t>* rgb) {
+  LightStats st;
+  LightOptions opts = opts_in;
+  if (opts.extra != 1 && opts.extra != 2 && opts.extra != 4) opts.extra = 1;
+  if (rgb) rgb->clear();
+  if (!rgb) opts.want_rgb = false;
+
+  // Geometry: the BSP without its old lighting (so stale lightmaps cannot fail the check).
+  BspData geometry_only = *bsp;
+  geometry_only.lighting.clear();
+  for (DFace& f : geometry_only.faces) {
+    f.lightofs = -1;
+    std::memset(f.styles, 255, sizeof f.styles);
+  }
+  EngineWorld ew;
+  SB_TRY(ew.load(name, geometry_only));
+  const BspWorld& w = *ew.world();
+  if (w.num_faces != bsp->faces.size())
+    return make_error("%s: loaded %u faces but the file has %zu", name, w.num_faces, bsp->faces.size());
+  if (w.num_models == 0) return make_error("%s: no models: nothing to light", name);
+
+  LightSettings settings;
+  std::string new_entities;
+  SB_TRY(parse_light_entities(name, bsp->entities, opts.dome_samples, &settings, &new_entities));
+  LineTracer tracer(w);
+  for (const PointLight& l : settings.lights) {
+    int c = tracer.contents(l.origin);
+    if (c == kContentsSolid || c == kContentsSky)
+      log_warning("%s: light entity %d at (%g %g %g) is inside %s: it lights nothing", name, l.entity, l.origin.x,
+                  l.origin.y, l.origin.z, c == kContentsSolid ? "solid" : "sky");
+  }
+
+  auto t0 = std::chrono::steady_clock::now();
+  LightScene scene;
+  scene.world = &w;
+  scene.tracer = &tracer;
+  scene.opts = opts;
+  prepare_scene(&scene, &settings);
+
+  unsigned threads = opts.threads > 0 ? unsigned(opts.threads) : std::thread::hardware_concurrency();
+  if (threads == 0) threads = 1;
+  if (threads > 256) threads = 256;
+  std::vector<FaceLightmap> results(w.num_faces);
+  std::atomic<uint32_t> next{0};
+  auto worker = [&]() {
+    for (;;) {
+      uint32_t f = next.fetch_add(1, std::memory_order_relaxed);
+      if (f >= w.num_faces) return;
+      light_face(scene, f, &results[f]);
+    }
+  };
+  if (threads == 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+  }
+
+  // Assemble the lump in face order.
+  std::vector<uint8_t> lighting;
+  uint64_t style0_sum = 0, style0_count = 0;
+  int drop_messages = 0;
+  for (uint32_t i = 0; i < w.num_faces; ++i) {
+    FaceLightmap& r = results[i];
+    DFace& df = bsp->faces[i];
+    std::memset(df.styles, 255, sizeof df.styles);
+    df.lightofs = -1;
+    st.traces += r.traces;
+    if (!r.lit || r.num_styles == 0) continue;
+    if (lighting.size() + r.mono.size() > size_t(INT32_MAX))
+      return make_error("%s: lighting lump would exceed 2 GiB at face %u", name, i);
+    df.lightofs = int32_t(lighting.size());
+    for (int k = 0; k < r.num_styles; ++k) df.styles[k] = r.styles[k];
+    size_t grid = r.mono.size() / size_t(r.num_styles);
+    for (size_t k = 0; k < grid; ++k) style0_sum += r.mono[k];
+    style0_count += grid;
+    lighting.insert(lighting.end(), r.mono.begin(), r.mono.end());
+    if (opts.want_rgb) rgb->insert(rgb->end(), r.rgb.begin(), r.rgb.end());
+    ++st.faces_lit;
+    st.samples += r.mono.size();
+    if (r.styles_dropped) {
+      ++st.styles_dropped;
+      if (drop_messages++ < 10)
+        log_warning("%s: face %u is reached by more than 4 light styles: dropped the weakest (style %d first)",
+                    name, i, r.first_dropped_style);
+    }
+    if (r.degenerate) log_warning("%s: face %u: texture axes lie along the plane normal: lit at its centre", name, i);
+    FaceLightmap().mono.swap(r.mono);  // free as we go
+  }
+  if (drop_messages > 10) log_warning("%s: ... %d faces in all dropped light styles", name, drop_messages);
+  bsp->lighting.swap(lighting);
+  if (!new_entities.empty()) bsp->entities.swap(new_entities);
+
+  st.faces = w.num_faces;
+  st.lights = uint32_t(settings.lights.size());
+  st.suns = uint32_t(settings.suns.size());
+  st.threads = threads;
+  st.mean_sample = style0_count ? double(style0_sum) / double(style0_count) : 0.0;
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (stats) *stats = st;
+  return Status::ok();
+}
+
+Status write_lit(const char* path, const std::vector<uint8_t>& rgb) {
+  std::FILE* f = std::fopen(path, "wb");
+  if (!f) return make_error("%s: cannot open for writing", path);
+  const uint8_t header[8] = {'Q', 'L', 'I', 'T', 1, 0, 0, 0};
+  bool ok = std::fwrite(header, 1, sizeof header, f) == sizeof header;
+  if (ok && !rgb.empty()) ok = std::fwrite(rgb.data(), 1, rgb.size(), f) == rgb.size();
+  ok = (std::fclose(f) == 0) && ok;
+  if (!ok) return make_error("%s: write failed", path);
+  return Status::ok();
+}
+
+double mean_style0_sample(const BspData& bsp) {
+  EngineWorld ew;
+  if (!ew.load("mean_style0_sample", bsp)) return -1.0;
+  const BspWorld& w = *ew.world();
+  uint64_t sum = 0, count = 0;
+  for (uint32_t i = 0; i < w.num_faces; ++i) {
+    const Face& f = w.faces[i];
+    if (f.light_offset == kNoLightmap || (w.texinfo[f.texinfo].flags & kTexSpecial)) continue;
+    uint64_t grid = uint64_t(f.extents[0] / 16 + 1) * uint64_t(f.extents[1] / 16 + 1);
+    if (uint64_t(f.light_offset) + grid > w.lightdata_size) continue;
+    for (uint64_t k = 0; k < grid; ++k) sum += w.lightdata[f.light_offset + k];
+    count += grid;
+  }
+  return count ? double(sum) / double(count) : 0.0;
+}
+
+}  // namespace sb::tools

@@ -1,0 +1,70 @@
+// tools/light/light.h: the LIGHT stage of the map compiler (sblight).
+//
+// Computes a lightmap for every face with a normal texture (not sky, not turbulent) of a
+// BSP held in a BspData, from the light entities of its entity lump, and writes the result
+// back into the BspData: the lighting lump, each face's styles[] and lightofs. Nothing else
+// in the BspData changes except, when switchable lights (a "targetname" and no "style") get
+// styles 32.. assigned, the entity text (a "style" pair is added to those entities).
+//
+// Lightmap layout (what engine/render/surface_math.h reads): per lit face, for each of its
+// styles k (styles[k] != 255, k = 0..3, style 0 always first), a row-major grid of
+// (extents[0]/16 + 1) x (extents[1]/16 + 1) bytes, grid point (gx, gy) lying at texture
+// coordinates (texture_mins[0] + 16 gx, texture_mins[1] + 16 gy). texture_mins / extents are
+// taken from sb::load_bsp (engine/formats/bsp_load.cpp), so they match the engine bit for bit.
+//
+// Light model (the documented semantics of the Quake light tools' keys; see light_entities.h):
+//   value(d) = falloff by "delay" of intensity "light" at distance d scaled by "wait",
+//   times the angle factor (1 - anglescale) + anglescale * cos(incidence) (anglescale 0.5),
+//   times the spot cone factor, if the shadow ray from the sample to the light is clear;
+//   summed per style, times rangescale (0.5), floored at the worldspawn minimum light
+//   (style 0 only), rounded and clamped to 0..255.
+// Determinism: every face is computed on its own from read-only data and written by index:
+// the output is byte-identical for any thread count.
+// Not implemented (this session): bounce / radiosity, dirt (ambient occlusion), surface
+// lights (_surface), sunlight penumbra, deviance, phong shading, BSPX / LIGHTING_E5BGR9.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "tools/common/bsp_data.h"
+
+namespace sb::tools {
+
+struct LightOptions {
+  int extra = 1;            // supersampling per axis: 1, 2 (-extra) or 4 (-extra4)
+  int threads = 0;          // 0: std::thread::hardware_concurrency()
+  bool quiet = false;       // -q: warnings and the summary only
+  bool want_rgb = false;    // also produce RGB samples (for a .lit file)
+  float gate = 1.0f;        // -gate: a light whose value (before rangescale) stays below
+                            // this over the face is skipped (inverse falloffs)
+  int dome_samples = 32;    // directions of the "_sunlight2" sky dome
+};
+
+struct LightStats {
+  uint32_t faces = 0;          // faces in the BSP
+  uint32_t faces_lit = 0;      // faces that got a lightmap
+  uint64_t samples = 0;        // grid samples over all lit faces and styles
+  uint64_t traces = 0;         // shadow rays cast
+  uint32_t lights = 0;         // point / spot lights used
+  uint32_t suns = 0;           // sun directions (sunlight, _sun lights, dome directions)
+  uint32_t styles_dropped = 0; // faces that had more than 4 styles
+  uint32_t threads = 0;
+  double seconds = 0;          // lighting time (not reading / writing)
+  double mean_sample = 0;      // mean style-0 sample value over lit faces
+};
+
+// Relights `bsp` in place. `name` names the file in messages. When opts.want_rgb, *rgb gets
+// 3 bytes per lighting-lump byte (the .lit payload, without header); otherwise it is cleared.
+Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts, LightStats* stats,
+                 std::vector<uint8_t>* rgb);
+
+// Writes a .lit file: "QLIT", int32 version 1 (little endian), then `rgb`.
+Status write_lit(const char* path, const std::vector<uint8_t>& rgb);
+
+// Mean byte of the style-0 samples of every face with a lightmap (for comparisons with other
+// compilers' output). Faces whose lightmap lies outside the lump are ignored.
+double mean_style0_sample(const BspData& bsp);
+
+}  // namespace sb::tools
