@@ -64,7 +64,7 @@ inline __m256i lanes8(uint32_t a, uint32_t d, uint32_t dd) {
 
 // ---------------------------------------------------------------- 2. surface span
 
-void surface_span_avx2(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, int width, int height,
+void surface_span_avx2_gather(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, int width, int height,
                        int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu, int32_t ddv) {
   if (n <= 0) return;
   const int32_t size = width * height;
@@ -112,11 +112,53 @@ void surface_span_avx2(uint8_t* __restrict dest, int n, const uint8_t* __restric
   }
 }
 
-// ---------------------------------------------------------------- 3. surface block builder
-// The SSE2 builder's scheme (asm/sse2.cpp, section 2) eight lanes at a time, with the
-// colormap read by gathers.
+// Without gathers: eight lanes' addresses per vector, taken out four at a time through
+// 64-bit moves, scalar texel loads.
+void surface_span_avx2(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, int width, int,
+                       int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu, int32_t ddv) {
+  if (n <= 0) return;
+  const uint32_t du_ = uint32_t(du), dv_ = uint32_t(dv), ddu_ = uint32_t(ddu), ddv_ = uint32_t(ddv);
+  // Advancing eight pixels: u_{k+8} = u_k + 8 du_k + 28 dd, 8 du_{k+8} = 8 du_k + 64 dd.
+  __m256i U = lanes8(uint32_t(u), du_, ddu_), V = lanes8(uint32_t(v), dv_, ddv_);
+  __m256i DU = lanes8(8 * du_, 8 * ddu_, 0), DV = lanes8(8 * dv_, 8 * ddv_, 0);
+  const __m256i CU = _mm256_set1_epi32(int32_t(28 * ddu_)), CV = _mm256_set1_epi32(int32_t(28 * ddv_));
+  const __m256i EU = _mm256_set1_epi32(int32_t(64 * ddu_)), EV = _mm256_set1_epi32(int32_t(64 * ddv_));
+  const __m256i W = _mm256_set1_epi32(width);
+  auto next = [&]() {
+    const __m256i a = add32(_mm256_madd_epi16(_mm256_srli_epi32(V, 16), W), _mm256_srli_epi32(U, 16));
+    U = add32(U, add32(DU, CU));
+    V = add32(V, add32(DV, CV));
+    DU = add32(DU, EU);
+    DV = add32(DV, EV);
+    return a;
+  };
+  int k = 0;
+  for (; k + 8 <= n; k += 8) {
+    const __m256i a = next();
+    const __m128i lo = _mm256_castsi256_si128(a), hi = _mm256_extracti128_si256(a, 1);
+    const uint64_t a0 = uint64_t(_mm_cvtsi128_si64(lo)), a1 = uint64_t(_mm_extract_epi64(lo, 1));
+    const uint64_t a2 = uint64_t(_mm_cvtsi128_si64(hi)), a3 = uint64_t(_mm_extract_epi64(hi, 1));
+    dest[k] = texels[uint32_t(a0)];
+    dest[k + 1] = texels[a0 >> 32];
+    dest[k + 2] = texels[uint32_t(a1)];
+    dest[k + 3] = texels[a1 >> 32];
+    dest[k + 4] = texels[uint32_t(a2)];
+    dest[k + 5] = texels[a2 >> 32];
+    dest[k + 6] = texels[uint32_t(a3)];
+    dest[k + 7] = texels[a3 >> 32];
+  }
+  if (k < n) {
+    alignas(32) uint32_t addr[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(addr), next());
+    for (int i = 0; k < n; ++i, ++k) dest[k] = texels[addr[i]];
+  }
+}
 
-template <int kMip>
+// ---------------------------------------------------------------- 3. surface block builder
+// The SSE2 builder's scheme (asm/sse2.cpp, section 2) eight lanes at a time, the colormap
+// read by gathers (kGather) or by scalar loads of stored indices.
+
+template <int kMip, bool kGather>
 void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                         int toff, int width, int height, const uint8_t* colormap, uint8_t* __restrict out) {
   constexpr int B = 16 >> kMip, LB = 4 - kMip, S = 2 * (4 - kMip);
@@ -135,6 +177,7 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
   const __m256i mask = _mm256_set1_epi32(0xff00), all = _mm256_set1_epi32(-1);
   const int c0 = wrap(soff, tw);
   alignas(16) uint8_t tmp[16];
+  alignas(32) uint16_t idx[16];
 
   for (int by = 0; by < bh; ++by) {
     const uint16_t* g0 = grid + by * grid_width;
@@ -186,9 +229,21 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
           const __m256i i0 = add32(_mm256_and_si256(_mm256_srli_epi32(num0, S), mask), _mm256_cvtepu8_epi32(t));
           const __m256i i1 = add32(_mm256_and_si256(_mm256_srli_epi32(num1, S), mask),
                                    _mm256_cvtepu8_epi32(_mm_srli_si128(t, 8)));
-          const __m256i r0 = gather_bytes(colormap, i0, 64 * 256, all);
-          const __m256i r1 = gather_bytes(colormap, i1, 64 * 256, all);
-          store_bytes(drow + x + i, pack_low_bytes(r0, r1), m);
+          if constexpr (kGather) {
+            const __m256i r0 = gather_bytes(colormap, i0, 64 * 256, all);
+            const __m256i r1 = gather_bytes(colormap, i1, 64 * 256, all);
+            store_bytes(drow + x + i, pack_low_bytes(r0, r1), m);
+          } else {
+            // Indices fit 16 bits: pack (per 128-bit half, then put the halves in order).
+            const __m256i p = _mm256_permute4x64_epi64(_mm256_packus_epi32(i0, i1), 0xd8);
+            _mm256_store_si256(reinterpret_cast<__m256i*>(idx), p);
+            uint8_t* d = drow + x + i;
+            if (m == 16) {
+              for (int k = 0; k < 16; ++k) d[k] = colormap[idx[k]];
+            } else {
+              for (int k = 0; k < m; ++k) d[k] = colormap[idx[k]];
+            }
+          }
         }
         x += len;
         c = 0;
@@ -197,21 +252,23 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
   }
 }
 
-void surface_block_avx2(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width, int tex_height,
-                        int mip, int soff, int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
+template <bool kGather>
+void surface_block_any(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int mip,
+                       int soff, int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
   if (width <= 0 || height <= 0) return;
   if (width / (16 >> mip) > kMaxBlockColumns || mip < 0 || mip > 3) {
-    surface_block_scalar(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap,
-                         out);
+    surface_block_scalar(grid, grid_width, texels, tw, th, mip, soff, toff, width, height, colormap, out);
     return;
   }
   switch (mip) {
-    case 0: return surface_block_rows<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 1: return surface_block_rows<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 2: return surface_block_rows<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    default: return surface_block_rows<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 0: return surface_block_rows<0, kGather>(grid, grid_width, texels, tw, th, soff, toff, width, height, colormap, out);
+    case 1: return surface_block_rows<1, kGather>(grid, grid_width, texels, tw, th, soff, toff, width, height, colormap, out);
+    case 2: return surface_block_rows<2, kGather>(grid, grid_width, texels, tw, th, soff, toff, width, height, colormap, out);
+    default: return surface_block_rows<3, kGather>(grid, grid_width, texels, tw, th, soff, toff, width, height, colormap, out);
   }
 }
+const SurfaceBlockFn surface_block_avx2 = surface_block_any<false>;
+const SurfaceBlockFn surface_block_avx2_gather = surface_block_any<true>;
 
 // ---------------------------------------------------------------- 4. z span
 
@@ -283,6 +340,10 @@ void expand_palette_avx2(const uint8_t* src, ptrdiff_t src_stride, int width, in
 }  // namespace
 
 const Kernels kAvx2 = {"avx2", surface_span_avx2, surface_block_avx2, z_span_avx2, expand_palette_avx2};
+// The gather versions of the two texel-fetching kernels (slower on the Intel machines
+// measured so far; kept for AMD and for the benchmark).
+const Kernels kAvx2Gather = {"avx2g", surface_span_avx2_gather, surface_block_avx2_gather, z_span_avx2,
+                             expand_palette_avx2};
 
 }  // namespace sb::simd::detail
 

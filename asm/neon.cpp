@@ -110,7 +110,7 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
   for (int by = 0; by < bh; ++by) {
     std::memcpy(r0, grid + by * grid_width, size_t(cols) * 2);
     std::memcpy(r1, grid + (by + 1) * grid_width, size_t(cols) * 2);
-    for (int k = cols; k < cols + 24; ++k) r0[k] = r1[k] = 0;
+    for (int k = cols; k < kMaxBlockColumns + 24; ++k) r0[k] = r1[k] = 0;
     for (int fy = 0; fy < B; ++fy) {
       const int y = by * B + fy;
       const uint16_t wt = uint16_t(B - fy), wb = uint16_t(fy);

@@ -33,23 +33,28 @@ void surface_span_sse2(uint8_t* __restrict dest, int n, const uint8_t* __restric
   const __m128i CU = _mm_set1_epi32(int32_t(6 * ddu_)), CV = _mm_set1_epi32(int32_t(6 * ddv_));
   const __m128i EU = _mm_set1_epi32(int32_t(16 * ddu_)), EV = _mm_set1_epi32(int32_t(16 * ddv_));
   const __m128i W = _mm_set1_epi32(width);  // pmaddwd pairs (v >> 16, 0) with (width, 0)
-  alignas(16) uint32_t addr[16];
-  for (int done = 0; done < n; done += 16) {
-    for (int j = 0; j < 4; ++j) {
-      const __m128i a = add32(_mm_madd_epi16(_mm_srli_epi32(V, 16), W), _mm_srli_epi32(U, 16));
-      _mm_store_si128(reinterpret_cast<__m128i*>(addr + 4 * j), a);
-      U = add32(U, add32(DU, CU));
-      V = add32(V, add32(DV, CV));
-      DU = add32(DU, EU);
-      DV = add32(DV, EV);
-    }
-    uint8_t* d = dest + done;
-    const int m = n - done;
-    if (m >= 16) {
-      for (int k = 0; k < 16; ++k) d[k] = texels[addr[k]];
-    } else {
-      for (int k = 0; k < m; ++k) d[k] = texels[addr[k]];
-    }
+  // Addresses leave the vector two at a time through 64-bit moves (no store and reload).
+  auto next = [&]() {
+    const __m128i a = add32(_mm_madd_epi16(_mm_srli_epi32(V, 16), W), _mm_srli_epi32(U, 16));
+    U = add32(U, add32(DU, CU));
+    V = add32(V, add32(DV, CV));
+    DU = add32(DU, EU);
+    DV = add32(DV, EV);
+    return a;
+  };
+  int k = 0;
+  for (; k + 4 <= n; k += 4) {
+    const __m128i a = next();
+    const uint64_t lo = uint64_t(_mm_cvtsi128_si64(a)), hi = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(a, a)));
+    dest[k] = texels[uint32_t(lo)];
+    dest[k + 1] = texels[lo >> 32];
+    dest[k + 2] = texels[uint32_t(hi)];
+    dest[k + 3] = texels[hi >> 32];
+  }
+  if (k < n) {
+    alignas(16) uint32_t addr[4];
+    _mm_store_si128(reinterpret_cast<__m128i*>(addr), next());
+    for (int i = 0; k < n; ++i, ++k) dest[k] = texels[addr[i]];
   }
 }
 

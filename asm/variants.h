@@ -11,6 +11,7 @@ extern const Kernels kScalar;
 #define SB_SIMD_X86 1
 extern const Kernels kSse2;
 extern const Kernels kAvx2;
+extern const Kernels kAvx2Gather;
 #endif
 #if defined(SB_SIMD_HAVE_NEON)
 extern const Kernels kNeon;

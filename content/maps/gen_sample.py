@@ -196,7 +196,7 @@ def world_brushes():
         detail((x, y, 376), (x + 32, y + 32, 384), {"bottom": "light1", "top": "skip", "other": "metal1"}, True)
     detail((1144, 48, 64), (1152, 80, 96), {"x": "+0light", "other": "metal1"}, True)     # workshop east wall
     detail((-264, 320, 96), (-256, 352, 128), {"x": "+0light", "other": "metal1"}, True)  # reactor east wall
-    # Hall: hazard trim around the pool rim, a crate.
+    # Hall: a crate in the corner.
     detail((16, 320, 0), (80, 368, 48), "crate1", True)
     return brushes
 
@@ -207,7 +207,7 @@ def ent(classname, origin=None, **keys):
     if origin is not None:
         e.append(("origin", "%d %d %d" % origin))
     for k, v in keys.items():
-        e.append((k.lstrip("_") if not k.startswith("__") else "_" + k[2:], str(v)))
+        e.append((k, str(v)))
     return e
 
 
@@ -290,7 +290,6 @@ def brush_entities():
     # Teleporter in the gallery alcove: the trigger volume in front of the energy field.
     out.append((ent("trigger_teleport", None, target="hall_arrival"),
                 [box_brush((1664, 160, 192), (1680, 224, 304), "trigger")]))
-    # A clip brush over the crate stack in the courtyard (nothing stands on its top).
     return out
 
 
@@ -305,6 +304,7 @@ def liquid_brushes():
 
 
 def clip_brushes():
+    # A clip brush over the crate stack in the courtyard (nothing stands on its top).
     return [box_brush((-16, 640, 96), (112, 704, 160), "clip")]
 
 

@@ -1,4 +1,5 @@
-// engine/render/span_draw.cpp: scalar span drawers (the references for later SIMD kernels).
+// engine/render/span_draw.cpp: span drawers. The lit-surface run and the z fill call asm/
+// kernels (asm/kernels.h); the rest are scalar here.
 //
 // Sections: 1. gradients  2. the 16-pixel perspective walker  3. texel fetchers
 //           (lit surface, unlit texture, turbulence)  4. sky  5. solid, z, coverage
@@ -14,6 +15,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "asm/kernels.h"
 #include "engine/render/surface_math.h"
 
 namespace sb::render {
@@ -186,20 +188,17 @@ inline int wrap(int i, int n) {
 // Run drawers. Each copies what it reads into locals first: the destination is a byte
 // pointer, which may alias anything, so members would be reloaded after every store.
 
+// The lit-surface run is asm/'s surface_span kernel (asm/surface_span.h): the variant
+// chosen once at start, or its scalar reference (the loop that used to live here) when
+// simd::force_scalar() is on. The walker keeps every u, v inside the surface, which is
+// the kernel's contract. fn is read once per draw call.
 struct SurfaceRun {
   const uint8_t* texels;
-  int width;
-  void operator()(uint8_t* __restrict dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu,
+  int width, height;
+  simd::SurfaceSpanFn fn;
+  void operator()(uint8_t* dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu,
                   int32_t ddv) const {
-    const uint8_t* __restrict t = texels;
-    const int w = width;
-    for (int k = 0; k < n; ++k) {
-      dest[k] = t[(v >> 16) * w + (u >> 16)];
-      u += du;
-      v += dv;
-      du += ddu;
-      dv += ddv;
-    }
+    fn(dest, n, texels, width, height, u, v, du, dv, ddu, ddv);
   }
 };
 
@@ -258,7 +257,8 @@ struct TurbRun {
 
 void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
                         int width, int height, Framebuffer& fb) {
-  walk_spans(spans, count, g, max_fixed(width), max_fixed(height), fb, SurfaceRun{surface, width});
+  walk_spans(spans, count, g, max_fixed(width), max_fixed(height), fb,
+             SurfaceRun{surface, width, height, simd::active().surface_span});
   draw_z_spans(spans, count, g, fb);
   count_coverage(spans, count, fb);
 }
@@ -397,6 +397,7 @@ void draw_z_spans(const Span* spans, uint32_t count, const SpanGradients& g, Fra
   constexpr double kScale = 0x8000 * 65536.0;  // 16.16 of zi * 0x8000
   auto clampd = [](double x, double lo, double hi) { return x < lo ? lo : (x > hi ? hi : x); };
   const int64_t step = int64_t(clampd(g.zix * kScale, -double(1ll << 40), double(1ll << 40)));
+  const simd::ZSpanFn z_span = simd::active().z_span;
   for (uint32_t i = 0; i < count; ++i) {
     const int x = spans[i].x, y = spans[i].y, n = spans[i].count;  // locals: the stores below may alias
     if (n <= 0) continue;
@@ -407,10 +408,8 @@ void draw_z_spans(const Span* spans, uint32_t count, const SpanGradients& g, Fra
     const int64_t last = izi + step * (n - 1);
     constexpr int64_t kMax = (int64_t(0xffff) << 16) | 0xffff;
     if (izi >= 0 && izi <= kMax && last >= 0 && last <= kMax) {
-      for (int k = 0; k < n; ++k) {
-        z[k] = uint16_t(izi >> 16);
-        izi += step;
-      }
+      // asm/z_span.h: every value in 0..kMax, so the kernel's 32-bit modular walk is exact.
+      z_span(z, n, uint32_t(izi), uint32_t(step));
       continue;
     }
     for (int k = 0; k < n; ++k) {

@@ -1,5 +1,6 @@
-// engine/render/span_draw.h: the back end's span drawers (scalar reference versions;
-// SIMD twins will live in asm/ with these as their references).
+// engine/render/span_draw.h: the back end's span drawers. The lit-surface run and the z
+// fill go through asm/ kernels (asm/kernels.h: tuned variant or, when forced, the scalar
+// reference); the other drawers are scalar.
 //
 // Perspective: over a planar surface 1/z, u/z and v/z are affine in screen space.
 // SpanGradients holds them as functions of the pixel-centre coordinates (px, py) =

@@ -1,6 +1,7 @@
 // engine/render/surface_cache.cpp: building lit surfaces and keeping them in the cache.
 //
-// The builder walks the surface in light blocks of B = 16 >> mip texels. Within a block the
+// The builder is asm/'s surface_block kernel (asm/surface_block.h; tuned variants compute
+// the same numerators per texel with bilinear weights). Its scalar reference walks the surface in light blocks of B = 16 >> mip texels. Within a block the
 // shade is the bilinear blend of its four grid corners; rather than evaluating it per texel
 // it steps the exact numerators of shade_at() (see surface_math.h):
 //   left(fy)  = g00 * (B - fy) + g01 * fy        (steps by g01 - g00 per row)
@@ -11,6 +12,7 @@
 // multiples of 16 (>> mip: multiples of B), a block never straddles the texture's wrap.
 #include "engine/render/surface_cache.h"
 
+#include "asm/kernels.h"
 #include "engine/core/log.h"
 #include "engine/render/surface_math.h"
 
@@ -19,11 +21,6 @@ namespace sb::render {
 namespace {
 
 bool g_logged_exhausted = false;
-
-inline int wrap(int i, int n) {
-  int r = i % n;
-  return r < 0 ? r + n : r;
-}
 
 uint32_t light_key(const int32_t* values, int32_t texture) {
   uint32_t h = 2166136261u;  // FNV-1a over the inputs the surface depends on
@@ -52,39 +49,15 @@ void current_style_values(const Face& f, const int* lightstyles, int32_t* out) {
 
 void build_surface(const uint16_t* grid, int grid_width, const Texture& tex, int mip, int smin, int tmin,
                    int width, int height, const uint8_t* colormap, uint8_t* out) {
-  const int b = 16 >> mip;
-  const int shift = 2 * (4 - mip);
+  // asm/surface_block.h is this loop's contract (its scalar reference is the block-stepping
+  // loop described at the top of this file); texture sizes and texture_mins are multiples
+  // of 16, so at every mip they are multiples of the block size.
   const int tw = int(tex.width >> mip), th = int(tex.height >> mip);
-  const uint8_t* texels = tex.mips[mip];
-  const int soff = smin >> mip, toff = tmin >> mip;
-  const int bw = width / b, bh = height / b;
-
-  for (int by = 0; by < bh; ++by) {
-    const uint16_t* grow = grid + by * grid_width;
-    const int trow = wrap(by * b + toff, th);
-    uint8_t* drow = out + by * b * width;
-    for (int bx = 0; bx < bw; ++bx) {
-      const int32_t g00 = grow[bx], g10 = grow[bx + 1];
-      const int32_t g01 = grow[bx + grid_width], g11 = grow[bx + grid_width + 1];
-      int32_t left = g00 * b, right = g10 * b;  // numerators at fy = 0, scaled by B
-      const int32_t left_step = g01 - g00, right_step = g11 - g10;
-      const uint8_t* src = texels + trow * tw + wrap(bx * b + soff, tw);
-      uint8_t* dst = drow + bx * b;
-      for (int fy = 0; fy < b; ++fy) {
-        // left, right here hold g00*(B-fy) + g01*fy etc.; num(fx) = left*B + (right-left)*fx.
-        int32_t num = left * b;
-        const int32_t step = right - left;
-        for (int fx = 0; fx < b; ++fx) {
-          dst[fx] = colormap[((num >> shift) & 0xff00) + src[fx]];
-          num += step;
-        }
-        left += left_step;
-        right += right_step;
-        src += tw;
-        dst += width;
-      }
-    }
-  }
+  const int b = 16 >> mip;
+  const simd::SurfaceBlockFn fn =
+      (tw % b == 0 && th % b == 0 && smin % 16 == 0 && tmin % 16 == 0) ? simd::active().surface_block
+                                                                        : simd::surface_block_scalar;
+  fn(grid, grid_width, tex.mips[mip], tw, th, mip, smin >> mip, tmin >> mip, width, height, colormap, out);
 }
 
 const uint8_t* fetch_surface(BspWorld& world, uint32_t face_index, int mip, const RenderInputs& in,

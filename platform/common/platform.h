@@ -40,7 +40,8 @@ size_t requested_block_mib(int argc, const char* const* argv);
 // Seconds from a monotonic clock (arbitrary origin).
 double now_seconds();
 
-// Writes an 8-bit image + 768-byte RGB palette as an RGB PNG (libpng).
+// Writes an 8-bit image + 768-byte RGB palette as an RGB PNG (libpng; without libpng,
+// STARBOW_PNG=OFF, an uncompressed PNG from builtin_png/png_writer_stored.cpp).
 // False with a message naming the file on failure.
 bool write_png_rgb(const char* path, const uint8_t* pixels, int width, int height, int stride,
                    const uint8_t* palette, char* error, size_t error_size);

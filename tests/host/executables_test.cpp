@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "tests/host/host_test_util.h"
+#include "tests/support/build_features.h"
 #include "tests/support/quake_data.h"
 
 namespace sb::test {
@@ -39,10 +40,13 @@ void expect_good_png(const std::string& path, int w, int h) {
 class Executables : public ::testing::Test {
  protected:
   void SetUp() override {
+    SB_REQUIRE_NATIVE_PROGRAMS();  // cross builds: tests/toolchain runs starbow through the emulator
     dir_ = make_temp_dir("exe");
     ASSERT_FALSE(dir_.empty());
   }
-  void TearDown() override { fs::remove_all(dir_); }
+  void TearDown() override {
+    if (!dir_.empty()) fs::remove_all(dir_);
+  }
   std::string dir_;
 };
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/build_features.h"
 #include "tests/support/png_image.h"
 #include "tests/support/quake_data.h"
 #include "tests/support/reference_renderer.h"
@@ -56,6 +57,7 @@ class GoldenTest : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(GoldenTest, MatchesApprovedImages) {
   SB_REQUIRE_QUAKE_DATA();
+  SB_REQUIRE_PNG();  // the approved images are PNG files
   const std::string map = GetParam();
   TestWorld tw(map);
   ASSERT_NE(tw.world(), nullptr) << tw.error();

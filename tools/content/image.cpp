@@ -35,13 +35,16 @@ Image downsample(const Image& img, int level) {
           ++count[k];
         }
       }
-      // Majority class; ties: fullbright (1) over lit (0) over transparent (2).
-      int best = 1;
-      if (count[0] > count[best]) best = 0;
-      if (count[2] > count[best]) best = 2;
+      // Transparent only where most of the block is; otherwise the colour is the mean of
+      // every opaque texel (so the mean colour survives), fullbright when at least half
+      // of the opaque texels are.
       Texel& o = out.texels[size_t(y) * out.width + x];
-      o.cls = TexelClass(best);
-      o.c = sum[best] * (1.0f / float(count[best]));
+      if (count[2] > count[0] + count[1]) {
+        o = {{0, 0, 0}, TexelClass::kTransparent};
+        continue;
+      }
+      o.cls = count[1] >= count[0] ? TexelClass::kFullbright : TexelClass::kLit;
+      o.c = (sum[0] + sum[1]) * (1.0f / float(count[0] + count[1]));
     }
   }
   return out;

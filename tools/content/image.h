@@ -7,9 +7,10 @@
 //   kFullbright   224..254, unchanged by light
 //   kTransparent  index 0 (sky front layer holes)
 // Mip m (0..3) of a W x H image is (W >> m) x (H >> m): each texel is the box average
-// (in gamma RGB) of the 2^m x 2^m full-resolution texels of the block's majority class
-// (ties prefer fullbright over lit over transparent), then quantised. So every mip is
-// filtered from the original colours, not from an already quantised level.
+// (in gamma RGB) of the opaque texels among the 2^m x 2^m full-resolution texels of its
+// block, fullbright when at least half of those are, transparent when most of the block
+// is; then quantised. So every mip is filtered from the original colours, not from an
+// already quantised level, and keeps the mean colour.
 #pragma once
 #include <array>
 #include <cstdint>

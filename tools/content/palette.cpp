@@ -46,7 +46,7 @@ Rgb ramp_color(const RampSpec& r, int shade) {
 void set_fullbrights(std::array<Rgb, 256>& c) {
   for (int i = 0; i < 8; ++i) {  // amber .. white
     float t = i / 7.0f;
-    c[kFbWarmWhite + i] = from_oklch_clipped(0.78f + 0.22f * t, 0.13f * (1 - t) + 0.01f, 80);
+    c[kFbWarmWhite + i] = from_oklch_clipped(0.78f + 0.19f * t, 0.13f * (1 - t) + 0.015f, 80);
   }
   for (int i = 0; i < 8; ++i) {  // deep red .. yellow
     float t = i / 7.0f;
@@ -78,7 +78,7 @@ PaletteData make_palette() {
   return p;
 }
 
-int nearest_index(const PaletteData& pal, Rgb c, IndexSet set) {
+int nearest_index(const PaletteData& pal, Rgb c, IndexSet set, float lightness_weight) {
   int first = 0, last = kFirstFullbright - 1;
   if (set == IndexSet::kLitOpaque) first = 1;
   if (set == IndexSet::kFullbright) {
@@ -89,7 +89,8 @@ int nearest_index(const PaletteData& pal, Rgb c, IndexSet set) {
   int best = first;
   float best_d = 1e30f;
   for (int i = first; i <= last; ++i) {
-    float d = lab_dist2(q, pal.lab[i]);
+    float dL = (q.L - pal.lab[i].L) * lightness_weight, da = q.a - pal.lab[i].a, db = q.b - pal.lab[i].b;
+    float d = dL * dL + da * da + db * db;
     if (d < best_d) {
       best_d = d;
       best = i;
@@ -108,7 +109,13 @@ std::vector<uint8_t> make_colormap(const PaletteData& pal) {
         out = uint8_t(i);
       } else {
         Rgb src = rgb8(pal.bytes[i * 3], pal.bytes[i * 3 + 1], pal.bytes[i * 3 + 2]);
-        out = uint8_t(nearest_index(pal, src * f, IndexSet::kLit));
+        out = uint8_t(nearest_index(pal, src * f, IndexSet::kLit, row < kColormapIdentityRow ? 1.0f : kColormapLightnessWeight));
+        // Never brighter than the row above (lighter light): keeps light gradients free
+        // of bright bands where the nearest colour jumps between ramps.
+        if (row > 0) {
+          uint8_t above = map[size_t(row - 1) * 256 + i];
+          if (pal.lab[out].L > pal.lab[above].L) out = above;
+        }
       }
       map[size_t(row) * 256 + i] = out;
     }

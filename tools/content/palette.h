@@ -12,8 +12,9 @@
 // Colormap: 64 rows x 256 entries (+1 trailing byte = number of fullbright colours,
 // 32, as Quake's files carry). Row r lights a colour by factor (64 - r) / 32:
 // row 0 = 2x overbright, row 32 = 1x (identity for 0..223), row 63 = 1/32.
-// Entry [r][i] = the non-fullbright index nearest in OkLab to palette[i] * factor(r)
-// (channels clamped to 1); fullbright indices and 255 map to themselves in every row.
+// Entry [r][i] = the non-fullbright index nearest (OkLab, lightness weighted) to
+// palette[i] * factor(r) (channels clamped to 1), except that an entry is never lighter
+// (OkLab L) than the entry one row above; fullbright indices and 255 map to themselves.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -60,8 +61,13 @@ enum class IndexSet : uint8_t {
   kLitOpaque,  // 1..223: sky front layer texels that must not read as transparent
   kFullbright, // 224..254
 };
-// Index in `set` nearest (OkLab) to c.
-int nearest_index(const PaletteData& pal, Rgb c, IndexSet set);
+// Index in `set` nearest to c in OkLab, with the lightness difference scaled by
+// lightness_weight (1 = plain OkLab distance, used for textures).
+int nearest_index(const PaletteData& pal, Rgb c, IndexSet set, float lightness_weight = 1.0f);
+// The colormap weighs lightness twice in its darkening rows (32..63; plain OkLab in the
+// overbright rows, where hue matters more): a darkened colour keeps its brightness step
+// first and its hue second (ramps are sparse in the dark).
+constexpr float kColormapLightnessWeight = 2.0f;
 
 // 64 * 256 + 1 bytes: colormap.lmp contents (see the header comment).
 std::vector<uint8_t> make_colormap(const PaletteData& pal);
