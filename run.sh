@@ -24,8 +24,14 @@ if [ $# -gt 0 ]; then
 fi
 echo "no display: running headless (screenshots in out/, flythrough figures below)"
 mkdir -p out
-args=()
-for map in start lq_e0m1 lq_e1m1; do
-  args+=(+viewmap "$map" +screenshot "out/$map.png" +flythrough 300)
-done
-exec "$bin/starbow" -res 640x480 "${args[@]}" +quit
+# Starbow's own sample world (content/, compiled by tools/ during the build).
+"$bin/starbow" -res 640x480 +viewmap sample +screenshot out/sample.png +flythrough 300 +quit
+# LibreQuake's maps too, when the shared content sits beside the source tree.
+quake="$(pwd)/../shared/quake"
+if [ -d "$quake/lq1/maps" ]; then
+  args=()
+  for map in start lq_e0m1 lq_e1m1; do
+    args+=(+viewmap "$map" +screenshot "out/$map.png" +flythrough 300)
+  done
+  exec "$bin/starbow" -basedir "$quake" -game lq1 -res 640x480 "${args[@]}" +quit
+fi

@@ -179,6 +179,9 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
   alignas(16) uint8_t tmp[16];
   alignas(32) uint16_t idx[16];
 
+  const uint8_t* const tex_end = texels + tw * th;
+  uint8_t rowbuf[kRowBufferBytes];
+  int ty = wrap(toff, th);  // texture row of surface row y
   for (int by = 0; by < bh; ++by) {
     const uint16_t* g0 = grid + by * grid_width;
     const uint16_t* g1 = g0 + grid_width;
@@ -192,11 +195,14 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
       const __m256i wt = _mm256_set1_epi16(int16_t(B - fy)), wb = _mm256_set1_epi16(int16_t(fy));
       const __m256i W00 = _mm256_mullo_epi16(A[0], wt), W01 = _mm256_mullo_epi16(A[0], wb);
       const __m256i W10 = _mm256_mullo_epi16(A[1], wt), W11 = _mm256_mullo_epi16(A[1], wb);
-      const uint8_t* trow = texels + wrap(y + toff, th) * tw;
+      const uint8_t* trow = texels + ty * tw;
+      if (++ty == th) ty = 0;
       uint8_t* drow = out + y * width;
-      int x = 0, c = c0;
-      while (x < width) {
-        const int len = segment_length(width - x, c, tw);
+      const uint8_t* row_end;
+      const uint8_t* texrow = texel_row(trow, c0, tw, width, tex_end, rowbuf, &row_end);
+      {
+        constexpr int x = 0;
+        const int len = width;
         for (int i = 0; i < len; i += 16) {
           const int m = len - i < 16 ? len - i : 16;
           const int bx0 = (x + i) >> LB;
@@ -218,14 +224,7 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
           }
           const __m256i num0 = add32(_mm256_madd_epi16(e00, W00), _mm256_madd_epi16(e01, W01));
           const __m256i num1 = add32(_mm256_madd_epi16(e10, W10), _mm256_madd_epi16(e11, W11));
-          const uint8_t* src = trow + c + i;
-          __m128i t;
-          if (m == 16) {
-            t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src));
-          } else {
-            std::memcpy(tmp, src, size_t(m));
-            t = _mm_load_si128(reinterpret_cast<const __m128i*>(tmp));
-          }
+          const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels16(texrow + i, m, row_end, tmp)));
           const __m256i i0 = add32(_mm256_and_si256(_mm256_srli_epi32(num0, S), mask), _mm256_cvtepu8_epi32(t));
           const __m256i i1 = add32(_mm256_and_si256(_mm256_srli_epi32(num1, S), mask),
                                    _mm256_cvtepu8_epi32(_mm_srli_si128(t, 8)));
@@ -237,16 +236,9 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
             // Indices fit 16 bits: pack (per 128-bit half, then put the halves in order).
             const __m256i p = _mm256_permute4x64_epi64(_mm256_packus_epi32(i0, i1), 0xd8);
             _mm256_store_si256(reinterpret_cast<__m256i*>(idx), p);
-            uint8_t* d = drow + x + i;
-            if (m == 16) {
-              for (int k = 0; k < 16; ++k) d[k] = colormap[idx[k]];
-            } else {
-              for (int k = 0; k < m; ++k) d[k] = colormap[idx[k]];
-            }
+            lookup_n(drow + x + i, colormap, idx, m);
           }
         }
-        x += len;
-        c = 0;
       }
     }
   }

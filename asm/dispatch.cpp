@@ -1,8 +1,7 @@
 // asm/dispatch.cpp: choosing the variant of each kernel once, and the scalar override.
 //
 // The tuned table takes, per kernel, the variant that measured fastest on the machines we
-// have (bench/asm_bench.cpp prints the figures; see asm/README.md or the issue notes) among
-// those the CPU supports. x86-64: CPU detection with __builtin_cpu_supports (a compiler
+// have (bench/asm_bench.cpp prints the figures) among those the CPU supports. x86-64: CPU detection with __builtin_cpu_supports (a compiler
 // builtin: no OS header). ARM: NEON is a build-time property (aarch64 always; armv7 when
 // the build enables it), so the choice is made by the compiler.
 #include <atomic>

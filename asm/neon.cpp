@@ -107,6 +107,9 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
   alignas(16) uint16_t idx[16];
   uint8_t tmp[16];
 
+  const uint8_t* const tex_end = texels + tw * th;
+  uint8_t rowbuf[kRowBufferBytes];
+  int ty = wrap(toff, th);  // texture row of surface row y
   for (int by = 0; by < bh; ++by) {
     std::memcpy(r0, grid + by * grid_width, size_t(cols) * 2);
     std::memcpy(r1, grid + (by + 1) * grid_width, size_t(cols) * 2);
@@ -119,11 +122,14 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
       const uint16x8_t w10[2] = {vmulq_n_u16(FX0, wt), vmulq_n_u16(FX1, wt)};
       const uint16x8_t w01[2] = {vmulq_n_u16(BX0, wb), vmulq_n_u16(BX1, wb)};
       const uint16x8_t w11[2] = {vmulq_n_u16(FX0, wb), vmulq_n_u16(FX1, wb)};
-      const uint8_t* trow = texels + wrap(y + toff, th) * tw;
+      const uint8_t* trow = texels + ty * tw;
+      if (++ty == th) ty = 0;
       uint8_t* drow = out + y * width;
-      int x = 0, c = c0;
-      while (x < width) {
-        const int len = segment_length(width - x, c, tw);
+      const uint8_t* row_end;
+      const uint8_t* texrow = texel_row(trow, c0, tw, width, tex_end, rowbuf, &row_end);
+      {
+        constexpr int x = 0;
+        const int len = width;
         for (int i = 0; i < len; i += 16) {
           const int m = len - i < 16 ? len - i : 16;
           const int bx0 = (x + i) >> LB;
@@ -142,28 +148,13 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
             rows16[h] = vcombine_u16(vshrn_n_u32(lo, S + 8), vshrn_n_u32(hi, S + 8));
           }
           const uint8x16_t rows = vcombine_u8(vmovn_u16(rows16[0]), vmovn_u16(rows16[1]));
-          const uint8_t* src = trow + c + i;
-          uint8x16_t t;
-          if (m == 16) {
-            t = vld1q_u8(src);
-          } else {
-            std::memset(tmp, 0, sizeof tmp);
-            std::memcpy(tmp, src, size_t(m));
-            t = vld1q_u8(tmp);
-          }
+          const uint8x16_t t = vld1q_u8(texels16(texrow + i, m, row_end, tmp));
           uint8x16x2_t pair;
           pair.val[0] = t;
           pair.val[1] = rows;
           vst2q_u8(reinterpret_cast<uint8_t*>(idx), pair);
-          uint8_t* d = drow + x + i;
-          if (m == 16) {
-            for (int k = 0; k < 16; ++k) d[k] = colormap[idx[k]];
-          } else {
-            for (int k = 0; k < m; ++k) d[k] = colormap[idx[k]];
-          }
+          lookup_n(drow + x + i, colormap, idx, m);
         }
-        x += len;
-        c = 0;
       }
     }
   }

@@ -86,6 +86,9 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
   alignas(16) uint16_t idx[16];
   alignas(16) uint8_t tmp[16];
 
+  const uint8_t* const tex_end = texels + tw * th;
+  uint8_t rowbuf[kRowBufferBytes];
+  int ty = wrap(toff, th);  // texture row of surface row y
   for (int by = 0; by < bh; ++by) {
     const uint16_t* g0 = grid + by * grid_width;
     const uint16_t* g1 = g0 + grid_width;
@@ -102,11 +105,14 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
         W0[j] = _mm_mullo_epi16(A[j], wt);
         W1[j] = _mm_mullo_epi16(A[j], wb);
       }
-      const uint8_t* trow = texels + wrap(y + toff, th) * tw;
+      const uint8_t* trow = texels + ty * tw;
+      if (++ty == th) ty = 0;
       uint8_t* drow = out + y * width;
-      int x = 0, c = c0;
-      while (x < width) {
-        const int len = segment_length(width - x, c, tw);
+      const uint8_t* row_end;
+      const uint8_t* texrow = texel_row(trow, c0, tw, width, tex_end, rowbuf, &row_end);
+      {
+        constexpr int x = 0;
+        const int len = width;
         for (int i = 0; i < len; i += 16) {
           const int m = len - i < 16 ? len - i : 16;
           const int bx0 = (x + i) >> LB;
@@ -125,28 +131,14 @@ void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* tex
             const __m128i num = add32(_mm_madd_epi16(e0, W0[j]), _mm_madd_epi16(e1, W1[j]));
             row[j] = _mm_and_si128(_mm_srli_epi32(num, S), mask);
           }
-          const uint8_t* src = trow + c + i;
-          __m128i t;
-          if (m == 16) {
-            t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src));
-          } else {
-            std::memcpy(tmp, src, size_t(m));
-            t = _mm_load_si128(reinterpret_cast<const __m128i*>(tmp));
-          }
+          const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels16(texrow + i, m, row_end, tmp)));
           // Rows are at most 0x3f00: the signed pack is exact.
           _mm_store_si128(reinterpret_cast<__m128i*>(idx),
                           _mm_add_epi16(_mm_packs_epi32(row[0], row[1]), _mm_unpacklo_epi8(t, zero)));
           _mm_store_si128(reinterpret_cast<__m128i*>(idx + 8),
                           _mm_add_epi16(_mm_packs_epi32(row[2], row[3]), _mm_unpackhi_epi8(t, zero)));
-          uint8_t* d = drow + x + i;
-          if (m == 16) {
-            for (int k = 0; k < 16; ++k) d[k] = colormap[idx[k]];
-          } else {
-            for (int k = 0; k < m; ++k) d[k] = colormap[idx[k]];
-          }
+          lookup_n(drow + x + i, colormap, idx, m);
         }
-        x += len;
-        c = 0;
       }
     }
   }

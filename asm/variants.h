@@ -2,6 +2,9 @@
 // and small helpers the tuned variants share. Each table exists only where its file
 // compiles its code (see asm/CMakeLists.txt); a missing kernel falls back to the scalar one.
 #pragma once
+#include <cstdint>
+#include <cstring>
+
 #include "asm/kernels.h"
 
 namespace sb::simd::detail {
@@ -23,8 +26,47 @@ inline int wrap(int i, int n) {
   return r < 0 ? r + n : r;
 }
 
-// The number of texels of a surface row that can be read contiguously from texture column
-// c onwards: up to the texture row's end (the builders walk a row in such segments).
-inline int segment_length(int left, int c, int tex_width) { return left < tex_width - c ? left : tex_width - c; }
+// The texels of one surface row (texture row trow from column c0, wrapping at tex_width) as
+// one contiguous run: trow + c0 itself when the row does not wrap, else a copy in buf
+// (width + 16 bytes; the 16 after the row are zeroed). *end gets the run's readable end.
+constexpr int kRowBufferBytes = kMaxBlockColumns * 16 + 16;
+inline const uint8_t* texel_row(const uint8_t* trow, int c0, int tex_width, int width, const uint8_t* tex_end,
+                                uint8_t* buf, const uint8_t** end) {
+  if (width <= tex_width - c0) {
+    *end = tex_end;
+    return trow + c0;
+  }
+  int x = 0, c = c0;
+  while (x < width) {
+    const int len = width - x < tex_width - c ? width - x : tex_width - c;
+    std::memcpy(buf + x, trow + c, size_t(len));
+    x += len;
+    c = 0;
+  }
+  std::memset(buf + width, 0, 16);
+  *end = buf + width + 16;
+  return buf;
+}
+
+// d[k] = table[idx[k]] for k < 16 (or < m): the builders' colormap lookups, unrolled.
+inline void lookup16(uint8_t* __restrict d, const uint8_t* __restrict table, const uint16_t* __restrict idx) {
+#pragma GCC unroll 16
+  for (int k = 0; k < 16; ++k) d[k] = table[idx[k]];
+}
+inline void lookup_n(uint8_t* __restrict d, const uint8_t* __restrict table, const uint16_t* __restrict idx, int m) {
+  if (m >= 16) {
+    lookup16(d, table, idx);
+  } else {
+    for (int k = 0; k < m; ++k) d[k] = table[idx[k]];
+  }
+}
+
+// Texels src[0 .. 15] into buf when only m < 16 of them may be read (the rest zero), or src
+// itself when all 16 lie before `end`.
+inline const uint8_t* texels16(const uint8_t* src, int m, const uint8_t* end, uint8_t* buf) {
+  if (m >= 16 || src + 16 <= end) return src;
+  for (int k = 0; k < 16; ++k) buf[k] = k < m ? src[k] : 0;
+  return buf;
+}
 
 }  // namespace sb::simd::detail

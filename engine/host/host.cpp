@@ -93,8 +93,13 @@ void missing_content_message(const HostState& h, const char* basedir, const char
 void init_content(HostState& h) {
   const char* basedir = h.cmdline.basedir[0] ? h.cmdline.basedir : h.config.default_basedir;
   if (!basedir || !*basedir) basedir = ".";
-  const char* game = h.cmdline.game[0] ? h.cmdline.game : kDefaultGame;
-  Status s = open_search_path(h.files, basedir, game, kDefaultGame, h.memory.permanent);
+  // -game wins; with -basedir alone the game is lq1 (LibreQuake's folder); with neither,
+  // the platform's default content (Starbow's own game folder when it has been built).
+  const char* base_game = h.cmdline.basedir[0] || !h.config.default_game || !*h.config.default_game
+                              ? kDefaultGame
+                              : h.config.default_game;
+  const char* game = h.cmdline.game[0] ? h.cmdline.game : base_game;
+  Status s = open_search_path(h.files, basedir, game, base_game, h.memory.permanent);
   h.have_content = s.is_ok();
   if (!s) log_error("search path: %s", s.message());
   Status p = h.have_content ? load_palette_and_colormap(h.files, h.memory.scratch, h.palette, h.colormap)
@@ -105,10 +110,13 @@ void init_content(HostState& h) {
   }
 }
 
-// Default startup: the + commands decide; without a map among them, view start.
+// Default startup: the + commands decide; without a map among them, view Starbow's own
+// sample map, or LibreQuake's start.
 Status queue_startup_commands(HostState& h) {
   if (!h.cmdline.has_map_command) {
-    if (h.have_content && h.files.exists("maps/start.bsp")) {
+    if (h.have_content && h.files.exists("maps/sample.bsp")) {
+      SB_TRY(h.console.append("viewmap sample"));
+    } else if (h.have_content && h.files.exists("maps/start.bsp")) {
       SB_TRY(h.console.append("viewmap start"));
     } else {
       const char* basedir = h.cmdline.basedir[0] ? h.cmdline.basedir : h.config.default_basedir;

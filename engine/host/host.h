@@ -42,6 +42,7 @@ struct HostConfig {
   int argc = 0;            // the process command line (see cmdline.h)
   const char* const* argv = nullptr;
   const char* default_basedir = ".";  // used when -basedir is absent
+  const char* default_game = "lq1";    // game folder used when neither -basedir nor -game is given
   // The largest framebuffer engine_frame may be asked for (a resizable window says
   // 1920x1080). 0 = the initial size. When it does not fit the permanent region the
   // host keeps the initial size and renders resizes at that size (logged once).

@@ -25,6 +25,7 @@ int run_headless(const char* program, int argc, const char* const* argv) {
   config.argc = argc;
   config.argv = argv;
   config.default_basedir = default_basedir();
+  config.default_game = default_game();
   config.services = make_host_services();
   Status s = engine_init(config);
   if (!s) {

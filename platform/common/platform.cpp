@@ -93,10 +93,26 @@ double cpu_mhz() {
   return mhz > 0.0 ? mhz : 0.0;
 }
 
+namespace {
+bool have_starbow_content() {
+#ifdef STARBOW_CONTENT_BASEDIR
+  struct stat st;
+  return stat(STARBOW_CONTENT_BASEDIR "/starbow/gfx/palette.lmp", &st) == 0;
+#else
+  return false;
+#endif
+}
+}  // namespace
+
 const char* default_basedir() {
+#ifdef STARBOW_CONTENT_BASEDIR
+  if (have_starbow_content()) return STARBOW_CONTENT_BASEDIR;
+#endif
   struct stat st;
   if (stat(STARBOW_DEFAULT_BASEDIR, &st) == 0 && S_ISDIR(st.st_mode)) return STARBOW_DEFAULT_BASEDIR;
   return ".";
 }
+
+const char* default_game() { return have_starbow_content() ? "starbow" : host::kDefaultGame; }
 
 }  // namespace sb::platform

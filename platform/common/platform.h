@@ -58,6 +58,9 @@ double cpu_mhz();
 // The source tree's default content folder (../shared/quake next to the project)
 // when it exists, else "." (the current directory).
 const char* default_basedir();
+// The game folder that goes with default_basedir(): "starbow" for Starbow's own content
+// (built into <build>/content/starbow), else "lq1".
+const char* default_game();
 
 }  // namespace sb::platform
 

@@ -138,6 +138,7 @@ int run_window(int argc, char** argv, const host::CommandLine& cl) {
   config.argc = argc;
   config.argv = argv;
   config.default_basedir = platform::default_basedir();
+  config.default_game = platform::default_game();
   config.max_width = host::kMaxWidth;  // the window may grow to this
   config.max_height = host::kMaxHeight;
   config.services = platform::make_host_services();
