@@ -6,6 +6,7 @@
 // the build enables it), so the choice is made by the compiler.
 #include <atomic>
 #include <cstdio>
+#include <cstdlib>
 
 #include "asm/variants.h"
 
@@ -32,18 +33,19 @@ Choice make_choice() {
   Choice c{kScalar, {}};
   c.tuned.name = "tuned";
 #if defined(SB_SIMD_X86)
-  // SSE2's span kernel loses to the scalar loop on the engine's 16-pixel runs (its lane
-  // setup costs more than it saves), so without AVX2 the span stays scalar. Gathers
-  // (kAvx2Gather) measured slower than scalar loads on every kernel here.
+  // The span kernel stays scalar: SSE2 loses to it on 16-pixel runs (its lane setup costs
+  // more than it saves), and AVX2, 1.2x faster on full 16-pixel runs in asm_bench, made
+  // whole frames (starbow_bench, lq_e1m1 1080p) no faster or slower: real spans are often
+  // shorter than a run. Gathers (kAvx2Gather) measured slower than scalar loads on every
+  // kernel on this Intel machine.
   c.tuned.surface_block = kSse2.surface_block;
   c.tuned.z_span = kSse2.z_span;
   c.tuned.expand_palette = kSse2.expand_palette;
   const char *span = "scalar", *block = "sse2", *z = "sse2", *pal = "sse2";
   if (cpu_has_avx2()) {
-    c.tuned.surface_span = kAvx2.surface_span;
     c.tuned.surface_block = kAvx2.surface_block;
     c.tuned.z_span = kAvx2.z_span;
-    span = block = z = "avx2";
+    block = z = "avx2";
   }
 #elif defined(SB_SIMD_HAVE_NEON)
   c.tuned.surface_span = kNeon.surface_span;
@@ -64,7 +66,14 @@ const Choice& choice() {
   return c;
 }
 
-std::atomic<bool> g_forced{false};
+// STARBOW_SCALAR=1 in the environment starts with the scalar references forced (for
+// benchmarks of whole frames before the host has a console variable for it).
+bool env_forces_scalar() {
+  const char* e = std::getenv("STARBOW_SCALAR");
+  return e && e[0] && !(e[0] == '0' && e[1] == 0);
+}
+
+std::atomic<bool> g_forced{env_forces_scalar()};
 
 }  // namespace
 }  // namespace detail

@@ -3,10 +3,12 @@
 // __builtin_cpu_supports; NEON is chosen at compile time where the target has it).
 //
 //   kernel          contract               variants (when built and the CPU has them)
-//   surface_span    asm/surface_span.h     scalar, sse2, avx2 (gather), neon
-//   surface_block   asm/surface_block.h    scalar, sse2, avx2 (gather), neon
+//   surface_span    asm/surface_span.h     scalar, sse2, avx2, avx2g (gathers), neon
+//   surface_block   asm/surface_block.h    scalar, sse2, avx2, avx2g (gathers), neon
 //   z_span          asm/z_span.h           scalar, sse2, avx2, neon
-//   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gather), neon
+//   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gathers), neon
+// The tuned mix (asm/dispatch.cpp) on x86-64: scalar span (the vector ones did not speed
+// up whole frames), avx2 (else sse2) builder and z, sse2 palette; on ARM: neon.
 //
 // Every variant of a kernel writes exactly the bytes its scalar reference writes
 // (tests/asm checks it on random and edge inputs). Not here yet: the alias-model span
@@ -35,7 +37,8 @@ struct Kernels {
 const Kernels& active();
 const Kernels& scalar_kernels();
 
-// Force the scalar references (true) or return to the tuned choice (false).
+// Force the scalar references (true) or return to the tuned choice (false). The program
+// starts forced when the environment variable STARBOW_SCALAR is set (and not "0").
 void force_scalar(bool on);
 bool scalar_forced();
 
