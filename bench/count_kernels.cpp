@@ -1,0 +1,170 @@
+// bench/count_kernels.cpp (starbow_count_kernels): a deterministic driver for instruction
+// counting (bench/count.sh). It runs one asm/ kernel variant `reps` times over fixed inputs
+// and prints a checksum; no clock reads, no randomness beyond a fixed-seed LCG, so two runs
+// with reps N and 2N differ by exactly N repetitions' worth of kernel work and the counting
+// tool (valgrind, qemu's insn plugin) can difference them to cancel startup and setup.
+//
+//   starbow_count_kernels list                       "case variant units" per line, where
+//                                                    units = pixels (texels) per repetition
+//   starbow_count_kernels <case> <variant> <reps>    run; prints "case variant units checksum"
+//
+// Cases (units per repetition):
+//   span16       one 1920-pixel span of a 256x256 surface in runs of 16 (the engine's calls)
+//   span1920     the same span in one call (linear steps): the loop without per-call cost
+//   block_mip<m> surface block builder, 256x256 surface extent at mip m (texels = (256>>m)^2),
+//                64x64 texture (>> m), 17x17 light grid
+//   z1920        z span fill, 1920 pixels
+//   palette      8-bit to 32-bit palette expansion, 320x200 at scale 1 (source pixels)
+// Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
+// avx2g, neon), except the "tuned" mix (it is one of the others per kernel).
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <vector>
+
+#include "asm/kernels.h"
+
+namespace {
+
+using sb::simd::Kernels;
+
+constexpr int kSpan = 1920, kSurf = 256, kPalW = 320, kPalH = 200;
+
+struct Lcg {
+  uint32_t s = 12345;
+  uint32_t next() { return s = s * 1664525u + 1013904223u; }
+};
+
+struct Run {
+  int offset, n;
+  int32_t u, v, du, dv;
+};
+
+// A span crossing the surface diagonally with a perspective bend: u, v at each run's ends
+// exact (integer-only, so every target computes the same inputs), linear within a run.
+std::vector<Run> span_runs() {
+  std::vector<Run> runs;
+  const int64_t umax = (int64_t(kSurf) << 16) - 1;
+  auto at = [&](int x, int32_t* u, int32_t* v) {
+    // u = umax * x / (x + span/2) * 1.5 (bends towards the far end), v = linear 0.1 .. 0.9
+    const int64_t uu = umax * 3 * x / (2 * (int64_t(x) + kSpan / 2)) ;
+    const int64_t vv = umax / 10 + umax * 8 * x / (10 * int64_t(kSpan));
+    *u = int32_t(uu < umax ? uu : umax);
+    *v = int32_t(vv < umax ? vv : umax);
+  };
+  for (int x = 0; x < kSpan; x += 16) {
+    const int n = kSpan - x < 16 ? kSpan - x : 16;
+    int32_t ua, va, ub, vb;
+    at(x, &ua, &va);
+    at(x + n - 1, &ub, &vb);
+    const int steps = n > 1 ? n - 1 : 1;
+    runs.push_back({x, n, ua, va, (ub - ua) / steps, (vb - va) / steps});
+  }
+  return runs;
+}
+
+const Kernels* find_variant(const char* name) {
+  for (int i = 0; i < sb::simd::variant_count(); ++i) {
+    const sb::simd::Variant v = sb::simd::variant(i);
+    if (v.kernels && v.supported && std::strcmp(v.kernels->name, name) == 0) return v.kernels;
+  }
+  return nullptr;
+}
+
+const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
+                              "block_mip2", "block_mip3", "z1920", "palette"};
+
+long units_of(const char* c) {
+  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0) return kSpan;
+  if (std::strncmp(c, "block_mip", 9) == 0) {
+    const int e = kSurf >> (c[9] - '0');
+    return long(e) * e;
+  }
+  if (std::strcmp(c, "palette") == 0) return long(kPalW) * kPalH;
+  return 0;
+}
+
+uint32_t checksum(const uint8_t* p, size_t n) {
+  uint32_t h = 2166136261u;
+  for (size_t i = 0; i < n; ++i) h = (h ^ p[i]) * 16777619u;
+  return h;
+}
+
+// Runs case c of kernel table k reps times; returns a checksum of the last output.
+uint32_t run_case(const char* c, const Kernels& k, long reps) {
+  Lcg rng;
+  if (std::strncmp(c, "span", 4) == 0) {
+    std::vector<uint8_t> surf(size_t(kSurf) * kSurf), dest(kSpan);
+    for (auto& t : surf) t = uint8_t(rng.next() >> 24);
+    const std::vector<Run> runs = span_runs();
+    const bool one_call = std::strcmp(c, "span1920") == 0;
+    const int32_t du = int32_t(((kSurf - 1) << 16) / kSpan);
+    for (long r = 0; r < reps; ++r) {
+      if (one_call) {
+        k.surface_span(dest.data(), kSpan, surf.data(), kSurf, kSurf, 0, 0, du, du / 2, 0, 0);
+      } else {
+        for (const Run& x : runs)
+          k.surface_span(dest.data() + x.offset, x.n, surf.data(), kSurf, kSurf, x.u, x.v, x.du, x.dv, 0, 0);
+      }
+    }
+    return checksum(dest.data(), dest.size());
+  }
+  if (std::strncmp(c, "block_mip", 9) == 0) {
+    const int mip = c[9] - '0';
+    const int w = kSurf >> mip, tex = 64 >> mip, gw = kSurf / 16 + 1;
+    std::vector<uint16_t> grid(size_t(gw) * gw);
+    for (auto& g : grid) g = uint16_t(64 + (rng.next() >> 8) % 0x3000);
+    std::vector<uint8_t> texels(size_t(tex) * tex), cm(64 * 256), out(size_t(w) * w);
+    for (auto& t : texels) t = uint8_t(rng.next() >> 24);
+    for (auto& t : cm) t = uint8_t(rng.next() >> 24);
+    for (long r = 0; r < reps; ++r)
+      k.surface_block(grid.data(), gw, texels.data(), tex, tex, mip, 16 >> mip, -(32 >> mip), w, w, cm.data(),
+                      out.data());
+    return checksum(out.data(), out.size());
+  }
+  if (std::strcmp(c, "z1920") == 0) {
+    std::vector<uint16_t> z(kSpan);
+    for (long r = 0; r < reps; ++r) k.z_span(z.data(), kSpan, 0x12340000u + uint32_t(r & 255), 0x00012345u);
+    return checksum(reinterpret_cast<const uint8_t*>(z.data()), z.size() * 2);
+  }
+  if (std::strcmp(c, "palette") == 0) {
+    std::vector<uint8_t> src(size_t(kPalW) * kPalH);
+    for (auto& s : src) s = uint8_t(rng.next() >> 24);
+    uint32_t pal[256];
+    for (auto& p : pal) p = rng.next();
+    std::vector<uint32_t> dst(src.size());
+    for (long r = 0; r < reps; ++r) k.expand_palette(src.data(), kPalW, kPalW, kPalH, pal, dst.data(), kPalW, 1);
+    return checksum(reinterpret_cast<const uint8_t*>(dst.data()), dst.size() * 4);
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc == 2 && std::strcmp(argv[1], "list") == 0) {
+    for (const char* c : kCases)
+      for (int i = 0; i < sb::simd::variant_count(); ++i) {
+        const sb::simd::Variant v = sb::simd::variant(i);
+        if (!v.kernels || !v.supported || std::strcmp(v.kernels->name, "tuned") == 0) continue;
+        // z_span and expand_palette have no gather variant: avx2g's entries are other ones.
+        if (std::strcmp(v.kernels->name, "avx2g") == 0 && (c[0] == 'z' || c[0] == 'p')) continue;
+        std::printf("%s %s %ld\n", c, v.kernels->name, units_of(c));
+      }
+    return 0;
+  }
+  if (argc != 4) {
+    std::fprintf(stderr, "usage: %s list | <case> <variant> <reps>\n", argv[0]);
+    return 2;
+  }
+  const Kernels* k = find_variant(argv[2]);
+  const long units = units_of(argv[1]), reps = std::atol(argv[3]);
+  if (!k || units == 0 || reps < 0) {
+    std::fprintf(stderr, "unknown case or variant (or unsupported here): %s %s\n", argv[1], argv[2]);
+    return 2;
+  }
+  const uint32_t sum = run_case(argv[1], *k, reps);
+  std::printf("%s %s %ld %08x\n", argv[1], argv[2], units, sum);
+  return 0;
+}
