@@ -111,7 +111,9 @@ class Disasm:
     def split_lists(self, code):
         out = []
         for c in code:
-            m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c)
+            c2 = re.sub(r"^(v?)(?:stmdb|stmfd) sp!, ", r"\1push ", c)
+            c2 = re.sub(r"^(v?)(?:ldmia|ldmfd|ldm) sp!, ", r"\1pop ", c2)
+            m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c2)
             if not m:
                 out.append(c)
                 continue

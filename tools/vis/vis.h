@@ -20,8 +20,10 @@
 //   portals reaches it (up to the 0.01-unit plane epsilon).
 //   Every leaf sees itself. Rows are not symmetrised (full mode is symmetric up to
 //   rounding; -sym ORs the transpose in).
-// Threads only share read-only input and each writes its own portal's row: output is
-// identical for any thread count.
+// Full mode handles portals in order of fewest might-see portals first, in fixed batches of
+// 32; a finished portal's result bounds later flows through it. Results are published only
+// between batches and each thread writes its own portal's row: output is identical for any
+// thread count.
 #pragma once
 #include <cstdint>
 #include <string>
