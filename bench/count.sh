@@ -3,7 +3,7 @@
 # variant, plus instructions per pixel per frame (x86-64), as one table printed and written
 # to bench/counts.md. Deterministic counts, model-estimated cycles; never pass/fail.
 #
-#   bench/count.sh            everything (about 5 minutes on 2 cores once built)
+#   bench/count.sh            everything (about 2 minutes on 2 cores once built)
 #   bench/count.sh --quick    kernels only, no whole-frame callgrind runs
 #
 # Builds (only what it needs, own build dirs, -no-pie so addresses match the binary):
@@ -13,7 +13,7 @@
 #   build/qemu-plugins   libinsn.so, libhotblocks.so from Debian's qemu source package
 #                        (cached: built once; a private apt sources list with deb-src lines)
 # Needs (Debian): valgrind qemu-user g++-aarch64-linux-gnu g++-arm-linux-gnueabihf llvm-14
-# libglib2.0-dev dpkg-dev; installed with apt-get when run as root. The work is in
+# libglib2.0-dev; installed with apt-get when run as root. The work is in
 # bench/count_report.py.
 set -euo pipefail
 cd "$(dirname "$0")/.."
