@@ -72,8 +72,14 @@ Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts_in, Li
   LightSettings settings;
   std::string new_entities;
   SB_TRY(parse_light_entities(name, bsp->entities, opts.dome_samples, &settings, &new_entities));
+  size_t entity_lights = settings.lights.size();
+  int surface_lights = expand_surface_lights(w, &settings);
+  if (!settings.surface_templates.empty() && !opts.quiet)
+    log_info("%s: %zu surface light template(s) placed %d lights", name, settings.surface_templates.size(),
+             surface_lights);
   LineTracer tracer(w);
-  for (const PointLight& l : settings.lights) {
+  for (size_t i = 0; i < entity_lights; ++i) {
+    const PointLight& l = settings.lights[i];
     int c = tracer.contents(l.origin);
     if (c == kContentsSolid || c == kContentsSky)
       log_warning("%s: light entity %d at (%g %g %g) is inside %s: it lights nothing", name, l.entity, l.origin.x,

@@ -17,11 +17,13 @@
 //   times the angle factor (1 - anglescale) + anglescale * cos(incidence) (anglescale 0.5),
 //   times the spot cone factor, if the shadow ray from the sample to the light is clear;
 //   summed per style, times rangescale (0.5), floored at the worldspawn minimum light
-//   (style 0 only), rounded and clamped to 0..255.
+//   (style 0 only), rounded and clamped to 0..255. Lights carry RGB ("_color"); the
+//   lighting lump holds the mean of the three channels, the .lit each channel.
+//   Suns: a sample is lit when the ray towards the sun reaches a sky leaf first.
 // Determinism: every face is computed on its own from read-only data and written by index:
 // the output is byte-identical for any thread count.
-// Not implemented (this session): bounce / radiosity, dirt (ambient occlusion), surface
-// lights (_surface), sunlight penumbra, deviance, phong shading, BSPX / LIGHTING_E5BGR9.
+// Not implemented (this session): bounce / radiosity, dirt (ambient occlusion),
+// sunlight penumbra, deviance, phong shading, BSPX / LIGHTING_E5BGR9.
 #pragma once
 #include <cstdint>
 #include <string>

@@ -2,6 +2,7 @@
 #include "tools/light/light_entities.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -148,11 +149,16 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
     const Entity& le = info.e;
     std::string who = describe(int(i), info);
     std::string_view v;
+    std::string surface;
     if (le.find("_surface", &v)) {
-      ++out->surface_templates;
-      continue;
+      surface.assign(v);
+      for (char& c : surface) c = char(std::tolower(static_cast<unsigned char>(c)));
+      if (surface.empty()) {
+        log_warning("%s: %s: empty \"_surface\": skipped", name, who.c_str());
+        continue;
+      }
     }
-    if (!info.has_origin) {
+    if (!info.has_origin && surface.empty()) {
       log_warning("%s: %s has no valid \"origin\": skipped", name, who.c_str());
       continue;
     }
@@ -248,11 +254,11 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
       l.spot_cos_outer = std::cos(cone * 0.5f * kPi / 180.0f);
       l.spot_cos_inner = soft > 0 ? std::cos(soft * 0.5f * kPi / 180.0f) : l.spot_cos_outer;
     }
-    out->lights.push_back(l);
+    if (!surface.empty())
+      out->surface_templates.push_back({surface, l});
+    else
+      out->lights.push_back(l);
   }
-  if (out->surface_templates)
-    log_warning("%s: %d surface light template(s) (\"_surface\") skipped: surface lights are not supported", name,
-                out->surface_templates);
 
   // Write assigned switchable styles back: "style" "N" right after the entity's '{'.
   if (entities_out && !style_inserts.empty()) {

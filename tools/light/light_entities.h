@@ -24,7 +24,9 @@
 //              where the light is full strength (default: same as the cone, hard edge)
 //     "_sun" 1: not a point light but a sun of intensity "light" shining along its spot
 //              direction (default straight down)
-//     "_surface": a surface-light template (not supported: skipped with a warning)
+//     "_surface" name: a surface-light template: not a light itself; copies of it (same keys)
+//              are placed 2 units in front of every face whose texture is `name` (any case),
+//              about 128 units apart over the face (expand_surface_lights)
 //   worldspawn: "light" / "_minlight" minimum light (output units 0..255, style 0);
 //     "_sunlight" sun intensity (default 0), "_sun_mangle" yaw pitch roll of the direction
 //     the sunlight travels (default 0 -90 0: straight down), "_sunlight_color";
@@ -38,6 +40,7 @@
 #include <glm/vec3.hpp>
 
 #include "engine/core/error.h"
+#include "engine/formats/bsp.h"
 
 namespace sb::tools {
 
@@ -75,7 +78,11 @@ struct LightSettings {
   float dist_scale = 1;
   std::vector<PointLight> lights;
   std::vector<Sun> suns;
-  int surface_templates = 0;  // skipped "_surface" entities
+  struct SurfaceTemplate {
+    std::string texture;  // lower case
+    PointLight light;     // origin unused
+  };
+  std::vector<SurfaceTemplate> surface_templates;
 };
 
 // Parses the entity text. Problems with a single entity are warnings naming the entity
@@ -84,6 +91,10 @@ struct LightSettings {
 // switchable lights got styles, it receives the rewritten entity text (else it is cleared).
 Status parse_light_entities(const char* name, const std::string& entities, int dome_samples,
                             LightSettings* out, std::string* entities_out);
+
+// Adds the copies of every "_surface" template (see above) to settings->lights, in face order.
+// Returns the number of lights added.
+int expand_surface_lights(const BspWorld& world, LightSettings* settings);
 
 // Unit direction for (yaw, pitch) in degrees, pitch positive up (Quake's light convention).
 glm::vec3 direction_from_yaw_pitch(float yaw_deg, float pitch_deg);

@@ -109,13 +109,24 @@ void prepare_scene(LightScene* scene, LightSettings* settings) {
       if (sub[f]) bits[f / 64] |= uint64_t(1) << (f % 64);
   }
 
-  // Sky visibility: leaves whose PVS holds a sky leaf, then faces marked by such leaves.
+  // Sky visibility: leaves that mark a sky face (the open leaves in front of sky brushes;
+  // sky leaves themselves are not reliably in the PVS), then leaves whose PVS holds one of
+  // those, then the faces those leaves mark.
   scene->face_sees_sky.assign(w.num_faces, 0);
-  bool any_sun = !settings->suns.empty();
-  if (!any_sun) return;
+  if (settings->suns.empty()) return;
   std::vector<uint32_t> sky_leaves;
-  for (uint32_t lf = 1; lf < w.num_leaves; ++lf)
-    if (w.leaves[lf].contents == kContentsSky) sky_leaves.push_back(lf);
+  for (uint32_t lf = 1; lf < w.num_leaves; ++lf) {
+    const Leaf& L = w.leaves[lf];
+    for (uint32_t k = 0; k < L.num_marksurfaces; ++k) {
+      uint64_t ms = uint64_t(L.first_marksurface) + k;
+      if (ms >= w.num_marksurfaces) break;
+      uint32_t f = w.marksurfaces[ms];
+      if (f < w.num_faces && (w.faces[f].flags & kFaceSky)) {
+        sky_leaves.push_back(lf);
+        break;
+      }
+    }
+  }
   for (uint32_t lf = 1; lf < w.num_leaves; ++lf) {
     decompress_pvs(w, int(lf), row.data(), row_bytes);
     bool sees = false;

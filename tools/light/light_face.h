@@ -23,7 +23,8 @@ struct LightScene {
   // leaf that marks the face, or the face belongs to a submodel, or there is no vis data).
   std::vector<uint64_t> light_faces;
   size_t face_words = 0;
-  // face_sees_sky[f]: some leaf marking face f has a sky leaf in its PVS (or submodel face).
+  // face_sees_sky[f]: some leaf marking face f has in its PVS a leaf that marks a sky face
+  // (or f belongs to a submodel). Faces without it get no sunlight.
   std::vector<uint8_t> face_sees_sky;
 
   bool light_may_see(size_t light, uint32_t face) const {

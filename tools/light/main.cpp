@@ -45,6 +45,7 @@ const char* format_name(sb::tools::BspFormat f) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  std::setvbuf(stdout, nullptr, _IOLBF, 0);  // summary lines interleave with warnings in order
   sb::tools::LightOptions opts;
   bool want_lit = false;
   const char* path = nullptr;
