@@ -2,8 +2,9 @@
 #   starbow_ensure_deps   installs what is missing when run as root (apt-get), otherwise
 #                         prints the apt-get line to run and returns 1.
 STARBOW_DEBIAN_PACKAGES="cmake ninja-build g++ libgtest-dev libbenchmark-dev libsdl2-dev libglm-dev libpng-dev zlib1g-dev xvfb xauth"
-# The test suite also cross-builds for aarch64 and runs it under qemu-user (test.sh, .ci/run).
-STARBOW_TEST_PACKAGES="g++-aarch64-linux-gnu qemu-user googletest"
+# The test suite also cross-builds for aarch64 and armhf and runs them under qemu-user
+# (test.sh, .ci/run).
+STARBOW_TEST_PACKAGES="g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user googletest"
 
 starbow_missing_packages() {
   local missing="" p
