@@ -15,9 +15,36 @@ struct Cache::Header {
 static_assert(sizeof(uint32_t) * 4 == 16, "header is 16 bytes");
 static constexpr uint32_t kHeader = 16;
 static constexpr uint32_t kMinSplit = 64;
+// Every block (so every hole) is at least kMinBlock bytes: a hole keeps its links to the
+// neighbouring holes of the hole list in the first 8 bytes after its header.
+static constexpr uint32_t kMinBlock = 32;
+
+namespace {
+struct HoleLinks {
+  uint32_t next, prev;  // offsets of the next / previous hole, Cache::kNone at the ends
+};
+}  // namespace
 
 Cache::Header* Cache::header_at(uint32_t offset) const {
   return reinterpret_cast<Header*>(base_ + offset);
+}
+
+static HoleLinks* links_at(uint8_t* base, uint32_t offset) {
+  return reinterpret_cast<HoleLinks*>(base + offset + kHeader);
+}
+
+void Cache::hole_insert(uint32_t off) {
+  HoleLinks* l = links_at(base_, off);
+  l->prev = kNone;
+  l->next = hole_head_;
+  if (hole_head_ != kNone) links_at(base_, hole_head_)->prev = off;
+  hole_head_ = off;
+}
+
+void Cache::hole_remove(uint32_t off) {
+  HoleLinks* l = links_at(base_, off);
+  if (l->prev != kNone) links_at(base_, l->prev)->next = l->next; else hole_head_ = l->next;
+  if (l->next != kNone) links_at(base_, l->next)->prev = l->prev;
 }
 
 void Cache::init(const char* region_name, void* base, size_t capacity, CacheSlot* slots, uint32_t max_slots) {
@@ -46,11 +73,13 @@ void Cache::flush() {
     free_slot_head_ = i;
   }
   lru_head_ = lru_tail_ = 0;
-  if (capacity_ >= kHeader) {
+  hole_head_ = kNone;
+  if (capacity_ >= kMinBlock) {
     Header* h = header_at(0);
     h->size = capacity_;
     h->prev_size = 0;
     h->slot = 0;
+    hole_insert(0);
   }
   stats_.used = 0;
   stats_.live_blocks = 0;
@@ -77,11 +106,11 @@ void Cache::lru_push_front(uint32_t s) {
   lru_head_ = s;
 }
 
+// First fit over the holes only (most recently freed first): O(holes), not O(blocks), so a
+// full cache with thousands of live surfaces does not walk them all on every allocation.
 uint32_t Cache::find_fit(uint32_t need) const {
-  for (uint32_t off = 0; off < capacity_;) {
-    const Header* h = header_at(off);
-    if (h->slot == 0 && h->size >= need) return off;
-    off += h->size;
+  for (uint32_t off = hole_head_; off != kNone; off = links_at(base_, off)->next) {
+    if (header_at(off)->size >= need) return off;
   }
   return kNone;
 }
@@ -91,17 +120,21 @@ uint32_t Cache::release_block(uint32_t off) {
   h->slot = 0;
   uint32_t next = off + h->size;
   if (next < capacity_ && header_at(next)->slot == 0) {  // merge with the following hole
+    hole_remove(next);
     h->size += header_at(next)->size;
   }
-  if (off > 0) {  // merge into the preceding hole
+  bool merged = false;
+  if (off > 0) {  // merge into the preceding hole (already on the hole list)
     uint32_t prev = off - h->prev_size;
     Header* p = header_at(prev);
     if (p->slot == 0) {
       p->size += h->size;
       off = prev;
       h = p;
+      merged = true;
     }
   }
+  if (!merged) hole_insert(off);
   uint32_t after = off + h->size;
   if (after < capacity_) header_at(after)->prev_size = h->size;
   return off;
@@ -113,6 +146,7 @@ CacheHandle Cache::alloc(size_t size, const char* name, uint32_t frame) {
     return {};
   }
   uint32_t need = (static_cast<uint32_t>(size) + kHeader + 15u) & ~15u;
+  if (need < kMinBlock) need = kMinBlock;
   uint32_t off = find_fit(need);
   while (off == kNone) {
     // Evict the least recently used block, unless the current frame still uses it.
@@ -138,6 +172,7 @@ CacheHandle Cache::alloc(size_t size, const char* name, uint32_t frame) {
     return {};
   }
   Header* h = header_at(off);
+  hole_remove(off);
   if (h->size - need >= kMinSplit) {  // split off the tail as a new hole
     uint32_t rest = off + need;
     Header* r = header_at(rest);
@@ -147,6 +182,7 @@ CacheHandle Cache::alloc(size_t size, const char* name, uint32_t frame) {
     uint32_t after = rest + r->size;
     if (after < capacity_) header_at(after)->prev_size = r->size;
     h->size = need;
+    hole_insert(rest);
   }
   h->slot = slot;
   CacheSlot& c = slots_[slot];
@@ -200,7 +236,7 @@ void Cache::failure_message(char* out, size_t out_size) const {
 }
 
 bool Cache::check_consistency() const {
-  uint32_t prev_size = 0, live = 0;
+  uint32_t prev_size = 0, live = 0, holes = 0;
   size_t used = 0;
   bool prev_free = false;
   for (uint32_t off = 0; off < capacity_;) {
@@ -209,6 +245,7 @@ bool Cache::check_consistency() const {
     if (h->prev_size != prev_size) return false;
     bool is_free = h->slot == 0;
     if (is_free && prev_free) return false;  // holes must be coalesced
+    if (is_free) ++holes;
     if (!is_free) {
       if (h->slot >= max_slots_ || slots_[h->slot].block_offset != off) return false;
       ++live;
@@ -222,6 +259,14 @@ bool Cache::check_consistency() const {
   for (uint32_t s = lru_head_; s; s = slots_[s].lru_next) {
     if (++lru_count > max_slots_) return false;
   }
+  // The hole list holds exactly the free blocks, linked both ways.
+  uint32_t listed = 0, back = kNone;
+  for (uint32_t off = hole_head_; off != kNone; off = links_at(base_, off)->next) {
+    if (off >= capacity_ || header_at(off)->slot != 0 || ++listed > holes) return false;
+    if (links_at(base_, off)->prev != back) return false;
+    back = off;
+  }
+  if (listed != holes) return false;
   return live == stats_.live_blocks && lru_count == live && used == stats_.used;
 }
 

@@ -2,6 +2,7 @@
 //
 //   [hdr|block A][hdr|free][hdr|block B][hdr|block C] ...   address order, coalescing
 //   LRU list:  most recent  B <-> A <-> C  least recent (evicted first)
+//   hole list: every free block, linked through its first 8 payload bytes (first fit)
 //
 // Owners hold a CacheHandle (slot + generation), never a pointer that outlives a
 // frame. get() returns nullptr once the block was evicted: the owner rebuilds.
@@ -66,6 +67,8 @@ class Cache {
   void lru_unlink(uint32_t slot);
   void lru_push_front(uint32_t slot);
   uint32_t find_fit(uint32_t need) const;
+  void hole_insert(uint32_t offset);  // free blocks are also on a list of holes (cache.cpp)
+  void hole_remove(uint32_t offset);
   uint32_t release_block(uint32_t offset);  // returns offset of the coalesced free block
 
   const char* name_ = "cache";
@@ -75,6 +78,7 @@ class Cache {
   uint32_t max_slots_ = 0;
   uint32_t free_slot_head_ = 0;
   uint32_t lru_head_ = 0, lru_tail_ = 0;
+  uint32_t hole_head_ = kNone;  // offset of the first free block on the hole list
   CacheStats stats_;
   size_t fail_size_ = 0;
   const char* fail_name_ = nullptr;
