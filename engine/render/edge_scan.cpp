@@ -177,24 +177,25 @@ uint32_t scan_edges(EdgeTable& table, uint32_t* aet_a, uint32_t* aet_b, uint32_t
         ++sf[kBackgroundSurface].num_spans;
       }
     }
-    // Well-formed input leaves every count at zero here; reset whatever did not.
-    for (uint32_t i = 0; i < num_active; ++i) {
-      FrontSurface& f = sf[edges[aet[i]].surf & ~kTrailingBit];
-      f.winding = 0;
-      f.prev = f.next = kNone;
-    }
-    sf[kBackgroundSurface].prev = sf[kBackgroundSurface].next = kNone;
-
-    // 4. Drop finished edges, step the rest, re-sort.
+    // 4. Reset the surfaces (well-formed input leaves every count at zero; reset whatever
+    // did not), drop finished edges, step the rest, and re-sort only if some pair crossed.
     uint32_t m = 0;
+    bool sorted = true;
+    int32_t last_x = INT32_MIN;
     for (uint32_t i = 0; i < num_active; ++i) {
       FrontEdge& e = edges[aet[i]];
+      FrontSurface& f = sf[e.surf & ~kTrailingBit];
+      f.winding = 0;
+      f.prev = f.next = kNone;
       if (e.ybottom <= y + 1) continue;
       e.x += e.dx;
+      sorted &= e.x >= last_x;
+      last_x = e.x;
       aet[m++] = aet[i];
     }
+    sf[kBackgroundSurface].prev = sf[kBackgroundSurface].next = kNone;
     num_active = m;
-    insertion_sort(edges, aet, num_active);
+    if (!sorted) insertion_sort(edges, aet, num_active);
   }
   *overflowed = sc.overflow;
   return sc.num;
