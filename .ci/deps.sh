@@ -3,8 +3,8 @@
 #                         prints the apt-get line to run and returns 1.
 STARBOW_DEBIAN_PACKAGES="cmake ninja-build g++ libgtest-dev libbenchmark-dev libsdl2-dev libglm-dev libpng-dev zlib1g-dev xvfb xauth"
 # The test suite also cross-builds for aarch64 and armhf and runs them under qemu-user
-# (test.sh, .ci/run).
-STARBOW_TEST_PACKAGES="g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user googletest"
+# (test.sh, .ci/run). quakespasm and darkplaces-server: the "other engines load it" test.
+STARBOW_TEST_PACKAGES="g++-aarch64-linux-gnu g++-arm-linux-gnueabihf qemu-user googletest quakespasm darkplaces-server"
 
 starbow_missing_packages() {
   local missing="" p
