@@ -116,11 +116,17 @@ CompileRun compile_file(const std::string& map_path, const std::string& bsp_path
   opt.map_path = map_path;
   opt.bsp_path = bsp_path;
   opt.quiet = true;
+  opt.prt1_only = true;
   r.status = tools::bsp::compile_map(opt, &r.report);
   return r;
 }
 
 CompileRun compile_text(const std::string& name, const std::string& text, const std::vector<std::string>& wads) {
+  return compile_text(name, text, wads, tools::bsp::BspOptions());
+}
+
+CompileRun compile_text(const std::string& name, const std::string& text, const std::vector<std::string>& wads,
+                        const tools::bsp::BspOptions& base) {
   std::string dir = bsp_scratch_dir();
   std::string map = dir + "/" + name + ".map";
   write_text_file(map, text);
@@ -128,7 +134,7 @@ CompileRun compile_text(const std::string& name, const std::string& text, const 
   r.map_path = map;
   r.bsp_path = dir + "/" + name + ".bsp";
   std::remove(r.bsp_path.c_str());
-  tools::bsp::BspOptions opt;
+  tools::bsp::BspOptions opt = base;
   opt.map_path = map;
   opt.bsp_path = r.bsp_path;
   opt.wads = wads;

@@ -36,6 +36,11 @@ struct CompileRun {
 // Writes <scratch>/<name>.map and compiles it to <scratch>/<name>.bsp.
 CompileRun compile_text(const std::string& name, const std::string& map_text,
                         const std::vector<std::string>& wads = {});
+// The same with `base` options (map, bsp and wads are filled in; quiet is set).
+CompileRun compile_text(const std::string& name, const std::string& map_text, const std::vector<std::string>& wads,
+                        const tools::bsp::BspOptions& base);
+// Compiles a map file with default options except prt1_only: the .prt stays PRT1 (leaf
+// portals) even for maps with func_detail, for PRT1-only readers (sbvis tests use this).
 CompileRun compile_file(const std::string& map_path, const std::string& bsp_path);
 
 // A compiled BSP loaded with sb::load_bsp into its own memory block.

@@ -37,8 +37,8 @@ TEST_P(SbbspRealMap, CompilesWithoutLeakLoadsAndRenders) {
   std::cout << "[ sbbsp ] " << m.name << ": faces " << w.num_faces << " (ericw " << m.ref_faces << "), leaves "
             << w.num_leaves << " (" << m.ref_leaves << "), nodes " << w.num_nodes << " (" << m.ref_nodes
             << "), clipnodes " << w.num_clipnodes << " (" << m.ref_clipnodes << "), split +"
-            << r.report.split_percent << "%, " << r.report.total_seconds << " s (ericw qbsp " << m.ref_seconds
-            << " s)\n";
+            << r.report.split_percent << "%, tjunc vertices " << r.report.tjunc_vertices << ", "
+            << r.report.total_seconds << " s (ericw qbsp " << m.ref_seconds << " s)\n";
   RecordProperty("faces", int(w.num_faces));
   RecordProperty("seconds", std::to_string(r.report.total_seconds));
   RenderCheck rc = check_render(b, 12, 320, 200);
@@ -52,7 +52,8 @@ TEST_P(SbbspRealMap, CompilesWithoutLeakLoadsAndRenders) {
 
 INSTANTIATE_TEST_SUITE_P(LibreQuake, SbbspRealMap,
                          ::testing::Values(RealMap{"misc/start.map", "start", 1105, 524, 622, 1264, 0.3},
-                                           RealMap{"e0/lq_e0m1.map", "lq_e0m1", 3865, 1094, 1979, 5123, 2.3}),
+                                           RealMap{"e0/lq_e0m1.map", "lq_e0m1", 3865, 1094, 1979, 5123, 2.3},
+                                           RealMap{"e1/lq_e1m1.map", "lq_e1m1", 17373, 4730, 8017, 19776, 16.4}),
                          [](const ::testing::TestParamInfo<RealMap>& p) { return std::string(p.param.name); });
 
 }  // namespace

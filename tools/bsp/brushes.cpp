@@ -14,12 +14,14 @@ int contents_rank(int c) {
     case kContentsLava: return 3;
     case kContentsSlime: return 2;
     case kContentsWater: return 1;
+    case kContentsHint: return -1;
     default: return 0;
   }
 }
 
 int output_contents(int c) {
   if (c == kContentsDetail || c == kContentsClip) return kContentsSolid;
+  if (c == kContentsIllusionary || c == kContentsHint) return kContentsEmpty;
   return c;
 }
 
@@ -161,8 +163,10 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
       continue;
     }
     bool world = ei == 0 || cls == "func_group" || cls == "func_detail" || cls == "func_detail_wall" ||
-                 cls == "func_detail_illusionary";
-    bool detail = cls == "func_detail" || cls == "func_detail_wall";
+                 cls == "func_detail_fence" || cls == "func_detail_illusionary";
+    bool detail_wall = cls == "func_detail_wall" || cls == "func_detail_fence";
+    bool detail = cls == "func_detail" || detail_wall;
+    bool illusionary = cls == "func_detail_illusionary";
     if (ei != 0 && world) (*keep_entity)[ei] = false;
     if (e.brushes.empty()) continue;
     ModelSource* model = &(*models)[0];
@@ -194,6 +198,7 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
         if (!seen.insert(p).second) continue;  // duplicate plane
         TexClass tc = classify_texture(f.texture);
         if (tc == TexClass::Hint) hint = true;
+        bool hint_side = tc == TexClass::Hint;
         if (tc == TexClass::Origin) origin = true;
         if (tc == TexClass::Clip) clip = true;
         if (tc == TexClass::Sky) sky = true;
@@ -202,7 +207,8 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
         if (tc == TexClass::Lava && !liquid) liquid = kContentsLava;
         BrushSide s;
         s.plane = p;
-        s.nodraw = tc == TexClass::Skip || tc == TexClass::Clip || tc == TexClass::Hint ||
+        s.hint = hint_side;
+        s.nodraw = tc == TexClass::Skip || tc == TexClass::Clip || tc == TexClass::Hint || tc == TexClass::HintSkip ||
                    (f.texture.size() > 4 && classify_texture(f.texture) != TexClass::Normal &&
                     f.texture.find("skip") != std::string::npos);
         double vecs[2][4];
@@ -222,10 +228,18 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
         std::memcpy(pending.back().vecs, vecs, sizeof vecs);
       }
       if (bad) { stats->skipped++; continue; }
-      if (hint || origin) { stats->hint_dropped++; continue; }
+      if (origin) { stats->origin_dropped++; continue; }
       for (size_t i = 0; i < b.sides.size(); ++i)
-        if (!b.sides[i].nodraw) b.sides[i].plane_tex = int(i);
-      b.contents = clip ? kContentsClip : sky ? kContentsSky : liquid ? liquid : detail ? kContentsDetail : kContentsSolid;
+        if (!b.sides[i].nodraw && !hint) b.sides[i].plane_tex = int(i);
+      b.contents = hint ? kContentsHint
+                   : clip ? kContentsClip
+                   : sky ? kContentsSky
+                   : liquid ? liquid
+                   : detail ? kContentsDetail
+                   : illusionary ? kContentsIllusionary
+                   : kContentsSolid;
+      if (detail_wall && b.contents == kContentsDetail)
+        b.clips = cls == "func_detail_fence" ? Brush::Clips::None : Brush::Clips::Covered;
       if (!make_brush_windings(&b, planes)) {
         warnings->push_back(where(map, mb.line) + ": brush has no volume: skipped");
         stats->skipped++;
@@ -238,6 +252,8 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
         }
       if (b.contents == kContentsClip) stats->clip++;
       if (b.contents == kContentsDetail) stats->detail++;
+      if (b.contents == kContentsIllusionary) stats->illusionary++;
+      if (b.contents == kContentsHint) stats->hint++;
       if (is_liquid(b.contents)) stats->liquid++;
       if (b.contents == kContentsSky) stats->sky++;
       model->brushes.push_back(std::move(b));

@@ -2,12 +2,22 @@
 //
 // Contents (internal values; the output uses Quake's -1..-6):
 //   kContentsEmpty -1, Solid -2, Water -3, Slime -4, Lava -5, Sky -6 as Quake;
-//   kContentsDetail: func_detail brushes: solid in the output, chosen as splitters only after
-//   every structural face; kContentsClip: "clip" brushes, solid in clip hulls 1 and 2 only.
+//   kContentsDetail: func_detail / func_detail_wall / func_detail_fence brushes: solid in the
+//     output and in the clip hulls, split only after every structural face, never a vis cluster
+//     boundary (PRT2) and never a seal for the outside fill (a map sealed only by detail leaks);
+//     func_detail_wall brushes remove only the faces of other brushes that they cover entirely
+//     (no splitting), func_detail_fence brushes none; neither clips its own kind;
+//   kContentsIllusionary: func_detail_illusionary: faces drawn (detail; front side only, no
+//     _mirrorinside), but empty space for collision and leaf contents, absent from clip hulls;
+//     removes no face of any other brush;
+//   kContentsClip: "clip" brushes, solid in clip hulls 1 and 2 only;
+//   kContentsHint: brushes with a face textured "hint": those faces' planes are used as
+//     splitters before any other (tree.h); hint brushes draw nothing, are not solid, and their
+//     "hintskip" / "skip" faces are ignored.
 // A brush's contents come from its textures: sky* -> sky, '*' names -> water/slime/lava by
-// name, clip -> clip; hint and origin brushes are dropped (noted as unsupported); a face
+// name, clip -> clip, hint -> hint; origin brushes are dropped (noted as unsupported); a face
 // textured skip/nodraw is not drawn (its brush still bounds space).
-// Models: model 0 is worldspawn plus func_group / TrenchBroom layers / func_detail; every
+// Models: model 0 is worldspawn plus func_group / TrenchBroom layers / func_detail*; every
 // other entity with brushes becomes the next submodel (its entity gets "model" "*N").
 // A brush with a bad plane (collinear points, NaN) or no volume is skipped with a warning
 // naming the file and line.
@@ -29,9 +39,12 @@ constexpr int kContentsLava = -5;
 constexpr int kContentsSky = -6;
 constexpr int kContentsDetail = -100;
 constexpr int kContentsClip = -101;
+constexpr int kContentsIllusionary = -102;
+constexpr int kContentsHint = -103;
 
 // Which contents win where brushes overlap: a brush's faces inside a brush of equal or
-// higher rank are removed. Solid, sky and detail rank highest; then lava, slime, water.
+// higher rank are removed. Solid, sky and detail rank highest; then lava, slime, water, then
+// illusionary (0); hint brushes rank -1 (never in CSG).
 int contents_rank(int contents);
 // The contents written to the file for an internal value.
 int output_contents(int contents);
@@ -43,6 +56,7 @@ struct BrushSide {
   Winding w;         // the side's polygon (empty for bevels that touch in an edge only)
   bool nodraw = false;
   bool bevel = false;
+  bool hint = false;   // hint brushes: a "hint" face (a forced splitter)
   int plane_tex = -1;  // while building: index of the .map face's texture projection
 };
 
@@ -51,6 +65,10 @@ struct Brush {
   int contents = kContentsSolid;
   Bounds bounds;
   int line = 0;  // .map line of the brush (messages)
+  // How the brush removes other brushes' faces in CSG: All (normal), Covered (func_detail_wall:
+  // only faces it covers entirely, never another _wall brush's), None (func_detail_fence).
+  enum class Clips { All, Covered, None };
+  Clips clips = Clips::All;
 };
 
 struct ModelSource {
@@ -59,7 +77,8 @@ struct ModelSource {
 };
 
 struct BrushStats {
-  int map_brushes = 0, skipped = 0, detail = 0, clip = 0, liquid = 0, sky = 0, hint_dropped = 0;
+  int map_brushes = 0, skipped = 0, detail = 0, illusionary = 0, clip = 0, liquid = 0, sky = 0, hint = 0,
+      origin_dropped = 0;
 };
 
 // Builds every model's brushes. `keep_entity[i]` says whether entity i stays in the entity

@@ -38,6 +38,9 @@ struct Ctx {
     va_end(ap);
     log(user, line);
   }
+  Progress::Mode progress_mode() const {
+    return opt.quiet || !opt.progress ? Progress::Mode::Quiet : Progress::Mode::Auto;
+  }
   void add_time(const char* stage, double s) {
     for (StageTime& t : rep->times)
       if (t.name == stage) { t.seconds += s; return; }
@@ -99,6 +102,54 @@ std::string portal_text(const Tree& tree, const std::vector<int>& leaf_index, in
   return "PRT1\n" + std::to_string(visleafs) + "\n" + std::to_string(*count) + "\n" + body;
 }
 
+// PRT2 (maps with detail): the portals of the structural tree between vis clusters, then for
+// every cluster its PVS leaves (output leaf index - 1) ending with -1:
+//   PRT2 / <leaves> / <clusters> / <portals> / "<points> <cluster> <cluster> (x y z ) ..." /
+//   "<leaf> <leaf> ... -1" per cluster.
+// Clusters without a PVS leaf (all solid after the outside fill) are left out.
+std::string portal_text_clusters(const Tree& tree, const ClusterPortals& cp, const std::vector<int>& leaf_index,
+                                 int visleafs, int* count, int* clusters) {
+  std::vector<int> cluster_of_root(tree.nodes.size(), -1);
+  std::string map;
+  *clusters = 0;
+  for (int root : cp.roots) {
+    std::string line;
+    std::vector<int> stack{root};
+    while (!stack.empty()) {
+      int n = stack.back();
+      stack.pop_back();
+      const TreeNode& node = tree.nodes[size_t(n)];
+      if (!node.is_leaf()) {
+        stack.push_back(node.children[1]);
+        stack.push_back(node.children[0]);
+        continue;
+      }
+      if (leaf_index[size_t(n)] > 0) line += std::to_string(leaf_index[size_t(n)] - 1) + " ";
+    }
+    if (line.empty()) continue;
+    cluster_of_root[size_t(root)] = (*clusters)++;
+    map += line + "-1\n";
+  }
+  std::string body;
+  *count = 0;
+  char buf[128];
+  for (const Portal& p : cp.portals) {
+    if (p.nodes[0] == tree.outside || p.nodes[1] == tree.outside) continue;
+    int a = cluster_of_root[size_t(p.nodes[0])], b = cluster_of_root[size_t(p.nodes[1])];
+    if (a < 0 || b < 0 || a == b) continue;
+    std::snprintf(buf, sizeof buf, "%zu %d %d", p.w.size(), a, b);
+    body += buf;
+    for (const Vec3& v : p.w) {
+      std::snprintf(buf, sizeof buf, " (%.6g %.6g %.6g )", v.x, v.y, v.z);
+      body += buf;
+    }
+    body += "\n";
+    ++*count;
+  }
+  return "PRT2\n" + std::to_string(visleafs) + "\n" + std::to_string(*clusters) + "\n" + std::to_string(*count) +
+         "\n" + body + map;
+}
+
 struct HullTrees {
   int head[3] = {0, -1, -1};
 };
@@ -132,9 +183,11 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
   rep->skipped_brushes = bstats.skipped;
   rep->models = int(models.size());
   c.add_time("brushes", seconds_since(t));
-  c.say(false, "brushes: %d brushes (%d skipped, %d detail, %d clip, %d liquid, %d sky, %d hint/origin dropped), %d models, %d WADs (%.2f s)",
-        bstats.map_brushes, bstats.skipped, bstats.detail, bstats.clip, bstats.liquid, bstats.sky,
-        bstats.hint_dropped, int(models.size()), wads, seconds_since(t));
+  c.say(false,
+        "brushes: %d brushes (%d skipped, %d detail, %d illusionary, %d clip, %d liquid, %d sky, %d hint, %d origin "
+        "dropped), %d models, %d WADs (%.2f s)",
+        bstats.map_brushes, bstats.skipped, bstats.detail, bstats.illusionary, bstats.clip, bstats.liquid, bstats.sky,
+        bstats.hint, bstats.origin_dropped, int(models.size()), wads, seconds_since(t));
 
   // Point entity origins for the flood fill.
   std::vector<Vec3> origins;
@@ -150,7 +203,7 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
   }
 
   BspData& bsp = rep->bsp;
-  Emitter emitter(&bsp, planes, textures, opt.subdivide);
+  Emitter emitter(&bsp, planes, textures, opt.subdivide, opt.tjunc);
   emitter.begin();
   std::string prt;
   const Vec3 hull_min[3] = {Vec3(0.0), Vec3(-16, -16, -24), Vec3(-32, -32, -24)};
@@ -162,20 +215,27 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     // ---- hull 0
     std::vector<Brush> drawn;
     for (const Brush& b : src.brushes)
-      if (b.contents != kContentsClip) drawn.push_back(b);
+      if (b.contents != kContentsClip && b.contents != kContentsHint) drawn.push_back(b);
     t = Clock::now();
     std::vector<Face> faces;
     CsgStats cs;
-    csg_faces(drawn, planes, &faces, &cs);
+    {
+      Progress pr("csg", int64_t(drawn.size()), world ? c.progress_mode() : Progress::Mode::Quiet);
+      csg_faces(drawn, planes, &faces, &cs, &pr);
+    }
     total_csg += cs.faces_out;
+    hint_faces(src.brushes, &faces);
     c.add_time("csg", seconds_since(t));
     if (world)
-      c.say(false, "csg: %d brushes -> %d faces (%d merged, %d liquid back faces) (%.2f s)", cs.brushes, cs.faces_out,
-            cs.merged, cs.back_faces, seconds_since(t));
+      c.say(false, "csg: %d brushes -> %d faces (%d merged, %d liquid back faces, %d hidden under detail) (%.2f s)",
+            cs.brushes, cs.faces_out, cs.merged, cs.back_faces, cs.hidden, seconds_since(t));
     t = Clock::now();
     Tree tree;
     TreeStats ts;
-    build_tree(std::move(faces), planes, &tree, &ts);
+    {
+      Progress pr("bsp", int64_t(faces.size()), world ? c.progress_mode() : Progress::Mode::Quiet);
+      build_tree(std::move(faces), planes, &tree, &ts, &pr);
+    }
     c.add_time("bsp", seconds_since(t));
     rep->bsp_faces_in += ts.faces_in;
     rep->bsp_faces_after += ts.faces_after;
@@ -183,7 +243,10 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
       c.say(false, "bsp: %d faces -> %d (+%.1f%% from splits), %d nodes, %d leaves, depth %d (%.2f s)", ts.faces_in,
             ts.faces_after, ts.split_percent(), ts.nodes, ts.leaves, ts.max_depth, seconds_since(t));
     t = Clock::now();
-    build_portals(&tree, planes, &ts);
+    {
+      Progress pr("portals", int64_t(tree.nodes.size()), world ? c.progress_mode() : Progress::Mode::Quiet);
+      build_portals(&tree, planes, &ts, &pr);
+    }
     set_leaf_contents(&tree, drawn, planes);
     c.add_time("portals", seconds_since(t));
     if (world) {
@@ -246,7 +309,16 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
       rep->visleafs = int(bsp.leaves.size()) - first_leaf;
       if (!rep->leaked && opt.fill) {
         int count = 0;
-        prt = portal_text(tree, leaf_index, rep->visleafs, &count);
+        if (has_detail_splits(tree) && !opt.prt1_only) {
+          ClusterPortals cp;
+          build_cluster_portals(tree, planes, &cp);
+          prt = portal_text_clusters(tree, cp, leaf_index, rep->visleafs, &count, &rep->clusters);
+        } else {
+          prt = portal_text(tree, leaf_index, rep->visleafs, &count);
+          rep->clusters = rep->visleafs;
+        }
+        rep->prt_portals = count;
+        rep->prt_format = prt.substr(0, 4);
       }
     }
     c.add_time("emit", seconds_since(t));
@@ -258,20 +330,24 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
       std::vector<Brush> hb[3];
       for (int h = 1; h <= 2; ++h)
         for (const Brush& b : src.brushes) {
-          if (is_liquid(b.contents)) continue;
+          if (is_liquid(b.contents) || b.contents == kContentsIllusionary || b.contents == kContentsHint) continue;
           Brush e;
           if (expand_brush(b, hull_min[h], hull_max[h], planes, &e)) hb[h].push_back(std::move(e));
         }
       Tree ht[3];
+      // Hull progress: one unit per brush through CSG, then the brush count again when the tree is built.
+      Progress hull_progress("hulls", 2 * int64_t(hb[1].size() + hb[2].size()),
+                             world ? c.progress_mode() : Progress::Mode::Quiet);
       std::string hull_warning[3];
       int pruned[3] = {0, 0, 0}, csg_count[3] = {0, 0, 0};
       auto work = [&](int h) {
         std::vector<Face> hf;
         CsgStats hcs;
-        csg_faces(hb[h], planes, &hf, &hcs);
+        csg_faces(hb[h], planes, &hf, &hcs, &hull_progress);
         csg_count[h] = hcs.faces_out;
         TreeStats hts;
         build_tree(std::move(hf), planes, &ht[h], &hts);
+        hull_progress.advance(int64_t(hb[h].size()));
         build_portals(&ht[h], planes, &hts);
         set_leaf_contents(&ht[h], hb[h], planes);
         if (world && opt.fill && !rep->leaked && !origins.empty() && !fill_from_outside(&ht[h], planes, origins))
@@ -286,6 +362,7 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
         work(1);
         work(2);
       }
+      hull_progress.finish();
       for (int h = 1; h <= 2; ++h) {
         if (!hull_warning[h].empty()) rep->warnings.push_back(hull_warning[h]);
         size_t before = bsp.clipnodes.size();
@@ -313,6 +390,8 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     bsp.models.push_back(dm);
   }
   rep->csg_faces = total_csg;
+  rep->tjunc_vertices = emitter.stats().tjunc_vertices;
+  rep->tjunc_face_splits = emitter.stats().tjunc_face_splits;
   rep->split_percent = rep->bsp_faces_in ? 100.0 * (rep->bsp_faces_after - rep->bsp_faces_in) / rep->bsp_faces_in : 0;
   c.say(false, "hulls: %zu clipnodes (%.2f s)", bsp.clipnodes.size(), [&] {
     for (const StageTime& s : rep->times)
@@ -331,6 +410,10 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
   if (opt.write_files) {
     std::string out = opt.bsp_path.empty() ? replace_ext(opt.map_path, ".bsp") : opt.bsp_path;
     SB_TRY(write_bsp(out.c_str(), bsp, BspFormat::Auto, &rep->format_written));
+    if (FILE* f = std::fopen(out.c_str(), "rb")) {
+      if (std::fseek(f, 0, SEEK_END) == 0) rep->bsp_bytes = std::ftell(f);
+      std::fclose(f);
+    }
     std::string prt_path = replace_ext(out, ".prt");
     if (!prt.empty()) {
       if (!write_text(prt_path, prt)) return make_error("%s: cannot write the portal file", prt_path.c_str());
@@ -340,8 +423,9 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     }
     if (!rep->leaked) std::remove(replace_ext(out, ".pts").c_str());
   } else {
-    std::string why;
-    rep->format_written = fits_bsp29(bsp, &why) ? BspFormat::Bsp29 : BspFormat::Bsp2;
+    std::vector<uint8_t> bytes;
+    SB_TRY(serialize_bsp(bsp, BspFormat::Auto, &bytes, &rep->format_written));
+    rep->bsp_bytes = int64_t(bytes.size());
   }
   c.add_time("write", seconds_since(t));
   rep->total_seconds = seconds_since(t_total);
@@ -363,16 +447,23 @@ std::string summary_text(const CompileReport& r) {
   const BspData& b = r.bsp;
   char buf[2048];
   std::string s;
+  std::string prt = r.prt_format.empty() ? std::string("no .prt")
+                    : r.prt_format == "PRT2"
+                        ? "PRT2 (" + std::to_string(r.clusters) + " clusters, " + std::to_string(r.prt_portals) +
+                              " portals)"
+                        : "PRT1 (" + std::to_string(r.prt_portals) + " portals)";
   std::snprintf(buf, sizeof buf,
-                "summary: %s, %d models, %d brushes (%d skipped)\n"
-                "  faces %zu (csg %d, split +%.1f%%), nodes %zu, leaves %zu (%d visleafs), clipnodes %zu\n"
-                "  planes %zu, vertices %zu, edges %zu, surfedges %zu, marksurfaces %zu, texinfo %zu, textures %zu KiB (%d missing)\n"
-                "  portals %d, filled leaves %d%s\n",
-                r.format_written == BspFormat::Bsp29 ? "BSP29" : "BSP2", r.models, r.brushes, r.skipped_brushes,
-                b.faces.size(), r.csg_faces, r.split_percent, b.nodes.size(), b.leaves.size(), r.visleafs,
-                b.clipnodes.size(), b.planes.size(), b.vertices.size() / 3, b.edges.size(), b.surfedges.size(),
-                b.marksurfaces.size(), b.texinfo.size(), b.textures.size() / 1024, r.missing_textures, r.portals,
-                r.filled_leaves, r.leaked ? ", LEAKED" : "");
+                "summary: %s, %lld bytes, %d models, %d brushes (%d skipped)\n"
+                "  faces %zu (csg %d, +%.1f%% from splits), tjunc vertices added %d (%d faces cut)\n"
+                "  leafs %zu (%d visleafs), nodes %zu, clipnodes %zu, planes %zu, vertices %zu\n"
+                "  edges %zu, surfedges %zu, marksurfaces %zu, texinfo %zu, textures %zu KiB (%d missing)\n"
+                "  portals %d, filled leaves %d, %s%s\n",
+                r.format_written == BspFormat::Bsp29 ? "BSP29" : "BSP2", static_cast<long long>(r.bsp_bytes),
+                r.models, r.brushes, r.skipped_brushes, b.faces.size(), r.csg_faces, r.split_percent,
+                r.tjunc_vertices, r.tjunc_face_splits, b.leaves.size(), r.visleafs, b.nodes.size(), b.clipnodes.size(),
+                b.planes.size(), b.vertices.size() / 3, b.edges.size(), b.surfedges.size(), b.marksurfaces.size(),
+                b.texinfo.size(), b.textures.size() / 1024, r.missing_textures, r.portals, r.filled_leaves,
+                prt.c_str(), r.leaked ? ", LEAKED" : "");
   s += buf;
   s += "  times:";
   for (const StageTime& t : r.times) {

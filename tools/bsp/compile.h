@@ -1,12 +1,16 @@
 // tools/bsp/compile.h: sbbsp's entry point as a library: .map in, BspData (+ .prt / .pts) out.
 //
-//   stages: parse -> brushes -> per model: [hull 0: csg -> bsp -> portals -> contents ->
-//           flood fill (world) -> face visibility -> prune -> emit] + [hulls 1, 2: expand ->
+//   stages: parse -> brushes -> per model: [hull 0: csg (+ hint faces) -> bsp -> portals ->
+//           contents -> flood fill (world) -> face visibility -> prune -> emit (T-junctions
+//           fixed) -> .prt: PRT1, or PRT2 clusters when the world has detail splits] +
+//           [hulls 1, 2: expand ->
 //           csg -> bsp -> portals -> contents -> fill from outside (world) -> prune -> emit]
 //           -> textures lump -> entities -> write
 // Output is deterministic for the same input, whatever the thread count (threads only build
 // independent hull trees; every index is assigned on the calling thread).
 // Progress lines go through `log` (plain lines such as "csg: 253 brushes -> 1905 faces (0.02 s)").
+// The world's long phases (csg, bsp, portals, hulls) also report through tools/common/progress.h
+// on stderr unless quiet or !progress.
 #pragma once
 #include <string>
 #include <vector>
@@ -23,6 +27,9 @@ struct BspOptions {
   double subdivide = 240;          // texels; 0 disables
   bool fill = true;                // outside removal (-nofill disables)
   bool clip_hulls = true;          // -noclip: hulls 1 and 2 left empty
+  bool tjunc = true;               // -notjunc: T-junctions left as they are (emit.h)
+  bool prt1_only = false;          // -prt1: PRT1 (leaf portals) even when the map has detail
+  bool progress = true;            // -noprogress: no progress bar / quarter lines on stderr
   bool write_files = true;         // false: compile into memory only (tests)
   int threads = 2;                 // >1: clip hulls 1 and 2 are built on two threads
   bool verbose = false, quiet = false;
@@ -45,7 +52,11 @@ struct CompileReport {
   int csg_faces = 0, bsp_faces_in = 0, bsp_faces_after = 0;
   double split_percent = 0;
   int portals = 0, visleafs = 0, filled_leaves = 0;
+  std::string prt_format;          // "PRT1", "PRT2" (the map has detail) or empty (no .prt)
+  int clusters = 0, prt_portals = 0;  // PRT2: vis clusters; portals written to the .prt
   int missing_textures = 0;
+  int tjunc_vertices = 0, tjunc_face_splits = 0;
+  int64_t bsp_bytes = 0;           // size of the file written (or that would be written)
   double total_seconds = 0;
 };
 
@@ -53,7 +64,7 @@ using LogFn = void (*)(void* user, const char* line);
 
 Status compile_map(const BspOptions& opt, CompileReport* report, LogFn log = nullptr, void* log_user = nullptr);
 
-// Writes the PRT1 text; exposed for tests.
+// The end-of-run summary (counts, format, bytes, T-junctions, times per stage); exposed for tests.
 std::string summary_text(const CompileReport& r);
 
 }  // namespace sb::tools::bsp

@@ -15,8 +15,9 @@ constexpr double kMergeEpsilon = 0.01;
 
 // Splits `frag` (a piece of side `plane` of brush a) by brush b: pieces outside b are
 // appended to `outside`; the rest (inside b) is dropped.
+// With `inside_out`, the piece inside b is appended there instead of being dropped.
 void clip_by_brush(const Winding& frag, int plane, bool coplanar_is_inside, const Brush& b, const PlaneSet& planes,
-                   std::vector<Winding>* outside) {
+                   std::vector<Winding>* outside, std::vector<Winding>* inside_out = nullptr) {
   Winding inside = frag;
   Winding f, k;
   for (const BrushSide& t : b.sides) {
@@ -44,23 +45,32 @@ void clip_by_brush(const Winding& frag, int plane, bool coplanar_is_inside, cons
     }
     inside = std::move(k);
   }
+  if (inside_out) inside_out->push_back(std::move(inside));
 }
+
+bool detail_like(int contents) { return contents == kContentsDetail || contents == kContentsIllusionary; }
 
 }  // namespace
 
-void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::vector<Face>* out, CsgStats* stats) {
+void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::vector<Face>* out, CsgStats* stats,
+               Progress* progress) {
   out->clear();
   stats->brushes = int(brushes.size());
-  std::vector<Winding> frags, next;
+  std::vector<Winding> frags, next, hidden, covered_test;
   for (size_t a = 0; a < brushes.size(); ++a) {
     const Brush& A = brushes[a];
+    if (progress) progress->advance();
+    if (A.contents == kContentsHint) continue;
     int rank_a = contents_rank(A.contents);
     // Brushes that may remove A's faces.
     std::vector<size_t> near;
     for (size_t b = 0; b < brushes.size(); ++b) {
       if (b == a) continue;
       const Brush& B = brushes[b];
-      if (contents_rank(B.contents) < rank_a) continue;
+      if (contents_rank(B.contents) < rank_a || B.clips == Brush::Clips::None || B.contents == kContentsHint ||
+          B.contents == kContentsIllusionary)
+        continue;
+      if (B.clips == Brush::Clips::Covered && A.clips != Brush::Clips::All) continue;
       if (!A.bounds.overlaps(B.bounds, 0.1)) continue;
       near.push_back(b);
     }
@@ -68,28 +78,58 @@ void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::v
       if (s.w.empty() || s.bevel) continue;
       stats->sides++;
       frags.assign(1, s.w);
+      hidden.clear();
       Bounds sb;
       for (const Vec3& p : s.w) sb.add(p);
+      // A structural side's pieces inside detail brushes stay as undrawn faces, so that the
+      // structural tree still holds every structural brush's boundary (detail never seals).
+      bool keep_hidden = !detail_like(A.contents);
       for (size_t b : near) {
         const Brush& B = brushes[b];
         if (!sb.overlaps(B.bounds, 0.1)) continue;
         bool coplanar_inside = contents_rank(B.contents) > rank_a || b > a;
         next.clear();
-        for (const Winding& f : frags) clip_by_brush(f, s.plane, coplanar_inside, B, planes, &next);
+        bool hide = keep_hidden && B.contents == kContentsDetail;
+        if (B.clips == Brush::Clips::Covered) {
+          // Keeps every fragment not entirely inside B whole.
+          for (Winding& f : frags) {
+            covered_test.clear();
+            clip_by_brush(f, s.plane, coplanar_inside, B, planes, &covered_test);
+            bool covered = true;
+            for (const Winding& o : covered_test) covered = covered && winding_area(o) < kMinFragmentArea;
+            if (!covered) next.push_back(std::move(f));
+            else if (hide) hidden.push_back(std::move(f));
+          }
+        } else {
+          for (const Winding& f : frags)
+            clip_by_brush(f, s.plane, coplanar_inside, B, planes, &next, hide ? &hidden : nullptr);
+        }
         frags.swap(next);
         if (frags.empty()) break;
       }
-      for (Winding& f : frags) {
-        if (winding_area(f) < kMinFragmentArea) continue;
-        stats->fragments++;
-        Face face;
-        face.w = std::move(f);
-        face.plane = s.plane;
-        face.texinfo = s.texinfo;
-        face.contents = A.contents;
-        face.detail = A.contents == kContentsDetail;
-        out->push_back(std::move(face));
+      // Hidden pieces are still removed inside the structural brushes.
+      for (size_t b : near) {
+        const Brush& B = brushes[b];
+        if (hidden.empty()) break;
+        if (B.contents == kContentsDetail || !sb.overlaps(B.bounds, 0.1)) continue;
+        bool coplanar_inside = contents_rank(B.contents) > rank_a || b > a;
+        next.clear();
+        for (const Winding& f : hidden) clip_by_brush(f, s.plane, coplanar_inside, B, planes, &next);
+        hidden.swap(next);
       }
+      for (int pass = 0; pass < 2; ++pass)
+        for (Winding& f : pass == 0 ? frags : hidden) {
+          if (winding_area(f) < kMinFragmentArea) continue;
+          stats->fragments++;
+          Face face;
+          face.w = std::move(f);
+          face.plane = s.plane;
+          face.texinfo = pass == 0 ? s.texinfo : -1;
+          face.contents = A.contents;
+          face.detail = detail_like(A.contents);
+          out->push_back(std::move(face));
+          stats->hidden += pass;
+        }
     }
   }
   stats->merged = merge_faces(out, planes);
@@ -106,6 +146,23 @@ void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::v
   }
   for (Face& f : *out) f.update_bounds();
   stats->faces_out = int(out->size());
+}
+
+void hint_faces(const std::vector<Brush>& brushes, std::vector<Face>* out) {
+  for (const Brush& b : brushes) {
+    if (b.contents != kContentsHint) continue;
+    for (const BrushSide& s : b.sides) {
+      if (!s.hint || s.w.size() < 3) continue;
+      Face f;
+      f.w = s.w;
+      f.plane = s.plane;
+      f.texinfo = -1;
+      f.contents = kContentsHint;
+      f.hint = true;
+      f.update_bounds();
+      out->push_back(std::move(f));
+    }
+  }
 }
 
 namespace {

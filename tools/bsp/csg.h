@@ -6,11 +6,16 @@
 // facing the same way keep one copy: the higher-ranked brush's, or the later brush's on a
 // tie. Liquid faces that survive get a back copy (flipped), so water is seen from inside
 // too. Surviving fragments on one plane with one texture are merged where the union is
-// convex.
+// convex. func_detail_wall brushes (Brush::clips == Covered) remove only fragments they cover
+// entirely, func_detail_fence (None) and illusionary brushes remove none. The pieces of a structural side inside a func_detail
+// brush are kept as undrawn faces (texinfo -1): the structural tree then bounds every
+// structural brush, so the outside fill cannot leak through a wall that detail overlaps.
+// Faces of detail and illusionary brushes are marked detail (split last, tree.h).
 #pragma once
 #include <vector>
 
 #include "tools/bsp/brushes.h"
+#include "tools/common/progress.h"
 
 namespace sb::tools::bsp {
 
@@ -20,6 +25,7 @@ struct Face {
   int texinfo = -1;   // -1: bounds space but is never drawn (skip, hull faces)
   int contents = 0;   // contents of the brush behind the face
   bool detail = false;
+  bool hint = false;  // a hint brush's side: chosen as a splitter first, never drawn
   Bounds bounds;
   void update_bounds() {
     bounds = Bounds();
@@ -29,13 +35,18 @@ struct Face {
 
 struct CsgStats {
   int brushes = 0, sides = 0, faces_out = 0, fragments = 0, merged = 0, back_faces = 0;
+  int hidden = 0;  // structural pieces inside detail brushes kept undrawn
 };
 
+// `progress` (optional) advances by one per brush.
 void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::vector<Face>* out,
-               CsgStats* stats);
+               CsgStats* stats, Progress* progress = nullptr);
 
 // Merges faces of `faces` with equal plane, texinfo, contents and detail flag where they
 // share an edge and the result is convex. Returns the number of merges.
 int merge_faces(std::vector<Face>* faces, const PlaneSet& planes);
+
+// The "hint" sides of hint brushes (kContentsHint) as undrawn hint faces (texinfo -1).
+void hint_faces(const std::vector<Brush>& brushes, std::vector<Face>* out);
 
 }  // namespace sb::tools::bsp

@@ -1,6 +1,7 @@
 // tools/bsp/emit.cpp: see emit.h.
 #include "tools/bsp/emit.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sb::tools::bsp {
@@ -81,7 +82,7 @@ int32_t Emitter::edge(uint32_t a, uint32_t b) {
   return e;
 }
 
-void Emitter::emit_polygon(const Face& f, const Winding& w0, std::vector<uint32_t>* out_ids) {
+void Emitter::add_polygon(const Winding& w0, Polys* out) {
   std::vector<uint32_t> vs;
   vs.reserve(w0.size());
   for (const Vec3& p : w0) {
@@ -91,6 +92,10 @@ void Emitter::emit_polygon(const Face& f, const Winding& w0, std::vector<uint32_
   }
   while (vs.size() > 1 && vs.front() == vs.back()) vs.pop_back();
   if (vs.size() < 3) return;
+  out->push_back(std::move(vs));
+}
+
+void Emitter::write_face(const Face& f, const std::vector<uint32_t>& vs, std::vector<uint32_t>* out_ids) {
   DFace d{};
   d.plane = plane_index(f.plane & ~1);
   d.side = f.plane & 1;
@@ -105,14 +110,14 @@ void Emitter::emit_polygon(const Face& f, const Winding& w0, std::vector<uint32_
   stats_.faces_out++;
 }
 
-void Emitter::emit_face(const Face& f, std::vector<uint32_t>* out_ids) {
+void Emitter::face_polygons(const Face& f, Polys* out) {
   stats_.faces_before_subdivide++;
   const DTexInfo& ti = textures_.texinfo()[size_t(f.texinfo)];
-  std::vector<Winding> work{f.w};
   if ((ti.flags & 1) || subdivide_ <= 0) {
-    emit_polygon(f, f.w, out_ids);
+    add_polygon(f.w, out);
     return;
   }
+  std::vector<Winding> work{f.w};
   bool split_any = false;
   while (!work.empty()) {
     Winding w = std::move(work.back());
@@ -141,13 +146,135 @@ void Emitter::emit_face(const Face& f, std::vector<uint32_t>* out_ids) {
       done = false;
       split_any = true;
     }
-    if (done) emit_polygon(f, w, out_ids);
+    if (done) add_polygon(w, out);
   }
   if (split_any) stats_.subdivided++;
 }
 
+void Emitter::fix_tjunctions(std::vector<Polys>* polys) {
+  // The model's vertices in a grid of kCell-unit cells.
+  constexpr double kCell = 64;
+  constexpr double kEndGap = 0.05;
+  auto pos = [this](uint32_t v) {
+    const float* p = &bsp_->vertices[size_t(v) * 3];
+    return Vec3(p[0], p[1], p[2]);
+  };
+  auto cell_key = [](int64_t x, int64_t y, int64_t z) {
+    return uint64_t((x + (1 << 20)) & 0x1fffff) | (uint64_t((y + (1 << 20)) & 0x1fffff) << 21) |
+           (uint64_t((z + (1 << 20)) & 0x1fffff) << 42);
+  };
+  std::vector<uint32_t> verts;
+  for (const Polys& ps : *polys)
+    for (const auto& vs : ps) verts.insert(verts.end(), vs.begin(), vs.end());
+  std::sort(verts.begin(), verts.end());
+  verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
+  if (verts.empty()) return;
+  std::unordered_map<uint64_t, std::vector<uint32_t>> grid;
+  for (uint32_t v : verts) {
+    Vec3 p = pos(v);
+    grid[cell_key(int64_t(std::floor(p.x / kCell)), int64_t(std::floor(p.y / kCell)), int64_t(std::floor(p.z / kCell)))]
+        .push_back(v);
+  }
+  // Per undirected edge (low id, high id): the vertices inside it, ordered from low to high.
+  std::unordered_map<uint64_t, std::vector<uint32_t>> cache;
+  std::vector<std::pair<double, uint32_t>> found;
+  auto inside = [&](uint32_t a, uint32_t b) -> const std::vector<uint32_t>& {
+    uint64_t key = (uint64_t(a) << 32) | b;
+    auto it = cache.find(key);
+    if (it != cache.end()) return it->second;
+    Vec3 pa = pos(a), pb = pos(b), d = pb - pa;
+    double len = glm::length(d);
+    found.clear();
+    auto test = [&](uint32_t v) {
+      if (v == a || v == b) return;
+      Vec3 pv = pos(v);
+      double t = glm::dot(pv - pa, d) / (len * len);
+      if (t * len < kEndGap || (1 - t) * len < kEndGap) return;
+      if (glm::length(pv - (pa + d * t)) > kTjuncEpsilon) return;
+      found.emplace_back(t, v);
+    };
+    if (len > 2 * kEndGap) {
+      Vec3 lo = glm::min(pa, pb) - Vec3(kTjuncEpsilon), hi = glm::max(pa, pb) + Vec3(kTjuncEpsilon);
+      int64_t c0[3] = {0, 0, 0}, c1[3] = {0, 0, 0};
+      double cells = 1;
+      for (int i = 0; i < 3; ++i) {
+        c0[i] = int64_t(std::floor(lo[i] / kCell));
+        c1[i] = int64_t(std::floor(hi[i] / kCell));
+        cells *= double(c1[i] - c0[i] + 1);
+      }
+      if (cells > double(verts.size())) {
+        for (uint32_t v : verts) test(v);
+      } else {
+        for (int64_t x = c0[0]; x <= c1[0]; ++x)
+          for (int64_t y = c0[1]; y <= c1[1]; ++y)
+            for (int64_t z = c0[2]; z <= c1[2]; ++z) {
+              auto g = grid.find(cell_key(x, y, z));
+              if (g == grid.end()) continue;
+              for (uint32_t v : g->second) test(v);
+            }
+      }
+    }
+    std::sort(found.begin(), found.end());
+    std::vector<uint32_t> list;
+    for (const auto& [t, v] : found)
+      if (list.empty() || list.back() != v) list.push_back(v);
+    return cache.emplace(key, std::move(list)).first->second;
+  };
+  for (Polys& ps : *polys) {
+    Polys out;
+    for (std::vector<uint32_t>& vs : ps) {
+      std::vector<uint32_t> fixed;
+      fixed.reserve(vs.size());
+      for (size_t i = 0; i < vs.size(); ++i) {
+        uint32_t a = vs[i], b = vs[(i + 1) % vs.size()];
+        fixed.push_back(a);
+        const std::vector<uint32_t>& mid = inside(std::min(a, b), std::max(a, b));
+        size_t before = fixed.size();
+        if (a < b) {
+          fixed.insert(fixed.end(), mid.begin(), mid.end());
+        } else {
+          fixed.insert(fixed.end(), mid.rbegin(), mid.rend());
+        }
+        // A vertex already in this polygon is never inserted again.
+        for (size_t k = before; k < fixed.size();) {
+          if (std::find(vs.begin(), vs.end(), fixed[k]) != vs.end()) fixed.erase(fixed.begin() + long(k));
+          else ++k;
+        }
+        stats_.tjunc_vertices += int(fixed.size() - before);
+      }
+      // Too many vertices: halve along a chord (i, i + n/2) whose halves both have area.
+      std::vector<std::vector<uint32_t>> work{std::move(fixed)};
+      while (!work.empty()) {
+        std::vector<uint32_t> w = std::move(work.back());
+        work.pop_back();
+        size_t n = w.size();
+        if (n <= kMaxFaceVertices) {
+          out.push_back(std::move(w));
+          continue;
+        }
+        bool cut = false;
+        for (size_t i = 0; i < n && !cut; ++i) {
+          std::vector<uint32_t> h1, h2;
+          for (size_t k = 0; k <= n / 2; ++k) h1.push_back(w[(i + k) % n]);
+          for (size_t k = n / 2; k <= n; ++k) h2.push_back(w[(i + k) % n]);
+          Winding p1, p2;
+          for (uint32_t v : h1) p1.push_back(pos(v));
+          for (uint32_t v : h2) p2.push_back(pos(v));
+          if (winding_area(p1) < 1.0 || winding_area(p2) < 1.0) continue;
+          work.push_back(std::move(h1));
+          work.push_back(std::move(h2));
+          stats_.tjunc_face_splits++;
+          cut = true;
+        }
+        if (!cut) out.push_back(std::move(w));  // cannot happen for a real polygon
+      }
+    }
+    ps = std::move(out);
+  }
+}
+
 int Emitter::emit_node(const Tree& tree, int n, const std::vector<bool>& face_visible, const std::vector<int>& leaf_index,
-                       std::vector<std::vector<uint32_t>>* face_ids_of) {
+                       const std::vector<Polys>& polys, std::vector<std::vector<uint32_t>>* face_ids_of) {
   const TreeNode& node = tree.nodes[size_t(n)];
   if (node.is_leaf()) return -(leaf_index[size_t(n)] + 1);
   int idx = int(bsp_->nodes.size());
@@ -156,12 +283,12 @@ int Emitter::emit_node(const Tree& tree, int n, const std::vector<bool>& face_vi
   Bounds b;
   for (int f : node.faces) {
     if (!face_visible[size_t(f)]) continue;
-    emit_face(tree.faces[size_t(f)], &(*face_ids_of)[size_t(f)]);
+    for (const auto& vs : polys[size_t(f)]) write_face(tree.faces[size_t(f)], vs, &(*face_ids_of)[size_t(f)]);
     b.add(tree.faces[size_t(f)].bounds);
   }
   uint32_t count = uint32_t(bsp_->faces.size()) - first;
-  int c0 = emit_node(tree, node.children[0], face_visible, leaf_index, face_ids_of);
-  int c1 = emit_node(tree, node.children[1], face_visible, leaf_index, face_ids_of);
+  int c0 = emit_node(tree, node.children[0], face_visible, leaf_index, polys, face_ids_of);
+  int c1 = emit_node(tree, node.children[1], face_visible, leaf_index, polys, face_ids_of);
   DNode& d = bsp_->nodes[size_t(idx)];
   d.plane = plane_index(node.plane);
   d.children[0] = c0;
@@ -245,7 +372,21 @@ int Emitter::emit_hull0(const Tree& tree, const std::vector<bool>& face_visible,
     d.children[0] = d.children[1] = c;
     bsp_->nodes.push_back(d);
   } else {
-    head = emit_node(tree, tree.root, face_visible, *leaf_index, &face_ids_of);
+    // Polygons of every visible face on a reachable node (subdivided, welded), T-junctions
+    // fixed across the model, then the nodes and faces written.
+    std::vector<Polys> polys(tree.faces.size());
+    std::vector<int> todo{tree.root};
+    while (!todo.empty()) {
+      const TreeNode& node = tree.nodes[size_t(todo.back())];
+      todo.pop_back();
+      if (node.is_leaf()) continue;
+      for (int f : node.faces)
+        if (face_visible[size_t(f)]) face_polygons(tree.faces[size_t(f)], &polys[size_t(f)]);
+      todo.push_back(node.children[1]);
+      todo.push_back(node.children[0]);
+    }
+    if (fix_tjunctions_) fix_tjunctions(&polys);
+    head = emit_node(tree, tree.root, face_visible, *leaf_index, polys, &face_ids_of);
   }
   *num_faces = int(bsp_->faces.size()) - *first_face;
   // Marksurfaces.

@@ -7,6 +7,11 @@
 // PVS bit i - 1); marksurfaces list, per leaf, the faces in front of which it lies.
 // Vertices are welded within 0.01 units (and snapped to integers within 0.01); an edge is
 // reused only by one other face walking it the other way, so no edge has more than two faces.
+// T-junctions (with `fix_tjunctions`, per model): every vertex of the model's faces that lies
+// inside another of its face edges (within kTjuncEpsilon of the line, more than 0.05 units
+// from both ends) is inserted into that edge, so that neighbouring faces share their vertices
+// and the renderer shows no cracks; a face that grows beyond kMaxFaceVertices is cut into
+// pieces along chords between its vertices.
 // Faces get lightofs -1 and styles 255 (the light stage fills them).
 // Clip hulls: clipnodes in preorder; children are clipnode indices or contents.
 #pragma once
@@ -20,14 +25,20 @@
 
 namespace sb::tools::bsp {
 
+constexpr double kTjuncEpsilon = 0.03;
+constexpr size_t kMaxFaceVertices = 64;
+
 struct EmitStats {
   int faces_before_subdivide = 0, faces_out = 0, subdivided = 0, new_edges_for_sharing = 0;
+  int tjunc_vertices = 0;     // vertices inserted into face edges
+  int tjunc_face_splits = 0;  // extra faces made by cutting faces over kMaxFaceVertices
 };
 
 class Emitter {
  public:
-  Emitter(BspData* bsp, const PlaneSet& planes, const TextureSet& textures, double subdivide)
-      : bsp_(bsp), planes_(planes), textures_(textures), subdivide_(subdivide) {}
+  Emitter(BspData* bsp, const PlaneSet& planes, const TextureSet& textures, double subdivide,
+          bool fix_tjunctions = true)
+      : bsp_(bsp), planes_(planes), textures_(textures), subdivide_(subdivide), fix_tjunctions_(fix_tjunctions) {}
 
   // Adds the shared solid leaf 0 and edge 0; call once before any model.
   void begin();
@@ -43,10 +54,14 @@ class Emitter {
   const EmitStats& stats() const { return stats_; }
 
  private:
+  using Polys = std::vector<std::vector<uint32_t>>;  // vertex index lists of one tree face
   int emit_node(const Tree& tree, int n, const std::vector<bool>& face_visible, const std::vector<int>& leaf_index,
-                std::vector<std::vector<uint32_t>>* face_ids_of);
-  void emit_face(const Face& f, std::vector<uint32_t>* out_ids);
-  void emit_polygon(const Face& f, const Winding& w, std::vector<uint32_t>* out_ids);
+                const std::vector<Polys>& polys, std::vector<std::vector<uint32_t>>* face_ids_of);
+  // Subdivides a tree face and welds its vertices (no lump written yet).
+  void face_polygons(const Face& f, Polys* out);
+  void add_polygon(const Winding& w, Polys* out);
+  void write_face(const Face& f, const std::vector<uint32_t>& vs, std::vector<uint32_t>* out_ids);
+  void fix_tjunctions(std::vector<Polys>* polys);
   uint32_t vertex(const Vec3& v);
   int32_t edge(uint32_t a, uint32_t b);
   int emit_clip_node(const Tree& tree, int n);
@@ -55,6 +70,7 @@ class Emitter {
   const PlaneSet& planes_;
   const TextureSet& textures_;
   double subdivide_;
+  bool fix_tjunctions_;
   std::map<int, int> plane_map_;
   std::unordered_map<int64_t, std::vector<uint32_t>> vertex_hash_;
   // (a, b) as walked by the face that created it -> edge index, while unused backwards.

@@ -16,7 +16,9 @@ void usage() {
                "  -subdivide <n>    largest face extent in texels before subdivision (default 240, 0: off)\n"
                "  -nofill           keep the outside (no outside removal, no .prt)\n"
                "  -noclip           no clipping hulls 1 and 2\n"
-               "  -notjunc          accepted (T-junctions are not fixed yet)\n"
+               "  -notjunc          do not fix T-junctions (vertices inside other faces' edges)\n"
+               "  -prt1             write PRT1 leaf portals even when the map has func_detail (default PRT2)\n"
+               "  -noprogress       no progress bar / progress lines on stderr\n"
                "  -threads <n>      worker threads (default 2; 1 = everything on one thread)\n"
                "  -verbose          more progress lines\n"
                "  -q                quiet: errors only\n");
@@ -58,6 +60,11 @@ int main(int argc, char** argv) {
     } else if (!std::strcmp(a, "-noclip")) {
       opt.clip_hulls = false;
     } else if (!std::strcmp(a, "-notjunc")) {
+      opt.tjunc = false;
+    } else if (!std::strcmp(a, "-prt1")) {
+      opt.prt1_only = true;
+    } else if (!std::strcmp(a, "-noprogress")) {
+      opt.progress = false;
     } else if (!std::strcmp(a, "-verbose") || !std::strcmp(a, "-v")) {
       opt.verbose = true;
     } else if (!std::strcmp(a, "-q") || !std::strcmp(a, "-quiet")) {

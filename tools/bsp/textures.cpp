@@ -42,7 +42,8 @@ TexClass classify_texture(std::string_view name) {
     return n[0] == '*' ? (n.find("lava") != std::string::npos ? TexClass::Lava
                           : n.find("slime") != std::string::npos ? TexClass::Slime : TexClass::Water)
                        : TexClass::Skip;
-  if (n == "hint" || n == "hintskip") return TexClass::Hint;
+  if (n == "hint") return TexClass::Hint;
+  if (n == "hintskip") return TexClass::HintSkip;
   if (n == "origin") return TexClass::Origin;
   if (n == "trigger") return TexClass::Trigger;
   if (!n.empty() && n[0] == '*') {

@@ -24,7 +24,9 @@
 
 namespace sb::tools::bsp {
 
-enum class TexClass { Normal, Sky, Water, Slime, Lava, Clip, Skip, Hint, Origin, Trigger };
+// Hint: faces of hint brushes that become splitters; HintSkip: "hintskip", the other faces of a
+// hint brush (ignored).
+enum class TexClass { Normal, Sky, Water, Slime, Lava, Clip, Skip, Hint, HintSkip, Origin, Trigger };
 // What a texture name means to the compiler (case-insensitive).
 TexClass classify_texture(std::string_view name);
 

@@ -15,20 +15,23 @@ constexpr size_t kAxialOnlyAbove = 256;
 struct Candidate {
   int plane = -1;
   int splits = 0, front = 0, back = 0;
+  int detail_splits = 0;  // while choosing structural planes: detail faces split (tie-break)
   bool axial = false;
 };
 
-// Lexicographic: fewer splits, then axial, then balance.
+// Lexicographic: fewer splits, then fewer detail splits, then axial, then balance.
 bool better(const Candidate& a, const Candidate& b) {
   if (b.plane < 0) return true;
   if (a.splits != b.splits) return a.splits < b.splits;
+  if (a.detail_splits != b.detail_splits) return a.detail_splits < b.detail_splits;
   if (a.axial != b.axial) return a.axial;
   return std::abs(a.front - a.back) < std::abs(b.front - b.back);
 }
 
 class Builder {
  public:
-  Builder(Tree* t, const PlaneSet& planes, TreeStats* st) : t_(t), planes_(planes), st_(st) {
+  Builder(Tree* t, const PlaneSet& planes, TreeStats* st, Progress* progress)
+      : t_(t), planes_(planes), st_(st), progress_(progress), original_faces_(int(t->faces.size())) {
     stamp_.assign(size_t(planes.size() / 2 + 1), -1);
   }
 
@@ -40,9 +43,11 @@ class Builder {
       st_->leaves++;
       return n;
     }
-    int plane = choose(ids);
+    bool detail_split = false;
+    int plane = choose(ids, &detail_split);
     st_->nodes++;
     t_->nodes[size_t(n)].plane = plane;
+    t_->nodes[size_t(n)].detail_split = detail_split;
     const Plane& p = planes_[plane];
     std::vector<int> front, back, on;
     for (int id : ids) {
@@ -71,6 +76,11 @@ class Builder {
     }
     ids.clear();
     ids.shrink_to_fit();
+    if (progress_) {
+      int placed = 0;
+      for (int id : on) placed += id < original_faces_;
+      if (placed) progress_->advance(placed);
+    }
     t_->nodes[size_t(n)].faces = std::move(on);
     int c0 = build(front, depth + 1);
     int c1 = build(back, depth + 1);
@@ -80,14 +90,20 @@ class Builder {
   }
 
  private:
-  int choose(const std::vector<int>& ids) {
-    bool any_structural = false;
-    for (int id : ids)
-      if (!t_->faces[size_t(id)].detail) { any_structural = true; break; }
+  // Hint planes first, then structural planes (detail faces not counted), then detail.
+  int choose(const std::vector<int>& ids, bool* detail_split) {
+    bool any_structural = false, any_hint = false;
+    for (int id : ids) {
+      const Face& f = t_->faces[size_t(id)];
+      any_hint = any_hint || f.hint;
+      any_structural = any_structural || !f.detail;
+    }
+    *detail_split = !any_structural;
     ++generation_;
     std::vector<int> cands;
     for (int id : ids) {
       const Face& f = t_->faces[size_t(id)];
+      if (any_hint && !f.hint) continue;
       if (any_structural && f.detail) continue;
       int pc = f.plane >> 1;
       if (stamp_[size_t(pc)] == generation_) continue;
@@ -118,8 +134,11 @@ class Builder {
         const Face& f = t_->faces[size_t(id)];
         if ((f.plane & ~1) == plane) continue;
         Side s = box_side(f.bounds, p);
-        if (s == Side::Cross && p.type >= 3) s = classify_winding(f.w, p);
-        if (s == Side::Cross && p.type < 3) s = classify_winding(f.w, p);
+        if (s == Side::Cross) s = classify_winding(f.w, p);
+        if (any_structural && f.detail) {  // counted only to break ties
+          c.detail_splits += s == Side::Cross;
+          continue;
+        }
         if (s == Side::Front) c.front++;
         else if (s == Side::Back) c.back++;
         else if (s == Side::Cross) {
@@ -137,25 +156,27 @@ class Builder {
   Tree* t_;
   const PlaneSet& planes_;
   TreeStats* st_;
+  Progress* progress_;
+  int original_faces_;
   std::vector<int> stamp_;
   int generation_ = 0;
 };
 
 }  // namespace
 
-void build_tree(std::vector<Face> faces, const PlaneSet& planes, Tree* tree, TreeStats* stats) {
+void build_tree(std::vector<Face> faces, const PlaneSet& planes, Tree* tree, TreeStats* stats, Progress* progress) {
   *tree = Tree();
   tree->faces = std::move(faces);
   stats->faces_in = int(tree->faces.size());
   for (const Face& f : tree->faces) tree->box.add(f.bounds);
   std::vector<int> ids(tree->faces.size());
   for (size_t i = 0; i < ids.size(); ++i) ids[i] = int(i);
-  Builder b(tree, planes, stats);
+  Builder b(tree, planes, stats, progress);
   tree->root = b.build(ids, 0);
   stats->faces_after = int(tree->faces.size());
 }
 
-void build_portals(Tree* t, const PlaneSet& planes, TreeStats* stats) {
+void build_portals(Tree* t, const PlaneSet& planes, TreeStats* stats, Progress* progress) {
   Bounds box = t->box;
   if (box.empty()) {
     box.mins = Vec3(-16.0);
@@ -204,6 +225,7 @@ void build_portals(Tree* t, const PlaneSet& planes, TreeStats* stats) {
   while (!stack.empty()) {
     int n = stack.back();
     stack.pop_back();
+    if (progress) progress->advance();
     TreeNode& node = t->nodes[size_t(n)];
     if (node.is_leaf()) continue;
     const Plane& P = planes[node.plane];
@@ -310,6 +332,7 @@ void set_leaf_contents(Tree* t, const std::vector<Brush>& brushes, const PlaneSe
     c /= double(count);
     int best = kContentsEmpty, best_rank = -1;
     for (const Brush& b : brushes) {
+      if (b.contents == kContentsIllusionary || b.contents == kContentsHint) continue;
       if (c.x < b.bounds.mins.x || c.x > b.bounds.maxs.x || c.y < b.bounds.mins.y || c.y > b.bounds.maxs.y ||
           c.z < b.bounds.mins.z || c.z > b.bounds.maxs.z)
         continue;
@@ -318,7 +341,7 @@ void set_leaf_contents(Tree* t, const std::vector<Brush>& brushes, const PlaneSe
         if (planes[s.plane].distance(c) > 0.001) { inside = false; break; }
       if (!inside) continue;
       int r = contents_rank(b.contents);
-      if (r > best_rank) {
+      if (r > best_rank || (r == best_rank && best == kContentsDetail && b.contents != kContentsDetail)) {
         best_rank = r;
         best = b.contents;
       }
@@ -359,7 +382,7 @@ void flood(Tree* t, const std::vector<int>& starts, bool keep_sky) {
         on.reached = true;
         continue;
       }
-      if (o != t->outside && !passable(on.contents)) continue;
+      if (o != t->outside && !passable(on.contents) && on.contents != kContentsDetail) continue;
       on.reached = true;
       on.flood_parent_portal = pid;
       q.push_back(o);
@@ -538,6 +561,58 @@ int prune_equal(Tree* t) {
   int removed = 0;
   prune_eq(t, t->root, &removed);
   return removed;
+}
+
+bool has_detail_splits(const Tree& t) {
+  for (const TreeNode& n : t.nodes)
+    if (!n.is_leaf() && n.detail_split) return true;
+  return false;
+}
+
+void build_cluster_portals(const Tree& t, const PlaneSet& planes, ClusterPortals* out) {
+  *out = ClusterPortals();
+  // The structural tree: same indices, detail-split nodes made leaves.
+  Tree s;
+  s.nodes.resize(t.nodes.size());
+  for (size_t i = 0; i < t.nodes.size(); ++i) {
+    const TreeNode& a = t.nodes[i];
+    TreeNode& b = s.nodes[i];
+    b.plane = a.detail_split ? -1 : a.plane;
+    b.children[0] = a.children[0];
+    b.children[1] = a.children[1];
+  }
+  s.root = t.root;
+  s.box = t.box;
+  TreeStats st;
+  build_portals(&s, planes, &st);
+  out->root_of.assign(t.nodes.size(), -1);
+  std::vector<int> stack{t.root};
+  while (!stack.empty()) {
+    int n = stack.back();
+    stack.pop_back();
+    if (!s.nodes[size_t(n)].is_leaf()) {
+      stack.push_back(s.nodes[size_t(n)].children[1]);
+      stack.push_back(s.nodes[size_t(n)].children[0]);
+      continue;
+    }
+    out->roots.push_back(n);
+    std::vector<int> sub{n};
+    while (!sub.empty()) {
+      int m = sub.back();
+      sub.pop_back();
+      out->root_of[size_t(m)] = n;
+      const TreeNode& node = t.nodes[size_t(m)];
+      if (node.is_leaf()) continue;
+      sub.push_back(node.children[0]);
+      sub.push_back(node.children[1]);
+    }
+  }
+  for (Portal& p : s.portals) {
+    if (!p.alive) continue;
+    for (int& side : p.nodes)
+      if (side == s.outside) side = t.outside;
+    out->portals.push_back(std::move(p));
+  }
 }
 
 }  // namespace sb::tools::bsp

@@ -1,18 +1,24 @@
 // tools/bsp/tree.h: the BSP tree of one model and hull: build from CSG faces, portals,
 // leaf contents, flood fill from entities (outside removal, leaks), face visibility.
 //
-// Building: at each node the splitter is the face plane that splits the fewest faces;
+// Building: hint faces (csg.h) are used as splitters before anything else; then, at each
+// node, the splitter is the face plane that splits the fewest faces;
 // ties prefer axial planes, then the most even split of face counts. Sets of more than 256
 // faces choose among axial planes only while any remain (cheaper, and it split less on the
 // LibreQuake maps). Structural faces are
-// used before detail faces. Faces on the splitter (either orientation) live on that node;
+// used before detail faces, and while structural splitters are chosen detail faces are not
+// counted (detail does not change the structural tree). A node whose splitter was chosen
+// with no structural face left is a detail split; the maximal subtrees of detail splits are
+// the vis clusters (build_cluster_portals). Faces on the splitter (either orientation) live on that node;
 // the others go to the children, split by the node plane when they cross it. A region with
 // no faces left is a leaf.
 // Portals: the head node's box (the faces' bounds grown by 32 units) is bounded by six
 // portals to the "outside" node; each node's plane is cut into a portal by the portals
 // bounding that node, and those portals are split by the node's plane into its children.
 // Leaf contents: a point inside the leaf (the mean of its portal vertices) is tested against
-// the brushes; the highest-ranked brush holding it gives the contents, empty otherwise.
+// the brushes; the highest-ranked brush holding it gives the contents (solid beats detail on a
+// tie), empty otherwise; illusionary and hint brushes are ignored.
+// Flood fills pass through detail leaves: detail never seals a map.
 #pragma once
 #include <string>
 #include <vector>
@@ -28,6 +34,7 @@ struct TreeNode {
   int contents = kContentsEmpty;  // leaves
   Bounds bounds;                   // leaves: of the portals; nodes: of the children
   std::vector<int> portals;        // leaves (and, while cutting, nodes)
+  bool detail_split = false;       // nodes: splitter chosen among detail faces only
   bool reached = false;            // flood fill
   int flood_parent_portal = -1;    // leak path
   bool is_leaf() const { return plane < 0; }
@@ -54,9 +61,24 @@ struct Tree {
   Bounds box;
 };
 
-void build_tree(std::vector<Face> faces, const PlaneSet& planes, Tree* tree, TreeStats* stats);
+// `progress` (optional): build_tree advances by one per input face placed on a node (total:
+// the number of faces); build_portals by one per node (total: tree.nodes.size()).
+void build_tree(std::vector<Face> faces, const PlaneSet& planes, Tree* tree, TreeStats* stats,
+                Progress* progress = nullptr);
 // Builds portals between all leaves (and the outside pseudo-leaf).
-void build_portals(Tree* tree, const PlaneSet& planes, TreeStats* stats);
+void build_portals(Tree* tree, const PlaneSet& planes, TreeStats* stats, Progress* progress = nullptr);
+// Vis clusters: the tree with every detail-split node taken as a leaf. `root_of[n]` is, for
+// every node n at or below a cluster root, that root (-1 above); `roots` lists the roots in
+// tree order (front first); `portals` are the portals of that structural tree, their nodes[]
+// being cluster roots or tree.outside. Works on a pruned tree (prune_solid) too.
+struct ClusterPortals {
+  std::vector<int> root_of;
+  std::vector<int> roots;
+  std::vector<Portal> portals;
+};
+bool has_detail_splits(const Tree& tree);
+void build_cluster_portals(const Tree& tree, const PlaneSet& planes, ClusterPortals* out);
+
 // Leaf contents from the brushes (see the header comment).
 void set_leaf_contents(Tree* tree, const std::vector<Brush>& brushes, const PlaneSet& planes);
 
