@@ -1,11 +1,13 @@
 // tools/vis/main.cpp: sbvis, the VIS stage of the map compiler.
 //
-//   sbvis [-fast] [-threads N] [-sym] [-q] file.bsp
+//   sbvis [-fast] [-nochop] [-threads N] [-sym] [-q] file.bsp
 //     -fast         the portal flood only (quick, looser)
+//     -nochop       full flow without the source narrowing (faster, a little looser)
 //     -threads N    worker threads (default 2)
 //     -sym          make the PVS symmetric (a sees b => b sees a)
 //     -q            quiet: the summary only
-// Reads file.prt (written by sbbsp next to the BSP) and writes the visdata lump and every
+// Reads file.prt (PRT1, or PRT2 with detail clusters; written by sbbsp next to the BSP),
+// prints progress on stderr and a summary line on stdout, and writes the visdata lump and every
 // leaf's visofs back into file.bsp, in the format it was read in.
 #include <cstdio>
 #include <cstdlib>
@@ -16,7 +18,7 @@
 
 namespace {
 
-void usage() { std::fprintf(stderr, "usage: sbvis [-fast] [-threads N] [-sym] [-q] file.bsp\n"); }
+void usage() { std::fprintf(stderr, "usage: sbvis [-fast] [-nochop] [-threads N] [-sym] [-q] file.bsp\n"); }
 
 void print_line(void*, const char* line) {
   std::printf("%s\n", line);
@@ -32,6 +34,8 @@ int main(int argc, char** argv) {
     const char* a = argv[i];
     if (!std::strcmp(a, "-fast")) {
       opt.fast = true;
+    } else if (!std::strcmp(a, "-nochop")) {
+      opt.chop_source = false;
     } else if (!std::strcmp(a, "-sym")) {
       opt.symmetric = true;
     } else if (!std::strcmp(a, "-q")) {

@@ -1,10 +1,14 @@
-// tools/vis/vis.cpp: row compression, storing the PVS in a BSP, and the whole sbvis stage.
+// tools/vis/vis.cpp: the portal graph, node rows to leaf rows (clusters), the PHS, row
+// compression, storing the PVS in a BSP, and the whole sbvis stage.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdarg>
 #include <cstdio>
 #include <map>
 
 #include "tools/vis/vis.h"
+#include "tools/vis/vis_graph.h"
 
 namespace sb::tools::vis {
 
@@ -59,6 +63,220 @@ Status store_pvs(BspData* bsp, int num_leaves, const std::vector<uint8_t>& rows,
   return Status::ok();
 }
 
+Status build_graph(const PortalFile& prt, Graph* g) {
+  g->nodes = prt.num_clusters;
+  g->portals.resize(prt.portals.size() * 2);
+  g->node_portals.assign(size_t(g->nodes), {});
+  g->words = (g->portals.size() + 63) / 64;
+  for (size_t i = 0; i < prt.portals.size(); ++i) {
+    const PrtPortal& pp = prt.portals[i];
+    int n = int(pp.points.size() / 3);
+    if (n > kMaxPts) return make_error("portal %zu: %d points (at most %d)", i, n, kMaxPts);
+    if (pp.leaf[0] < 0 || pp.leaf[1] < 0 || pp.leaf[0] >= g->nodes || pp.leaf[1] >= g->nodes)
+      return make_error("portal %zu: node out of range", i);
+    Wind w;
+    w.n = n;
+    V c{0, 0, 0}, newell{0, 0, 0};
+    for (int k = 0; k < n; ++k) w.p[k] = {pp.points[size_t(k * 3)], pp.points[size_t(k * 3 + 1)], pp.points[size_t(k * 3 + 2)]};
+    for (int k = 0; k < n; ++k) {
+      V a = w.p[k], b = w.p[(k + 1) % n];
+      newell.x += (a.y - b.y) * (a.z + b.z);
+      newell.y += (a.z - b.z) * (a.x + b.x);
+      newell.z += (a.x - b.x) * (a.y + b.y);
+      c = c + a;
+    }
+    c = c * (1.0 / n);
+    double len = std::sqrt(dot(newell, newell));
+    if (len < 1e-9) return make_error("portal %zu: degenerate winding", i);
+    // Clockwise seen from the front: the front normal is minus the right-hand one.
+    V front = newell * (-1.0 / len);
+    Plane to_a{front, dot(front, c)};  // points into node[0]
+    double r2 = 0;
+    for (int k = 0; k < n; ++k) r2 = std::max(r2, dot(w.p[k] - c, w.p[k] - c));
+    DPortal& ab = g->portals[i * 2];
+    ab.pl = flip(to_a);
+    ab.from = pp.leaf[0];
+    ab.to = pp.leaf[1];
+    ab.w = w;
+    ab.center = c;
+    ab.radius = std::sqrt(r2);
+    DPortal& ba = g->portals[i * 2 + 1];
+    ba.pl = to_a;
+    ba.from = pp.leaf[1];
+    ba.to = pp.leaf[0];
+    ba.w = w;
+    ba.center = c;
+    ba.radius = ab.radius;
+    g->node_portals[size_t(pp.leaf[0])].push_back(int(i * 2));
+    g->node_portals[size_t(pp.leaf[1])].push_back(int(i * 2 + 1));
+  }
+  return Status::ok();
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+// Node rows (nodes x words64 of node bits) from per-portal bits: a node sees itself, the
+// nodes its portals lead to, and the far nodes of every portal seen through them.
+void gather_nodes(const Graph& g, const std::vector<uint64_t>& bits, size_t nwords, std::vector<uint64_t>* rows) {
+  rows->assign(size_t(g.nodes) * nwords, 0);
+  for (int n = 0; n < g.nodes; ++n) {
+    uint64_t* row = &(*rows)[size_t(n) * nwords];
+    row[size_t(n) >> 6] |= uint64_t(1) << (n & 63);
+    for (int p : g.node_portals[size_t(n)]) {
+      int to = g.portals[size_t(p)].to;
+      row[size_t(to) >> 6] |= uint64_t(1) << (to & 63);
+      const uint64_t* b = &bits[size_t(p) * g.words];
+      for (size_t w = 0; w < g.words; ++w) {
+        uint64_t x = b[w];
+        while (x) {
+          int q = int(w * 64) + __builtin_ctzll(x);
+          x &= x - 1;
+          int lt = g.portals[size_t(q)].to;
+          row[size_t(lt) >> 6] |= uint64_t(1) << (lt & 63);
+        }
+      }
+    }
+  }
+}
+
+void symmetrise(int nodes, size_t nwords, std::vector<uint64_t>* rows) {
+  for (int a = 0; a < nodes; ++a)
+    for (int b = 0; b < nodes; ++b)
+      if (((*rows)[size_t(a) * nwords + size_t(b >> 6)] >> (b & 63)) & 1)
+        (*rows)[size_t(b) * nwords + size_t(a >> 6)] |= uint64_t(1) << (a & 63);
+}
+
+// Union of the rows named by each row (PHS of PVS rows), in 64-bit words.
+void union_of_rows(int nodes, size_t nwords, const std::vector<uint64_t>& rows, std::vector<uint64_t>* out) {
+  out->assign(rows.size(), 0);
+  for (int a = 0; a < nodes; ++a) {
+    uint64_t* o = &(*out)[size_t(a) * nwords];
+    const uint64_t* r = &rows[size_t(a) * nwords];
+    for (size_t w = 0; w < nwords; ++w) {
+      uint64_t x = r[w];
+      while (x) {
+        int b = int(w * 64) + __builtin_ctzll(x);
+        x &= x - 1;
+        const uint64_t* rb = &rows[size_t(b) * nwords];
+        for (size_t k = 0; k < nwords; ++k) o[k] |= rb[k];
+      }
+    }
+  }
+}
+
+// Leaves counted over all leaves: sum over leaves of |leaves of the nodes in its node row|.
+int64_t leaf_total(int nodes, size_t nwords, const std::vector<uint64_t>& rows, const std::vector<int64_t>& node_size) {
+  int64_t sum = 0;
+  for (int a = 0; a < nodes; ++a) {
+    int64_t row = 0;
+    for (size_t w = 0; w < nwords; ++w) {
+      uint64_t x = rows[size_t(a) * nwords + w];
+      while (x) {
+        row += node_size[w * 64 + size_t(__builtin_ctzll(x))];
+        x &= x - 1;
+      }
+    }
+    sum += row * node_size[size_t(a)];
+  }
+  return sum;
+}
+
+// Leaf byte rows from node rows: a leaf's row holds the leaves of every node its node sees.
+void expand_rows(const PortalFile& prt, int nodes, size_t nwords, const std::vector<uint64_t>& node_rows,
+                 std::vector<uint8_t>* rows) {
+  const size_t row_bytes = (size_t(prt.num_leaves) + 7) / 8;
+  rows->assign(size_t(prt.num_leaves) * row_bytes, 0);
+  if (!prt.clustered()) {
+    for (int l = 0; l < prt.num_leaves; ++l)
+      for (size_t i = 0; i < row_bytes; ++i)
+        (*rows)[size_t(l) * row_bytes + i] = uint8_t(node_rows[size_t(l) * nwords + (i >> 3)] >> ((i & 7) * 8));
+    return;
+  }
+  std::vector<std::vector<int>> members(static_cast<size_t>(nodes));
+  for (int l = 0; l < prt.num_leaves; ++l) members[size_t(prt.leaf_cluster[size_t(l)])].push_back(l);
+  std::vector<uint8_t> row(row_bytes);
+  for (int c = 0; c < nodes; ++c) {
+    std::fill(row.begin(), row.end(), 0);
+    for (size_t w = 0; w < nwords; ++w) {
+      uint64_t x = node_rows[size_t(c) * nwords + w];
+      while (x) {
+        int v = int(w * 64) + __builtin_ctzll(x);
+        x &= x - 1;
+        for (int l : members[size_t(v)]) row[size_t(l) >> 3] |= uint8_t(1u << (l & 7));
+      }
+    }
+    for (int l : members[size_t(c)]) std::copy(row.begin(), row.end(), rows->begin() + ptrdiff_t(size_t(l) * row_bytes));
+  }
+}
+
+}  // namespace
+
+Status compute_pvs(const PortalFile& prt, const VisOptions& opt, std::vector<uint8_t>* rows, VisStats* stats,
+                   std::vector<uint8_t>* phs) {
+  Graph g;
+  SB_TRY(build_graph(prt, &g));
+  if (prt.clustered() && prt.leaf_cluster.size() != size_t(prt.num_leaves))
+    return make_error("portal file: %zu leaf clusters for %d leaves", prt.leaf_cluster.size(), prt.num_leaves);
+  stats->leaves = prt.num_leaves;
+  stats->clusters = g.nodes;
+  stats->portals = int(prt.portals.size());
+  stats->full = !opt.fast;
+
+  std::vector<uint64_t> might, vis;
+  graph_flow(g, opt, &might, opt.fast ? nullptr : &vis, &stats->seconds_fast, &stats->seconds_full, &stats->flow_steps);
+
+  auto t1 = Clock::now();
+  const int nodes = g.nodes;
+  const size_t nwords = (size_t(nodes) + 63) / 64;
+  std::vector<int64_t> node_size(nwords * 64, 0);
+  if (prt.clustered()) {
+    for (int c : prt.leaf_cluster) ++node_size[size_t(c)];
+  } else {
+    for (int l = 0; l < nodes; ++l) node_size[size_t(l)] = 1;
+  }
+  std::vector<uint64_t> node_rows, might_rows;
+  gather_nodes(g, might, nwords, &might_rows);
+  if (opt.symmetric) symmetrise(nodes, nwords, &might_rows);
+  int64_t might_total = leaf_total(nodes, nwords, might_rows, node_size);
+  if (opt.fast) {
+    node_rows = std::move(might_rows);
+  } else {
+    gather_nodes(g, vis, nwords, &node_rows);
+    if (opt.symmetric) symmetrise(nodes, nwords, &node_rows);
+  }
+  stats->visible_total = leaf_total(nodes, nwords, node_rows, node_size);
+  std::vector<uint64_t> hear;
+  union_of_rows(nodes, nwords, node_rows, &hear);
+  int64_t hear_total = leaf_total(nodes, nwords, hear, node_size);
+  expand_rows(prt, nodes, nwords, node_rows, rows);
+  if (phs) expand_rows(prt, nodes, nwords, hear, phs);
+  stats->row_bytes = (size_t(prt.num_leaves) + 7) / 8;
+  const double nl = prt.num_leaves ? double(prt.num_leaves) : 1.0;
+  stats->mean_visible = double(stats->visible_total) / nl;
+  stats->mean_might = double(might_total) / nl;
+  stats->mean_hearable = double(hear_total) / nl;
+  stats->seconds_rows = since(t1);
+  return Status::ok();
+}
+
+int64_t compute_phs(const std::vector<uint8_t>& pvs, int num_leaves, std::vector<uint8_t>* phs) {
+  const size_t rb = (size_t(num_leaves) + 7) / 8;
+  phs->assign(pvs.size(), 0);
+  int64_t total = 0;
+  for (int a = 0; a < num_leaves; ++a) {
+    uint8_t* o = &(*phs)[size_t(a) * rb];
+    const uint8_t* r = &pvs[size_t(a) * rb];
+    for (int b = 0; b < num_leaves; ++b)
+      if (r[b >> 3] & (1u << (b & 7)))
+        for (size_t k = 0; k < rb; ++k) o[k] |= pvs[size_t(b) * rb + k];
+    for (size_t k = 0; k < rb; ++k) total += __builtin_popcount(o[k]);
+  }
+  return total;
+}
+
 namespace {
 
 std::string prt_path_for(const std::string& bsp) {
@@ -71,7 +289,7 @@ std::string prt_path_for(const std::string& bsp) {
 void say(void (*log)(void*, const char*), void* user, const char* fmt, ...) __attribute__((format(printf, 3, 4)));
 void say(void (*log)(void*, const char*), void* user, const char* fmt, ...) {
   if (!log) return;
-  char buf[512];
+  char buf[1024];
   va_list ap;
   va_start(ap, fmt);
   std::vsnprintf(buf, sizeof buf, fmt, ap);
@@ -79,45 +297,60 @@ void say(void (*log)(void*, const char*), void* user, const char* fmt, ...) {
   log(user, buf);
 }
 
-struct ProgressCtx {
-  void (*log)(void*, const char*);
-  void* user;
-};
-
 }  // namespace
 
 Status run_vis(const std::string& bsp_path, const VisOptions& opt, VisStats* stats,
                void (*log)(void*, const char*), void* user) {
-  auto t0 = std::chrono::steady_clock::now();
+  auto t0 = Clock::now();
   *stats = VisStats();
   BspData bsp;
   SB_TRY(read_bsp(bsp_path.c_str(), &bsp));
   std::string prt_path = prt_path_for(bsp_path);
   PortalFile prt;
   SB_TRY(read_prt(prt_path.c_str(), &prt));
-  if (!opt.quiet)
-    say(log, user, "portals: %s: %d leaves, %zu portals", prt_path.c_str(), prt.num_leaves, prt.portals.size());
+  if (!opt.quiet) {
+    if (prt.clustered())
+      say(log, user, "portals: %s: PRT2, %d leaves in %d clusters, %zu portals", prt_path.c_str(), prt.num_leaves,
+          prt.num_clusters, prt.portals.size());
+    else
+      say(log, user, "portals: %s: %d leaves, %zu portals", prt_path.c_str(), prt.num_leaves, prt.portals.size());
+  }
   if (bsp.models.empty() || bsp.models[0].visleafs != prt.num_leaves)
     return make_error("%s: %d leaves, but %s has %d visleafs (stale .prt?)", prt_path.c_str(), prt.num_leaves,
                       bsp_path.c_str(), bsp.models.empty() ? 0 : bsp.models[0].visleafs);
+  const double t_read = since(t0);
   std::vector<uint8_t> rows;
-  ProgressCtx pc{log, user};
-  auto progress = [](void* u, int done, int total) {
-    auto* c = static_cast<ProgressCtx*>(u);
-    say(c->log, c->user, "vis: %d/%d portals (%d%%)", done, total, int(int64_t(done) * 100 / total));
-  };
-  SB_TRY(compute_pvs(prt, opt, &rows, stats, opt.quiet ? nullptr : +progress, &pc));
+  SB_TRY(compute_pvs(prt, opt, &rows, stats));
+  stats->seconds_read = t_read;
+  auto t2 = Clock::now();
+  // vis_faces: the marksurfaces of the leaves in each leaf's PVS, averaged over leaves.
+  int64_t faces = 0;
+  const size_t rb = stats->row_bytes;
+  for (int l = 0; l < prt.num_leaves; ++l)
+    for (size_t i = 0; i < rb; ++i) {
+      unsigned x = rows[size_t(l) * rb + i];
+      while (x) {
+        size_t leaf = i * 8 + size_t(__builtin_ctz(x)) + 1;
+        x &= x - 1;
+        if (leaf < bsp.leaves.size()) faces += bsp.leaves[leaf].num_marksurfaces;
+      }
+    }
+  stats->mean_faces = prt.num_leaves ? double(faces) / prt.num_leaves : 0;
   SB_TRY(store_pvs(&bsp, prt.num_leaves, rows, stats));
   BspFormat used;
   BspFormat keep = bsp.format;
   SB_TRY(write_bsp(bsp_path.c_str(), bsp, keep, &used));
-  stats->seconds_total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  stats->seconds_write = since(t2);
+  stats->seconds_total = since(t0);
   say(log, user,
-      "vis (%s, %d threads): %d leaves, %d portals; visible leaves per leaf %.1f (fast flood %.1f); "
-      "visdata %zu bytes (%zu unique rows of %zu); flood %.2f s, full %.2f s, total %.2f s",
-      stats->full ? "full" : "fast", opt.threads, stats->leaves, stats->portals, stats->mean_visible,
-      stats->mean_might, stats->visdata_bytes, stats->unique_rows, size_t(stats->leaves), stats->seconds_fast,
-      stats->seconds_full, stats->seconds_total);
+      "vis (%s, %d threads): %d portals, %d leaves%s; visible leaves per leaf %.1f (flood %.1f), PHS leaves per "
+      "leaf %.1f, vis_faces %.1f; visdata %zu bytes (%zu unique rows); read %.2f s, flood %.2f s, flow %.2f s, "
+      "rows %.2f s, write %.2f s, total %.2f s; %lld flow steps",
+      stats->full ? "full" : "fast", opt.threads, stats->portals, stats->leaves,
+      prt.clustered() ? (" in " + std::to_string(stats->clusters) + " clusters").c_str() : "", stats->mean_visible,
+      stats->mean_might, stats->mean_hearable, stats->mean_faces, stats->visdata_bytes, stats->unique_rows,
+      stats->seconds_read, stats->seconds_fast, stats->seconds_full, stats->seconds_rows, stats->seconds_write,
+      stats->seconds_total, static_cast<long long>(stats->flow_steps));
   return Status::ok();
 }
 
