@@ -20,9 +20,9 @@ TEST(Progress, LinesModePrintsEachQuarterOnce) {
   {
     sb::tools::Progress p("stage", 1000, sb::tools::Progress::Mode::Lines);
     std::vector<std::thread> workers;
-    for (int t = 0; t < 2; ++t)
+    for (int t = 0; t < 4; ++t)
       workers.emplace_back([&p] {
-        for (int i = 0; i < 500; ++i) p.advance();
+        for (int i = 0; i < 250; ++i) p.advance();
       });
     for (auto& w : workers) w.join();
     EXPECT_GE(p.finish(), 0.0);
@@ -33,6 +33,11 @@ TEST(Progress, LinesModePrintsEachQuarterOnce) {
   EXPECT_EQ(count_of(out, "stage: 50%"), 1) << out;
   EXPECT_EQ(count_of(out, "stage: 75%"), 1) << out;
   EXPECT_EQ(count_of(out, "stage: 100% (1000/1000)"), 1) << out;
+  // In order, whichever worker won which quarter.
+  EXPECT_LT(out.find("stage: 0%"), out.find("stage: 25%")) << out;
+  EXPECT_LT(out.find("stage: 25%"), out.find("stage: 50%")) << out;
+  EXPECT_LT(out.find("stage: 50%"), out.find("stage: 75%")) << out;
+  EXPECT_LT(out.find("stage: 75%"), out.find("stage: 100%")) << out;
   EXPECT_EQ(out.find('\r'), std::string::npos) << "log lines must not carry carriage returns";
 }
 

@@ -3,6 +3,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 
@@ -45,7 +46,15 @@ void Progress::advance(int64_t n) {
     // Next quarter past `done`; one thread wins the right to print this one.
     const int64_t quarter = total_ / 4 > 0 ? total_ / 4 : 1;
     const int64_t next = (done / quarter + 1) * quarter;
-    if (next_report_.compare_exchange_strong(threshold, next)) report(done, false);
+    if (!next_report_.compare_exchange_strong(threshold, next)) return;
+    // Two workers can win consecutive quarters and reach the printer in either order: the
+    // first to get there prints every quarter not yet printed, up to its own, naming the
+    // quarter (not the racing count), so a log reads 0, 25, 50, 75, 100 in order.
+    std::lock_guard<std::mutex> lock(print_mutex_);
+    if (finished_.load()) return;
+    const int64_t q = std::min<int64_t>(done / quarter, 3);
+    for (int64_t k = std::max<int64_t>(printed_ + 1, 1); k <= q; ++k) report(k * quarter, false);
+    if (q > printed_) printed_ = q;
   } else {
     const int64_t ms = (now_ns() - start_ns_) / 1000000;
     if (ms < threshold) return;
@@ -79,7 +88,10 @@ double Progress::finish() {
   bool expected = false;
   const double secs = static_cast<double>(now_ns() - start_ns_) * 1e-9;
   if (!finished_.compare_exchange_strong(expected, true)) return secs;
-  if (mode_ != Mode::Quiet) report(done_.load() < total_ ? total_ : done_.load(), true);
+  if (mode_ != Mode::Quiet) {
+    std::lock_guard<std::mutex> lock(print_mutex_);
+    report(done_.load() < total_ ? total_ : done_.load(), true);
+  }
   return secs;
 }
 

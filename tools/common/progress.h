@@ -10,6 +10,7 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <mutex>
 
 namespace sb::tools {
 
@@ -35,6 +36,8 @@ class Progress {
   std::atomic<int64_t> done_{0};
   std::atomic<int64_t> next_report_{0};  // done count (Lines) or time in ms (Bar) of next print
   std::atomic<bool> finished_{false};
+  std::mutex print_mutex_;  // printing only: lines come out in order, never interleaved
+  int64_t printed_ = -1;    // last quarter printed (Lines), under print_mutex_
   int64_t start_ns_;
 };
 
