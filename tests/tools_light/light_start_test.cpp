@@ -127,12 +127,22 @@ TEST(LightStart, SameBytesForOneAndTwoThreads) {
   SB_REQUIRE_QUAKE_DATA();
   std::string path = copy_start("threads");
   ASSERT_FALSE(path.empty());
-  for (int extra : {1, 2}) {
+  for (int extra : {1, 2, 0}) {  // 0: -bounce -dirt (the LibreQuake flags) without -extra
     LightOptions one, two;
     one.threads = 1;
     two.threads = 2;
-    one.extra = two.extra = extra;
-    BspData a = relit(path, one), b = relit(path, two);
+    one.extra = two.extra = extra ? extra : 1;
+    one.quiet = two.quiet = true;
+    if (extra == 0) {
+      one.bounce = two.bounce = 1;
+      one.dirt = two.dirt = 1;
+    }
+    LightStats st;
+    BspData a = relit(path, one), b = relit(path, two, &st);
+    if (extra == 0) {
+      EXPECT_EQ(st.bounces, 1);
+      EXPECT_GT(st.dirt_rays, 0u);
+    }
     EXPECT_EQ(a.lighting, b.lighting) << "extra " << extra;
     ASSERT_EQ(a.faces.size(), b.faces.size());
     for (size_t i = 0; i < a.faces.size(); ++i) {

@@ -2,6 +2,7 @@
 // faces on worker threads, and writes the lighting lump and face styles back.
 #include "tools/light/light.h"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -12,6 +13,9 @@
 #include "engine/core/log.h"
 #include "engine/formats/bsp.h"
 #include "memory/arena.h"
+#include "tools/common/progress.h"
+#include "tools/light/light_bounce.h"
+#include "tools/light/light_dirt.h"
 #include "tools/light/light_entities.h"
 #include "tools/light/light_face.h"
 #include "tools/light/light_trace.h"
@@ -44,6 +48,29 @@ class EngineWorld {
   mem::Arena level_, scratch_;
   BspWorld* world_ = nullptr;
 };
+
+// Command-line values override worldspawn; then every light's and sun's dirt switch and
+// dirt scale / gain are resolved (see light_entities.h for the defaults).
+void resolve_light_options(const LightOptions& o, LightSettings* s) {
+  if (o.bounce >= 0) s->bounce = std::min(o.bounce, 8);
+  if (o.bouncescale >= 0) s->bouncescale = o.bouncescale;
+  if (o.bouncecolorscale >= 0) s->bouncecolorscale = std::min(o.bouncecolorscale, 1.0f);
+  if (o.bouncestyled >= 0) s->bouncestyled = o.bouncestyled > 0;
+  if (o.dirt >= 0) s->dirt = o.dirt > 0 ? 1 : -1;
+  if (o.dirtdepth > 0) s->dirtdepth = o.dirtdepth;
+  if (o.dirtscale >= 0) s->dirtscale = o.dirtscale;
+  if (o.dirtgain > 0) s->dirtgain = o.dirtgain;
+  if (o.dirtangle >= 0) s->dirtangle = std::clamp(o.dirtangle, 1.0f, 90.0f);
+  if (o.dirtmode >= 0) s->dirtmode = o.dirtmode > 0 ? 1 : 0;
+  auto pick = [](int own, int fallback) { return own != 0 ? own : fallback; };
+  for (PointLight& l : s->lights) {
+    l.dirt = pick(l.dirt, s->dirt);
+    if (l.dirtscale < 0) l.dirtscale = s->dirtscale;
+    if (l.dirtgain <= 0) l.dirtgain = s->dirtgain;
+  }
+  for (Sun& sun : s->suns) sun.dirt = pick(sun.dirt, pick(sun.dome ? s->sunlight2_dirt : s->sunlight_dirt, s->dirt));
+  s->minlight_dirt = pick(s->minlight_dirt, s->dirt);
+}
 
 }  // namespace
 
@@ -86,32 +113,82 @@ Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts_in, Li
                   l.origin.y, l.origin.z, c == kContentsSolid ? "solid" : "sky");
   }
 
+  resolve_light_options(opts, &settings);
   auto t0 = std::chrono::steady_clock::now();
   LightScene scene;
   scene.world = &w;
   scene.tracer = &tracer;
   scene.opts = opts;
   prepare_scene(&scene, &settings);
+  bool any_dirt = settings.minlight_dirt > 0 && settings.minlight > 0;
+  for (const PointLight& l : settings.lights) any_dirt |= l.dirt > 0;
+  for (const Sun& s : settings.suns) any_dirt |= s.dirt > 0;
+  if (any_dirt) scene.dirt_dirs = dirt_directions(settings.dirtangle);
+  scene.minlight_dirt = settings.minlight_dirt > 0;
+  scene.bounces = settings.bounce;
+  if (scene.bounces > 0) {
+    st.palette_missing = !prepare_bounce(&scene, opts.palette, settings.bouncecolorscale);
+    if (st.palette_missing)
+      log_warning("%s: bounce: texture colours wanted (bouncecolorscale %g) but no palette: grey 0.5 used", name,
+                  double(settings.bouncecolorscale));
+  }
 
   unsigned threads = opts.threads > 0 ? unsigned(opts.threads) : std::thread::hardware_concurrency();
   if (threads == 0) threads = 1;
   if (threads > 256) threads = 256;
-  std::vector<FaceLightmap> results(w.num_faces);
-  std::atomic<uint32_t> next{0};
-  auto worker = [&]() {
-    for (;;) {
-      uint32_t f = next.fetch_add(1, std::memory_order_relaxed);
-      if (f >= w.num_faces) return;
-      light_face(scene, f, &results[f]);
+  const Progress::Mode mode = opts.quiet ? Progress::Mode::Quiet : Progress::Mode::Auto;
+  // Runs fn(face) for every face on the worker threads, with a progress report.
+  auto for_each_face = [&](const char* stage, const auto& fn) -> double {
+    Progress progress(stage ? stage : "light", int64_t(w.num_faces), stage ? mode : Progress::Mode::Quiet);
+    std::atomic<uint32_t> next{0};
+    auto worker = [&]() {
+      for (;;) {
+        uint32_t f = next.fetch_add(1, std::memory_order_relaxed);
+        if (f >= w.num_faces) return;
+        fn(f);
+        progress.advance();
+      }
+    };
+    if (threads == 1) {
+      worker();
+    } else {
+      std::vector<std::thread> pool;
+      for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
+      for (std::thread& t : pool) t.join();
     }
+    return progress.finish();
   };
-  if (threads == 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    for (unsigned i = 0; i < threads; ++i) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
+
+  std::vector<FaceWork> work(w.num_faces);
+  if (any_dirt) {
+    st.dirt = true;
+    st.dirt_seconds = for_each_face("light dirt", [&](uint32_t f) {
+      face_setup(scene, f, &work[f]);
+      dirt_face(scene, f, &work[f]);
+    });
   }
+  st.direct_seconds = for_each_face("light direct", [&](uint32_t f) {
+    if (!any_dirt) face_setup(scene, f, &work[f]);
+    light_face_direct(scene, f, &work[f]);
+  });
+  for (int pass = 1; pass <= scene.bounces; ++pass) {
+    char stage[32];
+    std::snprintf(stage, sizeof stage, "light bounce %d", pass);
+    st.bounce_seconds += for_each_face(stage, [&](uint32_t f) { bounce_gather(scene, f, work, &work[f]); });
+    for (uint32_t f = 0; f < w.num_faces; ++f) bounce_commit(scene, f, &work[f], pass < scene.bounces);
+    ++st.bounces;
+  }
+  std::vector<FaceLightmap> results(w.num_faces);
+  for (uint32_t f = 0; f < w.num_faces; ++f) {
+    st.dirt_rays += work[f].dirt_rays;
+    st.bounce_rays += work[f].bounce_rays;
+    st.bounce_misses += work[f].bounce_misses;
+  }
+  for_each_face(nullptr, [&](uint32_t f) {  // quick: no progress report
+    finish_face(scene, work[f], &results[f]);
+    FaceWork().light.swap(work[f].light);  // free as we go
+  });
+  std::vector<FaceWork>().swap(work);
 
   // Assemble the lump in face order.
   std::vector<uint8_t> lighting;

@@ -22,8 +22,12 @@
 //   Suns: a sample is lit when the ray towards the sun reaches a sky leaf first.
 // Determinism: every face is computed on its own from read-only data and written by index:
 // the output is byte-identical for any thread count.
-// Not implemented (this session): bounce / radiosity, dirt (ambient occlusion),
-// sunlight penumbra, deviance, phong shading, BSPX / LIGHTING_E5BGR9.
+// Phases, each on worker threads and each timed: dirt (ambient occlusion per grid point,
+// light_dirt.h), direct (lights and suns, as above, each light's share scaled by the dirt
+// factor when dirt applies to it), bounce (radiosity, light_bounce.h: gathered light that
+// faces reflect, added to style 0 or, with bouncestyled, to the emitting style), then the
+// conversion to bytes (minimum light last, itself dirtied when "_minlight_dirt" applies).
+// Not implemented: sunlight penumbra, deviance, phong shading, BSPX / LIGHTING_E5BGR9.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -42,6 +46,21 @@ struct LightOptions {
   float gate = 1.0f;        // -gate: a light whose value (before rangescale) stays below
                             // this over the face is skipped (inverse falloffs)
   int dome_samples = 32;    // directions of the "_sunlight2" sky dome
+
+  // Bounce and dirt. Values below 0 mean "not given": the worldspawn key (or its default)
+  // applies; given values override worldspawn (as the Quake light tools' options do).
+  int bounce = -1;              // -bounce [n]: number of bounces (0..8)
+  float bouncescale = -1;       // -bouncescale
+  float bouncecolorscale = -1;  // -bouncecolorscale 0..1
+  int bouncestyled = -1;        // -bouncestyled: 1
+  int bounce_rays = 64;         // gather rays per bounce receiver (-bouncerays)
+  int bounce_step = 2;          // receivers every this many grid points each way (-bouncestep)
+  int dirt = -1;                // -dirt: 1 (on for every light unless it says otherwise)
+  float dirtdepth = -1, dirtscale = -1, dirtgain = -1, dirtangle = -1;
+  int dirtmode = -1;
+  // Texture colours for bounce: 768 bytes (256 x r, g, b), e.g. gfx/palette.lmp. Empty:
+  // every texture reflects as grey 0.5 (LightStats::palette_missing is set).
+  std::vector<uint8_t> palette;
 };
 
 struct LightStats {
@@ -54,6 +73,13 @@ struct LightStats {
   uint32_t styles_dropped = 0; // faces that had more than 4 styles
   uint32_t threads = 0;
   double seconds = 0;          // lighting time (not reading / writing)
+  double dirt_seconds = 0, direct_seconds = 0, bounce_seconds = 0;  // per phase
+  int bounces = 0;             // bounce passes done
+  bool dirt = false;           // dirt was computed (some light or the minimum light uses it)
+  uint64_t dirt_rays = 0;      // rays cast for dirt
+  uint64_t bounce_rays = 0;    // rays cast for bounce
+  uint64_t bounce_misses = 0;  // bounce rays that hit a surface no face could be found for
+  bool palette_missing = false;  // bounce ran with grey reflectivity (no palette)
   double mean_sample = 0;      // mean style-0 sample value over lit faces
 };
 

@@ -112,6 +112,20 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
       log_warning("%s: %s: bad \"_sunlight_color\"", name, describe(int(i), all[i]).c_str());
     if (w.find("_sunlight2_color", &v) && !parse_color(v, &sun2_color))
       log_warning("%s: %s: bad \"_sunlight2_color\"", name, describe(int(i), all[i]).c_str());
+    // Bounce and dirt (out-of-range values are clamped; see light_entities.h).
+    if (find_float(w, "_bounce", &f)) out->bounce = std::clamp(int(f), 0, 8);
+    if (find_float(w, "_bouncescale", &f)) out->bouncescale = std::max(f, 0.0f);
+    if (find_float(w, "_bouncecolorscale", &f)) out->bouncecolorscale = std::clamp(f, 0.0f, 1.0f);
+    if (find_float(w, "_bouncestyled", &f)) out->bouncestyled = f > 0;
+    if (find_float(w, "_dirt", &f)) out->dirt = f > 0 ? 1 : -1;
+    if (find_float(w, "_dirtdepth", &f) && f > 0) out->dirtdepth = f;
+    if (find_float(w, "_dirtscale", &f)) out->dirtscale = std::max(f, 0.0f);
+    if (find_float(w, "_dirtgain", &f) && f > 0) out->dirtgain = f;
+    if (find_float(w, "_dirtangle", &f)) out->dirtangle = std::clamp(f, 1.0f, 90.0f);
+    if (find_float(w, "_dirtmode", &f)) out->dirtmode = f > 0 ? 1 : 0;
+    if (find_float(w, "_sunlight_dirt", &f) && f != 0) out->sunlight_dirt = f > 0 ? 1 : -1;
+    if (find_float(w, "_sunlight2_dirt", &f) && f != 0) out->sunlight2_dirt = f > 0 ? 1 : -1;
+    if (find_float(w, "_minlight_dirt", &f) && f != 0) out->minlight_dirt = f > 0 ? 1 : -1;
     break;
   }
   out->minlight = std::clamp(out->minlight, 0.0f, 255.0f);
@@ -210,6 +224,10 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
     if (le.find("_color", &v) && !parse_color(v, &l.color))
       log_warning("%s: %s: bad \"_color\" '%.*s' (using white)", name, who.c_str(), int(v.size()), v.data());
     if (find_float(le, "_anglescale", &f) || find_float(le, "_anglesense", &f)) l.anglescale = clamp_anglescale(f);
+    if (find_float(le, "_bouncescale", &f)) l.bouncescale = std::max(f, 0.0f);
+    if (find_float(le, "_dirt", &f) && f != 0) l.dirt = f > 0 ? 1 : -1;
+    if (find_float(le, "_dirtscale", &f) && f >= 0) l.dirtscale = f;
+    if (find_float(le, "_dirtgain", &f) && f > 0) l.dirtgain = f;
 
     // Direction: target, else mangle, else angle (yaw; -1 up, -2 down).
     bool has_dir = false;
@@ -241,6 +259,7 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
       s.color = l.color;
       s.anglescale = l.anglescale;
       s.style = l.style;
+      s.dirt = l.dirt;
       out->suns.push_back(s);
       continue;
     }

@@ -33,6 +33,16 @@
 //     "_sunlight2" intensity of a dome of suns over the upper hemisphere, "_sunlight2_color";
 //     "_anglescale"/"_anglesense" (default 0.5), "_dist" global distance scale (default 1),
 //     "_range" rangescale (default 0.5).
+//   bounce (radiosity; see light_bounce.h), worldspawn: "_bounce" n bounces (0 off, 1 on,
+//     larger values more bounces, at most 8), "_bouncescale" (default 1), "_bouncecolorscale"
+//     0..1 weight of the texture colour in what faces reflect (default 0: textures ignored,
+//     faces reflect as white), "_bouncestyled" 1: styled lights bounce too (default 0);
+//     light entities: "_bouncescale" (default 1, 0: this light does not bounce).
+//   dirt (ambient occlusion; see light_dirt.h), worldspawn: "_dirt" 1 on for every light
+//     (default -1 off), "_dirtdepth" (128), "_dirtscale" (1), "_dirtgain" (1, exponent),
+//     "_dirtmode" (0 ordered rays, 1 jittered), "_dirtangle" (88, cone half angle 1..90),
+//     "_sunlight_dirt", "_sunlight2_dirt", "_minlight_dirt" (1 / -1; default: "_dirt");
+//     light entities: "_dirt" (1 / -1, default: "_dirt"), "_dirtscale", "_dirtgain".
 #pragma once
 #include <string>
 #include <vector>
@@ -59,6 +69,9 @@ struct PointLight {
   float spot_cos_outer = 0;      // cos(cone / 2): no light outside
   float spot_cos_inner = 0;      // cos(softangle / 2): full light inside
   float range = 0;               // distance beyond which |value| < gate (filled by the lighter)
+  float bouncescale = 1;         // "_bouncescale": share of this light that bounces
+  int dirt = 0;                  // "_dirt": 1 on, -1 off, 0 the worldspawn setting
+  float dirtscale = -1, dirtgain = -1;  // "_dirtscale" / "_dirtgain"; < 0: the global values
   int entity = 0;                // index of the entity in the lump (for messages)
 };
 
@@ -69,6 +82,7 @@ struct Sun {
   float anglescale = 0.5f;
   int style = 0;
   bool dome = false;        // part of the _sunlight2 dome (lit at grid points only)
+  int dirt = 0;             // 1 on, -1 off, 0 the worldspawn "_dirt"
 };
 
 struct LightSettings {
@@ -76,6 +90,16 @@ struct LightSettings {
   float anglescale = 0.5f;
   float rangescale = 0.5f;
   float dist_scale = 1;
+  // Bounce and dirt settings from worldspawn (command-line options override them, see
+  // LightOptions; resolve_light_options() applies both and fills every light's dirt fields).
+  int bounce = 0;              // number of bounces
+  float bouncescale = 1;
+  float bouncecolorscale = 0;
+  bool bouncestyled = false;
+  int dirt = -1;               // 1 on, -1 off
+  float dirtdepth = 128, dirtscale = 1, dirtgain = 1, dirtangle = 88;
+  int dirtmode = 0;
+  int sunlight_dirt = 0, sunlight2_dirt = 0, minlight_dirt = 0;  // 1 / -1, 0: follow "_dirt"
   std::vector<PointLight> lights;
   std::vector<Sun> suns;
   struct SurfaceTemplate {

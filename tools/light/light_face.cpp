@@ -2,7 +2,8 @@
 //
 // Sections: 1. scene tables (PVS per light, sky visibility, cull ranges)
 //           2. sample points (texture grid -> world, pulled into the face, off the surface)
-//           3. light contributions (falloff, angle, spot cone, shadow rays, suns)
+//           3. light contributions (falloff, angle, spot cone, shadow rays, suns, dirt,
+//              the bouncing share)
 //           4. styles and bytes
 #include "tools/light/light_face.h"
 
@@ -13,6 +14,7 @@
 #include <glm/geometric.hpp>
 
 #include "engine/world/world.h"
+#include "tools/light/light_dirt.h"
 
 namespace sb::tools {
 namespace {
@@ -233,7 +235,8 @@ glm::vec3 closest_on_boundary(const FaceGeometry& g, const glm::vec3& p) {
 // World position of the sample at texture coordinates (s, t): on the plane, moved into the
 // polygon when it lies outside (to the nearest boundary point, then 1 unit towards the
 // centroid), lifted kSurfaceOffset along the normal, and walked towards the centroid while
-// it is in solid or sky (so light neither leaks through walls nor is lost under them).
+// it is in solid or sky (1, 2, 4, 8 units, then quarters of the way), so light neither
+// leaks through walls nor is lost under them.
 glm::vec3 sample_point(const LightScene& sc, const FaceGeometry& g, double s, double t) {
   glm::vec3 p = g.degenerate ? g.centroid : glm::vec3(g.base + s * g.ds + t * g.dt);
   if (!inside_polygon(g, p)) {
@@ -245,6 +248,16 @@ glm::vec3 sample_point(const LightScene& sc, const FaceGeometry& g, double s, do
   glm::vec3 lifted = p + g.normal * kSurfaceOffset;
   int c = sc.tracer->contents(lifted);
   if (c != kContentsSolid && c != kContentsSky) return lifted;
+  // Small steps first (a grid point on an edge where a wall stands is in solid by a hair),
+  // then quarters of the way to the centroid.
+  glm::vec3 to_c = g.centroid - p;
+  float len = glm::length(to_c);
+  for (float step : {1.0f, 2.0f, 4.0f, 8.0f}) {
+    if (step >= len * 0.25f) break;
+    glm::vec3 q = p + to_c * (step / len) + g.normal * kSurfaceOffset;
+    c = sc.tracer->contents(q);
+    if (c != kContentsSolid && c != kContentsSky) return q;
+  }
   for (int k = 1; k <= 4; ++k) {
     glm::vec3 q = p + (g.centroid - p) * (float(k) * 0.25f) + g.normal * kSurfaceOffset;
     c = sc.tracer->contents(q);
@@ -255,10 +268,36 @@ glm::vec3 sample_point(const LightScene& sc, const FaceGeometry& g, double s, do
 
 // --- 3. light contributions ----------------------------------------------------------------------
 
-struct StyleBuffer {
-  int style;
-  std::vector<float> rgb;  // grid * 3, light units (before rangescale)
+float box_distance(const glm::vec3& p, const glm::vec3& mins, const glm::vec3& maxs) {
+  glm::vec3 d = glm::max(glm::max(mins - p, p - maxs), glm::vec3(0));
+  return glm::length(d);
+}
+
+// Adds v * colour to cell `cell` of the buffer of `style` (created on first use, cached in
+// *slot) and, when bounce is on and the style bounces, v * colour * bouncescale to emit.
+struct Accumulator {
+  FaceWork* work;
+  size_t grid;
+  bool bounce;        // scene.bounces > 0
+  bool styled;        // every style bounces (else style 0 only)
+  void add(int style, StyleBuffer** slot, StyleBuffer** emit_slot, size_t cell, float v, const glm::vec3& color,
+           float bouncescale) {
+    if (!*slot) *slot = &style_buffer(work->light, style, grid);
+    float* o = &(*slot)->rgb[cell * 3];
+    o[0] += v * color.r;
+    o[1] += v * color.g;
+    o[2] += v * color.b;
+    if (!bounce || bouncescale <= 0 || (style != 0 && !styled)) return;
+    if (!*emit_slot) *emit_slot = &style_buffer(work->emit, style, grid);
+    float* e = &(*emit_slot)->rgb[cell * 3];
+    float vb = v * bouncescale;
+    e[0] += vb * color.r;
+    e[1] += vb * color.g;
+    e[2] += vb * color.b;
+  }
 };
+
+}  // namespace
 
 StyleBuffer& style_buffer(std::vector<StyleBuffer>& bufs, int style, size_t grid) {
   for (StyleBuffer& b : bufs)
@@ -267,51 +306,68 @@ StyleBuffer& style_buffer(std::vector<StyleBuffer>& bufs, int style, size_t grid
   return bufs.back();
 }
 
-float box_distance(const glm::vec3& p, const glm::vec3& mins, const glm::vec3& maxs) {
-  glm::vec3 d = glm::max(glm::max(mins - p, p - maxs), glm::vec3(0));
-  return glm::length(d);
-}
-
-}  // namespace
-
-void light_face(const LightScene& sc, uint32_t face_index, FaceLightmap* out) {
-  *out = FaceLightmap();
+void face_setup(const LightScene& sc, uint32_t face_index, FaceWork* work) {
+  *work = FaceWork();
   const BspWorld& w = *sc.world;
   const Face& f = w.faces[face_index];
-  const TexInfo& ti = w.texinfo[f.texinfo];
-  if (ti.flags & kTexSpecial) return;
-  out->lit = true;
+  if (w.texinfo[f.texinfo].flags & kTexSpecial) return;
+  work->lit = true;
+  FaceGeometry g;
+  build_geometry(w, f, &g);
+  work->degenerate = g.degenerate;
+  work->normal = g.normal;
+  work->gw = f.extents[0] / 16 + 1;
+  work->gh = f.extents[1] / 16 + 1;
+  work->centres.resize(size_t(work->gw) * size_t(work->gh));
+  for (int gy = 0; gy < work->gh; ++gy)
+    for (int gx = 0; gx < work->gw; ++gx)
+      work->centres[size_t(gy) * work->gw + gx] = sample_point(
+          sc, g, double(f.texture_mins[0]) + 16.0 * gx, double(f.texture_mins[1]) + 16.0 * gy);
+}
+
+void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work) {
+  if (!work->lit) return;
+  const BspWorld& w = *sc.world;
+  const Face& f = w.faces[face_index];
   const LightSettings& set = *sc.settings;
 
   FaceGeometry g;
   build_geometry(w, f, &g);
-  out->degenerate = g.degenerate;
-  const int gw = f.extents[0] / 16 + 1, gh = f.extents[1] / 16 + 1;
+  const int gw = work->gw, gh = work->gh;
   const size_t grid = size_t(gw) * size_t(gh);
   const int sub = sc.opts.extra == 4 ? 4 : (sc.opts.extra == 2 ? 2 : 1);
   const size_t per = size_t(sub) * size_t(sub);
   const float weight = 1.0f / float(per);
+  const std::vector<glm::vec3>& centres = work->centres;
 
   // Sample points: per grid point, `per` sub-samples on a centred sub-grid of the 16-texel
-  // cell; plus the grid points themselves (for the sky dome, which needs no supersampling).
-  std::vector<glm::vec3> pts(grid * per), centres(grid);
-  for (int gy = 0; gy < gh; ++gy)
-    for (int gx = 0; gx < gw; ++gx) {
-      size_t cell = size_t(gy) * gw + gx;
-      double s0 = double(f.texture_mins[0]) + 16.0 * gx, t0 = double(f.texture_mins[1]) + 16.0 * gy;
-      centres[cell] = sample_point(sc, g, s0, t0);
-      for (int j = 0; j < sub; ++j)
-        for (int i = 0; i < sub; ++i) {
-          double os = sub == 1 ? 0.0 : (i + 0.5) * 16.0 / sub - 8.0;
-          double ot = sub == 1 ? 0.0 : (j + 0.5) * 16.0 / sub - 8.0;
-          pts[cell * per + size_t(j) * sub + i] = sub == 1 ? centres[cell] : sample_point(sc, g, s0 + os, t0 + ot);
-        }
-    }
+  // cell (the grid points themselves without supersampling, and for the sky dome).
+  std::vector<glm::vec3> sub_pts;
+  if (sub > 1) {
+    sub_pts.resize(grid * per);
+    for (int gy = 0; gy < gh; ++gy)
+      for (int gx = 0; gx < gw; ++gx) {
+        size_t cell = size_t(gy) * gw + gx;
+        double s0 = double(f.texture_mins[0]) + 16.0 * gx, t0 = double(f.texture_mins[1]) + 16.0 * gy;
+        for (int j = 0; j < sub; ++j)
+          for (int i = 0; i < sub; ++i) {
+            double os = (i + 0.5) * 16.0 / sub - 8.0, ot = (j + 0.5) * 16.0 / sub - 8.0;
+            sub_pts[cell * per + size_t(j) * sub + i] = sample_point(sc, g, s0 + os, t0 + ot);
+          }
+      }
+  }
+  const std::vector<glm::vec3>& pts = sub > 1 ? sub_pts : centres;
 
-  std::vector<StyleBuffer> bufs;
-  bufs.reserve(8);
-  style_buffer(bufs, 0, grid);
-  std::vector<float> local_min;  // delay 4 floors (output units), style 0
+  // Dirt factors per grid point: the global ones, and per light with its own scale / gain.
+  const bool has_dirt = !work->occlusion.empty();
+  std::vector<float> global_dirt, own_dirt;
+  if (has_dirt) {
+    global_dirt.resize(grid);
+    for (size_t k = 0; k < grid; ++k) global_dirt[k] = dirt_factor(work->occlusion[k], set.dirtscale, set.dirtgain);
+  }
+
+  style_buffer(work->light, 0, grid);
+  Accumulator acc{work, grid, sc.bounces > 0, set.bouncestyled};
   const float face_plane = glm::dot(g.normal, g.centroid);
 
   for (size_t li = 0; li < set.lights.size(); ++li) {
@@ -319,7 +375,17 @@ void light_face(const LightScene& sc, uint32_t face_index, FaceLightmap* out) {
     if (!sc.light_may_see(li, face_index)) continue;
     if (glm::dot(g.normal, l.origin) - face_plane <= 0) continue;  // behind the face
     if (box_distance(l.origin, g.mins, g.maxs) > l.range) continue;
-    StyleBuffer* buf = nullptr;
+    const float* dirt = nullptr;
+    if (has_dirt && l.dirt > 0 && l.falloff != Falloff::LocalMin) {
+      if (l.dirtscale == set.dirtscale && l.dirtgain == set.dirtgain) {
+        dirt = global_dirt.data();
+      } else {
+        own_dirt.resize(grid);
+        for (size_t k = 0; k < grid; ++k) own_dirt[k] = dirt_factor(work->occlusion[k], l.dirtscale, l.dirtgain);
+        dirt = own_dirt.data();
+      }
+    }
+    StyleBuffer *buf = nullptr, *emit = nullptr;
     for (size_t k = 0; k < pts.size(); ++k) {
       const glm::vec3& p = pts[k];
       glm::vec3 d = l.origin - p;
@@ -336,19 +402,17 @@ void light_face(const LightScene& sc, uint32_t face_index, FaceLightmap* out) {
         if (cs < l.spot_cos_inner) value *= (cs - l.spot_cos_outer) / (l.spot_cos_inner - l.spot_cos_outer);
       }
       if (l.falloff != Falloff::LocalMin) value *= (1.0f - l.anglescale) + l.anglescale * cos_n;
-      ++out->traces;
+      ++work->traces;
       if (!sc.tracer->clear(p, l.origin)) continue;
       size_t cell = k / per;
       if (l.falloff == Falloff::LocalMin) {
-        if (local_min.empty()) local_min.assign(grid, 0.0f);
-        local_min[cell] = std::max(local_min[cell], std::min(std::fabs(l.intensity), 255.0f));  // output units
+        if (work->local_min.empty()) work->local_min.assign(grid, 0.0f);
+        work->local_min[cell] = std::max(work->local_min[cell], std::min(std::fabs(l.intensity), 255.0f));
         continue;
       }
-      if (!buf) buf = &style_buffer(bufs, l.style, grid);
       float v = value * weight;
-      buf->rgb[cell * 3 + 0] += v * l.color.r;
-      buf->rgb[cell * 3 + 1] += v * l.color.g;
-      buf->rgb[cell * 3 + 2] += v * l.color.b;
+      if (dirt) v *= dirt[cell];
+      acc.add(l.style, &buf, &emit, cell, v, l.color, l.bouncescale);
     }
   }
 
@@ -362,22 +426,43 @@ void light_face(const LightScene& sc, uint32_t face_index, FaceLightmap* out) {
       const std::vector<glm::vec3>& P = s.dome ? centres : pts;
       size_t pp = s.dome ? 1 : per;
       float wgt = s.dome ? 1.0f : weight;
-      StyleBuffer* buf = nullptr;
+      const float* dirt = has_dirt && s.dirt > 0 ? global_dirt.data() : nullptr;
+      StyleBuffer *buf = nullptr, *emit = nullptr;
       for (size_t k = 0; k < P.size(); ++k) {
-        ++out->traces;
+        ++work->traces;
         if (sc.tracer->first_blocker(P[k], P[k] - s.dir * span) != kContentsSky) continue;
-        if (!buf) buf = &style_buffer(bufs, s.style, grid);
         size_t cell = k / pp;
         float v = value * wgt;
-        buf->rgb[cell * 3 + 0] += v * s.color.r;
-        buf->rgb[cell * 3 + 1] += v * s.color.g;
-        buf->rgb[cell * 3 + 2] += v * s.color.b;
+        if (dirt) v *= dirt[cell];
+        acc.add(s.style, &buf, &emit, cell, v, s.color, 1.0f);
       }
     }
   }
 
-  // --- 4. styles and bytes ---------------------------------------------------------------------
+  // What bounces from here: the bouncing share times the face's reflectivity.
+  if (sc.bounces > 0) {
+    const glm::vec3 r = sc.hit_faces[face_index].usable ? sc.hit_faces[face_index].reflect : glm::vec3(0);
+    for (StyleBuffer& e : work->emit)
+      for (size_t k = 0; k < grid; ++k) {
+        e.rgb[k * 3] *= r.r;
+        e.rgb[k * 3 + 1] *= r.g;
+        e.rgb[k * 3 + 2] *= r.b;
+      }
+  }
+}
+
+// --- 4. styles and bytes ---------------------------------------------------------------------
+
+void finish_face(const LightScene& sc, const FaceWork& work, FaceLightmap* out) {
+  *out = FaceLightmap();
+  out->traces = work.traces;
+  if (!work.lit) return;
+  out->lit = true;
+  out->degenerate = work.degenerate;
+  const LightSettings& set = *sc.settings;
+  const size_t grid = size_t(work.gw) * size_t(work.gh);
   const float range = set.rangescale;
+  const bool dirty_min = sc.minlight_dirt && !work.occlusion.empty();
   auto to_byte = [](float v) -> uint8_t {
     if (!(v > 0)) return 0;
     if (v >= 254.5f) return 255;
@@ -389,7 +474,7 @@ void light_face(const LightScene& sc, uint32_t face_index, FaceLightmap* out) {
     uint64_t sum = 0;
   };
   std::vector<Converted> conv;
-  for (const StyleBuffer& b : bufs) {
+  for (const StyleBuffer& b : work.light) {
     Converted c;
     c.style = b.style;
     c.mono.resize(grid);
@@ -399,7 +484,8 @@ void light_face(const LightScene& sc, uint32_t face_index, FaceLightmap* out) {
       float m = (r + gg + bb) * (1.0f / 3.0f);
       if (b.style == 0) {
         float floor = set.minlight;
-        if (!local_min.empty()) floor = std::max(floor, local_min[k]);
+        if (dirty_min) floor *= dirt_factor(work.occlusion[k], set.dirtscale, set.dirtgain);
+        if (!work.local_min.empty()) floor = std::max(floor, work.local_min[k]);
         m = std::max(m, floor);
         r = std::max(r, floor);
         gg = std::max(gg, floor);

@@ -1,11 +1,18 @@
-// tools/light/light_face.h: the lightmap of one face (samples, lights, shadows, styles).
+// tools/light/light_face.h: per-face work of the light stage (samples, lights, shadows,
+// styles), shared by the phases in light.cpp, light_dirt.cpp and light_bounce.cpp.
 //
-// A LightScene holds everything the faces share, read-only while faces are lit, so any
-// number of threads may call light_face() on different faces at once. light_face() depends
-// only on the scene and the face index: results do not depend on thread count or order.
+// A LightScene holds everything the faces share, read-only while a phase runs, so any number
+// of threads may work on different faces at once. Every phase function depends only on the
+// scene, the face index and data written by earlier phases (never by the running phase on
+// another face): results do not depend on thread count or order.
+//
+// Light values in FaceWork buffers are "light units": the sum of the lights' values before
+// rangescale (output byte = value * rangescale, rounded, clamped to 0..255).
 #pragma once
 #include <cstdint>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "engine/formats/bsp.h"
 #include "tools/light/light.h"
@@ -14,10 +21,21 @@
 
 namespace sb::tools {
 
+// A face as bounce rays see it: where its polygon is and how its lightmap is addressed.
+struct HitFace {
+  bool usable = false;              // lit world face (not sky / liquid, not a submodel's)
+  glm::vec3 normal{0, 0, 1};        // facing normal
+  std::vector<glm::vec3> verts;
+  std::vector<glm::vec3> edge_normals;  // in-plane, pointing out of the polygon
+  glm::vec3 mins{0}, maxs{0};       // bounds of verts
+  glm::vec3 reflect{0.5f};          // reflectivity 0..1 per channel (texture colour, see
+                                    // light_bounce.h), bouncescale not included
+};
+
 struct LightScene {
   const BspWorld* world = nullptr;
   const LineTracer* tracer = nullptr;
-  const LightSettings* settings = nullptr;
+  const LightSettings* settings = nullptr;  // bounce / dirt fields resolved (light.cpp)
   LightOptions opts;
   // light_faces[l * face_words + f / 64] bit f % 64: light l may see face f (its PVS holds a
   // leaf that marks the face, or the face belongs to a submodel, or there is no vis data).
@@ -27,6 +45,16 @@ struct LightScene {
   // (or f belongs to a submodel). Faces without it get no sunlight.
   std::vector<uint8_t> face_sees_sky;
 
+  // Dirt: unit ray directions in a local frame (z = surface normal), empty when no light
+  // uses dirt. minlight_dirt: the worldspawn minimum light is scaled by the dirt factor.
+  std::vector<glm::vec3> dirt_dirs;
+  bool minlight_dirt = false;
+  // Bounce: number of passes (0: off), and per face what rays that hit it need.
+  int bounces = 0;
+  std::vector<HitFace> hit_faces;
+  std::vector<uint32_t> hit_plane;  // per face: plane index when usable, else UINT32_MAX
+                                    // (compact, for the hit search)
+
   bool light_may_see(size_t light, uint32_t face) const {
     return (light_faces[light * face_words + face / 64] >> (face % 64)) & 1;
   }
@@ -34,6 +62,38 @@ struct LightScene {
 
 // Builds the visibility tables and each light's cull range (PointLight::range).
 void prepare_scene(LightScene* scene, LightSettings* settings);
+
+struct StyleBuffer {
+  int style = 0;
+  std::vector<float> rgb;  // grid * 3, light units
+};
+
+// The buffer of `style` in bufs, appended (zeroed, grid cells) when missing.
+StyleBuffer& style_buffer(std::vector<StyleBuffer>& bufs, int style, size_t grid);
+
+// Everything the phases produce for one face, until it is converted to bytes.
+struct FaceWork {
+  bool lit = false;               // false: sky, liquid (no lightmap)
+  bool degenerate = false;        // texture axes parallel to the plane: lit at the centroid
+  int gw = 0, gh = 0;             // lightmap grid (extents / 16 + 1)
+  glm::vec3 normal{0, 0, 1};      // facing normal
+  std::vector<glm::vec3> centres;  // grid points in the world (1 unit off the face)
+  std::vector<float> occlusion;   // dirt phase: per grid point 0..1 (empty: no dirt)
+  std::vector<StyleBuffer> light;  // direct (then + bounced) light; style 0 first
+  std::vector<StyleBuffer> emit;  // light this face sends out in the running bounce pass
+                                  // (already times its reflectivity and bouncescale)
+  std::vector<StyleBuffer> gathered;  // bounce pass result (read by nobody during the pass)
+  std::vector<float> local_min;   // delay 4 floors (output units), style 0; may be empty
+  uint64_t traces = 0;            // direct-light rays
+  uint64_t dirt_rays = 0, bounce_rays = 0, bounce_misses = 0;
+};
+
+// Phase 0 (with the dirt phase): lit flag, grid size, normal and grid points.
+void face_setup(const LightScene& scene, uint32_t face_index, FaceWork* work);
+
+// Direct light of every light and sun (dirt factors applied). When scene.bounces > 0, also
+// fills work->emit with the bouncing share (bouncescale per light) times the reflectivity.
+void light_face_direct(const LightScene& scene, uint32_t face_index, FaceWork* work);
 
 struct FaceLightmap {
   bool lit = false;              // false: sky, liquid (no lightmap)
@@ -47,6 +107,7 @@ struct FaceLightmap {
   bool degenerate = false;       // texture axes parallel to the plane: lit at the centroid
 };
 
-void light_face(const LightScene& scene, uint32_t face_index, FaceLightmap* out);
+// Last phase: rangescale, minimum light (dirtied when scene.minlight_dirt), bytes, styles.
+void finish_face(const LightScene& scene, const FaceWork& work, FaceLightmap* out);
 
 }  // namespace sb::tools

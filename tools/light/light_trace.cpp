@@ -66,4 +66,57 @@ int LineTracer::trace(int node, glm::vec3 a, glm::vec3 b) const {
   return kContentsEmpty;
 }
 
+LineTracer::Hit LineTracer::first_hit(const glm::vec3& a, const glm::vec3& b) const {
+  Hit h;
+  if (head_ < 0) {
+    h.contents = kContentsSolid;
+    h.point = a;
+    return h;
+  }
+  trace_hit(head_, a, b, -1, &h);
+  return h;
+}
+
+// As trace(), also carrying the node whose split produced the current start point `a`
+// (`split`), so the first blocking leaf reports where, and on which plane, it was entered.
+// Returns true when a blocking leaf was found (*out filled).
+bool LineTracer::trace_hit(int node, glm::vec3 a, glm::vec3 b, int split, Hit* out) const {
+  while (node >= 0) {
+    const Node& n = world_.nodes[node];
+    const Plane& p = world_.planes[n.plane];
+    float da, db;
+    if (p.type < 3) {
+      da = a[p.type] - p.dist;
+      db = b[p.type] - p.dist;
+    } else {
+      da = glm::dot(p.normal, a) - p.dist;
+      db = glm::dot(p.normal, b) - p.dist;
+    }
+    if (da >= 0 && db >= 0) {
+      node = n.children[0];
+      continue;
+    }
+    if (da < 0 && db < 0) {
+      node = n.children[1];
+      continue;
+    }
+    int near_side = da < 0;
+    float frac = da / (da - db);
+    glm::vec3 mid = a + (b - a) * frac;
+    if (trace_hit(n.children[near_side], a, mid, split, out)) return true;
+    split = node;
+    node = n.children[near_side ^ 1];
+    a = mid;
+  }
+  int contents = world_.leaves[-1 - node].contents;
+  if (contents != kContentsSolid && contents != kContentsSky) {
+    out->leaf_before = -1 - node;
+    return false;
+  }
+  out->contents = contents;
+  out->point = a;
+  out->node = split;
+  return true;
+}
+
 }  // namespace sb::tools

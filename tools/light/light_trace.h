@@ -22,6 +22,16 @@ class LineTracer {
   // True when nothing blocks the segment.
   bool clear(const glm::vec3& a, const glm::vec3& b) const { return first_blocker(a, b) == kContentsEmpty; }
 
+  // Where a segment first enters a blocking leaf (for bounce and dirt rays).
+  struct Hit {
+    int contents = kContentsEmpty;  // kContentsSolid / kContentsSky, or kContentsEmpty (clear)
+    glm::vec3 point{0};             // entry point (on the plane of `node`); a when node is -1
+    int node = -1;                  // node whose plane the entry point lies on; -1 when the
+                                    // segment starts inside the blocking leaf
+    int leaf_before = -1;           // last non-blocking leaf crossed before it (-1: none)
+  };
+  Hit first_hit(const glm::vec3& a, const glm::vec3& b) const;
+
   // Contents of the leaf holding p (hull 0).
   int contents(const glm::vec3& p) const;
 
@@ -31,6 +41,7 @@ class LineTracer {
 
  private:
   int trace(int node, glm::vec3 a, glm::vec3 b) const;
+  bool trace_hit(int node, glm::vec3 a, glm::vec3 b, int split, Hit* out) const;
 
   const BspWorld& world_;
   int head_;

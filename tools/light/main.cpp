@@ -8,13 +8,25 @@
 //     -gate G       skip lights whose value stays below G over a face (default 1)
 //     -dome N       directions of the _sunlight2 sky dome (default 32)
 //     -q            quiet: warnings and the summary only
+//     -bounce [N]   N bounces of radiosity (default 1); -nobounce turns worldspawn "_bounce" off
+//     -bouncescale F, -bouncecolorscale F (0..1), -bouncestyled, -bouncerays N (default 64),
+//     -bouncestep N (bounce receivers every N lightmap samples each way, default 2)
+//     -dirt         dirt (ambient occlusion) on every light; -nodirt turns "_dirt" off
+//     -dirtdepth F, -dirtscale F, -dirtgain F, -dirtmode 0|1, -dirtangle F
+//     -palette FILE 768-byte palette (palette.lmp) for bounce texture colours
+//     -basedir DIR  game directory holding gfx/palette.lmp
+//   Without -palette / -basedir the palette is looked for at <bsp dir>/../gfx/palette.lmp
+//   and <bsp dir>/gfx/palette.lmp; with none, bounce uses grey reflectivity (a warning).
+//   Options override the worldspawn keys of the same name (light_entities.h).
 // The BSP is relit in place and written back in the format it was read in.
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "engine/core/log.h"
+#include "engine/formats/lmp.h"
 #include "tools/common/bsp_data.h"
 #include "tools/light/light.h"
 
@@ -22,7 +34,10 @@ namespace {
 
 void usage() {
   std::fprintf(stderr,
-               "usage: sblight [-extra | -extra4] [-threads N] [-lit] [-gate G] [-dome N] [-q] file.bsp\n");
+               "usage: sblight [-extra | -extra4] [-threads N] [-lit] [-gate G] [-dome N] [-q]\n"
+               "               [-bounce [N]] [-nobounce] [-bouncescale F] [-bouncecolorscale F] [-bouncestyled]\n"
+               "               [-bouncerays N] [-bouncestep N] [-dirt] [-nodirt] [-dirtdepth F] [-dirtscale F] [-dirtgain F]\n"
+               "               [-dirtmode 0|1] [-dirtangle F] [-palette FILE] [-basedir DIR] file.bsp\n");
 }
 
 bool parse_int(const char* s, int lo, int hi, int* out) {
@@ -30,6 +45,31 @@ bool parse_int(const char* s, int lo, int hi, int* out) {
   long v = std::strtol(s, &end, 10);
   if (!s[0] || *end || v < lo || v > hi) return false;
   *out = int(v);
+  return true;
+}
+
+bool parse_number(const char* s, double lo, double hi, float* out) {
+  char* end = nullptr;
+  double v = std::strtod(s, &end);
+  if (!s[0] || *end || !(v >= lo && v <= hi)) return false;
+  *out = float(v);
+  return true;
+}
+
+// Reads a 768-byte palette; false (and *out untouched) when the file is missing or bad.
+bool load_palette(const std::string& path, std::vector<uint8_t>* out, std::string* error) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return false;
+  std::vector<uint8_t> bytes(1024);
+  size_t n = std::fread(bytes.data(), 1, bytes.size(), f);
+  std::fclose(f);
+  sb::Palette pal;
+  sb::Status st = sb::parse_palette(path.c_str(), bytes.data(), n, &pal);
+  if (!st) {
+    *error = st.message();
+    return false;
+  }
+  out->assign(pal.rgb, pal.rgb + sb::kPaletteBytes);
   return true;
 }
 
@@ -49,6 +89,7 @@ int main(int argc, char** argv) {
   sb::tools::LightOptions opts;
   bool want_lit = false;
   const char* path = nullptr;
+  std::string palette_path, basedir;
   for (int i = 1; i < argc; ++i) {
     const char* a = argv[i];
     if (!std::strcmp(a, "-extra")) {
@@ -59,6 +100,45 @@ int main(int argc, char** argv) {
       want_lit = true;
     } else if (!std::strcmp(a, "-q")) {
       opts.quiet = true;
+    } else if (!std::strcmp(a, "-bounce")) {
+      opts.bounce = 1;
+      if (i + 2 < argc && parse_int(argv[i + 1], 0, 8, &opts.bounce)) ++i;  // optional count
+    } else if (!std::strcmp(a, "-nobounce")) {
+      opts.bounce = 0;
+    } else if (!std::strcmp(a, "-bouncestyled")) {
+      opts.bouncestyled = 1;
+    } else if (!std::strcmp(a, "-dirt")) {
+      opts.dirt = 1;
+    } else if (!std::strcmp(a, "-nodirt")) {
+      opts.dirt = 0;
+    } else if (!std::strcmp(a, "-palette") || !std::strcmp(a, "-basedir")) {
+      if (i + 1 >= argc) {
+        std::fprintf(stderr, "sblight: %s needs a value\n", a);
+        return 2;
+      }
+      (!std::strcmp(a, "-palette") ? palette_path : basedir) = argv[++i];
+    } else if (!std::strcmp(a, "-bouncerays") || !std::strcmp(a, "-dirtmode") || !std::strcmp(a, "-bouncestep")) {
+      bool mode = !std::strcmp(a, "-dirtmode"), step = !std::strcmp(a, "-bouncestep");
+      if (i + 1 >= argc || !parse_int(argv[i + 1], mode ? 0 : 1, mode ? 1 : (step ? 16 : 4096),
+                                      mode ? &opts.dirtmode : (step ? &opts.bounce_step : &opts.bounce_rays))) {
+        std::fprintf(stderr, "sblight: %s needs a value in range\n", a);
+        return 2;
+      }
+      ++i;
+    } else if (!std::strcmp(a, "-bouncescale") || !std::strcmp(a, "-bouncecolorscale") ||
+               !std::strcmp(a, "-dirtdepth") || !std::strcmp(a, "-dirtscale") || !std::strcmp(a, "-dirtgain") ||
+               !std::strcmp(a, "-dirtangle")) {
+      float* target = !std::strcmp(a, "-bouncescale")        ? &opts.bouncescale
+                      : !std::strcmp(a, "-bouncecolorscale") ? &opts.bouncecolorscale
+                      : !std::strcmp(a, "-dirtdepth")        ? &opts.dirtdepth
+                      : !std::strcmp(a, "-dirtscale")        ? &opts.dirtscale
+                      : !std::strcmp(a, "-dirtgain")         ? &opts.dirtgain
+                                                             : &opts.dirtangle;
+      if (i + 1 >= argc || !parse_number(argv[i + 1], 0, 1e6, target)) {
+        std::fprintf(stderr, "sblight: %s needs a number >= 0\n", a);
+        return 2;
+      }
+      ++i;
     } else if (!std::strcmp(a, "-threads") || !std::strcmp(a, "-dome") || !std::strcmp(a, "-gate")) {
       if (i + 1 >= argc) {
         std::fprintf(stderr, "sblight: %s needs a value\n", a);
@@ -94,6 +174,33 @@ int main(int argc, char** argv) {
     return 2;
   }
   opts.want_rgb = want_lit;
+
+  // Palette for bounce colours: -palette, else -basedir/gfx, else next to the BSP's folder.
+  {
+    std::vector<std::string> candidates;
+    if (!palette_path.empty()) {
+      candidates.push_back(palette_path);
+    } else if (!basedir.empty()) {
+      candidates.push_back(basedir + "/gfx/palette.lmp");
+    } else {
+      std::string dir = path;
+      size_t slash = dir.find_last_of("/\\");
+      dir = slash == std::string::npos ? std::string(".") : dir.substr(0, slash);
+      candidates.push_back(dir + "/../gfx/palette.lmp");
+      candidates.push_back(dir + "/gfx/palette.lmp");
+    }
+    std::string error;
+    for (const std::string& c : candidates)
+      if (load_palette(c, &opts.palette, &error)) {
+        if (!opts.quiet) std::printf("sblight: palette %s\n", c.c_str());
+        break;
+      }
+    if (!error.empty()) std::fprintf(stderr, "sblight: %s\n", error.c_str());
+    if ((!palette_path.empty() || !basedir.empty()) && opts.palette.empty()) {
+      std::fprintf(stderr, "sblight: cannot read palette '%s'\n", candidates[0].c_str());
+      return 1;
+    }
+  }
 
   sb::tools::BspData bsp;
   sb::Status st = sb::tools::read_bsp(path, &bsp);
@@ -135,6 +242,11 @@ int main(int argc, char** argv) {
       path, stats.faces_lit, stats.faces, (unsigned long long)stats.samples, double(bsp.lighting.size()) / 1024.0,
       stats.lights, stats.suns, (unsigned long long)stats.traces, stats.seconds, stats.threads, stats.mean_sample,
       want_lit ? " (+ .lit)" : "");
+  std::printf("sblight: phases: dirt %.2f s (%llu rays), direct %.2f s, bounce %.2f s (%d pass%s, %llu rays, "
+              "%llu unresolved hits%s)\n",
+              stats.dirt_seconds, (unsigned long long)stats.dirt_rays, stats.direct_seconds, stats.bounce_seconds,
+              stats.bounces, stats.bounces == 1 ? "" : "es", (unsigned long long)stats.bounce_rays,
+              (unsigned long long)stats.bounce_misses, stats.bounces && stats.palette_missing ? ", grey: no palette" : "");
   if (stats.styles_dropped) std::printf("sblight: %u faces dropped light styles (more than 4)\n", stats.styles_dropped);
   return 0;
 }
