@@ -66,6 +66,7 @@ std::vector<uint8_t> test_colormap();
 struct RenderCheck {
   int views = 0;
   double agreement = 0;  // over all views
+  double interpolation_agreement = 0;  // identical or the 16-pixel-interpolated texel (render_compare.h)
   double unexplained = 0;  // fraction of pixels differing for no known reason (render_compare.h)
   std::string summary;
   uint64_t coverage_errors = 0;

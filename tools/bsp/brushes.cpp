@@ -1,6 +1,7 @@
 // tools/bsp/brushes.cpp: see brushes.h.
 #include "tools/bsp/brushes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -47,6 +48,7 @@ double brush_volume(const Brush& b, const PlaneSet& planes) {
 
 bool make_brush_windings(Brush* b, const PlaneSet& planes) {
   std::vector<BrushSide> kept;
+  Winding scratch;
   b->bounds = Bounds();
   for (size_t i = 0; i < b->sides.size(); ++i) {
     BrushSide s = b->sides[i];
@@ -56,7 +58,8 @@ bool make_brush_windings(Brush* b, const PlaneSet& planes) {
       int pj = b->sides[j].plane;
       if (pj == s.plane) continue;
       if (pj == (s.plane ^ 1)) { w.clear(); break; }
-      w = clip_winding(w, planes[pj], false, 0.001);
+      clip_winding_to(w, planes[pj], false, 0.001, &scratch);
+      w.swap(scratch);
     }
     if (w.size() < 3) {
       if (!s.bevel) continue;
@@ -78,16 +81,61 @@ bool make_brush_windings(Brush* b, const PlaneSet& planes) {
   return brush_volume(*b, planes) > 0.1;
 }
 
-bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, PlaneSet& planes, Brush* out) {
-  *out = Brush();
-  out->contents = kContentsSolid;
-  out->line = b.line;
-  std::set<int> have;
-  for (const BrushSide& s : b.sides) {
-    if (s.w.empty()) continue;
-    out->sides.push_back({s.plane, -1, {}, false, false});
-    have.insert(s.plane);
+namespace {
+constexpr double kGridCell = 256;
+}  // namespace
+
+BrushGrid::BrushGrid(const std::vector<Brush>& brushes) : stamp_(brushes.size(), 0) {
+  for (const Brush& b : brushes) box_.add(b.bounds);
+  if (box_.empty()) return;
+  for (int a = 0; a < 2; ++a) {
+    org_[a] = std::floor(box_.mins[a] / kGridCell) * kGridCell;
+    dim_[a] = std::min(1024, int((box_.maxs[a] - org_[a]) / kGridCell) + 1);
   }
+  cells_.resize(size_t(dim_[0]) * size_t(dim_[1]));
+  for (size_t i = 0; i < brushes.size(); ++i) {
+    const Bounds& b = brushes[i].bounds;
+    for (int y = cell(1, b.mins.y); y <= cell(1, b.maxs.y); ++y)
+      for (int x = cell(0, b.mins.x); x <= cell(0, b.maxs.x); ++x)
+        cells_[size_t(y) * size_t(dim_[0]) + size_t(x)].push_back(int(i));
+  }
+}
+
+int BrushGrid::cell(int a, double v) const {
+  double c = std::floor((v - org_[a]) / kGridCell);  // clamped as a double: no overflow, NaN -> 0
+  if (!(c >= 0)) return 0;
+  return c > dim_[a] - 1 ? dim_[a] - 1 : int(c);
+}
+
+void BrushGrid::query(const Bounds& b, double eps, std::vector<size_t>* out) {
+  out->clear();
+  if (cells_.empty()) return;
+  ++generation_;
+  for (int y = cell(1, b.mins.y - eps); y <= cell(1, b.maxs.y + eps); ++y)
+    for (int x = cell(0, b.mins.x - eps); x <= cell(0, b.maxs.x + eps); ++x)
+      for (int i : cells_[size_t(y) * size_t(dim_[0]) + size_t(x)])
+        if (stamp_[size_t(i)] != generation_) {
+          stamp_[size_t(i)] = generation_;
+          out->push_back(size_t(i));
+        }
+  std::sort(out->begin(), out->end());
+}
+
+const std::vector<int>* BrushGrid::cell_at(const Vec3& p) const {
+  if (cells_.empty() || p.x < box_.mins.x || p.x > box_.maxs.x || p.y < box_.mins.y || p.y > box_.maxs.y)
+    return nullptr;
+  return &cells_[size_t(cell(1, p.y)) * size_t(dim_[0]) + size_t(cell(0, p.x))];
+}
+
+void hull_planes(const Brush& b, PlaneSet& planes, HullPlanes* out) {
+  out->planes.clear();
+  std::vector<int>& list = out->planes;
+  auto have = [&list](int p) { return std::find(list.begin(), list.end(), p) != list.end(); };
+  for (const BrushSide& s : b.sides) {
+    if (s.w.empty() || have(s.plane)) continue;
+    list.push_back(s.plane);
+  }
+  out->brush_sides = list.size();
   // Axial bevels at the bounds.
   for (int axis = 0; axis < 3; ++axis)
     for (int dir = 0; dir < 2; ++dir) {
@@ -95,7 +143,7 @@ bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, 
       n[axis] = dir == 0 ? 1.0 : -1.0;
       double d = dir == 0 ? b.bounds.maxs[axis] : -b.bounds.mins[axis];
       int p = planes.find_or_add(n, d);
-      if (have.insert(p).second) out->sides.push_back({p, -1, {}, false, true});
+      if (!have(p)) list.push_back(p);
     }
   // Edge bevels: planes through an edge, parallel to an axis, with the whole brush behind.
   for (const BrushSide& s : b.sides) {
@@ -124,19 +172,36 @@ bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, 
           }
           if (!behind) continue;
           int p = planes.find_or_add(nn, d);
-          if (have.insert(p).second) out->sides.push_back({p, -1, {}, false, true});
+          if (!have(p)) list.push_back(p);
         }
       }
     }
   }
+}
+
+bool expand_brush(const Brush& b, const HullPlanes& hp, const Vec3& hull_mins, const Vec3& hull_maxs,
+                  PlaneSet& planes, Brush* out) {
+  *out = Brush();
+  out->contents = kContentsSolid;
+  out->line = b.line;
+  out->sides.reserve(hp.planes.size());
   // Push every plane out by the box corner it faces.
-  for (BrushSide& s : out->sides) {
-    const Plane& p = planes[s.plane];
+  for (size_t i = 0; i < hp.planes.size(); ++i) {
+    const Plane& p = planes[hp.planes[i]];
     Vec3 corner;
-    for (int i = 0; i < 3; ++i) corner[i] = p.normal[i] < 0 ? hull_maxs[i] : hull_mins[i];
-    s.plane = planes.find_or_add(p.normal, p.dist - glm::dot(p.normal, corner));
+    for (int k = 0; k < 3; ++k) corner[k] = p.normal[k] < 0 ? hull_maxs[k] : hull_mins[k];
+    BrushSide side;
+    side.bevel = i >= hp.brush_sides;
+    side.plane = planes.find_or_add(p.normal, p.dist - glm::dot(p.normal, corner));
+    out->sides.push_back(std::move(side));
   }
   return make_brush_windings(out, planes);
+}
+
+bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, PlaneSet& planes, Brush* out) {
+  HullPlanes hp;
+  hull_planes(b, planes, &hp);
+  return expand_brush(b, hp, hull_mins, hull_maxs, planes, out);
 }
 
 void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vector<ModelSource>* models,

@@ -81,6 +81,27 @@ struct BrushStats {
       origin_dropped = 0;
 };
 
+// Brush boxes binned by 256-unit XY cells (each cell's list in brush order), so that the
+// brushes near a box or a point are found without testing every brush. The grid keeps
+// indices only (no reference to the brushes).
+class BrushGrid {
+ public:
+  explicit BrushGrid(const std::vector<Brush>& brushes);
+  // Indices (ascending, each once) of every brush whose box may lie within eps of b.
+  void query(const Bounds& b, double eps, std::vector<size_t>* out);
+  // The brushes whose box may hold p: one cell's list, ascending (nullptr: none).
+  const std::vector<int>* cell_at(const Vec3& p) const;
+
+ private:
+  int cell(int axis, double v) const;
+  Bounds box_;
+  double org_[2] = {0, 0};
+  int dim_[2] = {0, 0};
+  std::vector<std::vector<int>> cells_;
+  std::vector<unsigned> stamp_;
+  unsigned generation_ = 0;
+};
+
 // Builds every model's brushes. `keep_entity[i]` says whether entity i stays in the entity
 // lump (func_group / func_detail / omitted layers are dropped). Submodel entities get their
 // "model" key set in `map`.
@@ -91,8 +112,19 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
 // False when fewer than 4 sides remain (no volume).
 bool make_brush_windings(Brush* b, const PlaneSet& planes);
 
-// The brush grown by the box hull_mins..hull_maxs (Minkowski sum): axial and edge bevel
-// planes first, then every plane pushed out by the box corner it faces. Contents: solid.
+// The planes a brush is grown along, the same for every hull size: its sides' planes
+// (`brush_sides` of them), then axial bevels at its bounds, then edge bevels (planes through
+// an edge, parallel to an axis, with the whole brush behind). Adds bevel planes to `planes`.
+struct HullPlanes {
+  std::vector<int> planes;
+  size_t brush_sides = 0;
+};
+void hull_planes(const Brush& b, PlaneSet& planes, HullPlanes* out);
+
+// The brush grown by the box hull_mins..hull_maxs (Minkowski sum): every hull plane pushed
+// out by the box corner it faces. Contents: solid. The overload without `hp` computes it.
+bool expand_brush(const Brush& b, const HullPlanes& hp, const Vec3& hull_mins, const Vec3& hull_maxs,
+                  PlaneSet& planes, Brush* out);
 bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, PlaneSet& planes, Brush* out);
 
 }  // namespace sb::tools::bsp

@@ -189,9 +189,12 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
         bstats.map_brushes, bstats.skipped, bstats.detail, bstats.illusionary, bstats.clip, bstats.liquid, bstats.sky,
         bstats.hint, bstats.origin_dropped, int(models.size()), wads, seconds_since(t));
 
-  // Point entity origins for the flood fill.
+  // Point entity origins for the flood fill. Lights alone are nothing to flood from: a map
+  // whose only point entities are lights (LibreQuake's b_*.map item prefabs, lit for preview
+  // from outside their brushes) has no inside; its outside is kept and no leak is reported.
   std::vector<Vec3> origins;
   std::vector<size_t> origin_entity;
+  bool any_occupant = false;
   for (size_t i = 1; i < map.entities.size(); ++i) {
     const MapEntity& e = map.entities[i];
     if (!keep[i] || !e.brushes.empty()) continue;
@@ -200,6 +203,12 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     if (!o || !parse_vec3(*o, &v)) continue;
     origins.push_back(Vec3(v));
     origin_entity.push_back(i);
+    any_occupant = any_occupant || e.classname().substr(0, 5) != "light";
+  }
+  if (!any_occupant && !origins.empty()) {
+    c.say(true, "fill: %zu point entities, all lights: nothing to flood from", origins.size());
+    origins.clear();
+    origin_entity.clear();
   }
 
   BspData& bsp = rep->bsp;
@@ -288,7 +297,8 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
             if (!write_text(rep->pts_path, pts)) return make_error("%s: cannot write the leak file", rep->pts_path.c_str());
           }
         } else if (origins.empty()) {
-          rep->warnings.push_back("no point entities: outside removal skipped");
+          rep->outside_kept = true;
+          rep->warnings.push_back("no entities to flood from; outside kept");
         }
         c.say(false, "fill: %d leaves filled (%.2f s)", filled, seconds_since(t));
       }
@@ -328,11 +338,15 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     t = Clock::now();
     if (opt.clip_hulls) {
       std::vector<Brush> hb[3];
+      // Bevel planes are found once per brush (with hull 1) and reused for hull 2.
+      std::vector<HullPlanes> hps(src.brushes.size());
       for (int h = 1; h <= 2; ++h)
-        for (const Brush& b : src.brushes) {
+        for (size_t i = 0; i < src.brushes.size(); ++i) {
+          const Brush& b = src.brushes[i];
           if (is_liquid(b.contents) || b.contents == kContentsIllusionary || b.contents == kContentsHint) continue;
+          if (h == 1) hull_planes(b, planes, &hps[i]);
           Brush e;
-          if (expand_brush(b, hull_min[h], hull_max[h], planes, &e)) hb[h].push_back(std::move(e));
+          if (expand_brush(b, hps[i], hull_min[h], hull_max[h], planes, &e)) hb[h].push_back(std::move(e));
         }
       Tree ht[3];
       // Hull progress: one unit per brush through CSG, then the brush count again when the tree is built.
@@ -399,6 +413,11 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     return 0.0;
   }());
 
+  // Edge 0 is the unused placeholder (0, 0); a map with no drawn face (only skip or clip
+  // brushes) would otherwise leave it naming a vertex that does not exist, which loaders
+  // rightly reject. One vertex at the origin keeps the file valid everywhere.
+  if (bsp.vertices.empty()) bsp.vertices.assign(3, 0.0f);
+
   t = Clock::now();
   bsp.texinfo = textures.texinfo();
   textures.build_lump(&bsp.textures, &rep->warnings);
@@ -407,9 +426,13 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
   c.add_time("textures", seconds_since(t));
 
   t = Clock::now();
+  std::string why;
+  if (opt.format == BspFormat::Bsp29 && !fits_bsp29(bsp, &why))
+    return make_error("%s: -bsp29: the map exceeds a BSP29 limit (%s); leave out -bsp29 or use -bsp2",
+                      opt.map_path.c_str(), why.c_str());
   if (opt.write_files) {
     std::string out = opt.bsp_path.empty() ? replace_ext(opt.map_path, ".bsp") : opt.bsp_path;
-    SB_TRY(write_bsp(out.c_str(), bsp, BspFormat::Auto, &rep->format_written));
+    SB_TRY(write_bsp(out.c_str(), bsp, opt.format, &rep->format_written));
     if (FILE* f = std::fopen(out.c_str(), "rb")) {
       if (std::fseek(f, 0, SEEK_END) == 0) rep->bsp_bytes = std::ftell(f);
       std::fclose(f);
@@ -424,7 +447,7 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     if (!rep->leaked) std::remove(replace_ext(out, ".pts").c_str());
   } else {
     std::vector<uint8_t> bytes;
-    SB_TRY(serialize_bsp(bsp, BspFormat::Auto, &bytes, &rep->format_written));
+    SB_TRY(serialize_bsp(bsp, opt.format, &bytes, &rep->format_written));
     rep->bsp_bytes = int64_t(bytes.size());
   }
   c.add_time("write", seconds_since(t));
@@ -458,12 +481,12 @@ std::string summary_text(const CompileReport& r) {
                 "  leafs %zu (%d visleafs), nodes %zu, clipnodes %zu, planes %zu, vertices %zu\n"
                 "  edges %zu, surfedges %zu, marksurfaces %zu, texinfo %zu, textures %zu KiB (%d missing)\n"
                 "  portals %d, filled leaves %d, %s%s\n",
-                r.format_written == BspFormat::Bsp29 ? "BSP29" : "BSP2", static_cast<long long>(r.bsp_bytes),
+                r.format_written == BspFormat::Bsp29 ? "BSP29" : r.format_written == BspFormat::Bsp2 ? "BSP2" : "2PSB", static_cast<long long>(r.bsp_bytes),
                 r.models, r.brushes, r.skipped_brushes, b.faces.size(), r.csg_faces, r.split_percent,
                 r.tjunc_vertices, r.tjunc_face_splits, b.leaves.size(), r.visleafs, b.nodes.size(), b.clipnodes.size(),
                 b.planes.size(), b.vertices.size() / 3, b.edges.size(), b.surfedges.size(), b.marksurfaces.size(),
                 b.texinfo.size(), b.textures.size() / 1024, r.missing_textures, r.portals, r.filled_leaves,
-                prt.c_str(), r.leaked ? ", LEAKED" : "");
+                prt.c_str(), r.leaked ? ", LEAKED" : r.outside_kept ? ", outside kept (no entities to flood from)" : "");
   s += buf;
   s += "  times:";
   for (const StageTime& t : r.times) {

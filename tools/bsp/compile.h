@@ -3,9 +3,11 @@
 //   stages: parse -> brushes -> per model: [hull 0: csg (+ hint faces) -> bsp -> portals ->
 //           contents -> flood fill (world) -> face visibility -> prune -> emit (T-junctions
 //           fixed) -> .prt: PRT1, or PRT2 clusters when the world has detail splits] +
-//           [hulls 1, 2: expand ->
+//           [hulls 1, 2: expand (bevel planes found once per brush, reused for hull 2) ->
 //           csg -> bsp -> portals -> contents -> fill from outside (world) -> prune -> emit]
-//           -> textures lump -> entities -> write
+//           -> textures lump -> entities -> write (BSP29 / BSP2 / 2PSB: BspOptions::format)
+// Flood sources: point entities with an origin; when all of them are lights (an item prefab
+// lit for preview) there is nothing to flood from: no outside fill, no leak, outside_kept.
 // Output is deterministic for the same input, whatever the thread count (threads only build
 // independent hull trees; every index is assigned on the calling thread).
 // Progress lines go through `log` (plain lines such as "csg: 253 brushes -> 1905 faces (0.02 s)").
@@ -32,6 +34,10 @@ struct BspOptions {
   bool progress = true;            // -noprogress: no progress bar / quarter lines on stderr
   bool write_files = true;         // false: compile into memory only (tests)
   int threads = 2;                 // >1: clip hulls 1 and 2 are built on two threads
+  // Output format: Auto (BSP29 unless a BSP29 limit is exceeded, then BSP2), Bsp2 (-bsp2),
+  // Bsp2rmq (-2psb), Bsp29 (-bsp29: compile_map fails with an error naming the first BSP29
+  // limit the map exceeds, and writes nothing).
+  BspFormat format = BspFormat::Auto;
   bool verbose = false, quiet = false;
 };
 
@@ -45,6 +51,8 @@ struct CompileReport {
   BspFormat format_written = BspFormat::Bsp29;
   bool leaked = false;
   std::string leak_message;        // "leak: info_player_start at (0 0 0) reaches the outside"
+  bool outside_kept = false;       // no point entity to flood from (none, or lights only): no
+                                   // outside fill, not a leak ("no entities to flood from; outside kept")
   std::string pts_path, prt_path;  // written files (empty when not written)
   std::vector<std::string> warnings;
   std::vector<StageTime> times;

@@ -27,7 +27,20 @@ void clip_by_brush(const Winding& frag, int plane, bool coplanar_is_inside, cons
       return;
     }
     if (t.plane == (plane ^ 1)) continue;  // facing into b: inside
-    split_winding(inside, planes[t.plane], &f, &k);
+    // Classify first (split_winding's rules): most fragments lie on one side of most planes,
+    // and then nothing needs copying.
+    Side side = classify_winding(inside, planes[t.plane]);
+    if (side == Side::Front) {
+      outside->push_back(std::move(inside));
+      return;
+    }
+    if (side == Side::Back) continue;
+    if (side == Side::Cross) {
+      split_winding(inside, planes[t.plane], &f, &k);
+    } else {
+      f.clear();
+      k.clear();
+    }
     if (f.empty() && k.empty()) {
       // On the plane within epsilon but a different plane index: treat by orientation.
       if (glm::dot(planes[t.plane].normal, planes[plane].normal) > 0 && !coplanar_is_inside) {
@@ -57,21 +70,25 @@ void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::v
   out->clear();
   stats->brushes = int(brushes.size());
   std::vector<Winding> frags, next, hidden, covered_test;
+  std::vector<int> rank(brushes.size());
+  for (size_t b = 0; b < brushes.size(); ++b) rank[b] = contents_rank(brushes[b].contents);
+  std::vector<size_t> near, maybe;
+  BrushGrid grid(brushes);
   for (size_t a = 0; a < brushes.size(); ++a) {
     const Brush& A = brushes[a];
     if (progress) progress->advance();
     if (A.contents == kContentsHint) continue;
-    int rank_a = contents_rank(A.contents);
-    // Brushes that may remove A's faces.
-    std::vector<size_t> near;
-    for (size_t b = 0; b < brushes.size(); ++b) {
-      if (b == a) continue;
+    int rank_a = rank[a];
+    // Brushes that may remove A's faces (in brush order).
+    grid.query(A.bounds, 0.1, &maybe);
+    near.clear();
+    for (size_t b : maybe) {
       const Brush& B = brushes[b];
-      if (contents_rank(B.contents) < rank_a || B.clips == Brush::Clips::None || B.contents == kContentsHint ||
+      if (b == a || !A.bounds.overlaps(B.bounds, 0.1)) continue;
+      if (rank[b] < rank_a || B.clips == Brush::Clips::None || B.contents == kContentsHint ||
           B.contents == kContentsIllusionary)
         continue;
       if (B.clips == Brush::Clips::Covered && A.clips != Brush::Clips::All) continue;
-      if (!A.bounds.overlaps(B.bounds, 0.1)) continue;
       near.push_back(b);
     }
     for (const BrushSide& s : A.sides) {
@@ -87,7 +104,7 @@ void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::v
       for (size_t b : near) {
         const Brush& B = brushes[b];
         if (!sb.overlaps(B.bounds, 0.1)) continue;
-        bool coplanar_inside = contents_rank(B.contents) > rank_a || b > a;
+        bool coplanar_inside = rank[b] > rank_a || b > a;
         next.clear();
         bool hide = keep_hidden && B.contents == kContentsDetail;
         if (B.clips == Brush::Clips::Covered) {
@@ -112,7 +129,7 @@ void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::v
         const Brush& B = brushes[b];
         if (hidden.empty()) break;
         if (B.contents == kContentsDetail || !sb.overlaps(B.bounds, 0.1)) continue;
-        bool coplanar_inside = contents_rank(B.contents) > rank_a || b > a;
+        bool coplanar_inside = rank[b] > rank_a || b > a;
         next.clear();
         for (const Winding& f : hidden) clip_by_brush(f, s.plane, coplanar_inside, B, planes, &next);
         hidden.swap(next);
@@ -212,7 +229,11 @@ int merge_faces(std::vector<Face>* faces, const PlaneSet& planes) {
     const Face& f = (*faces)[i];
     groups[{f.plane, f.texinfo, f.contents, f.detail}].push_back(i);
   }
-  std::vector<bool> dead(faces->size(), false);
+  std::vector<char> dead(faces->size(), 0);
+  // Two faces can share an edge only where their boxes touch: checked before try_merge.
+  std::vector<Bounds> box(faces->size());
+  for (size_t i = 0; i < faces->size(); ++i)
+    for (const Vec3& p : (*faces)[i].w) box[i].add(p);
   int merges = 0;
   for (auto& [key, ids] : groups) {
     if (ids.size() < 2) continue;
@@ -223,11 +244,12 @@ int merge_faces(std::vector<Face>* faces, const PlaneSet& planes) {
       for (size_t x = 0; x < ids.size(); ++x) {
         if (dead[ids[x]]) continue;
         for (size_t y = x + 1; y < ids.size(); ++y) {
-          if (dead[ids[y]]) continue;
+          if (dead[ids[y]] || !box[ids[x]].overlaps(box[ids[y]], 2 * kMergeEpsilon)) continue;
           Winding m;
           if (try_merge((*faces)[ids[x]].w, (*faces)[ids[y]].w, normal, &m)) {
             (*faces)[ids[x]].w = std::move(m);
-            dead[ids[y]] = true;
+            box[ids[x]].add(box[ids[y]]);
+            dead[ids[y]] = 1;
             ++merges;
             changed = true;
           }

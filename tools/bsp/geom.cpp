@@ -1,6 +1,7 @@
 // tools/bsp/geom.cpp: see geom.h.
 #include "tools/bsp/geom.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace sb::tools::bsp {
@@ -124,8 +125,21 @@ void split_winding(const Winding& w, const Plane& plane, Winding* front, Winding
   back->clear();
   size_t n = w.size();
   if (n < 3) return;
-  std::vector<double> d(n);
-  std::vector<int> s(n);
+  // Per-vertex distances and sides: on the stack for ordinary windings (no heap traffic in
+  // the hottest routine of CSG and tree building), in a thread-local buffer beyond that.
+  constexpr size_t kStack = 64;
+  double d_stack[kStack];
+  int s_stack[kStack];
+  thread_local std::vector<double> d_heap;
+  thread_local std::vector<int> s_heap;
+  double* d = d_stack;
+  int* s = s_stack;
+  if (n > kStack) {
+    d_heap.resize(n);
+    s_heap.resize(n);
+    d = d_heap.data();
+    s = s_heap.data();
+  }
   int counts[3] = {0, 0, 0};
   for (size_t i = 0; i < n; ++i) {
     d[i] = plane.distance(w[i]);
@@ -155,14 +169,55 @@ void split_winding(const Winding& w, const Plane& plane, Winding* front, Winding
   if (back->size() < 3) back->clear();
 }
 
-Winding clip_winding(const Winding& w, const Plane& plane, bool keep_front, double eps) {
-  Winding f, b;
-  split_winding(w, plane, &f, &b, eps);
-  if (f.empty() && b.empty()) {
-    // Entirely on the plane (or degenerate): kept.
-    return w.size() >= 3 ? w : Winding();
+void clip_winding_to(const Winding& w, const Plane& plane, bool keep_front, double eps, Winding* out) {
+  // split_winding's rules, building only the kept side.
+  out->clear();
+  size_t n = w.size();
+  if (n < 3) return;
+  constexpr size_t kStack = 64;
+  double d_stack[kStack];
+  int s_stack[kStack];
+  thread_local std::vector<double> d_heap;
+  thread_local std::vector<int> s_heap;
+  double* d = d_stack;
+  int* s = s_stack;
+  if (n > kStack) {
+    d_heap.resize(n);
+    s_heap.resize(n);
+    d = d_heap.data();
+    s = s_heap.data();
   }
-  return keep_front ? f : b;
+  int counts[3] = {0, 0, 0};
+  for (size_t i = 0; i < n; ++i) {
+    d[i] = plane.distance(w[i]);
+    s[i] = d[i] > eps ? 0 : (d[i] < -eps ? 1 : 2);
+    counts[s[i]]++;
+  }
+  const int keep = keep_front ? 0 : 1;
+  if ((counts[0] == 0 && counts[1] == 0) || counts[1 - keep] == 0) {  // on the plane, or all kept
+    out->assign(w.begin(), w.end());
+    return;
+  }
+  if (counts[keep] == 0) return;
+  out->reserve(n + 2);
+  for (size_t i = 0; i < n; ++i) {
+    size_t j = (i + 1) % n;
+    const Vec3& a = w[i];
+    if (s[i] == 2) {
+      out->push_back(a);
+      continue;
+    }
+    if (s[i] == keep) out->push_back(a);
+    if (s[j] == 2 || s[j] == s[i]) continue;
+    out->push_back(intersect(a, w[j], d[i], d[j], plane));
+  }
+  if (out->size() < 3) out->clear();
+}
+
+Winding clip_winding(const Winding& w, const Plane& plane, bool keep_front, double eps) {
+  Winding out;
+  clip_winding_to(w, plane, keep_front, eps, &out);
+  return out;
 }
 
 Side classify_winding(const Winding& w, const Plane& plane, double eps) {
@@ -182,6 +237,23 @@ double winding_area(const Winding& w) {
   double area = 0;
   for (size_t i = 2; i < w.size(); ++i) area += 0.5 * glm::length(glm::cross(w[i - 1] - w[0], w[i] - w[0]));
   return area;
+}
+
+double winding_min_width(const Winding& w) {
+  if (w.size() < 3) return 0;
+  Vec3 n = winding_normal(w);
+  double best = 1e30;
+  for (size_t i = 0; i < w.size(); ++i) {
+    Vec3 e = w[(i + 1) % w.size()] - w[i];
+    Vec3 across = glm::cross(n, e);
+    double len = glm::length(across);
+    if (len < 1e-9) continue;  // repeated vertex: that edge has no direction
+    across /= len;
+    double far = 0;
+    for (const Vec3& p : w) far = std::max(far, std::fabs(glm::dot(p - w[i], across)));
+    best = std::min(best, far);
+  }
+  return best == 1e30 ? 0 : best;
 }
 
 Vec3 winding_center(const Winding& w) {
@@ -229,26 +301,6 @@ void clean_winding(Winding* w, double eps) {
   }
   if (out.size() < 3) out.clear();
   v.swap(out);
-}
-
-Side box_side(const Bounds& b, const Plane& p, double eps) {
-  if (p.type < 3) {
-    double s = p.normal[p.type];
-    double lo = b.mins[p.type] * s, hi = b.maxs[p.type] * s;
-    if (s < 0) std::swap(lo, hi);
-    if (lo >= p.dist - eps) return Side::Front;
-    if (hi <= p.dist + eps) return Side::Back;
-    return Side::Cross;
-  }
-  double lo = 0, hi = 0;
-  for (int i = 0; i < 3; ++i) {
-    double a = p.normal[i] * b.mins[i], c = p.normal[i] * b.maxs[i];
-    lo += std::min(a, c);
-    hi += std::max(a, c);
-  }
-  if (lo >= p.dist - eps) return Side::Front;
-  if (hi <= p.dist + eps) return Side::Back;
-  return Side::Cross;
 }
 
 }  // namespace sb::tools::bsp

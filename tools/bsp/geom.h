@@ -12,7 +12,9 @@
 //     (Quake's convention): normal == normalize(cross(p[0] - p[1], p[2] - p[1])).
 //   - kOnEpsilon: points closer than this to a plane count as on it.
 #pragma once
+#include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <unordered_map>
 #include <vector>
 
@@ -61,8 +63,13 @@ Winding clip_winding(const Winding& w, const Plane& plane, bool keep_front, doub
 // Splits w by the plane. A winding lying on the plane goes to neither (both empty).
 void split_winding(const Winding& w, const Plane& plane, Winding* front, Winding* back,
                    double eps = kOnEpsilon);
+// clip_winding into *out (its storage reused; out must not alias w).
+void clip_winding_to(const Winding& w, const Plane& plane, bool keep_front, double eps, Winding* out);
 Side classify_winding(const Winding& w, const Plane& plane, double eps = kOnEpsilon);
 double winding_area(const Winding& w);
+// The polygon's smallest width in its own plane: the least, over its edges, of the largest
+// distance of a vertex from that edge's line (exact for convex polygons). 0 for degenerate ones.
+double winding_min_width(const Winding& w);
 Vec3 winding_center(const Winding& w);
 void winding_bounds(const Winding& w, Vec3* mins, Vec3* maxs);
 // Normal implied by the vertex order (zero vector for degenerate windings).
@@ -85,7 +92,25 @@ struct Bounds {
 };
 
 // Side of a box relative to a plane: Front, Back or Cross (boxes touching within eps count
-// as on that side).
-Side box_side(const Bounds& b, const Plane& p, double eps = kOnEpsilon);
+// as on that side). Inline: tree building calls it for every face and candidate plane.
+inline Side box_side(const Bounds& b, const Plane& p, double eps = kOnEpsilon) {
+  if (p.type < 3) {
+    double s = p.normal[p.type];
+    double lo = b.mins[p.type] * s, hi = b.maxs[p.type] * s;
+    if (s < 0) std::swap(lo, hi);
+    if (lo >= p.dist - eps) return Side::Front;
+    if (hi <= p.dist + eps) return Side::Back;
+    return Side::Cross;
+  }
+  double lo = 0, hi = 0;
+  for (int i = 0; i < 3; ++i) {
+    double a = p.normal[i] * b.mins[i], c = p.normal[i] * b.maxs[i];
+    lo += std::min(a, c);
+    hi += std::max(a, c);
+  }
+  if (lo >= p.dist - eps) return Side::Front;
+  if (hi <= p.dist + eps) return Side::Back;
+  return Side::Cross;
+}
 
 }  // namespace sb::tools::bsp

@@ -20,6 +20,10 @@ void usage() {
                "  -prt1             write PRT1 leaf portals even when the map has func_detail (default PRT2)\n"
                "  -noprogress       no progress bar / progress lines on stderr\n"
                "  -threads <n>      worker threads (default 2; 1 = everything on one thread)\n"
+               "  -bsp2             write BSP2 even when BSP29 would do\n"
+               "  -2psb             write 2PSB (RMQ's BSP2 variant with 16-bit bounds)\n"
+               "  -bsp29            write BSP29 or fail, naming the BSP29 limit the map exceeds\n"
+               "                    (default: BSP29 when it fits, else BSP2)\n"
                "  -verbose          more progress lines\n"
                "  -q                quiet: errors only\n");
 }
@@ -55,6 +59,12 @@ int main(int argc, char** argv) {
     } else if (!std::strcmp(a, "-threads")) {
       if (!number_arg(argc, argv, &i, &v) || v < 1) { std::fprintf(stderr, "sbbsp: -threads needs a number >= 1\n"); return 2; }
       opt.threads = int(v);
+    } else if (!std::strcmp(a, "-bsp2")) {
+      opt.format = sb::tools::BspFormat::Bsp2;
+    } else if (!std::strcmp(a, "-2psb")) {
+      opt.format = sb::tools::BspFormat::Bsp2rmq;
+    } else if (!std::strcmp(a, "-bsp29")) {
+      opt.format = sb::tools::BspFormat::Bsp29;
     } else if (!std::strcmp(a, "-nofill")) {
       opt.fill = false;
     } else if (!std::strcmp(a, "-noclip")) {

@@ -141,7 +141,8 @@ int TextureSet::load_wads(std::string_view wad_key, const std::string& map_dir,
     std::string bytes;
     if (!read_file(path.c_str(), &bytes)) return false;
     wf->path = path;
-    wf->data.assign(bytes.begin(), bytes.end());
+    wf->data.resize(bytes.size());
+    if (!bytes.empty()) std::memcpy(wf->data.data(), bytes.data(), bytes.size());
     uint32_t count = 0;
     if (wf->data.size() >= 12) std::memcpy(&count, wf->data.data() + 4, 4);
     size_t cap = size_t(std::min<uint32_t>(count, kMaxWadLumps)) * sizeof(WadLump) + 1024;

@@ -123,34 +123,69 @@ class Builder {
       while (n < cands.size() && planes_[cands[n]].type < 3) ++n;
       cands.resize(n);
     }
+    // What the candidate loop reads, packed in id order (one pass over the faces per plane).
+    const size_t count = ids.size();
+    items_.resize(count);
+    for (size_t i = 0; i < count; ++i) {
+      const Face& f = t_->faces[size_t(ids[i])];
+      items_[i] = Item{f.bounds, f.plane & ~1, ids[i], f.detail};
+    }
     Candidate best;
     for (int plane : cands) {
       const Plane& p = planes_[plane];
       Candidate c;
       c.plane = plane;
       c.axial = p.type < 3;
-      bool abort = false;
-      for (int id : ids) {
-        const Face& f = t_->faces[size_t(id)];
-        if ((f.plane & ~1) == plane) continue;
-        Side s = box_side(f.bounds, p);
-        if (s == Side::Cross) s = classify_winding(f.w, p);
-        if (any_structural && f.detail) {  // counted only to break ties
-          c.detail_splits += s == Side::Cross;
-          continue;
-        }
-        if (s == Side::Front) c.front++;
-        else if (s == Side::Back) c.back++;
-        else if (s == Side::Cross) {
-          c.splits++;
-          c.front++;
-          c.back++;
-          if (best.plane >= 0 && c.splits > best.splits) { abort = true; break; }
-        }
-      }
+      // box_side's cases, specialised: canonical axial planes have normal +1 on their axis.
+      bool done;
+      if (c.axial && p.normal[p.type] == 1.0)
+        done = any_structural ? evaluate<true, true>(p, plane, best, &c) : evaluate<true, false>(p, plane, best, &c);
+      else
+        done = any_structural ? evaluate<false, true>(p, plane, best, &c) : evaluate<false, false>(p, plane, best, &c);
+      bool abort = !done;
       if (!abort && better(c, best)) best = c;
     }
     return best.plane;
+  }
+
+  // Counts one candidate over items_ the way box_side + classify_winding would; false when
+  // it was abandoned (more splits than `best` already has: it cannot win).
+  // kAxial: p is axial with normal +1 on its axis; kStructural: detail faces only break ties.
+  template <bool kAxial, bool kStructural>
+  bool evaluate(const Plane& p, int plane, const Candidate& best, Candidate* c) {
+    const double lo_lim = p.dist - kOnEpsilon, hi_lim = p.dist + kOnEpsilon;
+    const int axis = kAxial ? p.type : 0;
+    const Vec3 n = p.normal;
+    for (const Item& it : items_) {
+      if (it.plane == plane) continue;
+      double lo, hi;
+      if (kAxial) {
+        lo = it.bounds.mins[axis];
+        hi = it.bounds.maxs[axis];
+      } else {
+        lo = hi = 0;
+        for (int i = 0; i < 3; ++i) {
+          double a = n[i] * it.bounds.mins[i], b = n[i] * it.bounds.maxs[i];
+          lo += std::min(a, b);
+          hi += std::max(a, b);
+        }
+      }
+      Side s = lo >= lo_lim ? Side::Front : hi <= hi_lim ? Side::Back : Side::Cross;
+      if (s == Side::Cross) s = classify_winding(t_->faces[size_t(it.id)].w, p);
+      if (kStructural && it.detail) {  // counted only to break ties
+        c->detail_splits += s == Side::Cross;
+        continue;
+      }
+      if (s == Side::Front) c->front++;
+      else if (s == Side::Back) c->back++;
+      else if (s == Side::Cross) {
+        c->splits++;
+        c->front++;
+        c->back++;
+        if (best.plane >= 0 && c->splits > best.splits) return false;
+      }
+    }
+    return true;
   }
 
   Tree* t_;
@@ -160,6 +195,13 @@ class Builder {
   int original_faces_;
   std::vector<int> stamp_;
   int generation_ = 0;
+  struct Item {
+    Bounds bounds;
+    int plane;  // canonical (even) index
+    int id;
+    bool detail;
+  };
+  std::vector<Item> items_;
 };
 
 }  // namespace
@@ -221,6 +263,7 @@ void build_portals(Tree* t, const PlaneSet& planes, TreeStats* stats, Progress* 
     t->nodes[size_t(t->outside)].portals.push_back(i);
   }
   // Iterative cut, parents before children.
+  Winding scratch;
   std::vector<int> stack{t->root};
   while (!stack.empty()) {
     int n = stack.back();
@@ -235,7 +278,8 @@ void build_portals(Tree* t, const PlaneSet& planes, TreeStats* stats, Progress* 
     Winding w = base_winding(P);
     for (int pid : list) {
       const Portal& p = t->portals[size_t(pid)];
-      w = clip_winding(w, pplanes[size_t(p.plane)], p.nodes[0] == n, 0.001);
+      clip_winding_to(w, pplanes[size_t(p.plane)], p.nodes[0] == n, 0.001, &scratch);
+      w.swap(scratch);
       if (w.empty()) break;
     }
     if (!w.empty() && winding_area(w) > 0.001) {
@@ -315,6 +359,7 @@ void build_portals(Tree* t, const PlaneSet& planes, TreeStats* stats, Progress* 
 }
 
 void set_leaf_contents(Tree* t, const std::vector<Brush>& brushes, const PlaneSet& planes) {
+  const BrushGrid grid(brushes);
   for (size_t n = 0; n < t->nodes.size(); ++n) {
     TreeNode& node = t->nodes[n];
     if (!node.is_leaf() || int(n) == t->outside) continue;
@@ -331,7 +376,13 @@ void set_leaf_contents(Tree* t, const std::vector<Brush>& brushes, const PlaneSe
       }
     c /= double(count);
     int best = kContentsEmpty, best_rank = -1;
-    for (const Brush& b : brushes) {
+    const std::vector<int>* near = grid.cell_at(c);
+    if (!near) {
+      node.contents = best;
+      continue;
+    }
+    for (int bi : *near) {
+      const Brush& b = brushes[size_t(bi)];
       if (b.contents == kContentsIllusionary || b.contents == kContentsHint) continue;
       if (c.x < b.bounds.mins.x || c.x > b.bounds.maxs.x || c.y < b.bounds.mins.y || c.y > b.bounds.maxs.y ||
           c.z < b.bounds.mins.z || c.z > b.bounds.maxs.z)
@@ -361,8 +412,16 @@ int point_leaf(const Tree& t, const PlaneSet& planes, const Vec3& p) {
 
 namespace {
 
-// Breadth-first flood from `starts` through portals between passable leaves.
-void flood(Tree* t, const std::vector<int>& starts, bool keep_sky) {
+// Portals a flood may cross: alive and at least kThinPortal wide (thinner ones are cracks).
+std::vector<uint8_t> open_portals(const Tree& t) {
+  std::vector<uint8_t> open(t.portals.size(), 0);
+  for (size_t i = 0; i < t.portals.size(); ++i)
+    open[i] = t.portals[i].alive && winding_min_width(t.portals[i].w) >= kThinPortal;
+  return open;
+}
+
+// Breadth-first flood from `starts` through open portals between passable leaves.
+void flood(Tree* t, const std::vector<int>& starts, bool keep_sky, const std::vector<uint8_t>& open) {
   std::deque<int> q;
   for (int s : starts) {
     if (t->nodes[size_t(s)].reached) continue;
@@ -374,6 +433,7 @@ void flood(Tree* t, const std::vector<int>& starts, bool keep_sky) {
     int n = q.front();
     q.pop_front();
     for (int pid : t->nodes[size_t(n)].portals) {
+      if (!open[size_t(pid)]) continue;
       const Portal& p = t->portals[size_t(pid)];
       int o = p.nodes[0] == n ? p.nodes[1] : p.nodes[0];
       TreeNode& on = t->nodes[size_t(o)];
@@ -390,40 +450,96 @@ void flood(Tree* t, const std::vector<int>& starts, bool keep_sky) {
   }
 }
 
+// Every leaf within `eps` of p (a point on a node plane touches both sides).
+void leaves_at(const Tree& t, const PlaneSet& planes, int n, const Vec3& p, double eps, std::vector<int>* out) {
+  while (!t.nodes[size_t(n)].is_leaf()) {
+    const TreeNode& node = t.nodes[size_t(n)];
+    double d = planes[node.plane].distance(p);
+    if (d > eps) {
+      n = node.children[0];
+    } else if (d < -eps) {
+      n = node.children[1];
+    } else {
+      leaves_at(t, planes, node.children[0], p, eps, out);
+      n = node.children[1];
+    }
+  }
+  out->push_back(n);
+}
+
+bool flood_passes(const Tree& t, int n) {
+  return n == t.outside || passable(t.nodes[size_t(n)].contents) || t.nodes[size_t(n)].contents == kContentsDetail;
+}
+
 }  // namespace
+
+void entity_leaves(const Tree& t, const PlaneSet& planes, const Vec3& p, std::vector<int>* out) {
+  out->clear();
+  leaves_at(t, planes, t.root, p, kEntityTouchEpsilon, out);
+  std::sort(out->begin(), out->end());
+  out->erase(std::unique(out->begin(), out->end()), out->end());
+}
 
 int flood_fill_entities(Tree* t, const PlaneSet& planes, const std::vector<Vec3>& origins, bool fill_unreached,
                         LeakInfo* leak) {
   *leak = LeakInfo();
+  const std::vector<uint8_t> open = open_portals(*t);
   for (TreeNode& n : t->nodes) n.reached = false;
-  flood(t, {t->outside}, false);
-  std::vector<int> starts;
+  flood(t, {t->outside}, false, open);
+  std::vector<int> starts, touch;
   for (size_t i = 0; i < origins.size(); ++i) {
-    int l = point_leaf(*t, planes, origins[i]);
-    if (!passable(t->nodes[size_t(l)].contents)) continue;
-    if (t->nodes[size_t(l)].reached && !leak->leaked) {
-      leak->leaked = true;
-      leak->entity = int(i);
-      leak->path.push_back(origins[i]);
-      int n = l;
-      Vec3 last = origins[i];
-      while (n != t->outside) {
-        int pid = t->nodes[size_t(n)].flood_parent_portal;
-        if (pid < 0) break;
-        const Portal& p = t->portals[size_t(pid)];
-        last = winding_center(p.w);
-        leak->path.push_back(last);
-        n = p.nodes[0] == n ? p.nodes[1] : p.nodes[0];
+    entity_leaves(*t, planes, origins[i], &touch);
+    bool any_passable = false, inside = false;
+    int outside_leaf = -1;
+    for (int l : touch) {
+      const TreeNode& node = t->nodes[size_t(l)];
+      any_passable = any_passable || passable(node.contents);
+      if (!node.reached) {
+        inside = true;
+        if (passable(node.contents)) starts.push_back(l);
+      } else if (outside_leaf < 0 && passable(node.contents)) {
+        outside_leaf = l;
       }
     }
-    starts.push_back(l);
+    if (!any_passable || inside || leak->leaked) continue;
+    leak->leaked = true;
+    leak->entity = int(i);
+    leak->path.push_back(origins[i]);
+    int n = outside_leaf;
+    while (n != t->outside) {
+      int pid = t->nodes[size_t(n)].flood_parent_portal;
+      if (pid < 0) break;
+      const Portal& p = t->portals[size_t(pid)];
+      leak->path.push_back(winding_center(p.w));
+      n = p.nodes[0] == n ? p.nodes[1] : p.nodes[0];
+    }
   }
   if (leak->leaked || starts.empty()) {
     for (TreeNode& n : t->nodes) n.reached = false;
     return 0;
   }
   for (TreeNode& n : t->nodes) n.reached = false;
-  flood(t, starts, true);
+  flood(t, starts, true, open);
+  // Slivers in open space: an unreached passable leaf whose every neighbour the flood could
+  // enter was reached (none is the outside) is kept: only a thin portal kept the flood out.
+  std::vector<int> slivers;
+  for (size_t i = 0; i < t->nodes.size(); ++i) {
+    const TreeNode& n = t->nodes[i];
+    if (!n.is_leaf() || int(i) == t->outside || n.reached || !passable(n.contents)) continue;
+    bool all = true, any = false;
+    for (int pid : n.portals) {
+      const Portal& p = t->portals[size_t(pid)];
+      int o = p.nodes[0] == int(i) ? p.nodes[1] : p.nodes[0];
+      if (!flood_passes(*t, o)) continue;
+      if (o == t->outside || !t->nodes[size_t(o)].reached) {
+        all = false;
+        break;
+      }
+      any = true;
+    }
+    if (all && any) slivers.push_back(int(i));
+  }
+  for (int s : slivers) t->nodes[size_t(s)].reached = true;
   int filled = 0;
   for (size_t i = 0; i < t->nodes.size(); ++i) {
     TreeNode& n = t->nodes[i];
@@ -437,8 +553,9 @@ int flood_fill_entities(Tree* t, const PlaneSet& planes, const std::vector<Vec3>
 }
 
 bool fill_from_outside(Tree* t, const PlaneSet& planes, const std::vector<Vec3>& origins) {
+  const std::vector<uint8_t> open = open_portals(*t);
   for (TreeNode& n : t->nodes) n.reached = false;
-  flood(t, {t->outside}, false);
+  flood(t, {t->outside}, false, open);
   for (const Vec3& o : origins) {
     int l = point_leaf(*t, planes, o);
     if (passable(t->nodes[size_t(l)].contents) && t->nodes[size_t(l)].reached) {

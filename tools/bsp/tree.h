@@ -18,7 +18,8 @@
 // Leaf contents: a point inside the leaf (the mean of its portal vertices) is tested against
 // the brushes; the highest-ranked brush holding it gives the contents (solid beats detail on a
 // tie), empty otherwise; illusionary and hint brushes are ignored.
-// Flood fills pass through detail leaves: detail never seals a map.
+// Flood fills pass through detail leaves (detail never seals a map) but never through a portal
+// thinner than kThinPortal (a crack that thin seals).
 #pragma once
 #include <string>
 #include <vector>
@@ -97,14 +98,29 @@ struct LeakInfo {
   std::vector<Vec3> path;         // entity origin .. a point outside
 };
 
-// Marks leaves reachable from `origins` through portals between passable leaves. Sky
-// leaves next to a reached leaf are kept too. With fill_unreached, every other leaf becomes
-// solid. A leak (a passable path from the outside to an origin) is reported instead and
-// nothing is filled. Origins in solid leaves are ignored. Returns the number of leaves filled.
+// Floods never cross a portal narrower than this (winding_min_width, units): a crack thinner
+// than this between brushes (e.g. angled brushes whose vertices miss by a unit, leaving a
+// wedge 0.18 units wide) seals like solid, and its leaves are filled with the outside.
+constexpr double kThinPortal = 0.25;
+// A point entity touches every leaf within this distance of its origin.
+constexpr double kEntityTouchEpsilon = 0.01;
+
+// The leaves a point entity touches (sorted): one, or several when its origin lies on node
+// planes (an entity on a wall's outer face touches the wall and the outside).
+void entity_leaves(const Tree& tree, const PlaneSet& planes, const Vec3& p, std::vector<int>* out);
+
+// Marks leaves reachable from `origins` through open portals (kThinPortal) between passable
+// leaves. An origin touching no passable leaf (inside solid) is ignored; one touching any leaf
+// the outside does not reach (solid counts) is inside and seeds the flood from its passable
+// unreached leaves; one whose every touched leaf the outside reaches is a leak, reported
+// (path through portal centres) instead, and nothing is filled. Sky leaves next to a reached
+// leaf are kept too, and so are slivers: unreached leaves all of whose floodable neighbours
+// were reached (only thin portals kept the flood out). With fill_unreached, every other
+// leaf becomes solid. Returns the number of leaves filled.
 int flood_fill_entities(Tree* tree, const PlaneSet& planes, const std::vector<Vec3>& origins, bool fill_unreached,
                         LeakInfo* leak);
-// Clip hulls: every leaf reachable from the outside becomes solid; returns false (and fills
-// nothing) when the outside reaches one of the origins.
+// Clip hulls: every leaf reachable from the outside (through open portals) becomes solid;
+// returns false (and fills nothing) when the outside reaches one of the origins.
 bool fill_from_outside(Tree* tree, const PlaneSet& planes, const std::vector<Vec3>& origins);
 
 // For every node face: the non-solid leaves in front of it that it touches. Faces touching
