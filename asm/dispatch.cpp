@@ -13,7 +13,8 @@
 namespace sb::simd {
 namespace detail {
 
-const Kernels kScalar = {"scalar", surface_span_scalar, surface_block_scalar, z_span_scalar, expand_palette_scalar};
+const Kernels kScalar = {"scalar", surface_span_scalar, surface_block_scalar, z_span_scalar, expand_palette_scalar,
+                         alias_span_scalar, surface_span_persp_scalar};
 
 namespace {
 
@@ -32,6 +33,7 @@ struct Choice {
 Choice make_choice() {
   Choice c{kScalar, {}};
   c.tuned.name = "tuned";
+  c.tuned.surface_span_persp = surface_span_persp_fast;  // portable C++: every target
 #if defined(SB_SIMD_X86)
   // The span kernel stays scalar: SSE2 loses to it on 16-pixel runs (its lane setup costs
   // more than it saves), and AVX2, 1.2x faster on full 16-pixel runs in asm_bench, made
@@ -42,6 +44,8 @@ Choice make_choice() {
   c.tuned.z_span = kSse2.z_span;
   c.tuned.expand_palette = kSse2.expand_palette;
   const char *span = "scalar", *block = "sse2", *z = "sse2", *pal = "sse2";
+  c.tuned.alias_span = kSse2.alias_span;  // asm_bench: faster than scalar on every span length
+  const char* alias = "sse2";
   if (cpu_has_avx2()) {
     c.tuned.surface_block = kAvx2.surface_block;
     c.tuned.z_span = kAvx2.z_span;
@@ -53,11 +57,14 @@ Choice make_choice() {
   c.tuned.z_span = kNeon.z_span;
   c.tuned.expand_palette = kNeon.expand_palette;
   const char *span = "neon", *block = "neon", *z = "neon", *pal = "neon";
+  c.tuned.alias_span = kNeon.alias_span;
+  const char* alias = "neon";
 #else
   const char *span = "scalar", *block = "scalar", *z = "scalar", *pal = "scalar";
+  const char* alias = "scalar";
 #endif
-  std::snprintf(c.line, sizeof c.line, "surface_span=%s surface_block=%s z_span=%s expand_palette=%s", span, block,
-                z, pal);
+  std::snprintf(c.line, sizeof c.line, "surface_span=%s surface_block=%s z_span=%s expand_palette=%s alias_span=%s "
+                "surface_span_persp=fast", span, block, z, pal, alias);
   return c;
 }
 

@@ -7,18 +7,26 @@
 //   surface_block   asm/surface_block.h    scalar, sse2, avx2, avx2g (gathers), neon
 //   z_span          asm/z_span.h           scalar, sse2, avx2, neon
 //   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gathers), neon
+//   alias_span      asm/alias_span.h       scalar, sse2, neon (avx2 tables: the sse2 one)
+//   surface_span_persp asm/span_persp.h    scalar (reference), fast (portable; every other table)
+//   lit_span        asm/lit_span.h         scalar, fast, avx2 (gathers), avx2s (own dispatch: lit_span_active())
 // The tuned mix (asm/dispatch.cpp) on x86-64: scalar span (the vector ones did not speed
-// up whole frames), avx2 (else sse2) builder and z, sse2 palette; on ARM: neon.
+// up whole frames), avx2 (else sse2) builder and z, sse2 palette and alias span; on ARM:
+// neon. Everywhere the fast whole-span drawer: the engine draws lit surfaces through
+// surface_span_persp (one call per span), whose scalar reference is the per-run walker over
+// surface_span (so force_scalar still means "the references everywhere").
 //
 // Every variant of a kernel writes exactly the bytes its scalar reference writes
-// (tests/asm checks it on random and edge inputs). Not here yet: the alias-model span
-// drawer and the single-pass texture + light span drawer (issue 4 lists them for later).
+// (tests/asm checks it on random and edge inputs).
 //
 // The engine calls through active(); force_scalar(true) makes active() the scalar table
 // (a host console variable can call it so benchmarks compare). The tables are plain data,
 // valid for the program's lifetime; nothing here allocates or includes an OS header.
 #pragma once
+#include "asm/alias_span.h"
+#include "asm/lit_span.h"
 #include "asm/palette_expand.h"
+#include "asm/span_persp.h"
 #include "asm/surface_block.h"
 #include "asm/surface_span.h"
 #include "asm/z_span.h"
@@ -31,6 +39,8 @@ struct Kernels {
   SurfaceBlockFn surface_block;
   ZSpanFn z_span;
   ExpandPaletteFn expand_palette;
+  AliasSpanFn alias_span;
+  SurfaceSpanPerspFn surface_span_persp;  // a whole span, the divide inside (asm/span_persp.h)
 };
 
 // The table the engine uses: the tuned mix for this CPU, or the scalar one when forced.

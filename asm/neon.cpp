@@ -245,7 +245,8 @@ void expand_palette_neon(const uint8_t* src, ptrdiff_t src_stride, int width, in
 
 }  // namespace
 
-const Kernels kNeon = {"neon", surface_span_neon, surface_block_neon, z_span_neon, expand_palette_neon};
+const Kernels kNeon = {"neon", surface_span_neon, surface_block_neon, z_span_neon, expand_palette_neon, alias_span_neon,
+                        surface_span_persp_fast};
 
 }  // namespace sb::simd::detail
 

@@ -3,6 +3,7 @@
 // they are written for clarity first and speed second.
 #include <cstring>
 
+#include "asm/alias_span.h"
 #include "asm/palette_expand.h"
 #include "asm/surface_block.h"
 #include "asm/surface_span.h"
@@ -91,6 +92,31 @@ void expand_palette_scalar(const uint8_t* src, ptrdiff_t src_stride, int width, 
       }
     }
     for (int j = 1; j < scale; ++j) std::memcpy(d + j * dst_stride, d, row_bytes);
+  }
+}
+
+}  // namespace sb::simd
+
+// ---------------------------------------------------------------- alias-model span
+
+namespace sb::simd {
+
+void alias_span_scalar(uint8_t* __restrict dest, uint16_t* __restrict zbuf, int n, const uint8_t* __restrict skin,
+                       int skin_width, const uint8_t* __restrict colormap, const AliasSpan& span) {
+  // Unsigned: the contract keeps every value exact, and unsigned steps are defined anyway.
+  uint32_t s = uint32_t(span.s), t = uint32_t(span.t), l = uint32_t(span.light), z = span.zi;
+  const uint32_t ds = uint32_t(span.ds), dt = uint32_t(span.dt), dl = uint32_t(span.dlight);
+  const uint32_t dz = uint32_t(span.dzi), w = uint32_t(skin_width);
+  for (int k = 0; k < n; ++k) {
+    const uint16_t zz = uint16_t(z >> 16);
+    if (zz >= zbuf[k]) {
+      dest[k] = colormap[((l >> 16) << 8) + skin[(t >> 16) * w + (s >> 16)]];
+      zbuf[k] = zz;
+    }
+    s += ds;
+    t += dt;
+    l += dl;
+    z += dz;
   }
 }
 

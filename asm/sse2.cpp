@@ -228,7 +228,8 @@ void expand_palette_sse2(const uint8_t* src, ptrdiff_t src_stride, int width, in
 
 }  // namespace
 
-const Kernels kSse2 = {"sse2", surface_span_sse2, surface_block_sse2, z_span_sse2, expand_palette_sse2};
+const Kernels kSse2 = {"sse2", surface_span_sse2, surface_block_sse2, z_span_sse2, expand_palette_sse2, alias_span_sse2,
+                        surface_span_persp_fast};
 
 }  // namespace sb::simd::detail
 

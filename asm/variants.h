@@ -10,6 +10,11 @@
 namespace sb::simd::detail {
 
 extern const Kernels kScalar;
+// asm/alias_span_simd.cpp's variants (declared here so the instruction-set tables can list them).
+void alias_span_sse2(uint8_t* dest, uint16_t* zbuf, int n, const uint8_t* skin, int skin_width,
+                     const uint8_t* colormap, const AliasSpan& span);
+void alias_span_neon(uint8_t* dest, uint16_t* zbuf, int n, const uint8_t* skin, int skin_width,
+                     const uint8_t* colormap, const AliasSpan& span);
 #if defined(__x86_64__)
 #define SB_SIMD_X86 1
 extern const Kernels kSse2;

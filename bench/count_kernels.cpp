@@ -15,6 +15,14 @@
 //                64x64 texture (>> m), 17x17 light grid
 //   z1920        z span fill, 1920 pixels
 //   palette      8-bit to 32-bit palette expansion, 320x200 at scale 1 (source pixels)
+//   alias32      alias-model spans: 60 spans of 32 pixels, all visible (a 1920-pixel row's
+//                worth), 296x194 skin, full light range
+//   alias1920h   one 1920-pixel alias span behind a z buffer that hides alternate runs of 16
+//   persp1920    the whole-span drawer (asm/span_persp.h): one 1920-pixel span of a 256x256
+//                surface in perspective, second-order steps, divides included
+//   persp64      the same over 30 spans of 64 pixels (per-span costs weigh more)
+//   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
+//   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
 // avx2g, neon), except the "tuned" mix (it is one of the others per kernel).
 #include <cstdint>
@@ -73,10 +81,13 @@ const Kernels* find_variant(const char* name) {
 }
 
 const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
-                              "block_mip2", "block_mip3", "z1920", "palette"};
+                              "block_mip2", "block_mip3", "z1920", "palette", "alias32", "alias1920h",
+                              "persp1920", "persp64"};
 
 long units_of(const char* c) {
-  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0) return kSpan;
+  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
+      std::strncmp(c, "persp", 5) == 0)
+    return kSpan;
   if (std::strncmp(c, "block_mip", 9) == 0) {
     const int e = kSurf >> (c[9] - '0');
     return long(e) * e;
@@ -128,6 +139,54 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     for (long r = 0; r < reps; ++r) k.z_span(z.data(), kSpan, 0x12340000u + uint32_t(r & 255), 0x00012345u);
     return checksum(reinterpret_cast<const uint8_t*>(z.data()), z.size() * 2);
   }
+  if (std::strncmp(c, "alias", 5) == 0) {
+    // 296x194 skin (a typical Quake player skin), colormap, z buffer: for alias32 all zero
+    // (every pixel visible, and after the first repetition every pixel ties: still visible);
+    // for alias1920h alternate runs of 16 nearer than the span (hidden) and zero (visible).
+    constexpr int kSkinW = 296, kSkinH = 194;
+    std::vector<uint8_t> skin(size_t(kSkinW) * kSkinH), cm(64 * 256), dest(kSpan);
+    for (auto& t : skin) t = uint8_t(rng.next() >> 24);
+    for (auto& t : cm) t = uint8_t(rng.next() >> 24);
+    const bool hidden = std::strcmp(c, "alias1920h") == 0;
+    std::vector<uint16_t> z(kSpan);
+    for (int x = 0; x < kSpan; ++x) z[size_t(x)] = hidden && (x / 16) % 2 ? 0xffff : 0;
+    const int len = hidden ? kSpan : 32;
+    sb::simd::AliasSpan a{};
+    a.s = 3 << 16;
+    a.t = 150 << 16;
+    a.light = 2 << 16;
+    a.zi = 0x40000000u;
+    a.ds = int32_t(((kSkinW - 8) << 16) / len);  // across most of the skin
+    a.dt = -int32_t((100 << 16) / len);
+    a.dlight = int32_t((60 << 16) / len);
+    a.dzi = 0x3000;
+    for (long r = 0; r < reps; ++r)
+      for (int x = 0; x < kSpan; x += len)
+        k.alias_span(dest.data() + x, z.data() + x, len, skin.data(), kSkinW, cm.data(), a);
+    return checksum(dest.data(), dest.size());
+  }
+  if (std::strncmp(c, "persp", 5) == 0) {
+    // A floor-like plane: 1/z falls 4x across the row, u and v cross the surface.
+    std::vector<uint8_t> surf(size_t(kSurf) * kSurf), dest(kSpan);
+    for (auto& t : surf) t = uint8_t(rng.next() >> 24);
+    const int len = std::strcmp(c, "persp64") == 0 ? 64 : kSpan;
+    sb::simd::PerspSpan p{};
+    p.zi0 = 0.004;
+    p.dzi = -0.003 / kSpan;
+    p.uz0 = 0.0;
+    p.duz = 0.9 * kSurf * 0.001 / kSpan;
+    p.vz0 = 0.1 * kSurf * 0.004;
+    p.dvz = -0.0001 * kSurf / kSpan;
+    p.umax = (kSurf << 16) - 1;
+    p.vmax = (kSurf << 16) - 1;
+    p.second_order = true;
+    for (long r = 0; r < reps; ++r)
+      for (int x = 0; x < kSpan; x += len) {
+        p.px0 = x + 0.5;
+        k.surface_span_persp(dest.data() + x, len, surf.data(), kSurf, kSurf, p);
+      }
+    return checksum(dest.data(), dest.size());
+  }
   if (std::strcmp(c, "palette") == 0) {
     std::vector<uint8_t> src(size_t(kPalW) * kPalH);
     for (auto& s : src) s = uint8_t(rng.next() >> 24);
@@ -150,6 +209,10 @@ int main(int argc, char** argv) {
         if (!v.kernels || !v.supported || std::strcmp(v.kernels->name, "tuned") == 0) continue;
         // z_span and expand_palette have no gather variant: avx2g's entries are other ones.
         if (std::strcmp(v.kernels->name, "avx2g") == 0 && (c[0] == 'z' || c[0] == 'p')) continue;
+        // alias_span: the avx2 tables hold the sse2 variant.
+        if (c[0] == 'a' && std::strncmp(v.kernels->name, "avx2", 4) == 0) continue;
+        // persp: one non-scalar table (they all hold the portable fast version).
+        if (std::strncmp(c, "persp", 5) == 0 && i > 1) continue;
         std::printf("%s %s %ld\n", c, v.kernels->name, units_of(c));
       }
     return 0;

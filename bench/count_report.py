@@ -38,7 +38,9 @@ CPU_NOTE = {"cortex-a72": "cortex-a72 (LLVM 14 times it with its Cortex-A57 mode
 KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 call, 1920 px)",
           "block_mip0": "surface_block mip 0", "block_mip1": "surface_block mip 1",
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
-          "z1920": "z_span", "palette": "expand_palette (x1)"}
+          "z1920": "z_span", "palette": "expand_palette (x1)",
+          "alias32": "alias_span (32-px spans, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
+          "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)"}
 UNIT = {"palette": "src px"}
 
 
@@ -334,7 +336,7 @@ def main():
         ratio = fmt(s_ipu / ipu) if s_ipu and ipu else "—"
         cr = [s_cyc[c] / cyc[c] for c in cyc if cyc.get(c) and s_cyc.get(c)]
         ratio += f" ({min(cr):.2f}–{max(cr):.2f})" if len(cr) > 1 else (f" ({cr[0]:.2f})" if cr else "")
-        quake = 7.5 if case.startswith("span") else 2.25 if case.startswith("block") else None
+        quake = 7.5 if case.startswith(("span", "persp")) else 2.25 if case.startswith("block") else None
         worst = max([v for v in cyc.values() if v is not None], default=None)
         vsq = "" if quake is None or worst is None else f"{quake / worst:.2f}"
         md.append(f"| {KERNEL[case]} | {t['name']} | {variant} | {ipu:.2f} | " + " | ".join(cells)

@@ -223,6 +223,7 @@ void render_frame(HostState& h) {
   in.time = h.time;
   in.lightstyles = h.styles;
   in.colormap = h.colormap;
+  in.single_pass = h.single_pass && h.single_pass->value != 0.0f;
   h.stats = RenderStats{};
   Status s = render_world(in, h.fb, h.memory, &h.stats);
   if (!s && !h.render_error_logged) {

@@ -3,6 +3,7 @@
 //   map / viewmap <name>       load maps/<name>.bsp (level arena), view it from the player start
 //   viewpos x y z [yaw [pitch]] place the camera
 //   fov <deg> (cvar)           horizontal field of view, 10..170
+//   r_singlepass 0|1 (cvar)    world surfaces from the surface cache (0) or single pass (1)
 //   screenshot <file.png>      render now and write the frame through the platform's PNG writer
 //   flythrough [frames]        fly the camera path; prints frames, seconds, ms/frame median, worst
 //   memstats                   the memory report
@@ -214,7 +215,9 @@ Status register_commands(HostState& h) {
   h.fov = c.add_cvar("fov", "90", "horizontal field of view in degrees (10..170)", fov_changed, &h);
   h.speed = c.add_cvar("cl_speed", "320", "free-fly speed in units per second (shift: 3x)");
   h.animate_styles = c.add_cvar("r_lightstyles", "1", "1 = animate light styles, 0 = all normal");
-  if (!h.fov || !h.speed || !h.animate_styles) return make_error("console: cvar table is full");
+  h.single_pass = c.add_cvar("r_singlepass", "0",
+                             "1 = world surfaces drawn single pass (texture x light per pixel, no surface cache)");
+  if (!h.fov || !h.speed || !h.animate_styles || !h.single_pass) return make_error("console: cvar table is full");
   return Status::ok();
 }
 

@@ -44,6 +44,7 @@ struct HostState {
   Cvar* fov = nullptr;
   Cvar* speed = nullptr;
   Cvar* animate_styles = nullptr;
+  Cvar* single_pass = nullptr;  // r_singlepass
 
   uint8_t palette[kPaletteBytes] = {};
   uint8_t* colormap = nullptr;  // kColormapBytes, permanent

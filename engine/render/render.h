@@ -40,12 +40,18 @@ struct RenderInputs {
   // Between the exact divides every 16 pixels: true = linear plus a second-order term that
   // follows the perspective curve (default); false = purely linear, as Quake stepped.
   bool span_second_order = true;
+  // World surfaces: false = lit surfaces from the surface cache (default); true = single pass,
+  // texture and light combined per pixel by the span drawer (asm/lit_span.h), no cache.
+  // Both give the same pixels (tests/render_back/single_pass_test.cpp). Sky and turbulent
+  // surfaces draw the same way either way.
+  bool single_pass = false;
 };
 
 struct RenderStats {
   uint32_t visible_leaves = 0, nodes_visited = 0, faces_emitted = 0;
   uint32_t edges = 0, surfaces = 0, spans = 0;
   uint32_t surfaces_built = 0, surface_cache_hits = 0;
+  uint32_t single_pass_surfaces = 0;  // lit surfaces drawn single pass (RenderInputs::single_pass)
   uint32_t mip_counts[4] = {};
   bool edges_overflowed = false, surfaces_overflowed = false, spans_overflowed = false;
   bool cache_exhausted = false;

@@ -1,5 +1,7 @@
-// engine/render/span_draw.cpp: span drawers. The lit-surface run and the z fill call asm/
-// kernels (asm/kernels.h); the rest are scalar here.
+// engine/render/span_draw.cpp: span drawers. Lit-surface spans (whole spans, the divides
+// inside: asm/span_persp.h, which repeats this file's walker arithmetic exactly), the
+// lit-surface run of the per-run reference path and the z fill call asm/ kernels
+// (asm/kernels.h); the rest are scalar here.
 //
 // Sections: 1. gradients  2. the 16-pixel perspective walker  3. texel fetchers
 //           (lit surface, unlit texture, turbulence)  4. sky  5. solid, z, coverage
@@ -90,6 +92,9 @@ inline int32_t max_fixed(int extent) {
 struct RunSteps {
   int32_t d, dd;
 };
+// asm/span_persp.cpp repeats run_steps, walk_span and walk_spans' exact() operation for
+// operation (the engine's lit surfaces go through it): change both together;
+// tests/asm/span_persp_test.cpp compares them.
 inline RunSteps run_steps(int32_t a, int32_t b, int steps, double curve) {
   if (steps <= 0) return {0, 0};
   const int64_t delta = int64_t(b) - int64_t(a);
@@ -257,8 +262,50 @@ struct TurbRun {
 
 void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
                         int width, int height, Framebuffer& fb) {
+  // One asm/ call per span (asm/span_persp.h): the kernel walks the runs and divides itself,
+  // drawing the bytes draw_surface_spans_by_runs draws (the walker below, per run).
+  const simd::SurfaceSpanPerspFn fn = simd::active().surface_span_persp;
+  simd::PerspSpan p;
+  p.dzi = g.zix;
+  p.duz = g.ux;
+  p.dvz = g.vx;
+  p.umax = max_fixed(width);
+  p.vmax = max_fixed(height);
+  p.second_order = g.second_order;
+  for (uint32_t i = 0; i < count; ++i) {
+    const int x0 = spans[i].x, y = spans[i].y, total = spans[i].count;
+    if (total <= 0) continue;
+    const double py = y + 0.5;  // the row's values exactly as walk_spans computes them
+    p.zi0 = g.zi0 + g.ziy * py;
+    p.uz0 = g.u0 + g.uy * py;
+    p.vz0 = g.v0 + g.vy * py;
+    p.px0 = x0 + 0.5;
+    fn(fb.pixels + ptrdiff_t(y) * fb.stride + x0, total, surface, width, height, p);
+  }
+  draw_z_spans(spans, count, g, fb);
+  count_coverage(spans, count, fb);
+}
+
+void draw_surface_spans_by_runs(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
+                                int width, int height, Framebuffer& fb) {
   walk_spans(spans, count, g, max_fixed(width), max_fixed(height), fb,
              SurfaceRun{surface, width, height, simd::active().surface_span});
+  draw_z_spans(spans, count, g, fb);
+  count_coverage(spans, count, fb);
+}
+
+void draw_lit_spans(const Span* spans, uint32_t count, const SpanGradients& g, const simd::LitSpanSource& src,
+                    simd::LitSpanFn fn, Framebuffer& fb) {
+  // The lit_span kernel has the surface_span kernel's stepping; only the fetch differs.
+  struct LitRun {
+    const simd::LitSpanSource* src;
+    simd::LitSpanFn fn;
+    void operator()(uint8_t* dest, int n, int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu,
+                    int32_t ddv) const {
+      fn(dest, n, *src, u, v, du, dv, ddu, ddv);
+    }
+  };
+  walk_spans(spans, count, g, max_fixed(src.width), max_fixed(src.height), fb, LitRun{&src, fn});
   draw_z_spans(spans, count, g, fb);
   count_coverage(spans, count, fb);
 }

@@ -20,6 +20,7 @@
 #pragma once
 #include <cstdint>
 
+#include "asm/lit_span.h"
 #include "engine/formats/bsp.h"
 #include "engine/render/render.h"
 #include "engine/render/render_local.h"
@@ -40,8 +41,21 @@ SpanGradients face_gradients(const BspWorld& world, const Face& face, const View
 void exact_uv(const SpanGradients& g, double px, double py, double* u, double* v);
 
 // Lit surface from the cache: texel (u, v) clamped to [0, width-1] x [0, height-1].
+// One asm/ surface_span_persp call per span (the runs and divides inside the kernel).
 void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
                         int width, int height, Framebuffer& fb);
+
+// The same bytes through the engine's own run walker: one asm/ surface_span call per run of
+// 16 pixels (the path before asm/span_persp.h; kept as its reference for tests and benches).
+void draw_surface_spans_by_runs(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
+                                int width, int height, Framebuffer& fb);
+
+// Single pass (RenderInputs::single_pass): texture and light combined per pixel by the
+// lit_span kernel `fn` (asm/lit_span.h) from `src`; u, v clamped exactly as
+// draw_surface_spans clamps them to a src.width x src.height surface, so the kernel reads
+// the texel and light the cached path's surface holds there.
+void draw_lit_spans(const Span* spans, uint32_t count, const SpanGradients& g, const simd::LitSpanSource& src,
+                    simd::LitSpanFn fn, Framebuffer& fb);
 
 // Unlit texture at `mip` (fallback when the cache cannot hold a surface): u, v clamped to
 // the face's extents >> mip, then wrapped into the texture like texture_texel().

@@ -1,10 +1,12 @@
 // engine/render/surface_draw.cpp: the back end's entry point. For every surface the front
 // end scanned out, pick its drawer: background colour, sky, turbulence, or a lit surface
-// from the cache (unlit texture when the cache cannot hold it this frame).
+// from the cache (unlit texture when the cache cannot hold it this frame), or, with
+// RenderInputs::single_pass, texture and light combined in the span drawer (single_pass.h).
 #include <cstdint>
 
 #include "engine/core/log.h"
 #include "engine/render/render_local.h"
+#include "engine/render/single_pass.h"
 #include "engine/render/span_draw.h"
 #include "engine/render/surface_cache.h"
 #include "engine/render/surface_math.h"
@@ -31,6 +33,7 @@ void draw_surfaces(BspWorld& world, const ViewState& view, const FrameSpans& fra
                    Framebuffer& fb, mem::MemorySystem& memory, RenderStats* stats_out) {
   RenderStats local;
   RenderStats& stats = stats_out ? *stats_out : local;
+  const simd::LitSpanFn lit_span = in.single_pass ? simd::lit_span_active() : nullptr;  // once per frame
 
   for (uint32_t si = 0; si < frame.num_surfaces; ++si) {
     const SurfaceDraw& sd = frame.surfaces[si];
@@ -73,6 +76,10 @@ void draw_surfaces(BspWorld& world, const ViewState& view, const FrameSpans& fra
     ++stats.mip_counts[mip];
     SpanGradients g = face_gradients(world, face, view, mip);
     g.second_order = in.span_second_order;
+    if (lit_span &&
+        draw_single_pass_surface(world, sd.face, mip, tex, g, spans, n, in, lit_span, memory, stats, fb)) {
+      continue;  // RenderInputs::single_pass: no surface cache (single_pass.h)
+    }
     SurfaceHeader h;
     const uint8_t* surface = fetch_surface(world, sd.face, mip, in, memory, stats, &h);
     if (surface) {

@@ -1,10 +1,15 @@
 // platform/sdl2/main.cpp: `starbow_sdl`, the engine in a resizable SDL2 window.
 //
 //   keys: W/S forward/back, A/D strafe, space/C up/down, shift faster, Esc quits;
-//   mouse looks around (relative mouse mode). The window's drawable size is the
-//   render size (clamped to 320x200..1920x1080); the 8-bit frame is expanded through
-//   the palette into a streaming ARGB texture and scaled once at present (by an
-//   integer factor when the window holds one, else to fit, keeping the aspect).
+//   mouse looks around (relative mouse mode).
+//   -scale K (1..8, default 1): the window opens at K x the render size (-res, default
+//   640x480), and the render size follows the window's drawable size / K (clamped to
+//   320x200..1920x1080). Each frame the 8-bit picture is expanded through the palette AND
+//   scaled by K in one pass on the CPU (asm/ expand_palette, the tuned variant: each pixel
+//   becomes a K x K square) into a streaming ARGB texture of K x the render size, which is
+//   copied 1:1, centred. Only when the window cannot hold that (it is smaller than K x the
+//   minimum render size) does SDL shrink it to fit, keeping the aspect.
+//   (There is no console-variable system yet: the scale is a command-line choice.)
 //   -frames N quits after N frames (tests); + commands work as in `starbow`, and
 //   console lines typed into the terminal run as they arrive.
 //
@@ -18,6 +23,7 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "asm/kernels.h"
 #include "engine/host/cmdline.h"
 #include "engine/host/host.h"
 #include "platform/common/platform.h"
@@ -46,22 +52,26 @@ bool start_video(char* why, size_t why_size) {
   return true;
 }
 
+constexpr int kMaxScale = 8;
+
 struct Presenter {
   SDL_Window* window = nullptr;
   SDL_Renderer* renderer = nullptr;
   SDL_Texture* texture = nullptr;
   int tex_w = 0, tex_h = 0;
+  int scale = 1;  // -scale: each frame pixel becomes a scale x scale square on the CPU
   uint32_t argb[256] = {};
   const uint8_t* palette_seen = nullptr;
 
   bool present(const HostFrame& f) {
     if (!f.pixels || f.width <= 0 || f.height <= 0) return true;
-    if (!texture || tex_w != f.width || tex_h != f.height) {
+    const int k = scale, w = f.width * k, h = f.height * k;
+    if (!texture || tex_w != w || tex_h != h) {
       if (texture) SDL_DestroyTexture(texture);
-      texture = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ARGB8888, SDL_TEXTUREACCESS_STREAMING, f.width, f.height);
+      texture = SDL_CreateTexture(renderer, SDL_PIXELFORMAT_ARGB8888, SDL_TEXTUREACCESS_STREAMING, w, h);
       if (!texture) return false;
-      tex_w = f.width;
-      tex_h = f.height;
+      tex_w = w;
+      tex_h = h;
     }
     for (int i = 0; i < 256; ++i) {  // cheap enough per frame; palettes may change later (flashes)
       const uint8_t* c = f.palette + i * 3;
@@ -70,23 +80,18 @@ struct Presenter {
     void* dst = nullptr;
     int pitch = 0;
     if (SDL_LockTexture(texture, nullptr, &dst, &pitch) != 0) return false;
-    for (int y = 0; y < f.height; ++y) {
-      const uint8_t* src = f.pixels + size_t(y) * size_t(f.stride);
-      auto* out = reinterpret_cast<uint32_t*>(static_cast<uint8_t*>(dst) + size_t(y) * size_t(pitch));
-      for (int x = 0; x < f.width; ++x) out[x] = argb[src[x]];
-    }
+    // Palette and integer scale in one pass (asm/palette_expand.h); SDL's pitch is in bytes
+    // and a multiple of 4 for a 32-bit format.
+    simd::active().expand_palette(f.pixels, f.stride, f.width, f.height, argb, static_cast<uint32_t*>(dst),
+                                  pitch / 4, k);
     SDL_UnlockTexture(texture);
     int ow = 0, oh = 0;
     SDL_GetRendererOutputSize(renderer, &ow, &oh);
-    SDL_Rect dst_rect{0, 0, ow, oh};
-    int scale = ow / f.width < oh / f.height ? ow / f.width : oh / f.height;
-    if (scale >= 1) {  // integer scale, centred
-      dst_rect.w = f.width * scale;
-      dst_rect.h = f.height * scale;
-    } else {  // smaller than the frame (cannot happen above the minimum size): fit, keep aspect
-      double s = double(ow) / f.width < double(oh) / f.height ? double(ow) / f.width : double(oh) / f.height;
-      dst_rect.w = int(f.width * s);
-      dst_rect.h = int(f.height * s);
+    SDL_Rect dst_rect{0, 0, w, h};
+    if (w > ow || h > oh) {  // the window is smaller than the scaled frame: fit, keep aspect
+      double s = double(ow) / w < double(oh) / h ? double(ow) / w : double(oh) / h;
+      dst_rect.w = int(w * s);
+      dst_rect.h = int(h * s);
     }
     dst_rect.x = (ow - dst_rect.w) / 2;
     dst_rect.y = (oh - dst_rect.h) / 2;
@@ -109,6 +114,14 @@ struct Presenter {
 
 int clamp_int(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
+// -scale K from the command line (a platform option: host::parse_command_line ignores it).
+// 1 when absent; clamped to 1..kMaxScale.
+int requested_scale(int argc, char** argv) {
+  for (int i = 1; i + 1 < argc; ++i)
+    if (std::strcmp(argv[i], "-scale") == 0) return clamp_int(std::atoi(argv[i + 1]), 1, kMaxScale);
+  return 1;
+}
+
 int run_window(int argc, char** argv, const host::CommandLine& cl) {
   platform::PlatformBlock block;
   char error[256];
@@ -119,10 +132,11 @@ int run_window(int argc, char** argv, const host::CommandLine& cl) {
   int w = clamp_int(cl.width ? cl.width : host::kDefaultWidth, host::kMinWidth, host::kMaxWidth);
   int h = clamp_int(cl.height ? cl.height : host::kDefaultHeight, host::kMinHeight, host::kMaxHeight);
   Presenter p;
-  p.window = SDL_CreateWindow("Starbow", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h,
+  p.scale = requested_scale(argc, argv);
+  p.window = SDL_CreateWindow("Starbow", SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w * p.scale, h * p.scale,
                               SDL_WINDOW_RESIZABLE | SDL_WINDOW_ALLOW_HIGHDPI);
   if (p.window) {
-    SDL_SetWindowMinimumSize(p.window, host::kMinWidth, host::kMinHeight);
+    SDL_SetWindowMinimumSize(p.window, host::kMinWidth * p.scale, host::kMinHeight * p.scale);
     p.renderer = SDL_CreateRenderer(p.window, -1, SDL_RENDERER_PRESENTVSYNC);
     if (!p.renderer) p.renderer = SDL_CreateRenderer(p.window, -1, SDL_RENDERER_SOFTWARE);
   }
@@ -175,9 +189,9 @@ int run_window(int argc, char** argv, const host::CommandLine& cl) {
     in.up = float(keys[SDL_SCANCODE_SPACE]) - float(keys[SDL_SCANCODE_C]);
     in.fast = keys[SDL_SCANCODE_LSHIFT] || keys[SDL_SCANCODE_RSHIFT];
     int dw = 0, dh = 0;
-    SDL_GetRendererOutputSize(p.renderer, &dw, &dh);  // resize: render at the drawable size
-    in.width = clamp_int(dw, host::kMinWidth, host::kMaxWidth);
-    in.height = clamp_int(dh, host::kMinHeight, host::kMaxHeight);
+    SDL_GetRendererOutputSize(p.renderer, &dw, &dh);  // resize: render at the drawable size / scale
+    in.width = clamp_int(dw / p.scale, host::kMinWidth, host::kMaxWidth);
+    in.height = clamp_int(dh / p.scale, host::kMinHeight, host::kMaxHeight);
     in.commands = typed.next();
 
     double now = platform::now_seconds();
@@ -194,7 +208,7 @@ int run_window(int argc, char** argv, const host::CommandLine& cl) {
     ++title_frames;
     if (now - title_at >= 1.0) {
       char title[128];
-      std::snprintf(title, sizeof title, "Starbow  %dx%d  %.2f ms/frame  %.0f fps", f.width, f.height,
+      std::snprintf(title, sizeof title, "Starbow  %dx%d x%d  %.2f ms/frame  %.0f fps", f.width, f.height, p.scale,
                     render_ms_sum / title_frames, title_frames / (now - title_at));
       SDL_SetWindowTitle(p.window, title);
       title_at = now;

@@ -7,7 +7,8 @@
 //  - AddressSanitizer builds (ASan owns malloc): the sanitizer's malloc hook counts
 //    every allocation, operator new included.
 // The engine runs hundreds of frames of a real map with a moving camera, animated
-// light styles, a resize and a flythrough; the count must stay 0.
+// light styles, a resize and a flythrough, with the world drawn through the surface cache and
+// single pass (r_singlepass); the count must stay 0.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -138,7 +139,10 @@ TEST(ZeroHeap, HundredsOfFramesOfARealMapAllocateNothing) {
       in.pitch_delta = (i % 40) < 20 ? 0.5f : -0.5f;
       in.fast = i % 7 == 0;
       if (i == 150) in.width = 1280, in.height = 720;  // a resize inside the reserved size
-      if (i == 200) in.commands = "flythrough 60";       // the timed path (buffer text, sort)
+      if (i == 100) in.commands = "r_singlepass 1";      // single pass: light grids in the frame arena
+      if (i == 130) in.commands = "r_singlepass 0";      // back to the surface cache
+      if (i == 200) in.commands = "r_singlepass 1; flythrough 60";  // the timed path, single pass
+      if (i == 270) in.commands = "r_singlepass 0";
       HostFrame f = engine.frame(in, 1.0 / 30.0);         // 10 s of light-style animation
       if (f.quit) break;
     }

@@ -1,0 +1,60 @@
+// asm/span_persp.h: the whole-span lit-surface drawer with the perspective divide inside:
+// one call per span (x0 .. x0 + n - 1 of a scanline) instead of one surface_span call per
+// 16-pixel run. Contract, the reference, and the tuned version. Variants: asm/kernels.h.
+//
+// It draws exactly the bytes engine/render/span_draw.cpp's run walker draws through
+// surface_span (tests/asm/span_persp_test.cpp compares them on real and random spans):
+//
+//   exact(px):  zi = zi0 + dzi * px;  zi = max(zi, 1e-9) (NaN -> 1e-9);  z = 1 / zi
+//               u = fix((uz0 + duz * px) * z, umax),  v = fix((vz0 + dvz * px) * z, vmax)
+//               fix(q, m) = 0 when !(q * 65536 > 0), m when q * 65536 > m, else
+//               int32(q * 65536) (truncation)
+//   runs:       16 pixels each, the last one n % 16 (or 16); the exact samples are taken
+//               at each run's first pixel and at the next run's first pixel (16 on), or for
+//               the last run at its own last pixel; px = px0 + pixel offset.
+//   steps:      linear: d = (b - a) / steps (64-bit, truncated toward zero), dd = 0; with
+//               second_order, the parabola of span_draw.cpp's run_steps (curve = dzi / 2 *
+//               (z_a + z_b)), accepted only when it stays monotone between a and b.
+//   pixels:     dest[k] = texels[(v_k >> 16) * width + (u_k >> 16)] within each run,
+//               u_{k+1} = u_k + du_k, du_{k+1} = du_k + ddu (asm/surface_span.h).
+// Every double operation is the engine's, in the engine's order, so the results are the
+// same bits; the next run's divide is issued before the current run is drawn, so its
+// latency hides behind the integer loop.
+//
+// Contract: n >= 0 (any length); 1 <= width, height <= 32767; texels: width * height bytes;
+// umax = (width << 16) - 1 and vmax = (height << 16) - 1 or smaller, >= 0 (then every
+// u, v lies inside the surface: no read outside texels); dest: n bytes, no alignment;
+// gradients any finite values (infinities and NaN are clamped like the engine clamps them).
+#pragma once
+#include <cstdint>
+
+namespace sb::simd {
+
+// One span's perspective gradients along its scanline, in the engine's units
+// (engine/render/span_draw.h): 1/z, u/z and v/z as affine functions of the pixel-centre
+// screen x: value(px) = value0 + step * px. u, v in texels (16.16 after the divide).
+struct PerspSpan {
+  double zi0, dzi;
+  double uz0, duz;
+  double vz0, dvz;
+  double px0;            // the first pixel's centre: x0 + 0.5
+  int32_t umax, vmax;    // the clamps, 16.16
+  bool second_order;     // false: linear steps between the exact samples (Quake's way)
+};
+
+using SurfaceSpanPerspFn = void (*)(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
+                                    const PerspSpan& span);
+
+// Reference (asm/span_persp.cpp): the engine's run walker, calling surface_span_scalar per
+// run, its run steps dividing by the run's step count like the engine does.
+void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
+                               const PerspSpan& span);
+
+// Tuned, portable C++ (asm/span_persp.cpp): full runs divide by the constant 16 (shifts,
+// not 64-bit divides: on armhf those are library calls), the texel loop is inlined (u and v
+// in one 64-bit register, two pixels per step, software-pipelined for in-order cores), the
+// next run's reciprocal is started before the loop and finished after it; no call per run.
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
+                             const PerspSpan& span);
+
+}  // namespace sb::simd
