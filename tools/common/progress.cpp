@@ -70,7 +70,7 @@ void Progress::report(int64_t done, bool final) {
       std::fprintf(stderr, "%s: 100%% (%lld/%lld) %.2f s\n", stage_, static_cast<long long>(done),
                    static_cast<long long>(total_), secs);
     } else {
-      std::fprintf(stderr, "%s: %d%% (%lld/%lld)\n", stage_, static_cast<int>(frac * 100.0),
+      std::fprintf(stderr, "%s: %d%% (%lld/%lld)\n", stage_, static_cast<int>(frac * 100.0 + 0.5),
                    static_cast<long long>(done), static_cast<long long>(total_));
     }
     return;
