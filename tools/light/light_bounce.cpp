@@ -12,6 +12,9 @@ namespace sb::tools {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
+// Reflectivity of a face when the texture colours are ignored ("_bouncecolorscale" 0): a mid
+// grey (127 / 255), so one bounce returns about half the light a surface receives.
+constexpr float kBounceGrey = 127.0f / 255.0f;
 constexpr float kInsideTolerance = 2;  // units a hit may lie outside its face's polygon
 
 // Mean colour (0..1) of a texture's mip 0, or grey 0.5 without pixels or palette.
@@ -117,8 +120,8 @@ bool prepare_bounce(LightScene* sc, const std::vector<uint8_t>& palette, float c
   const BspWorld& w = *sc->world;
   std::vector<glm::vec3> colours(w.num_textures);
   for (uint32_t t = 0; t < w.num_textures; ++t) {
-    glm::vec3 c = colorscale > 0 ? texture_colour(w, t, palette) : glm::vec3(1);
-    colours[t] = glm::vec3(1.0f - colorscale) + c * colorscale;
+    glm::vec3 c = colorscale > 0 ? texture_colour(w, t, palette) : glm::vec3(kBounceGrey);
+    colours[t] = glm::vec3(kBounceGrey * (1.0f - colorscale)) + c * colorscale;
   }
   std::vector<uint8_t> sub(w.num_faces, 0);
   for (uint32_t m = 1; m < w.num_models; ++m)

@@ -5,7 +5,8 @@
 // style 0 only unless bouncestyled) times its reflectivity; in pass k > 1, the light it
 // gathered in pass k - 1 times its reflectivity. Reflectivity, as the Quake light tools
 // document "_bouncecolorscale" c (0 = ignore the map's textures, the default; 1 = multiply
-// the bounced light by the texture colour): (1 - c) * white + c * texture colour, where the
+// the bounced light by the texture colour): (1 - c) * grey + c * texture colour (grey: 127/255
+// per channel, so a face returns about half of what it receives), where the
 // texture colour is the mean of its mip 0 through the palette (0..1 per channel); without
 // a palette, for a missing or placeholder texture: grey 0.5.
 //

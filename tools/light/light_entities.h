@@ -36,7 +36,8 @@
 //   bounce (radiosity; see light_bounce.h), worldspawn: "_bounce" n bounces (0 off, 1 on,
 //     larger values more bounces, at most 8), "_bouncescale" (default 1), "_bouncecolorscale"
 //     0..1 weight of the texture colour in what faces reflect (default 0: textures ignored,
-//     faces reflect as white), "_bouncestyled" 1: styled lights bounce too (default 0);
+//     faces reflect as mid grey 127/255; 1: they reflect their texture's mean colour),
+//     "_bouncestyled" 1: styled lights bounce too (default 0);
 //     light entities: "_bouncescale" (default 1, 0: this light does not bounce).
 //   dirt (ambient occlusion; see light_dirt.h), worldspawn: "_dirt" 1 on for every light
 //     (default -1 off), "_dirtdepth" (128), "_dirtscale" (1), "_dirtgain" (1, exponent),
