@@ -18,7 +18,8 @@ def load(p):
         if lof<0: res.append(None); continue
         ns=sum(1 for s in st if s!=255)
         n=(nxt[lof]-lof)//max(ns,1)
-        b=L[lof:lof+n]
+        k=st.index(0) if 0 in st else 0  # the style-0 block (not always first in other compilers' output)
+        b=L[lof+k*n:lof+(k+1)*n]
         res.append((sum(b)/max(len(b),1),len(b),st,ti))
     # texinfo -> miptex name
     to,tl=lumps[6]; mo,ml=lumps[2]
@@ -36,7 +37,7 @@ for i,(x,y) in enumerate(zip(a,b)):
     if x is None or y is None: continue
     sa+=x[0]*x[1]; sb+=y[0]*y[1]; n+=x[1]
     rows.append((y[0]-x[0],i,x[0],y[0],x[1],ta[x[3]],x[2]))
-print('weighted style0 mean ericw',sb/n,'ours',sa/n)
+print('weighted style-0 mean ericw',sb/n,'ours',sa/n)
 rows.sort()
 for r in rows[:15]: print('%.1f face %d ours %.1f ericw %.1f n %d %s %s'%r)
 from collections import defaultdict

@@ -35,9 +35,14 @@ std::map<std::string, Sums> per_texture(const BspWorld& w, const BspWorld& other
     const Face& face = w.faces[f];
     if (face.light_offset == kNoLightmap || other.faces[f].light_offset == kNoLightmap) continue;
     uint64_t n = uint64_t(face.extents[0] / 16 + 1) * uint64_t(face.extents[1] / 16 + 1);
-    if (uint64_t(face.light_offset) + n > w.lightdata_size) continue;
+    // The style-0 block: ericw-tools does not always put style 0 first.
+    uint64_t block = 0;
+    while (block < kMaxLightStyles && face.styles[block] != 0) ++block;
+    if (block == kMaxLightStyles) continue;
+    uint64_t first = uint64_t(face.light_offset) + block * n;
+    if (first + n > w.lightdata_size) continue;
     double s = 0;
-    for (uint64_t k = 0; k < n; ++k) s += w.lightdata[face.light_offset + k];
+    for (uint64_t k = 0; k < n; ++k) s += w.lightdata[first + k];
     const std::string name = w.textures[w.texinfo[face.texinfo].texture].name;
     out[name].sum += s, out[name].n += n;
     out["*all*"].sum += s, out["*all*"].n += n;
