@@ -43,7 +43,6 @@ float outside_distance(const HitFace& f, const glm::vec3& p, float limit) {
 }
 
 constexpr float kMinNewStyle = 2.0f;  // output units (see bounce_commit)
-constexpr float kMaxEmit = 510.0f;  // light units: what a saturated sample (byte 255) shows
 
 // Whether face f may be the one hit at q (on the plane of node n): on that plane, facing the
 // ray, q inside its bounds widened by `margin`.
@@ -224,7 +223,9 @@ void bounce_gather(const LightScene& sc, uint32_t fi, const std::vector<FaceWork
             dst.push_back({e.style, std::vector<float>(size * 3, 0.0f)});
             sum.push_back(glm::vec3(0));
           }
-          sum[slot] += glm::min(read_grid(w, uint32_t(hf), src.gw, src.gh, e.rgb, h.point), glm::vec3(kMaxEmit));
+          // Not clamped to what a byte can show: a surface lit far beyond 255 (next to a bright
+          // pool of surface lights) sends all of that light on, as the reference lighter does.
+          sum[slot] += read_grid(w, uint32_t(hf), src.gw, src.gh, e.rgb, h.point);
         }
       }
     const float k = counted ? scale / float(counted) : 0.0f;
