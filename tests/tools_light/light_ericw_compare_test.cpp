@@ -16,6 +16,7 @@
 #include "tests/support/quake_data.h"
 #include "tests/tools_light/light_test_util.h"
 #include "tools/light/light.h"
+#include "tools/light/light_entities.h"
 
 namespace sb::tools {
 namespace {
@@ -89,6 +90,23 @@ TEST(LightEricwCompare, LqE0m1PerTextureMeansAgree) {
     std::printf("lq_e0m1 %-14s sblight %6.1f  ericw-tools %6.1f  (%llu samples)\n", c.texture, ours_mean, ref_mean,
                 static_cast<unsigned long long>(b[c.texture].n));
     EXPECT_NEAR(ours_mean, ref_mean, c.tolerance * ref_mean) << c.texture;
+  }
+}
+
+// "_sunlight_mangle" is the documented name of the sun direction ("_sun_mangle" an alias);
+// lq_e0m3 uses it. Unread, the sun fell straight down and lit every wall at grazing angle.
+TEST(LightEricwCompare, SunlightMangleAndSunMangleBothSetTheSunDirection) {
+  for (const char* key : {"_sunlight_mangle", "_sun_mangle"}) {
+    std::string ents = std::string("{\n\"classname\" \"worldspawn\"\n\"_sunlight\" \"300\"\n\"") + key +
+                       "\" \"165 -70 0\"\n\"_sunlight_color2\" \"255 0 0\"\n\"_sunlight2\" \"50\"\n}\n";
+    LightSettings set;
+    ASSERT_TRUE(parse_light_entities("t.bsp", ents, 4, &set, nullptr).is_ok());
+    ASSERT_EQ(set.suns.size(), 5u) << key;
+    glm::vec3 want = direction_from_yaw_pitch(165, -70);
+    EXPECT_NEAR(set.suns[0].dir.x, want.x, 1e-5f) << key;
+    EXPECT_NEAR(set.suns[0].dir.y, want.y, 1e-5f) << key;
+    EXPECT_NEAR(set.suns[0].dir.z, want.z, 1e-5f) << key;
+    EXPECT_NEAR(set.suns[1].color.g, 0.0f, 1e-6f) << key;  // the dome's colour, by its alias
   }
 }
 

@@ -105,12 +105,14 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
     if (find_float(w, "_dist", &f) && f > 0) out->dist_scale = f;
     if (find_float(w, "_sunlight", &f)) sunlight = f;
     if (find_float(w, "_sunlight2", &f)) sunlight2 = f;
-    if (w.find("_sun_mangle", &v) && !parse_mangle(v, &sun_dir))
-      log_warning("%s: %s: bad \"_sun_mangle\" '%.*s' (using straight down)", name, describe(int(i), all[i]).c_str(),
+    // "_sunlight_mangle" and "_sun_mangle" are the same key (both documented);
+    // "_sunlight2_color" and "_sunlight_color2" likewise.
+    if ((w.find("_sunlight_mangle", &v) || w.find("_sun_mangle", &v)) && !parse_mangle(v, &sun_dir))
+      log_warning("%s: %s: bad sun mangle '%.*s' (using straight down)", name, describe(int(i), all[i]).c_str(),
                   int(v.size()), v.data());
     if (w.find("_sunlight_color", &v) && !parse_color(v, &sun_color))
       log_warning("%s: %s: bad \"_sunlight_color\"", name, describe(int(i), all[i]).c_str());
-    if (w.find("_sunlight2_color", &v) && !parse_color(v, &sun2_color))
+    if ((w.find("_sunlight2_color", &v) || w.find("_sunlight_color2", &v)) && !parse_color(v, &sun2_color))
       log_warning("%s: %s: bad \"_sunlight2_color\"", name, describe(int(i), all[i]).c_str());
     // Bounce and dirt (out-of-range values are clamped; see light_entities.h).
     if (find_float(w, "_bounce", &f)) out->bounce = std::clamp(int(f), 0, 8);
