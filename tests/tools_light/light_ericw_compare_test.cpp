@@ -101,7 +101,7 @@ TEST(LightEricwCompare, SunlightMangleAndSunMangleBothSetTheSunDirection) {
                        "\" \"165 -70 0\"\n\"_sunlight_color2\" \"255 0 0\"\n\"_sunlight2\" \"50\"\n}\n";
     LightSettings set;
     ASSERT_TRUE(parse_light_entities("t.bsp", ents, 4, &set, nullptr).is_ok());
-    ASSERT_EQ(set.suns.size(), 5u) << key;
+    ASSERT_EQ(set.suns.size(), 6u) << key;  // the sun and a dome of 4 + 1 directions
     glm::vec3 want = direction_from_yaw_pitch(165, -70);
     EXPECT_NEAR(set.suns[0].dir.x, want.x, 1e-5f) << key;
     EXPECT_NEAR(set.suns[0].dir.y, want.y, 1e-5f) << key;

@@ -48,7 +48,7 @@ struct LightOptions {
   bool want_rgb = false;    // also produce RGB samples (for a .lit file)
   float gate = 1.0f;        // -gate: a light whose value (before rangescale) stays below
                             // this over the face is skipped (inverse falloffs)
-  int dome_samples = 32;    // directions of the "_sunlight2" sky dome
+  int dome_samples = 32;    // about this many directions of the "_sunlight2" sky dome (4k^2 + 1: 37)
 
   // Bounce and dirt. Values below 0 mean "not given": the worldspawn key (or its default)
   // applies; given values override worldspawn (as the Quake light tools' options do).
