@@ -4,7 +4,8 @@
 // samples must agree within a tolerance. The map is lit mostly by "_sunlight" 300 straight
 // down (blue-white) and "_sunlight2" 50, so this catches: walls the vertical sun grazes left
 // unlit (the rock walls fell to ~45 against ~110), the lump byte taken as the mean of the
-// channels instead of the brightest, and bounce reflecting white instead of grey.
+// channels instead of the brightest, bounce reflecting white instead of grey or clamped at
+// what a byte shows, and the sky dome's spread of directions.
 // Skips visibly when the Quake data folder is absent.
 #include <gtest/gtest.h>
 
@@ -75,15 +76,15 @@ TEST(LightEricwCompare, LqE0m1PerTextureMeansAgree) {
   std::map<std::string, Sums> a = per_texture(*our_view.world(), *ref_view.world()),
                               b = per_texture(*ref_view.world(), *our_view.world());
 
-  // Relative tolerance per texture: the overall mean, the large sunlit rock walls and dirt
-  // floors, and smaller sunlit walls (measured: 73.5 / 78.6 overall, rock 105.7 / 110.7,
-  // dirt 147.5 / 146.6, t_wall05 88.6 / 95.4, t_wall1ba 95.4 / 104.2; before the fixes the
-  // rock walls were at 45.8 and t_wall05 at 19.8).
+  // Relative tolerance: the overall mean, the large sunlit rock walls and dirt floors, and
+  // smaller sunlit walls (measured: overall 76.1 / 77.0, rock 106.3 / 110.7, dirt 148.1 /
+  // 146.6, med_bigdirt3 171.4 / 179.6, t_wall05 89.3 / 95.4, t_wall1ba 96.5 / 104.2; before
+  // the fixes: overall 67.0, rock 45.8, t_wall05 19.8, t_wall1ba 29.4).
   struct Check {
     const char* texture;
     double tolerance;
   };
-  for (const Check& c : {Check{"*all*", 0.12}, Check{"may_rck1_3", 0.12}, Check{"may_drt1_2", 0.12},
+  for (const Check& c : {Check{"*all*", 0.05}, Check{"may_rck1_3", 0.12}, Check{"may_drt1_2", 0.12},
                          Check{"med_bigdirt3", 0.15}, Check{"t_wall05", 0.2}, Check{"t_wall1ba", 0.2}}) {
     ASSERT_TRUE(a.count(c.texture) && b.count(c.texture)) << c.texture;
     double ours_mean = a[c.texture].mean(), ref_mean = b[c.texture].mean();
