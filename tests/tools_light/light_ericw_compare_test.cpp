@@ -9,6 +9,7 @@
 // Skips visibly when the Quake data folder is absent.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -65,9 +66,18 @@ TEST(LightEricwCompare, LqE0m1PerTextureMeansAgree) {
   opts.dirt = 1;
   opts.threads = 2;
   opts.quiet = true;
+  opts.want_rgb = true;
   LightStats stats;
-  s = light_bsp("lq_e0m1.bsp", &ours, opts, &stats, nullptr);
+  std::vector<uint8_t> rgb;
+  s = light_bsp("lq_e0m1.bsp", &ours, opts, &stats, &rgb);
   ASSERT_TRUE(s.is_ok()) << s.message();
+  // The lump byte is the brightest .lit channel (as in the reference's .lit), also where the
+  // light saturates (the .lit keeps the hue there rather than clamping each channel).
+  ASSERT_EQ(rgb.size(), ours.lighting.size() * 3);
+  size_t not_max = 0;
+  for (size_t i = 0; i < ours.lighting.size(); ++i)
+    not_max += ours.lighting[i] != std::max({rgb[i * 3], rgb[i * 3 + 1], rgb[i * 3 + 2]});
+  EXPECT_EQ(not_max, 0u);
 
   test::EngineView ref_view(ref), our_view(ours);
   ASSERT_TRUE(ref_view.world()) << ref_view.error();

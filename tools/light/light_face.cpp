@@ -500,6 +500,12 @@ void finish_face(const LightScene& sc, const FaceWork& work, FaceLightmap* out) 
       c.mono[k] = to_byte(m);
       c.sum += c.mono[k];
       if (sc.opts.want_rgb) {
+        // Too bright: scaled down whole so the brightest channel is 255, keeping the hue (a
+        // saturated green stays green, as in the reference .lit files, not white).
+        if (m > 255.0f) {
+          float f = 255.0f / m;
+          r *= f, gg *= f, bb *= f;
+        }
         c.rgb[k * 3] = to_byte(r);
         c.rgb[k * 3 + 1] = to_byte(gg);
         c.rgb[k * 3 + 2] = to_byte(bb);
