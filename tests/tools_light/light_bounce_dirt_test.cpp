@@ -164,11 +164,12 @@ TEST(LightBounce, ARedFloorTintsTheCeilingRed) {
       tb = sample_at(tinted, ceiling, down, 2);
   std::printf("[ light ] ceiling over a red floor: rgb %d %d %d (textures ignored: %d %d)\n", tr, tg, tb, wr, wg);
   EXPECT_GT(wr, 3);
-  EXPECT_NEAR(wr, wg, 1);  // bouncecolorscale 0: white reflection
+  EXPECT_NEAR(wr, wg, 1);  // bouncecolorscale 0: grey reflection
   EXPECT_GT(tr, 3);
   EXPECT_GT(tr, 3 * tg);   // the floor's red (220, 30, 30)
   EXPECT_NEAR(tg, tb, 1);
-  EXPECT_LT(tr, wr);       // the red texture reflects less than white
+  EXPECT_GT(tr, wr);       // textures ignored: grey 127/255; the red (220/255) reflects more
+  EXPECT_LT(tg, wg);       // and its green (30/255) less
   EXPECT_FALSE(tinted.stats.palette_missing);
   // Without a palette: grey reflectivity, reported.
   o.palette = std::vector<uint8_t>(10, 0);  // not a palette

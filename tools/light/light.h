@@ -18,8 +18,11 @@
 //   times the spot cone factor, if the shadow ray from the sample to the light is clear;
 //   summed per style, times rangescale (0.5), floored at the worldspawn minimum light
 //   (style 0 only), rounded and clamped to 0..255. Lights carry RGB ("_color"); the
-//   lighting lump holds the mean of the three channels, the .lit each channel.
-//   Suns: a sample is lit when the ray towards the sun reaches a sky leaf first.
+//   lighting lump holds the brightest of the three channels (what the Quake light tools
+//   write: a lump byte equals max(r, g, b) of the .lit), the .lit each channel.
+//   Suns: a sample is lit when the ray towards the sun reaches a sky leaf first; the angle
+//   factor applies with cos 0 for faces the sun grazes (walls under a vertical sun get
+//   1 - anglescale of it); suns are scaled by rangescale like every other light.
 // Determinism: every face is computed on its own from read-only data and written by index:
 // the output is byte-identical for any thread count.
 // Phases, each on worker threads and each timed: dirt (ambient occlusion per grid point,
@@ -45,7 +48,7 @@ struct LightOptions {
   bool want_rgb = false;    // also produce RGB samples (for a .lit file)
   float gate = 1.0f;        // -gate: a light whose value (before rangescale) stays below
                             // this over the face is skipped (inverse falloffs)
-  int dome_samples = 32;    // directions of the "_sunlight2" sky dome
+  int dome_samples = 32;    // about this many directions of the "_sunlight2" sky dome (4k^2 + 1: 37)
 
   // Bounce and dirt. Values below 0 mean "not given": the worldspawn key (or its default)
   // applies; given values override worldspawn (as the Quake light tools' options do).

@@ -12,6 +12,9 @@ namespace sb::tools {
 namespace {
 
 constexpr float kPi = 3.14159265358979323846f;
+// Reflectivity of a face when the texture colours are ignored ("_bouncecolorscale" 0): a mid
+// grey (127 / 255), so one bounce returns about half the light a surface receives.
+constexpr float kBounceGrey = 127.0f / 255.0f;
 constexpr float kInsideTolerance = 2;  // units a hit may lie outside its face's polygon
 
 // Mean colour (0..1) of a texture's mip 0, or grey 0.5 without pixels or palette.
@@ -40,7 +43,6 @@ float outside_distance(const HitFace& f, const glm::vec3& p, float limit) {
 }
 
 constexpr float kMinNewStyle = 2.0f;  // output units (see bounce_commit)
-constexpr float kMaxEmit = 510.0f;  // light units: what a saturated sample (byte 255) shows
 
 // Whether face f may be the one hit at q (on the plane of node n): on that plane, facing the
 // ray, q inside its bounds widened by `margin`.
@@ -117,8 +119,8 @@ bool prepare_bounce(LightScene* sc, const std::vector<uint8_t>& palette, float c
   const BspWorld& w = *sc->world;
   std::vector<glm::vec3> colours(w.num_textures);
   for (uint32_t t = 0; t < w.num_textures; ++t) {
-    glm::vec3 c = colorscale > 0 ? texture_colour(w, t, palette) : glm::vec3(1);
-    colours[t] = glm::vec3(1.0f - colorscale) + c * colorscale;
+    glm::vec3 c = colorscale > 0 ? texture_colour(w, t, palette) : glm::vec3(kBounceGrey);
+    colours[t] = glm::vec3(kBounceGrey * (1.0f - colorscale)) + c * colorscale;
   }
   std::vector<uint8_t> sub(w.num_faces, 0);
   for (uint32_t m = 1; m < w.num_models; ++m)
@@ -221,7 +223,9 @@ void bounce_gather(const LightScene& sc, uint32_t fi, const std::vector<FaceWork
             dst.push_back({e.style, std::vector<float>(size * 3, 0.0f)});
             sum.push_back(glm::vec3(0));
           }
-          sum[slot] += glm::min(read_grid(w, uint32_t(hf), src.gw, src.gh, e.rgb, h.point), glm::vec3(kMaxEmit));
+          // Not clamped to what a byte can show: a surface lit far beyond 255 (next to a bright
+          // pool of surface lights) sends all of that light on, as the reference lighter does.
+          sum[slot] += read_grid(w, uint32_t(hf), src.gw, src.gh, e.rgb, h.point);
         }
       }
     const float k = counted ? scale / float(counted) : 0.0f;

@@ -5,7 +5,8 @@
 // style 0 only unless bouncestyled) times its reflectivity; in pass k > 1, the light it
 // gathered in pass k - 1 times its reflectivity. Reflectivity, as the Quake light tools
 // document "_bouncecolorscale" c (0 = ignore the map's textures, the default; 1 = multiply
-// the bounced light by the texture colour): (1 - c) * white + c * texture colour, where the
+// the bounced light by the texture colour): (1 - c) * grey + c * texture colour (grey: 127/255
+// per channel, so a face returns about half of what it receives), where the
 // texture colour is the mean of its mip 0 through the palette (0..1 per channel); without
 // a palette, for a missing or placeholder texture: grey 0.5.
 //
@@ -13,9 +14,9 @@
 // LightOptions::bounce_step-th lightmap grid point each way (default 2; plus the last row /
 // column) and interpolated bilinearly to the others, except where the receivers around a
 // grid point disagree strongly or gathered nothing: there the point gathers itself. Light
-// read from a hit face is clamped to 510 light units per channel (what a saturated byte
-// shows), which keeps single rays that hit the glare next to a lamp from speckling the
-// result. At a receiver, R rays (LightOptions::bounce_rays, default 64; stratified over
+// read from a hit face is not clamped to what a byte can show (a surface lit far beyond 255,
+// e.g. beside a pool of surface lights, sends all of it on: ericw-tools' output shows the
+// room over such a pool lit that brightly). At a receiver, R rays (LightOptions::bounce_rays, default 64; stratified over
 // the cosine-weighted hemisphere around the face normal, jittered by a hash of face, grid
 // point and ray, so deterministic) are traced to the first solid surface. The face hit is
 // found among the faces on the BSP node whose plane the ray entered solid on (facing the

@@ -105,12 +105,14 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
     if (find_float(w, "_dist", &f) && f > 0) out->dist_scale = f;
     if (find_float(w, "_sunlight", &f)) sunlight = f;
     if (find_float(w, "_sunlight2", &f)) sunlight2 = f;
-    if (w.find("_sun_mangle", &v) && !parse_mangle(v, &sun_dir))
-      log_warning("%s: %s: bad \"_sun_mangle\" '%.*s' (using straight down)", name, describe(int(i), all[i]).c_str(),
+    // "_sunlight_mangle" and "_sun_mangle" are the same key (both documented);
+    // "_sunlight2_color" and "_sunlight_color2" likewise.
+    if ((w.find("_sunlight_mangle", &v) || w.find("_sun_mangle", &v)) && !parse_mangle(v, &sun_dir))
+      log_warning("%s: %s: bad sun mangle '%.*s' (using straight down)", name, describe(int(i), all[i]).c_str(),
                   int(v.size()), v.data());
     if (w.find("_sunlight_color", &v) && !parse_color(v, &sun_color))
       log_warning("%s: %s: bad \"_sunlight_color\"", name, describe(int(i), all[i]).c_str());
-    if (w.find("_sunlight2_color", &v) && !parse_color(v, &sun2_color))
+    if ((w.find("_sunlight2_color", &v) || w.find("_sunlight_color2", &v)) && !parse_color(v, &sun2_color))
       log_warning("%s: %s: bad \"_sunlight2_color\"", name, describe(int(i), all[i]).c_str());
     // Bounce and dirt (out-of-range values are clamped; see light_entities.h).
     if (find_float(w, "_bounce", &f)) out->bounce = std::clamp(int(f), 0, 8);
@@ -138,15 +140,24 @@ Status parse_light_entities(const char* name, const std::string& entities, int d
     out->suns.push_back(s);
   }
   if (sunlight2 != 0 && dome_samples > 0) {
-    // Upper hemisphere, evenly spread (golden-angle spiral over equal-area bands),
-    // each direction carrying an equal share of the intensity.
-    for (int k = 0; k < dome_samples; ++k) {
-      float z = 1.0f - (k + 0.5f) / float(dome_samples);  // up component of the sky direction
-      float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
-      float phi = float(k) * 2.39996323f;
+    // Rings of equal elevation step (k rings from the horizon up, ring r at elevation
+    // (r + 0.5) * 90 / (k + 1) degrees, 4k directions each) and one sun at the zenith, each
+    // direction an equal share of the intensity: denser towards the zenith than an
+    // equal-area spread, so an open floor gets more of the dome than a wall. k is chosen so
+    // that 4k^2 + 1 is about `dome_samples`.
+    int k = std::max(1, int(std::lround(std::sqrt(double(std::max(dome_samples - 1, 1)) / 4.0))));
+    int count = 4 * k * k + 1;
+    float step = 0.5f * kPi / float(k + 1);
+    for (int d = 0; d < count; ++d) {
+      glm::vec3 up(0, 0, 1);  // the zenith sun (last)
+      if (d < count - 1) {
+        int ring = d / (4 * k), j = d % (4 * k);
+        float elev = (float(ring) + 0.5f) * step, az = float(j) * 2.0f * kPi / float(4 * k);
+        up = glm::vec3(std::cos(az) * std::cos(elev), std::sin(az) * std::cos(elev), std::sin(elev));
+      }
       Sun s;
-      s.dir = -glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
-      s.intensity = sunlight2 / float(dome_samples);
+      s.dir = -up;
+      s.intensity = sunlight2 / float(count);
       s.color = sun2_color;
       s.anglescale = out->anglescale;
       s.dome = true;

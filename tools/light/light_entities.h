@@ -28,15 +28,18 @@
 //              are placed 2 units in front of every face whose texture is `name` (any case),
 //              about 128 units apart over the face (expand_surface_lights)
 //   worldspawn: "light" / "_minlight" minimum light (output units 0..255, style 0);
-//     "_sunlight" sun intensity (default 0), "_sun_mangle" yaw pitch roll of the direction
-//     the sunlight travels (default 0 -90 0: straight down), "_sunlight_color";
-//     "_sunlight2" intensity of a dome of suns over the upper hemisphere, "_sunlight2_color";
+//     "_sunlight" sun intensity (default 0), "_sunlight_mangle" (alias "_sun_mangle") yaw
+//     pitch roll of the direction the sunlight travels (default 0 -90 0: straight down),
+//     "_sunlight_color" (default white); "_sunlight2" intensity of a dome of suns over the
+//     upper hemisphere (default 0), "_sunlight2_color" (alias "_sunlight_color2", default
+//     white). "_sunlight_penumbra" (soft sun edges) is not implemented: one sharp sun.
 //     "_anglescale"/"_anglesense" (default 0.5), "_dist" global distance scale (default 1),
 //     "_range" rangescale (default 0.5).
 //   bounce (radiosity; see light_bounce.h), worldspawn: "_bounce" n bounces (0 off, 1 on,
 //     larger values more bounces, at most 8), "_bouncescale" (default 1), "_bouncecolorscale"
 //     0..1 weight of the texture colour in what faces reflect (default 0: textures ignored,
-//     faces reflect as white), "_bouncestyled" 1: styled lights bounce too (default 0);
+//     faces reflect as mid grey 127/255; 1: they reflect their texture's mean colour),
+//     "_bouncestyled" 1: styled lights bounce too (default 0);
 //     light entities: "_bouncescale" (default 1, 0: this light does not bounce).
 //   dirt (ambient occlusion; see light_dirt.h), worldspawn: "_dirt" 1 on for every light
 //     (default -1 off), "_dirtdepth" (128), "_dirtscale" (1), "_dirtgain" (1, exponent),

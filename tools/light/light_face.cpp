@@ -20,6 +20,7 @@ namespace sb::tools {
 namespace {
 
 constexpr float kSurfaceOffset = 1.0f;  // samples sit this far off the face, along its normal
+constexpr float kGrazeEpsilon = 1e-3f;  // |cos| below this counts as grazing (cos 0), not behind
 
 // --- 1. scene tables -------------------------------------------------------------------------
 
@@ -420,8 +421,11 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
   if (!set.suns.empty() && sc.face_sees_sky[face_index]) {
     const float span = sc.tracer->world_span();
     for (const Sun& s : set.suns) {
+      // A face the sun grazes (cos 0, e.g. a wall under a sun straight down) still gets the
+      // angle factor's floor, 1 - anglescale: only faces turned away from the sun get none.
       float cos_n = -glm::dot(s.dir, g.normal);
-      if (cos_n <= 0) continue;
+      if (cos_n < -kGrazeEpsilon) continue;
+      cos_n = std::max(cos_n, 0.0f);
       float value = s.intensity * ((1.0f - s.anglescale) + s.anglescale * cos_n);
       const std::vector<glm::vec3>& P = s.dome ? centres : pts;
       size_t pp = s.dome ? 1 : per;
@@ -481,7 +485,9 @@ void finish_face(const LightScene& sc, const FaceWork& work, FaceLightmap* out) 
     if (sc.opts.want_rgb) c.rgb.resize(grid * 3);
     for (size_t k = 0; k < grid; ++k) {
       float r = b.rgb[k * 3] * range, gg = b.rgb[k * 3 + 1] * range, bb = b.rgb[k * 3 + 2] * range;
-      float m = (r + gg + bb) * (1.0f / 3.0f);
+      // The monochrome lightmap holds the brightest channel (as the Quake light tools write it, so
+      // that engines which normalise a .lit against the .bsp lightmap see equal intensity).
+      float m = std::max({r, gg, bb});
       if (b.style == 0) {
         float floor = set.minlight;
         if (dirty_min) floor *= dirt_factor(work.occlusion[k], set.dirtscale, set.dirtgain);
@@ -494,6 +500,12 @@ void finish_face(const LightScene& sc, const FaceWork& work, FaceLightmap* out) 
       c.mono[k] = to_byte(m);
       c.sum += c.mono[k];
       if (sc.opts.want_rgb) {
+        // Too bright: scaled down whole so the brightest channel is 255, keeping the hue (a
+        // saturated green stays green, as in the reference .lit files, not white).
+        if (m > 255.0f) {
+          float f = 255.0f / m;
+          r *= f, gg *= f, bb *= f;
+        }
         c.rgb[k * 3] = to_byte(r);
         c.rgb[k * 3 + 1] = to_byte(gg);
         c.rgb[k * 3 + 2] = to_byte(bb);

@@ -6,7 +6,7 @@
 //     -threads N    worker threads (default: hardware threads)
 //     -lit          also write file.lit (QLIT version 1, RGB per sample)
 //     -gate G       skip lights whose value stays below G over a face (default 1)
-//     -dome N       directions of the _sunlight2 sky dome (default 32)
+//     -dome N       about N directions of the _sunlight2 sky dome (default 32: 37 used)
 //     -q            quiet: warnings and the summary only
 //     -bounce [N]   N bounces of radiosity (default 1); -nobounce turns worldspawn "_bounce" off
 //     -bouncescale F, -bouncecolorscale F (0..1), -bouncestyled, -bouncerays N (default 64),
