@@ -9,6 +9,13 @@
 
 #include <type_traits>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__aarch64__)
+#include <arm_neon.h>
+#endif
+
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -116,6 +123,175 @@ inline void draw_run(uint8_t* __restrict dest, int n, const uint8_t* __restrict 
   if (k < n) dest[k] = texel(uv);
 }
 
+// ---------------------------------------------------------------- the pipelined loop
+//
+// A long span's full runs go through one straight-line block per run: the run's 16 pixels
+// fully unrolled, and beside them, with no branch, everything the NEXT run needs (its end
+// sample's to_fixed, its steps) plus the divide for the run after that. In-order cores
+// (Cortex-A53, A7, A9) then overlap the double-precision chains and the divide with the
+// texel loads instead of stalling on them run after run. The same operations as above, in
+// select form: the same bits.
+
+// max(x, lo) with NaN -> lo, and min(x, hi) for x not NaN, without branches.
+inline double max_or_lo(double x, double lo) {
+#if defined(__aarch64__)
+  return __builtin_fmax(x, lo);  // fmaxnm
+#elif defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(lo)));  // NaN -> the second operand
+#else
+  return x > lo ? x : lo;
+#endif
+}
+inline double min_hi(double x, double hi) {
+#if defined(__aarch64__)
+  return __builtin_fmin(x, hi);
+#elif defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(x), _mm_set_sd(hi)));
+#else
+  return x > hi ? hi : x;
+#endif
+}
+
+// to_fixed without branches: clamp in double, then convert (exact for 0 and max).
+inline int32_t to_fixed_sel(double v, double max) {
+  return int32_t(min_hi(max_or_lo(v * 65536.0, 0.0), max));
+}
+
+// double -> int32 by truncation, saturating, NaN -> 0 or INT32_MIN: the instruction's own
+// (defined) behaviour. Only in-range values are ever used (see steps16_sel).
+inline int32_t cvt_sat(double x) {
+#if defined(__GNUC__) && defined(__aarch64__)
+  int32_t r;
+  __asm__("fcvtzs %w0, %d1" : "=r"(r) : "w"(x));
+  return r;
+#elif defined(__SSE2__)
+  return _mm_cvttsd_si32(_mm_set_sd(x));
+#else
+  return x > -2147483648.0 && x < 2147483647.0 ? int32_t(x) : INT32_MIN;
+#endif
+}
+
+// run_steps(a, b, 16, curve) without branches. a, b lie in [0, 2^31 - 2^16) (the clamps),
+// so delta = b - a fits 32 bits. The walker's test, mirrored to delta >= 0 (the
+// arithmetic is odd-symmetric in delta and dd: truncating divisions): with
+// num = |delta| - 120 dd', d0' = num / 16, it accepts iff d0' >= 0, d0' + 15 dd' >= 0 and
+// 0 <= reach' = 16 d0' + 120 dd' = |delta| - (num & 15) <= |delta| (for num >= 0 the
+// division is a floor, so num = 16 d0' + (num & 15); for num < 0 the walker rejects too:
+// then 120 dd' > |delta| >= reach' fails or d0' < 0). Accepted steps have
+// |dd| <= |delta| / 120 < 2^25 and |d0| < 2^28, so the range checks on ddf (|ddf| < 1e9)
+// and d0 (int32) never decide anything that this test does not: a saturated or NaN
+// conversion of ddf is rejected here, or gives dd = 0, which yields the linear step too.
+inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
+  const int32_t delta = b - a;
+  const double c = double(delta) / 16 * curve;
+  const double ddf = -2.0 * c;
+  const int64_t dd = cvt_sat(ddf);
+  // Masks, not conditions: the compiler turns those into branches on the signs.
+  const int64_t s = int64_t(delta >> 31);  // -1 when delta < 0
+  const int64_t pd = (int64_t(delta) ^ s) - s, pdd = (dd ^ s) - s;
+  const int64_t num = pd - pdd * 120;
+  const int64_t q = num >> 4;
+  const int64_t last_step = q + pdd * 15;
+  const int64_t reach = pd - (num & 15);
+  const int64_t reject = (num | last_step | reach) >> 63;  // -1: linear
+  const int32_t linear = int32_t(((pd >> 4) ^ s) - s), d0 = int32_t((q ^ s) - s);
+  return {d0 ^ ((d0 ^ linear) & int32_t(reject)), int32_t(dd & ~reject)};
+}
+
+// One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
+// linear), even and odd pixels in two independent chains (u_{k+2} = u_k + e_k,
+// e_{k+2} = e_k + 4 dd with e_k = 2 du_k + dd: the recurrence two steps at a time, equal
+// modulo 2^32), so the adds do not form one 16-deep dependency chain. 64-bit targets: u, v
+// packed in one register (see draw_run); ARM: texels gathered into words (orr with a
+// shifted operand), one store per 8 (aarch64) or 4 (armhf).
+#if defined(__aarch64__) || defined(__x86_64__)
+#define SB_SPAN_PACKED 1
+#endif
+#if defined(__aarch64__) || defined(__arm__)
+#define SB_SPAN_WORDS 1
+#endif
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__ && defined(SB_SPAN_WORDS)
+#error "draw16 gathers texels little-endian"
+#endif
+inline void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, int32_t u0, int32_t v0,
+                   const RunSteps& su, const RunSteps& sv) {
+#if defined(SB_SPAN_PACKED)
+  using T = uint64_t;
+  auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
+  const T a0 = (uint64_t(uint32_t(v0)) << 32) + uint32_t(u0), d0 = pack(uint32_t(sv.d), uint32_t(su.d));
+  const T dd = pack(uint32_t(sv.dd), uint32_t(su.dd));
+  auto texel = [&](T x) { return texels[uint32_t(x >> 48) * w + (uint32_t(x) >> 16)]; };
+  T x[2] = {a0, a0 + d0}, e[2] = {2 * d0 + dd, 2 * d0 + 3 * dd};
+  const T dd4 = 4 * dd;
+#else
+  using T = uint32_t;
+  auto texel = [&](uint32_t uu, uint32_t vv) { return texels[(vv >> 16) * w + (uu >> 16)]; };
+  const T u = uint32_t(u0), du = uint32_t(su.d), ddu = uint32_t(su.dd);
+  const T v = uint32_t(v0), dv = uint32_t(sv.d), ddv = uint32_t(sv.dd);
+  T xu[2] = {u, u + du}, eu[2] = {2 * du + ddu, 2 * du + 3 * ddu};
+  T xv[2] = {v, v + dv}, ev[2] = {2 * dv + ddv, 2 * dv + 3 * ddv};
+  const T ddu4 = 4 * ddu, ddv4 = 4 * ddv;
+#endif
+#if defined(SB_SPAN_WORDS)
+  using Word = uintptr_t;
+  constexpr int kPer = int(sizeof(Word));
+  Word out0 = 0, out1 = 0, out2 = 0, out3 = 0;
+#endif
+#pragma GCC unroll 16
+  for (int k = 0; k < 16; ++k) {
+    const int c = k & 1;
+#if defined(SB_SPAN_PACKED)
+    const uint8_t t = texel(x[c]);
+    x[c] += e[c];
+    e[c] += dd4;
+#else
+    const uint8_t t = texel(xu[c], xv[c]);
+    xu[c] += eu[c];
+    xv[c] += ev[c];
+    eu[c] += ddu4;
+    ev[c] += ddv4;
+#endif
+#if defined(SB_SPAN_WORDS)
+    const Word b = Word(t) << (8 * (k % kPer));  // little-endian
+    switch (k / kPer) {
+      case 0: out0 |= b; break;
+      case 1: out1 |= b; break;
+      case 2: out2 |= b; break;
+      default: out3 |= b; break;
+    }
+#else
+    dest[k] = t;
+#endif
+  }
+#if defined(SB_SPAN_WORDS)
+  __builtin_memcpy(dest, &out0, sizeof(Word));
+  __builtin_memcpy(dest + kPer, &out1, sizeof(Word));
+  if constexpr (kPer == 4) {
+    __builtin_memcpy(dest + 8, &out2, sizeof(Word));
+    __builtin_memcpy(dest + 12, &out3, sizeof(Word));
+  }
+#endif
+}
+
+// 1 / max(zi, kMinZi) for two samples (NaN -> kMinZi). aarch64: one vector divide (on
+// Cortex-A53 it costs what one scalar divide costs); elsewhere two.
+inline void recip2(double zia, double zib, double* za, double* zb) {
+#if defined(__aarch64__)
+  const float64x2_t zi = vmaxnmq_f64(vcombine_f64(vdup_n_f64(zia), vdup_n_f64(zib)), vdupq_n_f64(kMinZi));
+  const float64x2_t z = vdivq_f64(vdupq_n_f64(1.0), zi);
+  *za = vgetq_lane_f64(z, 0);
+  *zb = vgetq_lane_f64(z, 1);
+#else
+  *za = 1.0 / max_or_lo(zia, kMinZi);
+  *zb = 1.0 / max_or_lo(zib, kMinZi);
+#endif
+}
+
+struct Sample {
+  int32_t u, v;
+  double z;
+};
+
 template <bool kFast>
 void persp(uint8_t* dest, int n, const uint8_t* texels, int width, int height, const PerspSpan& p) {
   if (n <= 0) return;
@@ -205,8 +381,92 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 }
 
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
-                             const PerspSpan& span) {
-  persp<true>(dest, n, texels, width, height, span);
+                             const PerspSpan& p) {
+  // Short spans (two runs or fewer): the run walker above.
+  if (n <= 32) return persp<true>(dest, n, texels, width, height, p);
+  // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
+  // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
+  // walker computes it: P_0 + o_1 for j = 1, else P_{j-2} + (o_j - o_{j-2}), where
+  // P_r = P_{r-1} + 16 is run r's first pixel, accumulated. `left` = pixels from run r on.
+  // The loop draws two runs per pass; the divides for the samples two runs ahead are issued
+  // in pairs, their to_fixed and the following runs' steps are done beside the drawing, all
+  // branch-free (one block per pass).
+  const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
+  const double umaxd = double(p.umax), vmaxd = double(p.vmax);
+  const double zc = p.second_order ? zix : 0.0;
+  const uint32_t w = uint32_t(width);
+  auto sample = [&](double px, double z) {
+    return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
+  };
+  double P = p.px0;
+  int left = n;
+  double z0, z1, z2, z3;
+  recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
+  Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  // Samples 2 and 3 (o_2 = 32 as n > 32; o_3 - o_1 = min(32, n - 17)).
+  double pos2 = P + double(32), pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
+  recip2(zrow + zix * pos2, zrow + zix * pos3, &z2, &z3);
+  RunSteps su = steps16_sel(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
+  RunSteps sv = steps16_sel(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+  // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
+  // over 16 pixels): left > 48. Samples r + 4 and r + 5 are then at o_{r+4} - o_{r+2} =
+  // min(32, left - 33) and o_{r+5} - o_{r+3} = min(32, left - 49) past P_{r+2}, P_{r+3}.
+  while (left > 48) {
+    const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
+    const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
+    const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
+    double z4, z5;
+    recip2(zrow + zix * pos4, zrow + zix * pos5, &z4, &z5);
+    const Sample s2 = sample(pos2, z2);
+    const double c1 = zc * 0.5 * (s1.z + s2.z);
+    const RunSteps u1 = steps16_sel(s1.u, s2.u, c1), v1 = steps16_sel(s1.v, s2.v, c1);
+    const Sample s3 = sample(pos3, z3);
+    const double c2 = zc * 0.5 * (s2.z + s3.z);
+    const RunSteps u2 = steps16_sel(s2.u, s3.u, c2), v2 = steps16_sel(s2.v, s3.v, c2);
+    draw16(dest, texels, w, s0.u, s0.v, su, sv);
+    draw16(dest + 16, texels, w, s1.u, s1.v, u1, v1);
+    dest += 32;
+    P = P2;
+    left -= 32;
+    s0 = s2;
+    s1 = s3;
+    su = u2;
+    sv = v2;
+    z2 = z4;
+    z3 = z5;
+    pos2 = pos4;
+    pos3 = pos5;
+  }
+  if (left > 32) {  // one run more whose next run is full and not the last
+    const Sample s2 = sample(pos2, z2);
+    const double c1 = zc * 0.5 * (s1.z + s2.z);
+    const RunSteps u1 = steps16_sel(s1.u, s2.u, c1), v1 = steps16_sel(s1.v, s2.v, c1);
+    draw16(dest, texels, w, s0.u, s0.v, su, sv);
+    dest += 16;
+    P += double(16);
+    left -= 16;
+    s0 = s1;
+    s1 = s2;
+    su = u1;
+    sv = v1;
+    z2 = z3;
+    pos2 = pos3;
+  }
+  // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
+  // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
+  // last run that is sample r + 1 itself, which the walker does not recompute).
+  draw16(dest, texels, w, s0.u, s0.v, su, sv);
+  dest += 16;
+  const int last = left - 16, steps = last - 1;
+  const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
+  const double curve = zc * 0.5 * (s1.z + s2.z);
+  const RunSteps lu = run_steps(s1.u, s2.u, steps, curve), lv = run_steps(s1.v, s2.v, steps, curve);
+  if (last == 16) {
+    draw16(dest, texels, w, s1.u, s1.v, lu, lv);
+  } else {
+    draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+             uint32_t(lv.dd));
+  }
 }
 
 }  // namespace sb::simd

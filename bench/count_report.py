@@ -14,6 +14,10 @@
 #   Each block is timed on its own as if it looped (llvm-mca's model), so overlap between
 #   consecutive blocks on out-of-order cores is not credited: a mild over-estimate there.
 # Also the whole frame on x86-64: callgrind over a flythrough of F and 2F frames.
+#
+# --only=CASES (comma-separated case-name prefixes, e.g. --only=span,persp): count just those
+# cases; bench/counts.md keeps its other rows (and its whole-frame section unless that is rerun)
+# and has only the matching rows replaced.
 # Writes the table to stdout and to bench/counts.md.
 import json, math, os, re, subprocess, sys, time
 
@@ -267,6 +271,8 @@ def fmt(x, d=2):
 
 def main():
     quick = "--quick" in sys.argv
+    only = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--only=")), None)
+    wanted = lambda case: only is None or any(case.startswith(o) for o in only if o)
     t0 = time.time()
     results = []  # (target, case, variant, ipu, {cpu: cyc}, cover, gather)
     for t in TARGETS:
@@ -277,6 +283,8 @@ def main():
         cases = [l.split() for l in sh(runner + [t["exe"], "list"]).stdout.splitlines()]
         dis = Disasm(t)
         for case, variant, units in cases:
+            if not wanted(case):
+                continue
             units = int(units)
             r = reps_for(units)
             args = lambda n: [case, variant, str(n)]
@@ -341,6 +349,23 @@ def main():
         vsq = "" if quake is None or worst is None else f"{quake / worst:.2f}"
         md.append(f"| {KERNEL[case]} | {t['name']} | {variant} | {ipu:.2f} | " + " | ".join(cells)
                   + f" | {cover:.0%} | {ratio} | {vsq} |")
+    old_frame = []
+    if only is not None:
+        # Keep the other cases' rows (and the frame section when not rerun) from the last full run.
+        old_path = os.path.join(ROOT, "bench", "counts.md")
+        old = open(old_path).read().splitlines() if os.path.exists(old_path) else []
+        label_case = {v: k for k, v in KERNEL.items()}
+        mine = md[md.index(header) + 2:]
+        kept = [l for l in old if l.startswith("| ") and l.split(" | ")[0][2:] in label_case
+                and not wanted(label_case[l.split(" | ")[0][2:]])]
+        order = lambda l: list(KERNEL).index(label_case[l.split(" | ")[0][2:]])
+        md[md.index(header) + 2:] = sorted(kept + mine, key=order)  # stable: targets stay in order
+        if "## Whole frames" in "\n".join(old) and not frame:
+            i = next(i for i, l in enumerate(old) if l.startswith("## Whole frames"))
+            old_frame = [""] + [l for l in old[i:] if not l.startswith("Run time")]
+            while old_frame and old_frame[-1] == "":
+                old_frame.pop()
+    md += old_frame
     if frame:
         label, rows = frame
         md += ["", f"## Whole frames, x86-64 (callgrind; {label}, 320x240, flythrough 100 minus 50 frames)", "",
