@@ -213,64 +213,121 @@ inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__ && defined(SB_SPAN_WORDS)
 #error "draw16 gathers texels little-endian"
 #endif
-inline void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, int32_t u0, int32_t v0,
-                   const RunSteps& su, const RunSteps& sv) {
+#define SB_INLINE inline __attribute__((always_inline))
+
+// Ends a group of the software-pipelined run below. ARM (in-order cores): an empty volatile
+// asm, which the compiler's scheduler does not move instructions across, so each group's
+// independent instructions stay together; x86-64 (out of order): nothing.
+inline void group_end() {
+#if defined(__GNUC__) && (defined(__aarch64__) || defined(__arm__))
+  __asm__ volatile("");
+#endif
+}
+
+// The run in ten groups, software-pipelined two pixels per group: group g computes the
+// texel addresses of pixels 2g, 2g + 1, loads those of pixels 2g - 2, 2g - 1 and gathers
+// (or stores) those of pixels 2g - 4, 2g - 3, so that no instruction waits for one of its
+// own group (the load-to-use and multiply latencies of in-order cores are covered).
+class Run16 {
+ public:
+  SB_INLINE Run16(int32_t u0, int32_t v0, const RunSteps& su, const RunSteps& sv) {
+#if defined(SB_SPAN_PACKED)
+    auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
+    const T a0 = (uint64_t(uint32_t(v0)) << 32) + uint32_t(u0), d0 = pack(uint32_t(sv.d), uint32_t(su.d));
+    const T dd = pack(uint32_t(sv.dd), uint32_t(su.dd));
+    x_[0] = a0;
+    x_[1] = a0 + d0;
+    e_[0] = 2 * d0 + dd;
+    e_[1] = 2 * d0 + 3 * dd;
+    dd4_ = 4 * dd;
+#else
+    const T u = uint32_t(u0), du = uint32_t(su.d), ddu = uint32_t(su.dd);
+    const T v = uint32_t(v0), dv = uint32_t(sv.d), ddv = uint32_t(sv.dd);
+    xu_[0] = u, xu_[1] = u + du, eu_[0] = 2 * du + ddu, eu_[1] = 2 * du + 3 * ddu, ddu4_ = 4 * ddu;
+    xv_[0] = v, xv_[1] = v + dv, ev_[0] = 2 * dv + ddv, ev_[1] = 2 * dv + 3 * ddv, ddv4_ = 4 * ddv;
+#endif
+  }
+  template <int G>
+  SB_INLINE void group(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
+    if constexpr (G < 8) {
+      address<2 * G>(w);
+      address<2 * G + 1>(w);
+    }
+    if constexpr (G >= 1 && G <= 8) {
+      t_[2 * G - 2] = texels[a_[2 * G - 2]];
+      t_[2 * G - 1] = texels[a_[2 * G - 1]];
+    }
+    if constexpr (G >= 2 && G <= 9) {
+      put<2 * G - 4>(dest);
+      put<2 * G - 3>(dest);
+    }
+    if constexpr (G == 9) finish(dest);
+  }
+  SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
+    group<0>(dest, texels, w), group_end(), group<1>(dest, texels, w), group_end();
+    group<2>(dest, texels, w), group_end(), group<3>(dest, texels, w), group_end();
+    group<4>(dest, texels, w), group_end(), group<5>(dest, texels, w), group_end();
+    group<6>(dest, texels, w), group_end(), group<7>(dest, texels, w), group_end();
+    group<8>(dest, texels, w), group_end(), group<9>(dest, texels, w);
+  }
+
+ private:
 #if defined(SB_SPAN_PACKED)
   using T = uint64_t;
-  auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
-  const T a0 = (uint64_t(uint32_t(v0)) << 32) + uint32_t(u0), d0 = pack(uint32_t(sv.d), uint32_t(su.d));
-  const T dd = pack(uint32_t(sv.dd), uint32_t(su.dd));
-  auto texel = [&](T x) { return texels[uint32_t(x >> 48) * w + (uint32_t(x) >> 16)]; };
-  T x[2] = {a0, a0 + d0}, e[2] = {2 * d0 + dd, 2 * d0 + 3 * dd};
-  const T dd4 = 4 * dd;
+  T x_[2], e_[2], dd4_;
 #else
   using T = uint32_t;
-  auto texel = [&](uint32_t uu, uint32_t vv) { return texels[(vv >> 16) * w + (uu >> 16)]; };
-  const T u = uint32_t(u0), du = uint32_t(su.d), ddu = uint32_t(su.dd);
-  const T v = uint32_t(v0), dv = uint32_t(sv.d), ddv = uint32_t(sv.dd);
-  T xu[2] = {u, u + du}, eu[2] = {2 * du + ddu, 2 * du + 3 * ddu};
-  T xv[2] = {v, v + dv}, ev[2] = {2 * dv + ddv, 2 * dv + 3 * ddv};
-  const T ddu4 = 4 * ddu, ddv4 = 4 * ddv;
+  T xu_[2], eu_[2], ddu4_, xv_[2], ev_[2], ddv4_;
 #endif
+  uint32_t a_[16];
+  uint8_t t_[16];
 #if defined(SB_SPAN_WORDS)
   using Word = uintptr_t;
-  constexpr int kPer = int(sizeof(Word));
-  Word out0 = 0, out1 = 0, out2 = 0, out3 = 0;
+  static constexpr int kPer = int(sizeof(Word));
+  Word out_[4] = {0, 0, 0, 0};
 #endif
-#pragma GCC unroll 16
-  for (int k = 0; k < 16; ++k) {
-    const int c = k & 1;
+  template <int K>
+  SB_INLINE void address(uint32_t w) {
+    constexpr int c = K & 1;
 #if defined(SB_SPAN_PACKED)
-    const uint8_t t = texel(x[c]);
-    x[c] += e[c];
-    e[c] += dd4;
+    a_[K] = uint32_t(x_[c] >> 48) * w + (uint32_t(x_[c]) >> 16);
+    x_[c] += e_[c];
+    e_[c] += dd4_;
 #else
-    const uint8_t t = texel(xu[c], xv[c]);
-    xu[c] += eu[c];
-    xv[c] += ev[c];
-    eu[c] += ddu4;
-    ev[c] += ddv4;
+    a_[K] = (xv_[c] >> 16) * w + (xu_[c] >> 16);
+    xu_[c] += eu_[c];
+    xv_[c] += ev_[c];
+    eu_[c] += ddu4_;
+    ev_[c] += ddv4_;
 #endif
+  }
+  template <int K>
+  SB_INLINE void put(uint8_t* __restrict dest) {
 #if defined(SB_SPAN_WORDS)
-    const Word b = Word(t) << (8 * (k % kPer));  // little-endian
-    switch (k / kPer) {
-      case 0: out0 |= b; break;
-      case 1: out1 |= b; break;
-      case 2: out2 |= b; break;
-      default: out3 |= b; break;
+    out_[K / kPer] |= Word(t_[K]) << (8 * (K % kPer));  // little-endian
+    (void)dest;
+#else
+    dest[K] = t_[K];
+#endif
+  }
+  SB_INLINE void finish(uint8_t* __restrict dest) {
+#if defined(SB_SPAN_WORDS)
+    __builtin_memcpy(dest, &out_[0], sizeof(Word));
+    __builtin_memcpy(dest + kPer, &out_[1], sizeof(Word));
+    if constexpr (kPer == 4) {
+      __builtin_memcpy(dest + 8, &out_[2], sizeof(Word));
+      __builtin_memcpy(dest + 12, &out_[3], sizeof(Word));
     }
 #else
-    dest[k] = t;
+    (void)dest;
 #endif
   }
-#if defined(SB_SPAN_WORDS)
-  __builtin_memcpy(dest, &out0, sizeof(Word));
-  __builtin_memcpy(dest + kPer, &out1, sizeof(Word));
-  if constexpr (kPer == 4) {
-    __builtin_memcpy(dest + 8, &out2, sizeof(Word));
-    __builtin_memcpy(dest + 12, &out3, sizeof(Word));
-  }
-#endif
+};
+
+SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, int32_t u0, int32_t v0,
+                   const RunSteps& su, const RunSteps& sv) {
+  Run16 run(u0, v0, su, sv);
+  run.draw(dest, texels, w);
 }
 
 // 1 / max(zi, kMinZi) for two samples (NaN -> kMinZi). aarch64: one vector divide (on
@@ -415,14 +472,14 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
     const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
     const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
-    double z4, z5;
-    recip2(zrow + zix * pos4, zrow + zix * pos5, &z4, &z5);
     const Sample s2 = sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
     const RunSteps u1 = steps16_sel(s1.u, s2.u, c1), v1 = steps16_sel(s1.v, s2.v, c1);
     const Sample s3 = sample(pos3, z3);
     const double c2 = zc * 0.5 * (s2.z + s3.z);
     const RunSteps u2 = steps16_sel(s2.u, s3.u, c2), v2 = steps16_sel(s2.v, s3.v, c2);
+    double z4, z5;
+    recip2(zrow + zix * pos4, zrow + zix * pos5, &z4, &z5);
     draw16(dest, texels, w, s0.u, s0.v, su, sv);
     draw16(dest + 16, texels, w, s1.u, s1.v, u1, v1);
     dest += 32;
