@@ -279,7 +279,13 @@ class Run16 {
   using T = uint32_t;
   T xu_[2], eu_[2], ddu4_, xv_[2], ev_[2], ddv4_;
 #endif
-  uint32_t a_[16];
+  // x86-64: 64-bit offsets (no zero-extension before addressing); ARM: 32-bit (uxtw).
+#if defined(__x86_64__)
+  using Addr = uint64_t;
+#else
+  using Addr = uint32_t;
+#endif
+  Addr a_[16];
   uint8_t t_[16];
 #if defined(SB_SPAN_WORDS)
   using Word = uintptr_t;
@@ -290,7 +296,7 @@ class Run16 {
   SB_INLINE void address(uint32_t w) {
     constexpr int c = K & 1;
 #if defined(SB_SPAN_PACKED)
-    a_[K] = uint32_t(x_[c] >> 48) * w + (uint32_t(x_[c]) >> 16);
+    a_[K] = Addr(uint32_t(x_[c] >> 48)) * w + (uint32_t(x_[c]) >> 16);
     x_[c] += e_[c];
     e_[c] += dd4_;
 #else
@@ -348,6 +354,62 @@ struct Sample {
   int32_t u, v;
   double z;
 };
+
+// run_steps for u and v over a run's `steps` (0 .. 16) pixels, each integer division by a
+// constant (multiplies and shifts: no 64-bit divide instruction or, on armhf, library call)
+// and the two double quotients delta / steps in one vector divide (aarch64, x86-64).
+template <class Steps>
+inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, double q) {
+  // run_steps with double(b - a) / steps given as q.
+  const int steps = steps_;
+  const int64_t delta = int64_t(b) - int64_t(a);
+  const int32_t linear = int32_t(delta / steps);
+  if (curve == 0.0 || steps < 2) return {linear, 0};
+  const double c = q * curve;
+  const double ddf = -2.0 * c;
+  if (!(ddf > -1e9 && ddf < 1e9)) return {linear, 0};
+  const int64_t dd = int64_t(ddf);
+  const int64_t bend = dd * steps * (steps - 1) / 2;
+  const int64_t d0 = (delta - bend) / steps;
+  const int64_t last_step = d0 + dd * (steps - 1);
+  const int64_t reach = d0 * steps + bend;
+  const bool monotone = delta >= 0 ? (d0 >= 0 && last_step >= 0 && reach >= 0 && reach <= delta)
+                                   : (d0 <= 0 && last_step <= 0 && reach <= 0 && reach >= delta);
+  if (!monotone || d0 > INT32_MAX || d0 < INT32_MIN) return {linear, 0};
+  return {int32_t(d0), int32_t(dd)};
+}
+template <int S>
+inline void run_steps_uv(const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const std::integral_constant<int, S> steps;
+  const int64_t du = int64_t(b.u) - int64_t(a.u), dv = int64_t(b.v) - int64_t(a.v);
+  double qu = 0.0, qv = 0.0;
+  if (curve != 0.0 && S >= 2) {
+#if defined(__aarch64__)
+    const float64x2_t q = vdivq_f64(vcombine_f64(vdup_n_f64(double(du)), vdup_n_f64(double(dv))), vdupq_n_f64(S));
+    qu = vgetq_lane_f64(q, 0);
+    qv = vgetq_lane_f64(q, 1);
+#elif defined(__SSE2__)
+    const __m128d q = _mm_div_pd(_mm_set_pd(double(dv), double(du)), _mm_set1_pd(S));
+    qu = _mm_cvtsd_f64(q);
+    qv = _mm_cvtsd_f64(_mm_unpackhi_pd(q, q));
+#else
+    qu = double(du) / S;
+    qv = double(dv) / S;
+#endif
+  }
+  *su = run_steps_q(a.u, b.u, steps, curve, qu);
+  *sv = run_steps_q(a.v, b.v, steps, curve, qv);
+}
+inline void run_steps_uv(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  switch (steps) {
+#define SB_CASE(S) \
+  case S: return run_steps_uv<S>(a, b, curve, su, sv);
+    SB_CASE(1) SB_CASE(2) SB_CASE(3) SB_CASE(4) SB_CASE(5) SB_CASE(6) SB_CASE(7) SB_CASE(8)
+    SB_CASE(9) SB_CASE(10) SB_CASE(11) SB_CASE(12) SB_CASE(13) SB_CASE(14) SB_CASE(15) SB_CASE(16)
+#undef SB_CASE
+    default: *su = *sv = RunSteps{0, 0};  // steps 0: one pixel
+  }
+}
 
 template <bool kFast>
 void persp(uint8_t* dest, int n, const uint8_t* texels, int width, int height, const PerspSpan& p) {
@@ -437,10 +499,9 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
   persp<false>(dest, n, texels, width, height, span);
 }
 
-void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
                              const PerspSpan& p) {
-  // Short spans (two runs or fewer): the run walker above.
-  if (n <= 32) return persp<true>(dest, n, texels, width, height, p);
+  if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
   // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
   // walker computes it: P_0 + o_1 for j = 1, else P_{j-2} + (o_j - o_{j-2}), where
@@ -458,11 +519,32 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   double P = p.px0;
   int left = n;
   double z0, z1, z2, z3;
+  if (n <= 16) {  // one run, from pixel 0 to pixel n - 1 (one pixel: steps 0, no second sample)
+    const double pos1 = P + double(n - 1);
+    recip2(zrow + zix * P, zrow + zix * pos1, &z0, &z1);
+    const Sample s0 = sample(P, z0), s1 = n > 1 ? sample(pos1, z1) : s0;
+    const double curve = zc * 0.5 * (s0.z + s1.z);
+    RunSteps su, sv;
+    run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
+    if (n == 16) {
+      draw16(dest, texels, w, s0.u, s0.v, su, sv);
+    } else {
+      draw_run(dest, n, texels, w, uint32_t(s0.u), uint32_t(s0.v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
+               uint32_t(sv.dd));
+    }
+    return;
+  }
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
   Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
-  // Samples 2 and 3 (o_2 = 32 as n > 32; o_3 - o_1 = min(32, n - 17)).
-  double pos2 = P + double(32), pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
-  recip2(zrow + zix * pos2, zrow + zix * pos3, &z2, &z3);
+  double pos2, pos3 = 0.0;
+  if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
+    pos2 = P + double(32);
+    pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
+    recip2(zrow + zix * pos2, zrow + zix * pos3, &z2, &z3);
+  } else {  // two runs: sample 2 is the last pixel, o_2 - o_0 = n - 1
+    pos2 = P + double(n - 1);
+    recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
+  }
   RunSteps su = steps16_sel(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
   RunSteps sv = steps16_sel(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
@@ -517,7 +599,8 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   const int last = left - 16, steps = last - 1;
   const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
-  const RunSteps lu = run_steps(s1.u, s2.u, steps, curve), lv = run_steps(s1.v, s2.v, steps, curve);
+  RunSteps lu, lv;
+  run_steps_uv(steps, s1, s2, curve, &lu, &lv);
   if (last == 16) {
     draw16(dest, texels, w, s1.u, s1.v, lu, lv);
   } else {

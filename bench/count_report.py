@@ -119,6 +119,15 @@ class Disasm:
         for c in code:
             c2 = re.sub(r"^(v?)(?:stmdb|stmfd) sp!, ", r"\1push ", c)
             c2 = re.sub(r"^(v?)(?:ldmia|ldmfd|ldm) sp!, ", r"\1pop ", c2)
+            m = re.match(r"^(ldm|stm)(?:ia)? (r\d+|ip|lr), \{([^}]*)\}$", c2)  # ldm/stm rN, {...}: one each
+            if m:
+                regs = []
+                for part in m.group(3).split(","):
+                    r = re.match(r"^r(\d+)-r(\d+)$", part.strip())
+                    regs += [f"r{i}" for i in range(int(r.group(1)), int(r.group(2)) + 1)] if r else [part.strip()]
+                op = "ldr" if m.group(1) == "ldm" else "str"
+                out += [f"{op} {r}, [{m.group(2)}, #{4 * i}]" for i, r in enumerate(regs)]
+                continue
             m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c2)
             if not m:
                 out.append(c)
@@ -139,11 +148,17 @@ class Disasm:
             if m:
                 pending = [m.group(2)] + [m.group(2) if x == "t" else self.INV.get(m.group(2), "") for x in m.group(1)]
                 continue
+            if not pending:  # an IT block cut by a translation-block start: drop the condition
+                m2 = re.match(r"^(v?(?:mov|add|sub|ldr|str|orr|and|eor|rsb|mvn|cmp|cmn|vmov|vneg|vabs)\w*?)"
+                              r"(eq|ne|cs|cc|hs|lo|mi|pl|vs|vc|hi|ls|ge|lt|gt|le)((?:\.\w+)*) (.*)$", c)
+                if m2 and not m2.group(1).endswith(("s", "b", "h")) or m2 and m2.group(1) in ("cmp", "cmn"):
+                    c = f"{m2.group(1)}{m2.group(3)} {m2.group(4)}"
             if pending:
                 cond = pending.pop(0)
                 mn, _, rest = c.partition(" ")
-                if cond and mn.endswith(cond):
-                    mn = mn[: -len(cond)]
+                base, dot, suffix = mn.partition(".")  # vmovle.f64: the condition precedes the type
+                if cond and base.endswith(cond):
+                    mn = base[: -len(cond)] + dot + suffix
                 c = (mn + " " + rest).strip()
             out.append(c)
         return out
@@ -155,6 +170,10 @@ class Disasm:
         elif name == "aarch64":
             s = s.split("//")[0]
         else:
+            # "vmov.f64 d8, #96 @ 0x3f000000  0.5": the assembler wants the value, not the encoding.
+            m = re.match(r"^(vmov\S*\s+[ds]\d+), #\d+\s+@ 0x[0-9a-f]+\s+(\S+)", s)
+            if m:
+                s = f"{m.group(1)}, #{m.group(2)}"
             s = re.split(r"\s[;@]\s", s + " ")[0]
         s = s.strip()
         # Branch / literal targets "401130 <f+0x10>" -> a label (llvm-mca ignores targets).
