@@ -1,10 +1,12 @@
 // asm/span_persp.cpp: the whole-span lit-surface drawer (asm/span_persp.h): the reference
-// (the engine's run walker over surface_span_scalar) and the tuned portable version. Both
-// are one template; they differ only in how a run's steps divide and how a run is drawn.
+// (the engine's run walker over surface_span_scalar) and the tuned portable version.
 //
 // The double arithmetic below must stay operation for operation what
 // engine/render/span_draw.cpp's walk_span / exact / run_steps do: the kernel promises the
-// engine's bytes (tests/asm/span_persp_test.cpp checks it).
+// engine's bytes (tests/asm/span_persp_test.cpp checks it). The tuned version computes the
+// same operations in select form (clamps as max / min, the run-step test as masks; each
+// rewrite argued where it is made), with the samples' positions accumulated as the walker
+// accumulates them.
 #include "asm/span_persp.h"
 
 #include <type_traits>
@@ -29,17 +31,6 @@ inline int32_t to_fixed(double v, int32_t max) {
   if (!(q > 0.0)) return 0;
   if (q > double(max)) return max;
   return int32_t(q);
-}
-
-// Makes the compiler compute x here (an empty asm that claims to read and write it).
-inline void pin(double& x) {
-#if defined(__GNUC__) && (defined(__aarch64__) || defined(__arm__))
-  __asm__ volatile("" : "+w"(x));
-#elif defined(__GNUC__) && defined(__x86_64__)
-  __asm__ volatile("" : "+x"(x));
-#else
-  (void)x;
-#endif
 }
 
 struct RunSteps {
@@ -411,8 +402,8 @@ inline void run_steps_uv(int steps, const Sample& a, const Sample& b, double cur
   }
 }
 
-template <bool kFast>
-void persp(uint8_t* dest, int n, const uint8_t* texels, int width, int height, const PerspSpan& p) {
+// The reference: span_draw.cpp's walker, one surface_span_scalar call per run.
+void persp_reference(uint8_t* dest, int n, const uint8_t* texels, int width, int height, const PerspSpan& p) {
   if (n <= 0) return;
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const int32_t umax = p.umax, vmax = p.vmax;
@@ -440,46 +431,15 @@ void persp(uint8_t* dest, int n, const uint8_t* texels, int width, int height, c
   for (;;) {
     const int run = left > 16 ? 16 : left;
     const int after = left - run;
-    // The divide for the end of the next run, issued before this run is drawn. The fast
-    // version only starts it here (the reciprocal, pinned in a register so the compiler
-    // cannot sink it past the loop) and finishes the sample after the loop: on in-order
-    // cores (Cortex-A53, A7) the divide's latency then runs under the integer loop instead
-    // of stalling the multiplies that need it. The same operations, so the same bits.
+    // The exact values for the end of the next run, computed before this run is drawn.
     int32_t u2 = u1, v2 = v1;
     double z2 = z1;
-    const bool next = after > 0 && end_offset(after) > 0;
-    const double px2 = px + double(run + end_offset(after));
-    if (kFast) {
-      if (next) {
-        double zi = zrow + zix * px2;
-        if (!(zi > kMinZi)) zi = kMinZi;
-        z2 = 1.0 / zi;
-        pin(z2);
-      }
-    } else if (next) {
-      exact(px2, &u2, &v2, &z2);
-    }
+    if (after > 0 && end_offset(after) > 0) exact(px + double(run + end_offset(after)), &u2, &v2, &z2);
     const int steps = end_offset(left);
     const double curve = zc * 0.5 * (z0 + z1);
-    RunSteps su, sv;
-    if (kFast && steps == 16) {
-      su = run_steps(u0, u1, std::integral_constant<int, 16>{}, curve);
-      sv = run_steps(v0, v1, std::integral_constant<int, 16>{}, curve);
-    } else {
-      su = run_steps(u0, u1, steps, curve);
-      sv = run_steps(v0, v1, steps, curve);
-    }
-    if constexpr (kFast) {
-      draw_run(dest, run, texels, uint32_t(width), uint32_t(u0), uint32_t(v0), uint32_t(su.d), uint32_t(sv.d),
-               uint32_t(su.dd), uint32_t(sv.dd));
-    } else {
-      surface_span_scalar(dest, run, texels, width, height, u0, v0, su.d, sv.d, su.dd, sv.dd);
-    }
+    const RunSteps su = run_steps(u0, u1, steps, curve), sv = run_steps(v0, v1, steps, curve);
+    surface_span_scalar(dest, run, texels, width, height, u0, v0, su.d, sv.d, su.dd, sv.dd);
     if (after <= 0) break;
-    if (kFast && next) {
-      u2 = to_fixed((urow + ux * px2) * z2, umax);
-      v2 = to_fixed((vrow + vx * px2) * z2, vmax);
-    }
     dest += run;
     px += double(run);
     left = after;
@@ -496,7 +456,7 @@ void persp(uint8_t* dest, int n, const uint8_t* texels, int width, int height, c
 
 void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                                const PerspSpan& span) {
-  persp<false>(dest, n, texels, width, height, span);
+  persp_reference(dest, n, texels, width, height, span);
 }
 
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
