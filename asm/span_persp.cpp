@@ -232,10 +232,9 @@ class Run16 {
     e_[1] = 2 * d0 + 3 * dd;
     dd4_ = 4 * dd;
 #else
-    const T u = uint32_t(u0), du = uint32_t(su.d), ddu = uint32_t(su.dd);
-    const T v = uint32_t(v0), dv = uint32_t(sv.d), ddv = uint32_t(sv.dd);
-    xu_[0] = u, xu_[1] = u + du, eu_[0] = 2 * du + ddu, eu_[1] = 2 * du + 3 * ddu, ddu4_ = 4 * ddu;
-    xv_[0] = v, xv_[1] = v + dv, ev_[0] = 2 * dv + ddv, ev_[1] = 2 * dv + 3 * ddv, ddv4_ = 4 * ddv;
+    // 32-bit: one chain (u, v, du, dv, ddu, ddv: six registers; two chains would spill).
+    u_ = uint32_t(u0), du_ = uint32_t(su.d), ddu_ = uint32_t(su.dd);
+    v_ = uint32_t(v0), dv_ = uint32_t(sv.d), ddv_ = uint32_t(sv.dd);
 #endif
   }
   template <int G>
@@ -268,7 +267,7 @@ class Run16 {
   T x_[2], e_[2], dd4_;
 #else
   using T = uint32_t;
-  T xu_[2], eu_[2], ddu4_, xv_[2], ev_[2], ddv4_;
+  T u_, du_, ddu_, v_, dv_, ddv_;
 #endif
   // x86-64: 64-bit offsets (no zero-extension before addressing); ARM: 32-bit (uxtw).
 #if defined(__x86_64__)
@@ -291,34 +290,24 @@ class Run16 {
     x_[c] += e_[c];
     e_[c] += dd4_;
 #else
-    a_[K] = (xv_[c] >> 16) * w + (xu_[c] >> 16);
-    xu_[c] += eu_[c];
-    xv_[c] += ev_[c];
-    eu_[c] += ddu4_;
-    ev_[c] += ddv4_;
+    (void)c;
+    a_[K] = (v_ >> 16) * w + (u_ >> 16);
+    u_ += du_;
+    v_ += dv_;
+    du_ += ddu_;
+    dv_ += ddv_;
 #endif
   }
   template <int K>
   SB_INLINE void put(uint8_t* __restrict dest) {
 #if defined(SB_SPAN_WORDS)
     out_[K / kPer] |= Word(t_[K]) << (8 * (K % kPer));  // little-endian
-    (void)dest;
+    if constexpr (K % kPer == kPer - 1) __builtin_memcpy(dest + (K - kPer + 1), &out_[K / kPer], sizeof(Word));
 #else
     dest[K] = t_[K];
 #endif
   }
-  SB_INLINE void finish(uint8_t* __restrict dest) {
-#if defined(SB_SPAN_WORDS)
-    __builtin_memcpy(dest, &out_[0], sizeof(Word));
-    __builtin_memcpy(dest + kPer, &out_[1], sizeof(Word));
-    if constexpr (kPer == 4) {
-      __builtin_memcpy(dest + 8, &out_[2], sizeof(Word));
-      __builtin_memcpy(dest + 12, &out_[3], sizeof(Word));
-    }
-#else
-    (void)dest;
-#endif
-  }
+  SB_INLINE void finish(uint8_t* __restrict dest) { (void)dest; }  // put stores each word when full
 };
 
 SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, int32_t u0, int32_t v0,
@@ -453,6 +442,22 @@ void persp_reference(uint8_t* dest, int n, const uint8_t* texels, int width, int
 }
 
 }  // namespace
+
+void surface_span_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int, int32_t u, int32_t v,
+                       int32_t du, int32_t dv, int32_t ddu, int32_t ddv) {
+  const uint32_t w = uint32_t(width);
+  uint32_t uu = uint32_t(u), vv = uint32_t(v), duu = uint32_t(du), dvv = uint32_t(dv);
+  const uint32_t dduu = uint32_t(ddu), ddvv = uint32_t(ddv);
+  for (; n >= 16; n -= 16, dest += 16) {
+    draw16(dest, texels, w, int32_t(uu), int32_t(vv), RunSteps{int32_t(duu), ddu}, RunSteps{int32_t(dvv), ddv});
+    // 16 pixels on (mod 2^32): u += 16 du + 120 ddu, du += 16 ddu.
+    uu += 16 * duu + 120 * dduu;
+    vv += 16 * dvv + 120 * ddvv;
+    duu += 16 * dduu;
+    dvv += 16 * ddvv;
+  }
+  if (n > 0) draw_run(dest, n, texels, w, uu, vv, duu, dvv, dduu, ddvv);
+}
 
 void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                                const PerspSpan& span) {
