@@ -343,7 +343,10 @@ def main():
           "- Quake on a Pentium: span drawer 7.5 cycles/pixel, surface builder 2.25 cycles/texel; the last "
           "column divides that by this row's highest estimate (above 1 = beats the Pentium on every modelled core).",
           "- armhf blocks are timed as Thumb-2 with IT instructions dropped (llvm-mca cannot time them) and "
-          "register-list push/pop as single loads/stores.", ""]
+          "register-list push/pop as single loads/stores.",
+          "- **surface_span neon, surface_span_persp sse2/neon**: the portable tuned C++ those tables hold "
+          "(surface_span_fast, surface_span_persp_fast), not vector code; surface_span_persp scalar is the "
+          "reference run walker.", ""]
     header = "| kernel | target | variant | instr/unit | " + " | ".join(
         ["cyc znver3", "cyc skylake", "cyc cortex-a53", "cyc cortex-a72*", "cyc cortex-a9"]) + " | cover | x scalar (cyc) | Pentium Quake ÷ this (worst core) |"
     md += [header, "|" + "---|" * (header.count("|") - 1)]
