@@ -446,6 +446,7 @@ void persp_reference(uint8_t* dest, int n, const uint8_t* texels, int width, int
 void surface_span_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int, int32_t u, int32_t v,
                        int32_t du, int32_t dv, int32_t ddu, int32_t ddv) {
   const uint32_t w = uint32_t(width);
+  if (n == 16) return draw16(dest, texels, w, u, v, RunSteps{du, ddu}, RunSteps{dv, ddv});  // the engine's runs
   uint32_t uu = uint32_t(u), vv = uint32_t(v), duu = uint32_t(du), dvv = uint32_t(dv);
   const uint32_t dduu = uint32_t(ddu), ddvv = uint32_t(ddv);
   for (; n >= 16; n -= 16, dest += 16) {
