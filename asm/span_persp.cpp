@@ -204,6 +204,17 @@ inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__ && defined(SB_SPAN_WORDS)
 #error "draw16 gathers texels little-endian"
 #endif
+// A full run's steps: the curved ones, or (kCurve false: curve 0) run_steps' linear step.
+template <bool kCurve>
+inline RunSteps steps16(int32_t a, int32_t b, double curve) {
+  if constexpr (kCurve) {
+    return steps16_sel(a, b, curve);
+  } else {
+    (void)curve;
+    return {(b - a) / 16, 0};  // |b - a| < 2^31 (the clamps)
+  }
+}
+
 #define SB_INLINE inline __attribute__((always_inline))
 
 // Ends a group of the software-pipelined run below. ARM (in-order cores): an empty volatile
@@ -219,6 +230,7 @@ inline void group_end() {
 // texel addresses of pixels 2g, 2g + 1, loads those of pixels 2g - 2, 2g - 1 and gathers
 // (or stores) those of pixels 2g - 4, 2g - 3, so that no instruction waits for one of its
 // own group (the load-to-use and multiply latencies of in-order cores are covered).
+template <bool kCurve = true>
 class Run16 {
  public:
   SB_INLINE Run16(int32_t u0, int32_t v0, const RunSteps& su, const RunSteps& sv) {
@@ -288,14 +300,16 @@ class Run16 {
 #if defined(SB_SPAN_PACKED)
     a_[K] = Addr(uint32_t(x_[c] >> 48)) * w + (uint32_t(x_[c]) >> 16);
     x_[c] += e_[c];
-    e_[c] += dd4_;
+    if constexpr (kCurve) e_[c] += dd4_;
 #else
     (void)c;
     a_[K] = (v_ >> 16) * w + (u_ >> 16);
     u_ += du_;
     v_ += dv_;
-    du_ += ddu_;
-    dv_ += ddv_;
+    if constexpr (kCurve) {
+      du_ += ddu_;
+      dv_ += ddv_;
+    }
 #endif
   }
   template <int K>
@@ -310,9 +324,10 @@ class Run16 {
   SB_INLINE void finish(uint8_t* __restrict dest) { (void)dest; }  // put stores each word when full
 };
 
+template <bool kCurve = true>
 SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, int32_t u0, int32_t v0,
                    const RunSteps& su, const RunSteps& sv) {
-  Run16 run(u0, v0, su, sv);
+  Run16<kCurve> run(u0, v0, su, sv);
   run.draw(dest, texels, w);
 }
 
@@ -465,8 +480,11 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
   persp_reference(dest, n, texels, width, height, span);
 }
 
-void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
-                             const PerspSpan& p) {
+namespace {
+// kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
+// row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
+template <bool kCurve>
+void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
   // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
@@ -493,7 +511,7 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     RunSteps su, sv;
     run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
     if (n == 16) {
-      draw16(dest, texels, w, s0.u, s0.v, su, sv);
+      draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
     } else {
       draw_run(dest, n, texels, w, uint32_t(s0.u), uint32_t(s0.v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
                uint32_t(sv.dd));
@@ -511,8 +529,8 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     pos2 = P + double(n - 1);
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
-  RunSteps su = steps16_sel(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
-  RunSteps sv = steps16_sel(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+  RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
+  RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
   // over 16 pixels): left > 48. Samples r + 4 and r + 5 are then at o_{r+4} - o_{r+2} =
   // min(32, left - 33) and o_{r+5} - o_{r+3} = min(32, left - 49) past P_{r+2}, P_{r+3}.
@@ -522,14 +540,14 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
     const Sample s2 = sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
-    const RunSteps u1 = steps16_sel(s1.u, s2.u, c1), v1 = steps16_sel(s1.v, s2.v, c1);
+    const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
     const Sample s3 = sample(pos3, z3);
     const double c2 = zc * 0.5 * (s2.z + s3.z);
-    const RunSteps u2 = steps16_sel(s2.u, s3.u, c2), v2 = steps16_sel(s2.v, s3.v, c2);
+    const RunSteps u2 = steps16<kCurve>(s2.u, s3.u, c2), v2 = steps16<kCurve>(s2.v, s3.v, c2);
     double z4, z5;
     recip2(zrow + zix * pos4, zrow + zix * pos5, &z4, &z5);
-    draw16(dest, texels, w, s0.u, s0.v, su, sv);
-    draw16(dest + 16, texels, w, s1.u, s1.v, u1, v1);
+    draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
+    draw16<kCurve>(dest + 16, texels, w, s1.u, s1.v, u1, v1);
     dest += 32;
     P = P2;
     left -= 32;
@@ -545,8 +563,8 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
-    const RunSteps u1 = steps16_sel(s1.u, s2.u, c1), v1 = steps16_sel(s1.v, s2.v, c1);
-    draw16(dest, texels, w, s0.u, s0.v, su, sv);
+    const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
+    draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
     dest += 16;
     P += double(16);
     left -= 16;
@@ -560,7 +578,7 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
   // last run that is sample r + 1 itself, which the walker does not recompute).
-  draw16(dest, texels, w, s0.u, s0.v, su, sv);
+  draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
   const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
@@ -568,11 +586,19 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   RunSteps lu, lv;
   run_steps_uv(steps, s1, s2, curve, &lu, &lv);
   if (last == 16) {
-    draw16(dest, texels, w, s1.u, s1.v, lu, lv);
+    draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
   } else {
     draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
              uint32_t(lv.dd));
   }
+}
+}  // namespace
+
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+                             const PerspSpan& p) {
+  // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
+  if (!p.second_order || p.dzi == 0.0) return persp_fast<false>(dest, n, texels, width, p);
+  persp_fast<true>(dest, n, texels, width, p);
 }
 
 }  // namespace sb::simd
