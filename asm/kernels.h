@@ -3,7 +3,7 @@
 // __builtin_cpu_supports; NEON is chosen at compile time where the target has it).
 //
 //   kernel          contract               variants (when built and the CPU has them)
-//   surface_span    asm/surface_span.h     scalar, sse2, avx2, avx2g (gathers), neon
+//   surface_span    asm/surface_span.h     scalar, sse2, avx2, avx2g (gathers), fast (portable; the neon table)
 //   surface_block   asm/surface_block.h    scalar, sse2, avx2, avx2g (gathers), neon
 //   z_span          asm/z_span.h           scalar, sse2, avx2, neon
 //   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gathers), neon

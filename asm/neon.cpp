@@ -24,44 +24,10 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 }
 
 // ---------------------------------------------------------------- 1. surface span
-
-void surface_span_neon(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, int width, int,
-                       int32_t u, int32_t v, int32_t du, int32_t dv, int32_t ddu, int32_t ddv) {
-  if (n <= 0) return;
-  const uint32_t du_ = uint32_t(du), dv_ = uint32_t(dv), ddu_ = uint32_t(ddu), ddv_ = uint32_t(ddv);
-  // Advancing four pixels: u_{k+4} = u_k + 4 du_k + 6 dd, 4 du_{k+4} = 4 du_k + 16 dd.
-  uint32x4_t U = lanes4(uint32_t(u), du_, ddu_), V = lanes4(uint32_t(v), dv_, ddv_);
-  uint32x4_t DU = lanes4(4 * du_, 4 * ddu_, 0), DV = lanes4(4 * dv_, 4 * ddv_, 0);
-  const uint32x4_t CU = vdupq_n_u32(6 * ddu_), CV = vdupq_n_u32(6 * ddv_);
-  const uint32x4_t EU = vdupq_n_u32(16 * ddu_), EV = vdupq_n_u32(16 * ddv_);
-  const uint32x4_t W = vdupq_n_u32(uint32_t(width));
-  for (int done = 0; done < n; done += 16) {
-    uint32x4_t a[4];
-    for (int j = 0; j < 4; ++j) {
-      a[j] = vmlaq_u32(vshrq_n_u32(U, 16), vshrq_n_u32(V, 16), W);
-      U = vaddq_u32(U, vaddq_u32(DU, CU));
-      V = vaddq_u32(V, vaddq_u32(DV, CV));
-      DU = vaddq_u32(DU, EU);
-      DV = vaddq_u32(DV, EV);
-    }
-    uint8_t* d = dest + done;
-    const int m = n - done;
-    if (m >= 16) {
-      uint8x16_t px = vdupq_n_u8(0);
-#define SB_LANE(j, i) px = vsetq_lane_u8(texels[vgetq_lane_u32(a[j], i)], px, 4 * j + i)
-      SB_LANE(0, 0); SB_LANE(0, 1); SB_LANE(0, 2); SB_LANE(0, 3);
-      SB_LANE(1, 0); SB_LANE(1, 1); SB_LANE(1, 2); SB_LANE(1, 3);
-      SB_LANE(2, 0); SB_LANE(2, 1); SB_LANE(2, 2); SB_LANE(2, 3);
-      SB_LANE(3, 0); SB_LANE(3, 1); SB_LANE(3, 2); SB_LANE(3, 3);
-#undef SB_LANE
-      vst1q_u8(d, px);
-    } else {
-      uint32_t addr[16];
-      for (int j = 0; j < 4; ++j) vst1q_u32(addr + 4 * j, a[j]);
-      for (int k = 0; k < m; ++k) d[k] = texels[addr[k]];
-    }
-  }
-}
+//
+// The NEON table's surface_span is the portable surface_span_fast (asm/surface_span.h): a
+// lane-based loop (addresses in vectors, each lane moved to a core register for its load)
+// lost to scalar code on 16-pixel runs on every modelled core (bench/counts.md).
 
 // ---------------------------------------------------------------- 2. surface block builder
 //
@@ -245,7 +211,7 @@ void expand_palette_neon(const uint8_t* src, ptrdiff_t src_stride, int width, in
 
 }  // namespace
 
-const Kernels kNeon = {"neon", surface_span_neon, surface_block_neon, z_span_neon, expand_palette_neon, alias_span_neon,
+const Kernels kNeon = {"neon", surface_span_fast, surface_block_neon, z_span_neon, expand_palette_neon, alias_span_neon,
                         surface_span_persp_fast};
 
 }  // namespace sb::simd::detail

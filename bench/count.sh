@@ -5,6 +5,9 @@
 #
 #   bench/count.sh            everything (about 2 minutes on 2 cores once built)
 #   bench/count.sh --quick    kernels only, no whole-frame callgrind runs
+#   bench/count.sh --quick --only=span,persp
+#                             just the cases whose names start so (starbow_count_kernels list);
+#                             the other rows of bench/counts.md are kept as they were
 #
 # Builds (only what it needs, own build dirs, -no-pie so addresses match the binary):
 #   build/count          starbow_count_kernels + starbow (x86-64, native)

@@ -21,6 +21,7 @@
 //   persp1920    the whole-span drawer (asm/span_persp.h): one 1920-pixel span of a 256x256
 //                surface in perspective, second-order steps, divides included
 //   persp64      the same over 30 spans of 64 pixels (per-span costs weigh more)
+//   persp1920lin persp1920 with linear steps (second_order off: Quake's stepping)
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
@@ -82,7 +83,7 @@ const Kernels* find_variant(const char* name) {
 
 const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "alias32", "alias1920h",
-                              "persp1920", "persp64"};
+                              "persp1920", "persp64", "persp1920lin"};
 
 long units_of(const char* c) {
   if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
@@ -179,7 +180,7 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     p.dvz = -0.0001 * kSurf / kSpan;
     p.umax = (kSurf << 16) - 1;
     p.vmax = (kSurf << 16) - 1;
-    p.second_order = true;
+    p.second_order = std::strcmp(c, "persp1920lin") != 0;
     for (long r = 0; r < reps; ++r)
       for (int x = 0; x < kSpan; x += len) {
         p.px0 = x + 0.5;

@@ -14,6 +14,10 @@
 #   Each block is timed on its own as if it looped (llvm-mca's model), so overlap between
 #   consecutive blocks on out-of-order cores is not credited: a mild over-estimate there.
 # Also the whole frame on x86-64: callgrind over a flythrough of F and 2F frames.
+#
+# --only=CASES (comma-separated case-name prefixes, e.g. --only=span,persp): count just those
+# cases; bench/counts.md keeps its other rows (and its whole-frame section unless that is rerun)
+# and has only the matching rows replaced.
 # Writes the table to stdout and to bench/counts.md.
 import json, math, os, re, subprocess, sys, time
 
@@ -40,7 +44,8 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
           "alias32": "alias_span (32-px spans, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
-          "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)"}
+          "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)",
+          "persp1920lin": "surface_span_persp (1920 px, linear steps)"}
 UNIT = {"palette": "src px"}
 
 
@@ -115,6 +120,15 @@ class Disasm:
         for c in code:
             c2 = re.sub(r"^(v?)(?:stmdb|stmfd) sp!, ", r"\1push ", c)
             c2 = re.sub(r"^(v?)(?:ldmia|ldmfd|ldm) sp!, ", r"\1pop ", c2)
+            m = re.match(r"^(ldm|stm)(?:ia)? (r\d+|ip|lr), \{([^}]*)\}$", c2)  # ldm/stm rN, {...}: one each
+            if m:
+                regs = []
+                for part in m.group(3).split(","):
+                    r = re.match(r"^r(\d+)-r(\d+)$", part.strip())
+                    regs += [f"r{i}" for i in range(int(r.group(1)), int(r.group(2)) + 1)] if r else [part.strip()]
+                op = "ldr" if m.group(1) == "ldm" else "str"
+                out += [f"{op} {r}, [{m.group(2)}, #{4 * i}]" for i, r in enumerate(regs)]
+                continue
             m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c2)
             if not m:
                 out.append(c)
@@ -135,11 +149,17 @@ class Disasm:
             if m:
                 pending = [m.group(2)] + [m.group(2) if x == "t" else self.INV.get(m.group(2), "") for x in m.group(1)]
                 continue
+            if not pending:  # an IT block cut by a translation-block start: drop the condition
+                m2 = re.match(r"^(v?(?:mov|add|sub|ldr|str|orr|and|eor|rsb|mvn|cmp|cmn|vmov|vneg|vabs)\w*?)"
+                              r"(eq|ne|cs|cc|hs|lo|mi|pl|vs|vc|hi|ls|ge|lt|gt|le)((?:\.\w+)*) (.*)$", c)
+                if m2 and not m2.group(1).endswith(("s", "b", "h")) or m2 and m2.group(1) in ("cmp", "cmn"):
+                    c = f"{m2.group(1)}{m2.group(3)} {m2.group(4)}"
             if pending:
                 cond = pending.pop(0)
                 mn, _, rest = c.partition(" ")
-                if cond and mn.endswith(cond):
-                    mn = mn[: -len(cond)]
+                base, dot, suffix = mn.partition(".")  # vmovle.f64: the condition precedes the type
+                if cond and base.endswith(cond):
+                    mn = base[: -len(cond)] + dot + suffix
                 c = (mn + " " + rest).strip()
             out.append(c)
         return out
@@ -151,6 +171,10 @@ class Disasm:
         elif name == "aarch64":
             s = s.split("//")[0]
         else:
+            # "vmov.f64 d8, #96 @ 0x3f000000  0.5": the assembler wants the value, not the encoding.
+            m = re.match(r"^(vmov\S*\s+[ds]\d+), #\d+\s+@ 0x[0-9a-f]+\s+(\S+)", s)
+            if m:
+                s = f"{m.group(1)}, #{m.group(2)}"
             s = re.split(r"\s[;@]\s", s + " ")[0]
         s = s.strip()
         # Branch / literal targets "401130 <f+0x10>" -> a label (llvm-mca ignores targets).
@@ -267,6 +291,8 @@ def fmt(x, d=2):
 
 def main():
     quick = "--quick" in sys.argv
+    only = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--only=")), None)
+    wanted = lambda case: only is None or any(case.startswith(o) for o in only if o)
     t0 = time.time()
     results = []  # (target, case, variant, ipu, {cpu: cyc}, cover, gather)
     for t in TARGETS:
@@ -277,6 +303,8 @@ def main():
         cases = [l.split() for l in sh(runner + [t["exe"], "list"]).stdout.splitlines()]
         dis = Disasm(t)
         for case, variant, units in cases:
+            if not wanted(case):
+                continue
             units = int(units)
             r = reps_for(units)
             args = lambda n: [case, variant, str(n)]
@@ -316,7 +344,10 @@ def main():
           "- Quake on a Pentium: span drawer 7.5 cycles/pixel, surface builder 2.25 cycles/texel; the last "
           "column divides that by this row's highest estimate (above 1 = beats the Pentium on every modelled core).",
           "- armhf blocks are timed as Thumb-2 with IT instructions dropped (llvm-mca cannot time them) and "
-          "register-list push/pop as single loads/stores.", ""]
+          "register-list push/pop as single loads/stores.",
+          "- **surface_span neon, surface_span_persp sse2/neon**: the portable tuned C++ those tables hold "
+          "(surface_span_fast, surface_span_persp_fast), not vector code; surface_span_persp scalar is the "
+          "reference run walker.", ""]
     header = "| kernel | target | variant | instr/unit | " + " | ".join(
         ["cyc znver3", "cyc skylake", "cyc cortex-a53", "cyc cortex-a72*", "cyc cortex-a9"]) + " | cover | x scalar (cyc) | Pentium Quake ÷ this (worst core) |"
     md += [header, "|" + "---|" * (header.count("|") - 1)]
@@ -341,6 +372,23 @@ def main():
         vsq = "" if quake is None or worst is None else f"{quake / worst:.2f}"
         md.append(f"| {KERNEL[case]} | {t['name']} | {variant} | {ipu:.2f} | " + " | ".join(cells)
                   + f" | {cover:.0%} | {ratio} | {vsq} |")
+    old_frame = []
+    if only is not None:
+        # Keep the other cases' rows (and the frame section when not rerun) from the last full run.
+        old_path = os.path.join(ROOT, "bench", "counts.md")
+        old = open(old_path).read().splitlines() if os.path.exists(old_path) else []
+        label_case = {v: k for k, v in KERNEL.items()}
+        mine = md[md.index(header) + 2:]
+        kept = [l for l in old if l.startswith("| ") and l.split(" | ")[0][2:] in label_case
+                and not wanted(label_case[l.split(" | ")[0][2:]])]
+        order = lambda l: list(KERNEL).index(label_case[l.split(" | ")[0][2:]])
+        md[md.index(header) + 2:] = sorted(kept + mine, key=order)  # stable: targets stay in order
+        if "## Whole frames" in "\n".join(old) and not frame:
+            i = next(i for i, l in enumerate(old) if l.startswith("## Whole frames"))
+            old_frame = [""] + [l for l in old[i:] if not l.startswith("Run time")]
+            while old_frame and old_frame[-1] == "":
+                old_frame.pop()
+    md += old_frame
     if frame:
         label, rows = frame
         md += ["", f"## Whole frames, x86-64 (callgrind; {label}, 320x240, flythrough 100 minus 50 frames)", "",

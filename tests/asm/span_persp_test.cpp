@@ -128,6 +128,51 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
   std::printf("[ asm      ] span_persp: %d odd-gradient cases, every variant identical\n", cases);
 }
 
+// surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
+// NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
+// scalar reference on every target: random walks (linear and second order) that stay
+// inside the surface, every length that splits differently into runs of 16.
+TEST(AsmSpanPersp, SurfaceSpanFastMatchesScalar) {
+  std::mt19937 rng(4242);
+  const int lengths[] = {0, 1, 2, 3, 15, 16, 17, 31, 32, 33, 47, 48, 49, 320, 1919, 1920};
+  int cases = 0, curved = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int w = 1 + int(rng() % 600), h = 1 + int(rng() % 300);
+    std::vector<uint8_t> surf(size_t(w) * h);
+    for (auto& b : surf) b = uint8_t(rng());
+    const int64_t umax = (int64_t(w) << 16) - 1, vmax = (int64_t(h) << 16) - 1;
+    for (int n : lengths) {
+      auto walk = [&](int64_t max, int32_t* a, int32_t* d, int32_t* dd) {
+        const int64_t x0 = int64_t(rng() % uint64_t(max + 1)), x1 = int64_t(rng() % uint64_t(max + 1));
+        const int64_t steps = n > 1 ? n - 1 : 1;
+        *a = int32_t(x0);
+        *d = int32_t((x1 - x0) / steps);
+        *dd = 0;
+        if (trial % 2 && n > 2) {  // a bend, kept only if every pixel stays inside
+          const int64_t ddc = int64_t(rng() % 2001) - 1000;
+          const int64_t d0 = (x1 - x0 - ddc * steps * (steps - 1) / 2) / steps;
+          int64_t x = x0, dx = d0;
+          bool inside = d0 >= INT32_MIN && d0 <= INT32_MAX;
+          for (int k = 0; k < n && inside; ++k, x += dx, dx += ddc) inside = x >= 0 && x <= max;
+          if (inside) *d = int32_t(d0), *dd = int32_t(ddc);
+        }
+      };
+      int32_t u, du, ddu, v, dv, ddv;
+      walk(umax, &u, &du, &ddu);
+      walk(vmax, &v, &dv, &ddv);
+      std::vector<uint8_t> want(size_t(n) + 64, 0x5a), got(want);
+      sb::simd::surface_span_scalar(want.data() + 32, n, surf.data(), w, h, u, v, du, dv, ddu, ddv);
+      sb::simd::surface_span_fast(got.data() + 32, n, surf.data(), w, h, u, v, du, dv, ddu, ddv);
+      ASSERT_EQ(want, got) << "n " << n << " surface " << w << "x" << h << " u " << u << " v " << v << " du " << du
+                           << " dv " << dv << " ddu " << ddu << " ddv " << ddv;
+      ++cases;
+      curved += ddu != 0 || ddv != 0;
+    }
+  }
+  std::printf("[ asm      ] surface_span_fast: %d spans (%d second order) identical to scalar\n", cases, curved);
+  EXPECT_GT(curved, cases / 8);
+}
+
 TEST(AsmSpanPersp, MatchesTheRunWalkerOnRealFaces) {
   SB_REQUIRE_QUAKE_DATA();
   const int W = 640, H = 480;
