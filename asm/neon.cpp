@@ -65,13 +65,22 @@ void surface_span_neon(uint8_t* __restrict dest, int n, const uint8_t* __restric
 
 // ---------------------------------------------------------------- 2. surface block builder
 //
-// As the SSE2 builder (asm/sse2.cpp, section 2): per texel
-//   num = g00 w00 + g10 w10 + g01 w01 + g11 w11 (bilinear weights of fx, fy),
-// sixteen texels of a row at a time, here with widening 16 x 16 -> 32-bit multiplies. The
-// colormap row (num >> (S + 8), low byte) and the texel interleave into 16-bit indices
-// with one vst2q_u8 (little-endian: texel | row << 8).
+// Sixteen lanes at a time: 16 >> LB blocks side by side (one block at mip 0, eight at mip 3)
+// walked down their B rows, the light numerators in 32-bit lanes stepped by a per-lane delta
+// (one vector add per four texels and row). The numerators are kept scaled by 4^mip,
+//   n(fx, fy) = (B T(fx) + fy (U(fx) - T(fx))) << 2 mip,  T = g00 (B - fx) + g10 fx,
+//   U = g01 (B - fx) + g11 fx,
+// so the colormap row (num >> (S + 8)) is byte 2 of every lane at every mip (n < 2^22: byte 3
+// is zero). One table lookup per four lanes makes 32-bit indices texel | row << 8; they leave
+// the vector two at a time (64-bit lane moves) and the colormap bytes are read by sixteen
+// independent scalar loads, packed four to a word, one store per word: an in-order core
+// always has another load to issue instead of waiting on one.
+// Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
+// need no wrap are read in place. Every texture row once per call when the texture is shorter
+// than the surface (rows repeat) and fits the buffer, else each band's B rows.
 
-// Lanes k = 0..7 (half 0) or 8..15 (half 1) of g[bx0 + (k >> LB)].
+
+// Lanes k = 0..7 (half 0) or 8..15 (half 1) of g[k >> LB].
 template <int LB>
 inline uint16x8_t spread(const uint16_t* g, int half) {
   if constexpr (LB == 4) {
@@ -87,73 +96,150 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
   }
 }
 
+// dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
+// least 32 bytes must be writable).
+inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
+  int d;  // a period of the run, >= 16
+  if (tw >= 16) {
+    const int a = tw - c0 < n ? tw - c0 : n;
+    std::memcpy(dst, row + c0, size_t(a));
+    if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
+    d = tw;
+  } else {
+    d = tw * ((16 + tw - 1) / tw);
+    for (int k = 0, c = c0; k < d; ++k) {
+      dst[k] = row[c];
+      if (++c == tw) c = 0;
+    }
+  }
+  for (int x = d; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+}
+
+constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
+
 template <int kMip>
-void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
-                        int toff, int width, int height, const uint8_t* __restrict colormap,
-                        uint8_t* __restrict out) {
-  constexpr int B = 16 >> kMip, LB = 4 - kMip, S = 2 * (4 - kMip);
-  const int bh = height / B;
-  // Copies of the block row's two grid rows with zero padding for partial chunks.
-  uint16_t r0[kMaxBlockColumns + 24], r1[kMaxBlockColumns + 24];
-  uint16_t fxs[16], bfx[16];  // fx and B - fx of lane k
+void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
+                          int toff, int width, int height, const uint8_t* __restrict colormap,
+                          uint8_t* __restrict out) {
+  constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
+  const int bw = width / B, bh = height / B;
+  const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
+  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
+  const uint8_t* const tex_end = texels + tw * th;
+  // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
+  auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  const bool all_rows = th < height && th * stride <= kTileBytes;
+  if (all_rows)
+    for (int t = 0; t < th; ++t)
+      if (!in_place(t)) tile_row(buf + t * stride, texels + t * tw, tw, c0, n16);
+
+  // Per-lane constants: fx, B - fx (for halves 0 and 1), the index tables.
+  uint16_t fxs[16], bfx[16];
   for (int k = 0; k < 16; ++k) {
     fxs[k] = uint16_t(k % B);
     bfx[k] = uint16_t(B - k % B);
   }
-  const uint16x8_t FX0 = vld1q_u16(fxs), FX1 = vld1q_u16(fxs + 8);
-  const uint16x8_t BX0 = vld1q_u16(bfx), BX1 = vld1q_u16(bfx + 8);
-  const int cols = width / B + 1;
-  const int c0 = wrap(soff, tw);
-  alignas(16) uint16_t idx[16];
-  uint8_t tmp[16];
+  const uint16x8_t FX[2] = {vld1q_u16(fxs), vld1q_u16(fxs + 8)};
+  const uint16x8_t BX[2] = {vld1q_u16(bfx), vld1q_u16(bfx + 8)};
+  // Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
+  uint8x16_t IDX[4];
+  for (int j = 0; j < 4; ++j) {
+    uint8_t b[16];
+    for (int l = 0; l < 4; ++l) {
+      b[4 * l] = uint8_t(4 * j + l);
+      b[4 * l + 1] = b[4 * l + 2] = b[4 * l + 3] = 0xff;
+    }
+    IDX[j] = vld1q_u8(b);
+  }
 
-  const uint8_t* const tex_end = texels + tw * th;
-  uint8_t rowbuf[kRowBufferBytes];
-  int ty = wrap(toff, th);  // texture row of surface row y
+  // The band's two grid rows with zero padding (lanes past the surface read zeros).
+  uint16_t r0[kMaxBlockColumns + 32], r1[kMaxBlockColumns + 32];
+  const int cols = bw + 1;
+  for (int k = cols; k < kMaxBlockColumns + 32; ++k) r0[k] = r1[k] = 0;
   for (int by = 0; by < bh; ++by) {
     std::memcpy(r0, grid + by * grid_width, size_t(cols) * 2);
     std::memcpy(r1, grid + (by + 1) * grid_width, size_t(cols) * 2);
-    for (int k = cols; k < kMaxBlockColumns + 24; ++k) r0[k] = r1[k] = 0;
+    const int tb = (t0 + by * B) % th;  // the band's first texture row (B | th: no wrap inside)
+    const uint8_t* run[B + 1];
     for (int fy = 0; fy < B; ++fy) {
-      const int y = by * B + fy;
-      const uint16_t wt = uint16_t(B - fy), wb = uint16_t(fy);
-      // Weights of halves 0 and 1: w00 = (B - fx) wt, w10 = fx wt, w01 = (B - fx) wb, w11 = fx wb.
-      const uint16x8_t w00[2] = {vmulq_n_u16(BX0, wt), vmulq_n_u16(BX1, wt)};
-      const uint16x8_t w10[2] = {vmulq_n_u16(FX0, wt), vmulq_n_u16(FX1, wt)};
-      const uint16x8_t w01[2] = {vmulq_n_u16(BX0, wb), vmulq_n_u16(BX1, wb)};
-      const uint16x8_t w11[2] = {vmulq_n_u16(FX0, wb), vmulq_n_u16(FX1, wb)};
-      const uint8_t* trow = texels + ty * tw;
-      if (++ty == th) ty = 0;
-      uint8_t* drow = out + y * width;
-      const uint8_t* row_end;
-      const uint8_t* texrow = texel_row(trow, c0, tw, width, tex_end, rowbuf, &row_end);
-      {
-        constexpr int x = 0;
-        const int len = width;
-        for (int i = 0; i < len; i += 16) {
-          const int m = len - i < 16 ? len - i : 16;
-          const int bx0 = (x + i) >> LB;
-          uint16x8_t rows16[2];
-          for (int h = 0; h < 2; ++h) {
-            const uint16x8_t g00 = spread<LB>(r0 + bx0, h), g10 = spread<LB>(r0 + bx0 + 1, h);
-            const uint16x8_t g01 = spread<LB>(r1 + bx0, h), g11 = spread<LB>(r1 + bx0 + 1, h);
-            uint32x4_t lo = vmull_u16(vget_low_u16(g00), vget_low_u16(w00[h]));
-            lo = vmlal_u16(lo, vget_low_u16(g10), vget_low_u16(w10[h]));
-            lo = vmlal_u16(lo, vget_low_u16(g01), vget_low_u16(w01[h]));
-            lo = vmlal_u16(lo, vget_low_u16(g11), vget_low_u16(w11[h]));
-            uint32x4_t hi = vmull_u16(vget_high_u16(g00), vget_high_u16(w00[h]));
-            hi = vmlal_u16(hi, vget_high_u16(g10), vget_high_u16(w10[h]));
-            hi = vmlal_u16(hi, vget_high_u16(g01), vget_high_u16(w01[h]));
-            hi = vmlal_u16(hi, vget_high_u16(g11), vget_high_u16(w11[h]));
-            rows16[h] = vcombine_u16(vshrn_n_u32(lo, S + 8), vshrn_n_u32(hi, S + 8));
-          }
-          const uint8x16_t rows = vcombine_u8(vmovn_u16(rows16[0]), vmovn_u16(rows16[1]));
-          const uint8x16_t t = vld1q_u8(texels16(texrow + i, m, row_end, tmp));
-          uint8x16x2_t pair;
-          pair.val[0] = t;
-          pair.val[1] = rows;
-          vst2q_u8(reinterpret_cast<uint8_t*>(idx), pair);
-          lookup_n(drow + x + i, colormap, idx, m);
+      const int t = tb + fy;
+      if (in_place(t)) {
+        run[fy] = texels + t * tw + c0;
+      } else if (all_rows) {
+        run[fy] = buf + t * stride;
+      } else {
+        tile_row(buf + fy * stride, texels + t * tw, tw, c0, n16);
+        run[fy] = buf + fy * stride;
+      }
+    }
+    run[B] = run[0];
+    uint8_t* const band = out + by * B * width;
+    for (int g = 0; g < groups; ++g) {
+      uint32x4_t num[4], delta[4];
+#pragma GCC unroll 2
+      for (int h = 0; h < 2; ++h) {
+        const uint16x8_t e00 = spread<LB>(r0 + g * G, h), e10 = spread<LB>(r0 + g * G + 1, h);
+        const uint16x8_t e01 = spread<LB>(r1 + g * G, h), e11 = spread<LB>(r1 + g * G + 1, h);
+        const uint32x4_t tl = vmlal_u16(vmull_u16(vget_low_u16(e00), vget_low_u16(BX[h])), vget_low_u16(e10),
+                                        vget_low_u16(FX[h]));
+        const uint32x4_t th_ = vmlal_u16(vmull_u16(vget_high_u16(e00), vget_high_u16(BX[h])),
+                                         vget_high_u16(e10), vget_high_u16(FX[h]));
+        const uint32x4_t ul = vmlal_u16(vmull_u16(vget_low_u16(e01), vget_low_u16(BX[h])), vget_low_u16(e11),
+                                        vget_low_u16(FX[h]));
+        const uint32x4_t uh = vmlal_u16(vmull_u16(vget_high_u16(e01), vget_high_u16(BX[h])),
+                                        vget_high_u16(e11), vget_high_u16(FX[h]));
+        num[2 * h] = vshlq_n_u32(tl, 4 + kMip);
+        num[2 * h + 1] = vshlq_n_u32(th_, 4 + kMip);
+        if constexpr (kMip == 0) {
+          delta[2 * h] = vsubq_u32(ul, tl);
+          delta[2 * h + 1] = vsubq_u32(uh, th_);
+        } else {
+          delta[2 * h] = vshlq_n_u32(vsubq_u32(ul, tl), 2 * kMip);
+          delta[2 * h + 1] = vshlq_n_u32(vsubq_u32(uh, th_), 2 * kMip);
+        }
+      }
+      const int m = width - 16 * g;  // lanes on the surface (16 but in the last group)
+      uint8_t* d = band + 16 * g;
+      // Software-pipelined: row fy + 1's indices are formed while row fy's colormap loads are
+      // in flight (run[B] is a readable row: the extra indices after the last row are unused).
+      uint64x1_t q[8];  // lanes 2i, 2i + 1
+      auto indices = [&](const uint8_t* src) {
+        const uint8x16_t t = vld1q_u8(src + 16 * g);
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {
+          const uint8x16_t x = vreinterpretq_u8_u32(vshrq_n_u32(num[j], 8));
+#if defined(__aarch64__)
+          const uint64x2_t v = vreinterpretq_u64_u8(vqtbx1q_u8(x, t, IDX[j]));
+          q[2 * j] = vget_low_u64(v);
+          q[2 * j + 1] = vget_high_u64(v);
+#else  // d-register halves: no recombination into a q register
+          uint8x8x2_t tt;
+          tt.val[0] = vget_low_u8(t);
+          tt.val[1] = vget_high_u8(t);
+          q[2 * j] = vreinterpret_u64_u8(vtbx2_u8(vget_low_u8(x), tt, vget_low_u8(IDX[j])));
+          q[2 * j + 1] = vreinterpret_u64_u8(vtbx2_u8(vget_high_u8(x), tt, vget_high_u8(IDX[j])));
+#endif
+          num[j] = vaddq_u32(num[j], delta[j]);
+        }
+      };
+      indices(run[0]);
+      for (int fy = 0; fy < B; ++fy, d += width) {
+        uint64_t p[8];
+#pragma GCC unroll 8
+        for (int i = 0; i < 8; ++i) p[i] = vget_lane_u64(q[i], 0);
+        indices(run[fy + 1]);
+        uint32_t w[4];
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j)
+          w[j] = uint32_t(colormap[uint32_t(p[2 * j])]) | uint32_t(colormap[p[2 * j] >> 32]) << 8 |
+                 uint32_t(colormap[uint32_t(p[2 * j + 1])]) << 16 | uint32_t(colormap[p[2 * j + 1] >> 32]) << 24;
+        if (m >= 16) {
+          const uint64_t lo = w[0] | uint64_t(w[1]) << 32, hi = w[2] | uint64_t(w[3]) << 32;
+          std::memcpy(d, &lo, 8);
+          std::memcpy(d + 8, &hi, 8);
+        } else {
+          std::memcpy(d, w, size_t(m));
         }
       }
     }
@@ -169,10 +255,10 @@ void surface_block_neon(const uint16_t* grid, int grid_width, const uint8_t* tex
     return;
   }
   switch (mip) {
-    case 0: return surface_block_rows<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 1: return surface_block_rows<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 2: return surface_block_rows<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    default: return surface_block_rows<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 0: return surface_block_groups<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 1: return surface_block_groups<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 2: return surface_block_groups<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    default: return surface_block_groups<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
   }
 }
 

@@ -5,6 +5,8 @@
 #
 #   bench/count.sh            everything (about 2 minutes on 2 cores once built)
 #   bench/count.sh --quick    kernels only, no whole-frame callgrind runs
+#   bench/count.sh --only=block_mip [--variants=scalar,neon]   those rows only, merged into
+#                             the existing bench/counts.md (see bench/count_report.py)
 #
 # Builds (only what it needs, own build dirs, -no-pie so addresses match the binary):
 #   build/count          starbow_count_kernels + starbow (x86-64, native)

@@ -15,6 +15,9 @@
 #   consecutive blocks on out-of-order cores is not credited: a mild over-estimate there.
 # Also the whole frame on x86-64: callgrind over a flythrough of F and 2F frames.
 # Writes the table to stdout and to bench/counts.md.
+# Filter (bench/count.sh --quick passes arguments through): --only=PREFIX[,PREFIX...] keeps
+# the cases starting with a prefix (e.g. --only=block_mip), --variants=a,b keeps those
+# variants; a filtered run replaces only its own rows of the existing bench/counts.md.
 import json, math, os, re, subprocess, sys, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -265,8 +268,33 @@ def fmt(x, d=2):
     return "—" if x is None else f"{x:.{d}f}"
 
 
+def opt(name):
+    for a in sys.argv[1:]:
+        if a.startswith(f"--{name}="):
+            return tuple(x for x in a.split("=", 1)[1].split(",") if x)
+    return ()
+
+
+ONLY, VARIANTS = opt("only"), opt("variants")
+
+
+def merge_rows(path, rows):
+    """Replaces the table rows (same kernel, target, variant) of an existing counts.md."""
+    lines = open(path).read().split("\n")
+    key = lambda l: tuple(c.strip() for c in l.split("|")[1:4])
+    for r in rows:
+        hits = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l) == key(r)]
+        if hits:
+            lines[hits[0]] = r
+        else:  # after the last row of the same kernel, else at the table's end
+            same = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l)[0] == key(r)[0]]
+            last = [i for i, l in enumerate(lines) if l.startswith("| ")]
+            lines.insert((same or last)[-1] + 1, r)
+    open(path, "w").write("\n".join(lines))
+
+
 def main():
-    quick = "--quick" in sys.argv
+    quick = "--quick" in sys.argv or bool(ONLY or VARIANTS)
     t0 = time.time()
     results = []  # (target, case, variant, ipu, {cpu: cyc}, cover, gather)
     for t in TARGETS:
@@ -275,6 +303,7 @@ def main():
             continue
         runner = t["qemu"] if t["name"] != "x86-64" else []
         cases = [l.split() for l in sh(runner + [t["exe"], "list"]).stdout.splitlines()]
+        cases = [c for c in cases if (not ONLY or c[0].startswith(ONLY)) and (not VARIANTS or c[1] in VARIANTS)]
         dis = Disasm(t)
         for case, variant, units in cases:
             units = int(units)
@@ -353,7 +382,11 @@ def main():
             md.append(f"| {mode} | {ppf:.1f} | {span:.1f} | {pf / 1e6:.2f} M | 59.1 per pixel, span drawer 19.8 |")
     md += ["", f"Run time: {time.time() - t0:.0f} s."]
     text = "\n".join(md) + "\n"
-    open(os.path.join(ROOT, "bench", "counts.md"), "w").write(text)
+    if ONLY or VARIANTS:
+        merge_rows(os.path.join(ROOT, "bench", "counts.md"), [l for l in md if l.startswith("| ") and "---" not in l
+                                                              and not l.startswith("| kernel |")])
+    else:
+        open(os.path.join(ROOT, "bench", "counts.md"), "w").write(text)
     print(text)
 
 
