@@ -106,7 +106,8 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
     if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
     d = tw;
   } else {
-    d = tw * ((16 + tw - 1) / tw);
+    d = tw;
+    while (d < 16) d += tw;  // (no divide)
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
@@ -124,7 +125,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
   const int bw = width / B, bh = height / B;
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
-  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  const int c0 = wrap(soff, tw);
+  int t0b = wrap(toff, th);  // texture row of the current band's first row
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
@@ -160,7 +162,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   for (int by = 0; by < bh; ++by) {
     std::memcpy(r0, grid + by * grid_width, size_t(cols) * 2);
     std::memcpy(r1, grid + (by + 1) * grid_width, size_t(cols) * 2);
-    const int tb = (t0 + by * B) % th;  // the band's first texture row (B | th: no wrap inside)
+    const int tb = t0b;  // the band's first texture row (B | th: no wrap inside the band)
+    if ((t0b += B) == th) t0b = 0;
     const uint8_t* run[B + 1];
     for (int fy = 0; fy < B; ++fy) {
       const int t = tb + fy;

@@ -21,7 +21,8 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
     if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
     d = tw;
   } else {
-    d = tw * ((16 + tw - 1) / tw);
+    d = tw;
+    while (d < 16) d += tw;  // (no divide)
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
@@ -33,6 +34,24 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
 
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
+constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
+
+// A group's sixteen lanes of one grid row as pmaddwd pairs (g[b], g[b + 1]), quarter j = lanes
+// 4j .. 4j + 3; b = the group's first block. Reads g[b .. b + 8] at most (G + 1 entries).
+template <int LB>
+inline __m128i grid_pairs(const uint16_t* g, int j) {
+  if constexpr (LB == 1) {
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g));
+    const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + 1));
+    const __m128i p = j < 2 ? _mm_unpacklo_epi16(a, c) : _mm_unpackhi_epi16(a, c);  // blocks 4(j/2) ..
+    return j % 2 == 0 ? _mm_unpacklo_epi32(p, p) : _mm_unpackhi_epi32(p, p);
+  } else {
+    uint32_t v;
+    std::memcpy(&v, g + ((4 * j) >> LB), 4);
+    return _mm_set1_epi32(int32_t(v));
+  }
+}
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -42,16 +61,26 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
   const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
+  const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
   const uint8_t* const tex_end = texels + tw * th;
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
-  const bool all_rows = th < height && th * stride <= kTileBytes;
+  // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
+  // they are laid out once and the whole surface is one strip reading run[] cyclically from
+  // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
+  const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      if (!in_place(t)) tile_row(buf + t * stride, texels + t * tw, tw, c0, n16);
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16),
+                                                     buf + t * stride);
+  int strip_bands = bh;
+  if (!all_rows) {
+    const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
+    strip_bands = fit < bh ? fit : bh;
+  }
 
   // Lanes k = 4j + i: weight pairs (B - fx, fx) << (4 + mip) for the first numerator (the
   // scaled B T, at most 256 per weight: pmaddwd's signed factors stay exact) and << 2 mip for
-  // the row step (U - T).
+  // the row steps (U - T, then each next grid row's difference).
   __m128i A0[4], A1[4];
   for (int j = 0; j < 4; ++j) {
     auto pat = [](int k, int s) { return int32_t((B - k % B) << s | (k % B) << (16 + s)); };
@@ -61,93 +90,84 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                            pat(4 * j + 3, 2 * kMip));
   }
   const __m128i keep = _mm_set1_epi32(int32_t(0xffffff00u)), zero = _mm_setzero_si128();
-  // (g[bx], g[bx + 1]) of the band's top (p0) and bottom (p1) grid rows, zero padded.
-  // Each grid row's pairs are made once: a band's bottom row is the next band's top.
-  alignas(16) uint32_t pa[kMaxBlockColumns + 16], pb[kMaxBlockColumns + 16];
-  uint32_t *p0 = pa, *p1 = pb;
-  for (int bx = bw; bx < bw + 16; ++bx) pa[bx] = pb[bx] = 0;
-  for (int by = 0; by < bh; ++by) {
-    const uint16_t* g1 = grid + (by + 1) * grid_width;
-    auto pairs = [&](const uint16_t* g, uint32_t* p) {
-      int bx = 0;
-      for (; bx + 8 <= bw; bx += 8) {  // reads g[bx .. bx + 8]: inside the row (bw + 1 entries)
-        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + bx));
-        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + bx + 1));
-        _mm_store_si128(reinterpret_cast<__m128i*>(p + bx), _mm_unpacklo_epi16(a, b));
-        _mm_store_si128(reinterpret_cast<__m128i*>(p + bx + 4), _mm_unpackhi_epi16(a, b));
-      }
-      for (; bx < bw; ++bx) p[bx] = uint32_t(g[bx]) | uint32_t(g[bx + 1]) << 16;
-    };
-    if (by == 0) {
-      pairs(grid, p0);
+  uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
+
+  for (int by0 = 0; by0 < bh; by0 += strip_bands) {
+    const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
+    int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
+    if (all_rows) {
+      first = (t0 + by0 * B) % th;
     } else {
-      uint32_t* const s = p0;
-      p0 = p1;
-      p1 = s;
-    }
-    pairs(g1, p1);
-    const int tb = (t0 + by * B) % th;  // the band's first texture row (B | th: no wrap inside)
-    const uint8_t* run[B];
-    for (int fy = 0; fy < B; ++fy) {
-      const int t = tb + fy;
-      if (in_place(t)) {
-        run[fy] = texels + t * tw + c0;
-      } else if (all_rows) {
-        run[fy] = buf + t * stride;
-      } else {
-        tile_row(buf + fy * stride, texels + t * tw, tw, c0, n16);
-        run[fy] = buf + fy * stride;
+      count = nb * B;
+      int t = (t0 + by0 * B) % th;
+      for (int r = 0; r < count; ++r) {
+        run[r] = in_place(t) ? texels + t * tw + c0
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16), buf + r * stride);
+        if (++t == th) t = 0;
       }
     }
-    uint8_t* const band = out + by * B * width;
+    uint8_t* const strip = out + by0 * B * width;
     for (int g = 0; g < groups; ++g) {
-      const int bx0 = g * G;
-      __m128i num[4], delta[4];
-#pragma GCC unroll 4
-      for (int j = 0; j < 4; ++j) {
-        __m128i e0, e1;
-        if constexpr (LB == 1) {
-          e0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p0 + bx0 + 2 * j));
-          e1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p1 + bx0 + 2 * j));
-          e0 = _mm_unpacklo_epi32(e0, e0);
-          e1 = _mm_unpacklo_epi32(e1, e1);
-        } else {
-          e0 = _mm_set1_epi32(int32_t(p0[bx0 + ((4 * j) >> LB)]));
-          e1 = _mm_set1_epi32(int32_t(p1[bx0 + ((4 * j) >> LB)]));
+      const int b0 = g * G;
+      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
+        const uint16_t* r = grid + by * grid_width + b0;
+        if (direct) return r;
+        const int n = bw + 1 - b0;
+        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
+        return pad;
+      };
+      __m128i num[4], delta[4], prev[4];
+      {
+        const uint16_t* r0 = row_of(by0);
+        for (int j = 0; j < 4; ++j) {
+          const __m128i e = grid_pairs<LB>(r0, j);
+          num[j] = _mm_madd_epi16(e, A0[j]);
+          prev[j] = _mm_madd_epi16(e, A1[j]);
         }
-        num[j] = _mm_madd_epi16(e0, A0[j]);
-        delta[j] = _mm_sub_epi32(_mm_madd_epi16(e1, A1[j]), _mm_madd_epi16(e0, A1[j]));
       }
       const int m = width - 16 * g;  // lanes on the surface (16 but in the last group)
-      uint8_t* d = band + 16 * g;
-      for (int fy = 0; fy < B; ++fy, d += width) {
-        const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(run[fy] + 16 * g));
-        const __m128i lo = _mm_unpacklo_epi8(t, zero), hi = _mm_unpackhi_epi8(t, zero);
-        const __m128i t32[4] = {_mm_unpacklo_epi16(lo, zero), _mm_unpackhi_epi16(lo, zero),
-                                _mm_unpacklo_epi16(hi, zero), _mm_unpackhi_epi16(hi, zero)};
-        uint64_t p[8];
+      uint8_t* d = strip + 16 * g;
+      int k = first;
+      for (int band = 0; band < nb; ++band) {
+        const uint16_t* r1 = row_of(by0 + band + 1);
 #pragma GCC unroll 4
-        for (int j = 0; j < 4; ++j) {
-          const __m128i idx = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(num[j], 8), keep), t32[j]);
-          num[j] = _mm_add_epi32(num[j], delta[j]);
-          p[2 * j] = uint64_t(_mm_cvtsi128_si64(idx));
-          p[2 * j + 1] = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
+        for (int j = 0; j < 4; ++j) {  // this band's row step; num continues from the last band
+          const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
+          delta[j] = _mm_sub_epi32(next, prev[j]);
+          prev[j] = next;
         }
-        uint64_t w[2];
-#pragma GCC unroll 2
-        for (int h = 0; h < 2; ++h) {
-          uint64_t v = 0;
+        for (int fy = 0; fy < B; ++fy, d += width) {
+          const uint8_t* src = run[k];
+          if (++k == count) k = 0;
+          const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + 16 * g));
+          const __m128i lo = _mm_unpacklo_epi8(t, zero), hi = _mm_unpackhi_epi8(t, zero);
+          const __m128i t32[4] = {_mm_unpacklo_epi16(lo, zero), _mm_unpackhi_epi16(lo, zero),
+                                  _mm_unpacklo_epi16(hi, zero), _mm_unpackhi_epi16(hi, zero)};
+          uint64_t p[8];
 #pragma GCC unroll 4
-          for (int i = 0; i < 4; ++i) {
-            const uint64_t x = p[4 * h + i];
-            v |= uint64_t(colormap[uint32_t(x)]) << (16 * i) | uint64_t(colormap[x >> 32]) << (16 * i + 8);
+          for (int j = 0; j < 4; ++j) {
+            const __m128i idx = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(num[j], 8), keep), t32[j]);
+            num[j] = _mm_add_epi32(num[j], delta[j]);
+            p[2 * j] = uint64_t(_mm_cvtsi128_si64(idx));
+            p[2 * j + 1] = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
           }
-          w[h] = v;
-        }
-        if (m >= 16) {
-          std::memcpy(d, w, 16);
-        } else {
-          std::memcpy(d, w, size_t(m));
+          uint64_t w[2];
+#pragma GCC unroll 2
+          for (int h = 0; h < 2; ++h) {
+            uint64_t v = 0;
+#pragma GCC unroll 4
+            for (int i = 0; i < 4; ++i) {
+              const uint64_t x = p[4 * h + i];
+              v |= uint64_t(colormap[uint32_t(x)]) << (16 * i) | uint64_t(colormap[x >> 32]) << (16 * i + 8);
+            }
+            w[h] = v;
+          }
+          if (m >= 16) {
+            std::memcpy(d, w, 16);
+          } else {
+            std::memcpy(d, w, size_t(m));
+          }
         }
       }
     }
