@@ -118,6 +118,21 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
 
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
+constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
+
+// Lanes k of the group's weighted grid row: g[k >> LB] (B - fx) + g[(k >> LB) + 1] fx with
+// weights pre-shifted (bx = (B - fx) << s, fx = fx << s), quarter j = lanes 4j .. 4j + 3.
+template <int LB>
+inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx, uint32x4_t* out) {
+#pragma GCC unroll 2
+  for (int h = 0; h < 2; ++h) {
+    const uint16x8_t e0 = spread<LB>(g, h), e1 = spread<LB>(g + 1, h);
+    out[2 * h] = vmlal_u16(vmull_u16(vget_low_u16(e0), vget_low_u16(bx[h])), vget_low_u16(e1), vget_low_u16(fx[h]));
+    out[2 * h + 1] =
+        vmlal_u16(vmull_u16(vget_high_u16(e0), vget_high_u16(bx[h])), vget_high_u16(e1), vget_high_u16(fx[h]));
+  }
+}
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -125,25 +140,37 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
   const int bw = width / B, bh = height / B;
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
-  const int c0 = wrap(soff, tw);
-  int t0b = wrap(toff, th);  // texture row of the current band's first row
+  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
+  const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
-  const bool all_rows = th < height && th * stride <= kTileBytes;
+  // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
+  // they are laid out once and the whole surface is one strip reading run[] cyclically from
+  // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
+  const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      if (!in_place(t)) tile_row(buf + t * stride, texels + t * tw, tw, c0, n16);
-
-  // Per-lane constants: fx, B - fx (for halves 0 and 1), the index tables.
-  uint16_t fxs[16], bfx[16];
-  for (int k = 0; k < 16; ++k) {
-    fxs[k] = uint16_t(k % B);
-    bfx[k] = uint16_t(B - k % B);
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16),
+                                                     buf + t * stride);
+  int strip_bands = bh;
+  if (!all_rows) {
+    const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
+    strip_bands = fit < bh ? fit : bh;
   }
-  const uint16x8_t FX[2] = {vld1q_u16(fxs), vld1q_u16(fxs + 8)};
-  const uint16x8_t BX[2] = {vld1q_u16(bfx), vld1q_u16(bfx + 8)};
+
+  // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
+  // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
+  uint16_t w[4][16];
+  for (int k = 0; k < 16; ++k) {
+    w[0][k] = uint16_t((B - k % B) << (4 + kMip));
+    w[1][k] = uint16_t((k % B) << (4 + kMip));
+    w[2][k] = uint16_t((B - k % B) << (2 * kMip));
+    w[3][k] = uint16_t((k % B) << (2 * kMip));
+  }
+  const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
+  const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
   // Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
   uint8x16_t IDX[4];
   for (int j = 0; j < 4; ++j) {
@@ -154,58 +181,205 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
     IDX[j] = vld1q_u8(b);
   }
+  uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 
-  // The band's two grid rows with zero padding (lanes past the surface read zeros).
-  uint16_t r0[kMaxBlockColumns + 32], r1[kMaxBlockColumns + 32];
-  const int cols = bw + 1;
-  for (int k = cols; k < kMaxBlockColumns + 32; ++k) r0[k] = r1[k] = 0;
-  for (int by = 0; by < bh; ++by) {
-    std::memcpy(r0, grid + by * grid_width, size_t(cols) * 2);
-    std::memcpy(r1, grid + (by + 1) * grid_width, size_t(cols) * 2);
-    const int tb = t0b;  // the band's first texture row (B | th: no wrap inside the band)
-    if ((t0b += B) == th) t0b = 0;
-    const uint8_t* run[B + 1];
-    for (int fy = 0; fy < B; ++fy) {
-      const int t = tb + fy;
-      if (in_place(t)) {
-        run[fy] = texels + t * tw + c0;
-      } else if (all_rows) {
-        run[fy] = buf + t * stride;
-      } else {
-        tile_row(buf + fy * stride, texels + t * tw, tw, c0, n16);
-        run[fy] = buf + fy * stride;
+  for (int by0 = 0; by0 < bh; by0 += strip_bands) {
+    const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
+    int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
+    if (all_rows) {
+      first = (t0 + by0 * B) % th;
+    } else {
+      count = nb * B;
+      int t = (t0 + by0 * B) % th;
+      for (int r = 0; r < count; ++r) {
+        run[r] = in_place(t) ? texels + t * tw + c0
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16), buf + r * stride);
+        if (++t == th) t = 0;
       }
     }
-    run[B] = run[0];
-    uint8_t* const band = out + by * B * width;
+    uint8_t* const strip = out + by0 * B * width;
     for (int g = 0; g < groups; ++g) {
-      uint32x4_t num[4], delta[4];
-#pragma GCC unroll 2
-      for (int h = 0; h < 2; ++h) {
-        const uint16x8_t e00 = spread<LB>(r0 + g * G, h), e10 = spread<LB>(r0 + g * G + 1, h);
-        const uint16x8_t e01 = spread<LB>(r1 + g * G, h), e11 = spread<LB>(r1 + g * G + 1, h);
-        const uint32x4_t tl = vmlal_u16(vmull_u16(vget_low_u16(e00), vget_low_u16(BX[h])), vget_low_u16(e10),
-                                        vget_low_u16(FX[h]));
-        const uint32x4_t th_ = vmlal_u16(vmull_u16(vget_high_u16(e00), vget_high_u16(BX[h])),
-                                         vget_high_u16(e10), vget_high_u16(FX[h]));
-        const uint32x4_t ul = vmlal_u16(vmull_u16(vget_low_u16(e01), vget_low_u16(BX[h])), vget_low_u16(e11),
-                                        vget_low_u16(FX[h]));
-        const uint32x4_t uh = vmlal_u16(vmull_u16(vget_high_u16(e01), vget_high_u16(BX[h])),
-                                        vget_high_u16(e11), vget_high_u16(FX[h]));
-        num[2 * h] = vshlq_n_u32(tl, 4 + kMip);
-        num[2 * h + 1] = vshlq_n_u32(th_, 4 + kMip);
-        if constexpr (kMip == 0) {
-          delta[2 * h] = vsubq_u32(ul, tl);
-          delta[2 * h + 1] = vsubq_u32(uh, th_);
-        } else {
-          delta[2 * h] = vshlq_n_u32(vsubq_u32(ul, tl), 2 * kMip);
-          delta[2 * h + 1] = vshlq_n_u32(vsubq_u32(uh, th_), 2 * kMip);
-        }
+      const int b0 = g * G;
+      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
+        const uint16_t* r = grid + by * grid_width + b0;
+        if (direct) return r;
+        const int n = bw + 1 - b0;
+        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
+        return pad;
+      };
+      uint32x4_t num[4], delta[4], prev[4];
+      {
+        const uint16_t* r0 = row_of(by0);
+        weigh<LB>(r0, BX0, FX0, num);
+        weigh<LB>(r0, BX1, FX1, prev);
       }
+      auto step_for = [&](int by) {  // delta = the band above grid row by's row step
+        uint32x4_t next[4];
+        weigh<LB>(row_of(by), BX1, FX1, next);
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {
+          delta[j] = vsubq_u32(next[j], prev[j]);
+          prev[j] = next[j];
+        }
+      };
       const int m = width - 16 * g;  // lanes on the surface (16 but in the last group)
-      uint8_t* d = band + 16 * g;
-      // Software-pipelined: row fy + 1's indices are formed while row fy's colormap loads are
-      // in flight (run[B] is a readable row: the extra indices after the last row are unused).
+      uint8_t* d = strip + 16 * g;
+      int k = first;
+      auto next_run = [&]() {
+        const uint8_t* r = run[k];
+        if (++k == count) k = 0;
+        return r;
+      };
+      // Software-pipelined: row y + 1's indices are formed while row y's colormap loads are
+      // in flight (after the strip's last row they are formed again from a readable row, unused).
+      // step_for may run at any point of a row before the next row's indices: it changes only
+      // the step that follows them.
+#if defined(__aarch64__)
+      // The rows' colormap indices travel as eight 64-bit index pairs P (lanes 2i, 2i + 1)
+      // from one row to the next. Full groups run a band at a time in hand-scheduled assembly
+      // (below); the last partial group of a row runs this C++ version.
+      uint64_t P[8];
+      auto indices = [&](const uint8_t* src) {  // P = the indices of the row at src
+        const uint8x16_t t = vld1q_u8(src + 16 * g);
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {
+          const uint64x2_t v =
+              vreinterpretq_u64_u8(vqtbx1q_u8(vreinterpretq_u8_u32(vshrq_n_u32(num[j], 8)), t, IDX[j]));
+          P[2 * j] = vgetq_lane_u64(v, 0);
+          P[2 * j + 1] = vgetq_lane_u64(v, 1);
+          num[j] = vaddq_u32(num[j], delta[j]);
+        }
+      };
+      step_for(by0 + 1);
+      indices(next_run());
+      if (m >= 16) {
+        // Each row: the scalar work of its pairs first (ALU and load/store only: the
+        // colormap loads, packing, one stp), then the NEON work of the next row (ushr, tbx,
+        // step, and the 64-bit moves into the pairs). An in-order core (Cortex-A53) never
+        // waits on a NEON result inside a row, nor has a short instruction held behind a long
+        // NEON one. x0-x7: pairs; x9-x16: high indices; x17: texel run; v16-v19: the step;
+        // v20-v23: IDX; v27: texels; v28-v31: index vectors. A band's last row steps with the
+        // next band's delta (dn).
+#define SB_BLOCK_ROW \
+  "orr x9, xzr, x0, lsr #32\n\t" \
+  "orr x10, xzr, x1, lsr #32\n\t" \
+  "orr x11, xzr, x2, lsr #32\n\t" \
+  "orr x12, xzr, x3, lsr #32\n\t" \
+  "orr x13, xzr, x4, lsr #32\n\t" \
+  "ldr x17, [%[rp]], #8\n\t" \
+  "orr x14, xzr, x5, lsr #32\n\t" \
+  "ldrb w0, [%[cm], w0, uxtw]\n\t" \
+  "orr x15, xzr, x6, lsr #32\n\t" \
+  "ldrb w9, [%[cm], x9]\n\t" \
+  "orr x16, xzr, x7, lsr #32\n\t" \
+  "ldrb w1, [%[cm], w1, uxtw]\n\t" \
+  "cmp %[rp], %[re]\n\t" \
+  "ldrb w10, [%[cm], x10]\n\t" \
+  "csel %[rp], %[rb], %[rp], eq\n\t" \
+  "ldrb w2, [%[cm], w2, uxtw]\n\t" \
+  "add x17, x17, %[goff]\n\t" \
+  "ldrb w11, [%[cm], x11]\n\t" \
+  "orr x0, x0, x9, lsl #8\n\t" \
+  "ldrb w3, [%[cm], w3, uxtw]\n\t" \
+  "orr x1, x1, x10, lsl #8\n\t" \
+  "ldrb w12, [%[cm], x12]\n\t" \
+  "ldr q27, [x17]\n\t" \
+  "orr x2, x2, x11, lsl #8\n\t" \
+  "ldrb w4, [%[cm], w4, uxtw]\n\t" \
+  "orr x0, x0, x1, lsl #16\n\t" \
+  "ldrb w13, [%[cm], x13]\n\t" \
+  "orr x3, x3, x12, lsl #8\n\t" \
+  "ldrb w5, [%[cm], w5, uxtw]\n\t" \
+  "ldrb w14, [%[cm], x14]\n\t" \
+  "orr x2, x2, x3, lsl #16\n\t" \
+  "ldrb w6, [%[cm], w6, uxtw]\n\t" \
+  "orr x4, x4, x13, lsl #8\n\t" \
+  "ldrb w15, [%[cm], x15]\n\t" \
+  "orr x5, x5, x14, lsl #8\n\t" \
+  "ldrb w7, [%[cm], w7, uxtw]\n\t" \
+  "orr x0, x0, x2, lsl #32\n\t" \
+  "ldrb w16, [%[cm], x16]\n\t" \
+  "orr x4, x4, x5, lsl #16\n\t" \
+  "orr x6, x6, x15, lsl #8\n\t" \
+  "orr x7, x7, x16, lsl #8\n\t" \
+  "orr x6, x6, x7, lsl #16\n\t" \
+  "orr x4, x4, x6, lsl #32\n\t" \
+  "stp x0, x4, [%[d]]\n\t" \
+  "add %[d], %[d], %[w]\n\t" \
+  "ushr v28.4s, %[n0].4s, #8\n\t"                     \
+  "ushr v29.4s, %[n1].4s, #8\n\t"                     \
+  "ushr v30.4s, %[n2].4s, #8\n\t"                     \
+  "ushr v31.4s, %[n3].4s, #8\n\t"                     \
+  "add %[n0].4s, %[n0].4s, v16.4s\n\t"                \
+  "add %[n1].4s, %[n1].4s, v17.4s\n\t"                \
+  "tbx v28.16b, {v27.16b}, v20.16b\n\t"               \
+  "tbx v29.16b, {v27.16b}, v21.16b\n\t"               \
+  "add %[n2].4s, %[n2].4s, v18.4s\n\t"                \
+  "add %[n3].4s, %[n3].4s, v19.4s\n\t"                \
+  "tbx v30.16b, {v27.16b}, v22.16b\n\t"               \
+  "tbx v31.16b, {v27.16b}, v23.16b\n\t"               \
+  "fmov x0, d28\n\t"                                  \
+  "mov x1, v28.d[1]\n\t"                              \
+  "fmov x2, d29\n\t"                                  \
+  "mov x3, v29.d[1]\n\t"                              \
+  "fmov x4, d30\n\t"                                  \
+  "mov x5, v30.d[1]\n\t"                              \
+  "fmov x6, d31\n\t"                                  \
+  "mov x7, v31.d[1]\n\t"
+        const int64_t goff = 16 * g, wstride = width;
+        for (int band = 0; band < nb; ++band) {
+          uint32x4_t cur[4];
+          for (int j = 0; j < 4; ++j) cur[j] = delta[j];
+          if (band + 1 < nb) step_for(by0 + band + 2);  // delta = the next band's step
+          const uint8_t* const* rp = run + k;
+          int64_t rows = B - 1;
+          asm volatile(
+              "ldp x0, x1, [%[P]]\n\t"
+              "ldp x2, x3, [%[P], #16]\n\t"
+              "ldp x4, x5, [%[P], #32]\n\t"
+              "ldp x6, x7, [%[P], #48]\n\t"
+              "ldp q20, q21, [%[ix]]\n\t"
+              "ldp q22, q23, [%[ix], #32]\n\t"
+              "ldp q16, q17, [%[dl]]\n\t"
+              "ldp q18, q19, [%[dl], #32]\n\t"
+              "1:\n\t" SB_BLOCK_ROW
+              "subs %[rows], %[rows], #1\n\t"
+              "b.ne 1b\n\t"
+              "ldp q16, q17, [%[dn]]\n\t"
+              "ldp q18, q19, [%[dn], #32]\n\t" SB_BLOCK_ROW
+              "stp x0, x1, [%[P]]\n\t"
+              "stp x2, x3, [%[P], #16]\n\t"
+              "stp x4, x5, [%[P], #32]\n\t"
+              "stp x6, x7, [%[P], #48]\n\t"
+              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [rp] "+r"(rp),
+                [d] "+r"(d), [rows] "+r"(rows)
+              : [P] "r"(P), [ix] "r"(IDX), [dl] "r"(cur), [dn] "r"(band + 1 < nb ? delta : cur),
+                [rb] "r"(run), [re] "r"(run + count), [goff] "r"(goff), [cm] "r"(colormap), [w] "r"(wstride)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x9", "x10", "x11", "x12", "x13", "x14", "x15",
+                "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v27", "v28", "v29", "v30",
+                "v31", "cc", "memory");
+          k = int(rp - run);
+        }
+#undef SB_BLOCK_ROW
+        continue;
+      }
+      auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
+        if (band_end) step_for(next_grid_row);
+        uint64_t p[8];
+        std::memcpy(p, P, sizeof p);
+        indices(next_run());
+        uint8_t wd[16];
+        for (int i = 0; i < 8; ++i) {
+          wd[2 * i] = colormap[uint32_t(p[i])];
+          wd[2 * i + 1] = colormap[p[i] >> 32];
+        }
+        std::memcpy(d, wd, size_t(m));
+        d += width;
+      };
+#else
+      // Software-pipelined: row y + 1's indices are formed while row y's colormap loads are
+      // in flight (after the strip's last row they are formed again from a readable row, unused).
       uint64x1_t q[8];  // lanes 2i, 2i + 1
       auto indices = [&](const uint8_t* src) {
         const uint8x16_t t = vld1q_u8(src + 16 * g);
@@ -226,24 +400,34 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           num[j] = vaddq_u32(num[j], delta[j]);
         }
       };
-      indices(run[0]);
-      for (int fy = 0; fy < B; ++fy, d += width) {
-        uint64_t p[8];
+      step_for(by0 + 1);
+      indices(next_run());
+      auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
+          uint64_t p[8];
 #pragma GCC unroll 8
-        for (int i = 0; i < 8; ++i) p[i] = vget_lane_u64(q[i], 0);
-        indices(run[fy + 1]);
-        uint32_t w[4];
+          for (int i = 0; i < 8; ++i) p[i] = vget_lane_u64(q[i], 0);
+          // num now holds the next row's numerators: past a band's last row, the next band's
+          // first (the light continues across the edge), stepped by the next band's delta.
+          if (band_end) step_for(next_grid_row);
+          indices(next_run());
+          uint32_t wd[4];
 #pragma GCC unroll 4
-        for (int j = 0; j < 4; ++j)
-          w[j] = uint32_t(colormap[uint32_t(p[2 * j])]) | uint32_t(colormap[p[2 * j] >> 32]) << 8 |
-                 uint32_t(colormap[uint32_t(p[2 * j + 1])]) << 16 | uint32_t(colormap[p[2 * j + 1] >> 32]) << 24;
-        if (m >= 16) {
-          const uint64_t lo = w[0] | uint64_t(w[1]) << 32, hi = w[2] | uint64_t(w[3]) << 32;
-          std::memcpy(d, &lo, 8);
-          std::memcpy(d + 8, &hi, 8);
-        } else {
-          std::memcpy(d, w, size_t(m));
-        }
+          for (int j = 0; j < 4; ++j)
+            wd[j] = uint32_t(colormap[uint32_t(p[2 * j])]) | uint32_t(colormap[p[2 * j] >> 32]) << 8 |
+                    uint32_t(colormap[uint32_t(p[2 * j + 1])]) << 16 | uint32_t(colormap[p[2 * j + 1] >> 32]) << 24;
+          if (m >= 16) {
+            const uint64_t lo = wd[0] | uint64_t(wd[1]) << 32, hi = wd[2] | uint64_t(wd[3]) << 32;
+            std::memcpy(d, &lo, 8);
+            std::memcpy(d + 8, &hi, 8);
+          } else {
+            std::memcpy(d, wd, size_t(m));
+          }
+          d += width;
+      };
+#endif
+      for (int band = 0; band < nb; ++band) {
+        for (int fy = 0; fy < B - 1; ++fy) row(false, 0);
+        row(band + 1 < nb, by0 + band + 2);
       }
     }
   }
