@@ -171,6 +171,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   }
   const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
   const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
+#if defined(__aarch64__)
   // Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
   uint8x16_t IDX[4];
   for (int j = 0; j < 4; ++j) {
@@ -181,6 +182,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
     IDX[j] = vld1q_u8(b);
   }
+#endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
@@ -380,50 +382,150 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #else
       // Software-pipelined: row y + 1's indices are formed while row y's colormap loads are
       // in flight (after the strip's last row they are formed again from a readable row, unused).
-      uint64x1_t q[8];  // lanes 2i, 2i + 1
+      // ARMv7 (out-of-order Cortex-A9, few registers): row y + 1's 32-bit indices
+      // row << 8 | texel (vsli of the row onto the widened texel) are stored to a small
+      // aligned buffer while row y's colormap loads run from the previous one.
+      alignas(16) uint32_t ib[2][16];
+      int cur = 0;
       auto indices = [&](const uint8_t* src) {
         const uint8x16_t t = vld1q_u8(src + 16 * g);
+        const uint16x8_t lo = vmovl_u8(vget_low_u8(t)), hi = vmovl_u8(vget_high_u8(t));
+        const uint32x4_t t32[4] = {vmovl_u16(vget_low_u16(lo)), vmovl_u16(vget_high_u16(lo)),
+                                   vmovl_u16(vget_low_u16(hi)), vmovl_u16(vget_high_u16(hi))};
+        uint32_t* const o = ib[cur ^ 1];
 #pragma GCC unroll 4
         for (int j = 0; j < 4; ++j) {
-          const uint8x16_t x = vreinterpretq_u8_u32(vshrq_n_u32(num[j], 8));
-#if defined(__aarch64__)
-          const uint64x2_t v = vreinterpretq_u64_u8(vqtbx1q_u8(x, t, IDX[j]));
-          q[2 * j] = vget_low_u64(v);
-          q[2 * j + 1] = vget_high_u64(v);
-#else  // d-register halves: no recombination into a q register
-          uint8x8x2_t tt;
-          tt.val[0] = vget_low_u8(t);
-          tt.val[1] = vget_high_u8(t);
-          q[2 * j] = vreinterpret_u64_u8(vtbx2_u8(vget_low_u8(x), tt, vget_low_u8(IDX[j])));
-          q[2 * j + 1] = vreinterpret_u64_u8(vtbx2_u8(vget_high_u8(x), tt, vget_high_u8(IDX[j])));
-#endif
+          vst1q_u32(o + 4 * j, vsliq_n_u32(t32[j], vshrq_n_u32(num[j], 16), 8));
           num[j] = vaddq_u32(num[j], delta[j]);
         }
+        cur ^= 1;
       };
       step_for(by0 + 1);
       indices(next_run());
       auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
-          uint64_t p[8];
-#pragma GCC unroll 8
-          for (int i = 0; i < 8; ++i) p[i] = vget_lane_u64(q[i], 0);
-          // num now holds the next row's numerators: past a band's last row, the next band's
-          // first (the light continues across the edge), stepped by the next band's delta.
-          if (band_end) step_for(next_grid_row);
-          indices(next_run());
-          uint32_t wd[4];
+        if (band_end) step_for(next_grid_row);
+        const uint32_t* const p = ib[cur];
+        indices(next_run());
+        uint32_t wd[4];
 #pragma GCC unroll 4
-          for (int j = 0; j < 4; ++j)
-            wd[j] = uint32_t(colormap[uint32_t(p[2 * j])]) | uint32_t(colormap[p[2 * j] >> 32]) << 8 |
-                    uint32_t(colormap[uint32_t(p[2 * j + 1])]) << 16 | uint32_t(colormap[p[2 * j + 1] >> 32]) << 24;
-          if (m >= 16) {
-            const uint64_t lo = wd[0] | uint64_t(wd[1]) << 32, hi = wd[2] | uint64_t(wd[3]) << 32;
-            std::memcpy(d, &lo, 8);
-            std::memcpy(d + 8, &hi, 8);
-          } else {
-            std::memcpy(d, wd, size_t(m));
-          }
-          d += width;
+        for (int j = 0; j < 4; ++j)
+          wd[j] = uint32_t(colormap[p[4 * j]]) | uint32_t(colormap[p[4 * j + 1]]) << 8 |
+                  uint32_t(colormap[p[4 * j + 2]]) << 16 | uint32_t(colormap[p[4 * j + 3]]) << 24;
+        if (m >= 16) {
+          std::memcpy(d, wd, 16);
+        } else {
+          std::memcpy(d, wd, size_t(m));
+        }
+        d += width;
       };
+      if (m >= 16) {
+        // Full groups: a band at a time in assembly. Each row: the scalar work of row y
+        // (index pairs by ldrd from the aligned buffer, colormap bytes, packed words; str,
+        // not strd: the output has any alignment) interleaved with the NEON work of row y + 1
+        // (vsli of the row onto the widened texel), stored over row y's indices once they are
+        // all read. q0-q3: the step
+        // (the band's last row steps with the next band's); q8-q15: temporaries.
+#define SB_BLOCK_ROW7(doff) \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vld1.8 {d16-d17}, [r0]\n\t" \
+  "ldrd r0, r1, [%[dl], #144]\n\t" \
+  "ldrd r2, r3, [%[dl], #152]\n\t" \
+  "vmovl.u8 q9, d16\n\t" \
+  "ldrd ip, lr, [%[dl], #160]\n\t" \
+  "vmovl.u8 q10, d17\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q11, d18\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vmovl.u16 q12, d19\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d20\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vmovl.u16 q14, d21\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vshr.u32 q9, %q[n0], #16\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vsli.32 q11, q9, #8\n\t" \
+  "orr r0, r0, r1, lsl #8\n\t" \
+  "vshr.u32 q9, %q[n1], #16\n\t" \
+  "orr r2, r2, r3, lsl #8\n\t" \
+  "vsli.32 q12, q9, #8\n\t" \
+  "ldrd r1, r3, [%[dl], #168]\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "orr r0, r0, r2, lsl #16\n\t" \
+  "orr r1, r1, r3, lsl #8\n\t" \
+  "orr ip, ip, r1, lsl #16\n\t" \
+  "str r0, [%[d], #0]\n\t" \
+  "str ip, [%[d], #4]\n\t" \
+  "ldrd r0, r1, [%[dl], #176]\n\t" \
+  "ldrd r2, r3, [%[dl], #184]\n\t" \
+  "vshr.u32 q9, %q[n2], #16\n\t" \
+  "ldrd ip, lr, [%[dl], #192]\n\t" \
+  "vsli.32 q13, q9, #8\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vshr.u32 q9, %q[n3], #16\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vsli.32 q14, q9, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r0, r0, r1, lsl #8\n\t" \
+  "orr r2, r2, r3, lsl #8\n\t" \
+  "ldrd r1, r3, [%[dl], #200]\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "orr r0, r0, r2, lsl #16\n\t" \
+  "orr r1, r1, r3, lsl #8\n\t" \
+  "orr ip, ip, r1, lsl #16\n\t" \
+  "str r0, [%[d], #8]\n\t" \
+  "str ip, [%[d], #12]\n\t" \
+  "ldr r1, [%[dl], #128]\n\t" \
+  "add %[d], %[d], r1\n\t" \
+  "add r0, %[dl], #144\n\t" \
+  "vst1.32 {d22-d25}, [r0:128]!\n\t" \
+  "vst1.32 {d26-d29}, [r0:128]\n\t" \
+  "add r1, %[dl], #" doff "\n\t" \
+  "vld1.32 {d16-d19}, [r1:128]!\n\t" \
+  "vld1.32 {d20-d23}, [r1:128]\n\t" \
+  "vadd.i32 %q[n0], %q[n0], q8\n\t" \
+  "vadd.i32 %q[n1], %q[n1], q9\n\t" \
+  "vadd.i32 %q[n2], %q[n2], q10\n\t" \
+  "vadd.i32 %q[n3], %q[n3], q11\n\t"
+        // The assembly's one data block: this band's step, the next band's, the row stride, the
+        // current row's indices (one base register for all of them: ARMv7 has few).
+        struct alignas(16) {
+          uint32x4_t dd[9];
+          uint32_t ib[16];
+        } blk;
+        blk.dd[8] = vdupq_n_u32(uint32_t(width));
+        std::memcpy(blk.ib, ib[cur], sizeof blk.ib);
+        uint32x4_t* const dd = blk.dd;
+        const uint8_t* srcs[B + 1];    // the next row's texels, for each row of the band
+        for (int band = 0; band < nb; ++band) {
+          for (int j = 0; j < 4; ++j) dd[j] = delta[j];
+          if (band + 1 < nb) step_for(by0 + band + 2);
+          for (int j = 0; j < 4; ++j) dd[4 + j] = delta[j];
+          for (int r = 0; r < B; ++r) srcs[r] = next_run() + 16 * g;
+          srcs[B] = nullptr;  // the loop runs while a row follows the next one
+          const uint8_t* const* sa = srcs;
+          asm volatile(
+              "1:\n\t" SB_BLOCK_ROW7("0")
+              "ldr r0, [%[sa], #4]\n\t"
+              "cmp r0, #0\n\t"
+              "bne 1b\n\t" SB_BLOCK_ROW7("64")
+              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [sa] "+r"(sa),
+                [d] "+r"(d)
+              : [cm] "r"(colormap), [dl] "r"(dd)
+              : "r0", "r1", "r2", "r3", "ip", "lr", "d16", "d17",
+                "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "cc",
+                "memory");
+        }
+#undef SB_BLOCK_ROW7
+        continue;
+      }
 #endif
       for (int band = 0; band < nb; ++band) {
         for (int fy = 0; fy < B - 1; ++fy) row(false, 0);

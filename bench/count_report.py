@@ -111,14 +111,27 @@ class Disasm:
     INV = dict(eq="ne", ne="eq", cs="cc", cc="cs", hs="lo", lo="hs", mi="pl", pl="mi", vs="vc", vc="vs",
                hi="ls", ls="hi", ge="lt", lt="ge", gt="le", le="gt")
 
-    # llvm-mca 14 has no Cortex-A9 timing for register-list pushes and pops: time them as one
-    # store or load per register (the same memory traffic).
+    # llvm-mca 14 has no Cortex-A9 timing for register-list pushes and pops (nor ldm/stm): time
+    # them as one store or load per register (the same memory traffic), plus the writeback.
     def split_lists(self, code):
         out = []
         for c in code:
             c2 = re.sub(r"^(v?)(?:stmdb|stmfd) sp!, ", r"\1push ", c)
             c2 = re.sub(r"^(v?)(?:ldmia|ldmfd|ldm) sp!, ", r"\1pop ", c2)
             m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c2)
+            g = re.match(r"^(v?)(ldm|stm)(?:ia)?(?:\.\d+)? (\w+)(!?), \{(.*)\}$", c2)
+            if g and not m:  # ldm/stm (vldm/vstm) on another base: one load/store per register
+                regs = []
+                for part in g.group(5).split(","):
+                    part = part.strip()
+                    r = re.match(r"^([rd])(\d+)-[rd](\d+)$", part)
+                    regs += [f"{r.group(1)}{i}" for i in range(int(r.group(2)), int(r.group(3)) + 1)] if r else [part]
+                size = 8 if g.group(1) else 4
+                op = ("vldr" if g.group(2) == "ldm" else "vstr") if g.group(1) else ("ldr" if g.group(2) == "ldm" else "str")
+                out += [f"{op} {r}, [{g.group(3)}, #{size * i}]" for i, r in enumerate(regs)]
+                if g.group(4):
+                    out.append(f"add {g.group(3)}, {g.group(3)}, #{size * len(regs)}")
+                continue
             if not m:
                 out.append(c)
                 continue
