@@ -66,19 +66,22 @@ void surface_span_neon(uint8_t* __restrict dest, int n, const uint8_t* __restric
 // ---------------------------------------------------------------- 2. surface block builder
 //
 // Sixteen lanes at a time: 16 >> LB blocks side by side (one block at mip 0, eight at mip 3)
-// walked down their B rows, the light numerators in 32-bit lanes stepped by a per-lane delta
-// (one vector add per four texels and row). The numerators are kept scaled by 4^mip,
+// walked down a whole strip of bands, the light numerators in 32-bit lanes stepped by a
+// per-lane delta (one vector add per four texels and row). The numerators are kept scaled by
+// 4^mip,
 //   n(fx, fy) = (B T(fx) + fy (U(fx) - T(fx))) << 2 mip,  T = g00 (B - fx) + g10 fx,
 //   U = g01 (B - fx) + g11 fx,
 // so the colormap row (num >> (S + 8)) is byte 2 of every lane at every mip (n < 2^22: byte 3
-// is zero). One table lookup per four lanes makes 32-bit indices texel | row << 8; they leave
-// the vector two at a time (64-bit lane moves) and the colormap bytes are read by sixteen
-// independent scalar loads, packed four to a word, one store per word: an in-order core
-// always has another load to issue instead of waiting on one.
+// is zero). After a band's B steps the numerators are exactly the next band's first (B U),
+// so crossing a band edge only takes the next row step (one grid row weighed per band).
+// Indices texel | row << 8 (32-bit lanes) leave the vector two at a time; the colormap bytes
+// are read by sixteen independent scalar loads, packed into words, and stored. The row loop
+// of full groups is assembly on both ARM targets (the compilers' schedules and register
+// allocation cost 1.5-2x there): row y's scalar work first, then row y + 1's NEON work, so an
+// in-order core never waits on a NEON result. The last, partial group of a row is C++.
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
-// than the surface (rows repeat) and fits the buffer, else each band's B rows.
-
+// than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
 
 // Lanes k = 0..7 (half 0) or 8..15 (half 1) of g[k >> LB].
 template <int LB>
