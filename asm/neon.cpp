@@ -101,7 +101,8 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
 
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
-inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
+inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
+                     const uint8x16_t* period) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
     const int a = tw - c0 < n ? tw - c0 : n;
@@ -110,7 +111,22 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
     d = tw;
   } else {
     d = tw;
-    while (d < 16) d += tw;  // (no divide)
+    while (d < 16) d += tw;  // (no divide); at most 30
+    if (row + 16 <= tex_end) {  // the first 32 bytes by two table lookups of the row
+      const uint8x16_t v = vld1q_u8(row);
+#if defined(__aarch64__)
+      vst1q_u8(dst, vqtbl1q_u8(v, period[0]));
+      vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
+#else
+      uint8x8x2_t t;
+      t.val[0] = vget_low_u8(v);
+      t.val[1] = vget_high_u8(v);
+      for (int h = 0; h < 2; ++h)
+        vst1q_u8(dst + 16 * h, vcombine_u8(vtbl2_u8(t, vget_low_u8(period[h])), vtbl2_u8(t, vget_high_u8(period[h]))));
+#endif
+      for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+      return;
+    }
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
@@ -149,13 +165,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  // Narrow textures (tw < 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
+  uint8x16_t period[2];
+  {
+    uint8_t k8[32];
+    for (int k = 0, c = c0; k < 32; ++k) {
+      k8[k] = uint8_t(c);
+      if (++c == tw) c = 0;
+    }
+    period[0] = vld1q_u8(k8);
+    period[1] = vld1q_u8(k8 + 16);
+  }
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16),
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
                                                      buf + t * stride);
   int strip_bands = bh;
   if (!all_rows) {
@@ -198,7 +225,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       int t = (t0 + by0 * B) % th;
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16), buf + r * stride);
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                                buf + r * stride);
         if (++t == th) t = 0;
       }
     }

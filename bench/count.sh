@@ -65,6 +65,18 @@ EOF
         $(pkg-config --cflags --libs glib-2.0)
   done
 fi
+# hotblocks keys its table by pc ^ instruction count, so two blocks can share an entry (one
+# block's executions then counted under the other's address and length: seen on armhf, a
+# 71-instruction loop merged into a 19-instruction block). Key by pc ^ count << 48 instead
+# (unique for user-space addresses). Applied once to a cached plugin build too.
+if [ ! -f "$PLUG/hotblocks-key-fixed" ]; then
+  hb=$(ls "$PLUG"/src/*/contrib/plugins/hotblocks.c | head -1)
+  sed -i "s/uint64_t hash = pc ^ insns;/uint64_t hash = pc ^ ((uint64_t) insns << 48);/" "$hb"
+  # shellcheck disable=SC2046
+  gcc -O2 -shared -fPIC -o "$PLUG/libhotblocks.so" "$hb" -I"$(dirname "$hb")/../../include/qemu" \
+      $(pkg-config --cflags --libs glib-2.0)
+  touch "$PLUG/hotblocks-key-fixed"
+fi
 
 # ---- builds
 echo "== building starbow_count_kernels (x86-64, aarch64, armhf) and starbow"
