@@ -144,22 +144,20 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const __m128i lo = _mm_unpacklo_epi8(t, zero), hi = _mm_unpackhi_epi8(t, zero);
           const __m128i t32[4] = {_mm_unpacklo_epi16(lo, zero), _mm_unpackhi_epi16(lo, zero),
                                   _mm_unpacklo_epi16(hi, zero), _mm_unpackhi_epi16(hi, zero)};
-          uint64_t p[8];
-#pragma GCC unroll 4
-          for (int j = 0; j < 4; ++j) {
-            const __m128i idx = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(num[j], 8), keep), t32[j]);
-            num[j] = _mm_add_epi32(num[j], delta[j]);
-            p[2 * j] = uint64_t(_mm_cvtsi128_si64(idx));
-            p[2 * j + 1] = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
-          }
           uint64_t w[2];
 #pragma GCC unroll 2
-          for (int h = 0; h < 2; ++h) {
+          for (int h = 0; h < 2; ++h) {  // eight texels at a time: fewer live registers
             uint64_t v = 0;
-#pragma GCC unroll 4
-            for (int i = 0; i < 4; ++i) {
-              const uint64_t x = p[4 * h + i];
-              v |= uint64_t(colormap[uint32_t(x)]) << (16 * i) | uint64_t(colormap[x >> 32]) << (16 * i + 8);
+#pragma GCC unroll 2
+            for (int jj = 0; jj < 2; ++jj) {
+              const int j = 2 * h + jj;
+              const __m128i idx = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(num[j], 8), keep), t32[j]);
+              num[j] = _mm_add_epi32(num[j], delta[j]);
+              const uint64_t a = uint64_t(_mm_cvtsi128_si64(idx));
+              const uint64_t c = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
+              v |= (uint64_t(colormap[uint32_t(a)]) | uint64_t(colormap[a >> 32]) << 8 |
+                    uint64_t(colormap[uint32_t(c)]) << 16 | uint64_t(colormap[c >> 32]) << 24)
+                   << (32 * jj);
             }
             w[h] = v;
           }
