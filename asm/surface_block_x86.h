@@ -13,7 +13,9 @@
 
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
-inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
+// period: bytes (c0 + k) mod tw for k < 32 (used with SSSE3 for narrow textures).
+inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
+                     const __m128i* period) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
     const int a = tw - c0 < n ? tw - c0 : n;
@@ -22,7 +24,21 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n) {
     d = tw;
   } else {
     d = tw;
-    while (d < 16) d += tw;  // (no divide)
+    while (d < 16) d += tw;  // (no divide); at most 30
+#if defined(__SSSE3__)  // the AVX2 instance: the first 32 bytes by two shuffles of the row
+    if (row + 16 <= tex_end) {
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm_shuffle_epi8(v, period[0]));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + 16), _mm_shuffle_epi8(v, period[1]));
+      for (int x = 32; x < n; x += 16)
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x),
+                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
+      return;
+    }
+#else
+    (void)tex_end;
+    (void)period;
+#endif
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
@@ -64,13 +80,23 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
   const uint8_t* const tex_end = texels + tw * th;
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  __m128i period[2];  // narrow textures' runs (tile_row)
+  {
+    alignas(16) uint8_t k8[32];
+    for (int k = 0, c = c0; k < 32; ++k) {
+      k8[k] = uint8_t(c);
+      if (++c == tw) c = 0;
+    }
+    period[0] = _mm_load_si128(reinterpret_cast<const __m128i*>(k8));
+    period[1] = _mm_load_si128(reinterpret_cast<const __m128i*>(k8 + 16));
+  }
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16),
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
                                                      buf + t * stride);
   int strip_bands = bh;
   if (!all_rows) {
@@ -102,7 +128,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       int t = (t0 + by0 * B) % th;
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16), buf + r * stride);
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                                buf + r * stride);
         if (++t == th) t = 0;
       }
     }
