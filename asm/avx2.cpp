@@ -155,8 +155,10 @@ void surface_span_avx2(uint8_t* __restrict dest, int n, const uint8_t* __restric
 }
 
 // ---------------------------------------------------------------- 3. surface block builder
-// The SSE2 builder's scheme (asm/sse2.cpp, section 2) eight lanes at a time, the colormap
-// read by gathers (kGather) or by scalar loads of stored indices.
+// Eight lanes at a time with pmaddwd light (per texel, as the SSE2 builder did before it
+// moved to asm/surface_block_x86.h), the colormap read by gathers (kGather: the avx2g table)
+// or by scalar loads of stored indices (kept for comparison; the avx2 table uses
+// asm/surface_block_x86.h).
 
 template <int kMip, bool kGather>
 void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
@@ -259,7 +261,10 @@ void surface_block_any(const uint16_t* grid, int grid_width, const uint8_t* texe
     default: return surface_block_rows<3, kGather>(grid, grid_width, texels, tw, th, soff, toff, width, height, colormap, out);
   }
 }
-const SurfaceBlockFn surface_block_avx2 = surface_block_any<false>;
+// Without gathers: asm/surface_block_x86.h's builder (block groups down their rows, 64-bit
+// index moves, scalar colormap loads) compiled for AVX2 (VEX encoding: no register copies).
+#include "asm/surface_block_x86.h"
+const SurfaceBlockFn surface_block_avx2 = surface_block_x86;
 const SurfaceBlockFn surface_block_avx2_gather = surface_block_any<true>;
 
 // ---------------------------------------------------------------- 4. z span

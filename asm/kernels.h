@@ -4,7 +4,8 @@
 //
 //   kernel          contract               variants (when built and the CPU has them)
 //   surface_span    asm/surface_span.h     scalar, sse2, avx2, avx2g (gathers), fast (portable; the neon table)
-//   surface_block   asm/surface_block.h    scalar, sse2, avx2, avx2g (gathers), neon
+//   surface_block   asm/surface_block.h    scalar, sse2 and avx2 (asm/surface_block_x86.h), avx2g
+//                                          (gathers), neon (aarch64 and armv7 assembly row loops)
 //   z_span          asm/z_span.h           scalar, sse2, avx2, neon
 //   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gathers), neon
 //   alias_span      asm/alias_span.h       scalar, sse2, neon (avx2 tables: the sse2 one)

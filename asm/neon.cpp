@@ -31,13 +31,25 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 
 // ---------------------------------------------------------------- 2. surface block builder
 //
-// As the SSE2 builder (asm/sse2.cpp, section 2): per texel
-//   num = g00 w00 + g10 w10 + g01 w01 + g11 w11 (bilinear weights of fx, fy),
-// sixteen texels of a row at a time, here with widening 16 x 16 -> 32-bit multiplies. The
-// colormap row (num >> (S + 8), low byte) and the texel interleave into 16-bit indices
-// with one vst2q_u8 (little-endian: texel | row << 8).
+// Sixteen lanes at a time: 16 >> LB blocks side by side (one block at mip 0, eight at mip 3)
+// walked down a whole strip of bands, the light numerators in 32-bit lanes stepped by a
+// per-lane delta (one vector add per four texels and row). The numerators are kept scaled by
+// 4^mip,
+//   n(fx, fy) = (B T(fx) + fy (U(fx) - T(fx))) << 2 mip,  T = g00 (B - fx) + g10 fx,
+//   U = g01 (B - fx) + g11 fx,
+// so the colormap row (num >> (S + 8)) is byte 2 of every lane at every mip (n < 2^22: byte 3
+// is zero). After a band's B steps the numerators are exactly the next band's first (B U),
+// so crossing a band edge only takes the next row step (one grid row weighed per band).
+// Indices texel | row << 8 (32-bit lanes) leave the vector two at a time; the colormap bytes
+// are read by sixteen independent scalar loads, packed into words, and stored. The row loop
+// of full groups is assembly on both ARM targets (the compilers' schedules and register
+// allocation cost 1.5-2x there): row y's scalar work first, then row y + 1's NEON work, so an
+// in-order core never waits on a NEON result. The last, partial group of a row is C++.
+// Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
+// need no wrap are read in place. Every texture row once per call when the texture is shorter
+// than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
 
-// Lanes k = 0..7 (half 0) or 8..15 (half 1) of g[bx0 + (k >> LB)].
+// Lanes k = 0..7 (half 0) or 8..15 (half 1) of g[k >> LB].
 template <int LB>
 inline uint16x8_t spread(const uint16_t* g, int half) {
   if constexpr (LB == 4) {
@@ -53,74 +65,468 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
   }
 }
 
-template <int kMip>
-void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
-                        int toff, int width, int height, const uint8_t* __restrict colormap,
-                        uint8_t* __restrict out) {
-  constexpr int B = 16 >> kMip, LB = 4 - kMip, S = 2 * (4 - kMip);
-  const int bh = height / B;
-  // Copies of the block row's two grid rows with zero padding for partial chunks.
-  uint16_t r0[kMaxBlockColumns + 24], r1[kMaxBlockColumns + 24];
-  uint16_t fxs[16], bfx[16];  // fx and B - fx of lane k
-  for (int k = 0; k < 16; ++k) {
-    fxs[k] = uint16_t(k % B);
-    bfx[k] = uint16_t(B - k % B);
+// dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
+// least 32 bytes must be writable).
+inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
+                     const uint8x16_t* period) {
+  int d;  // a period of the run, >= 16
+  if (tw >= 16) {
+    const int a = tw - c0 < n ? tw - c0 : n;
+    std::memcpy(dst, row + c0, size_t(a));
+    if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
+    d = tw;
+  } else {
+    d = tw;
+    while (d < 16) d += tw;  // (no divide); at most 30
+    if (row + 16 <= tex_end) {  // the first 32 bytes by two table lookups of the row
+      const uint8x16_t v = vld1q_u8(row);
+#if defined(__aarch64__)
+      vst1q_u8(dst, vqtbl1q_u8(v, period[0]));
+      vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
+#else
+      uint8x8x2_t t;
+      t.val[0] = vget_low_u8(v);
+      t.val[1] = vget_high_u8(v);
+      for (int h = 0; h < 2; ++h)
+        vst1q_u8(dst + 16 * h, vcombine_u8(vtbl2_u8(t, vget_low_u8(period[h])), vtbl2_u8(t, vget_high_u8(period[h]))));
+#endif
+      for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+      return;
+    }
+    for (int k = 0, c = c0; k < d; ++k) {
+      dst[k] = row[c];
+      if (++c == tw) c = 0;
+    }
   }
-  const uint16x8_t FX0 = vld1q_u16(fxs), FX1 = vld1q_u16(fxs + 8);
-  const uint16x8_t BX0 = vld1q_u16(bfx), BX1 = vld1q_u16(bfx + 8);
-  const int cols = width / B + 1;
-  const int c0 = wrap(soff, tw);
-  alignas(16) uint16_t idx[16];
-  uint8_t tmp[16];
+  for (int x = d; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+}
 
+constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
+
+constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
+
+// Lanes k of the group's weighted grid row: g[k >> LB] (B - fx) + g[(k >> LB) + 1] fx with
+// weights pre-shifted (bx = (B - fx) << s, fx = fx << s), quarter j = lanes 4j .. 4j + 3.
+template <int LB>
+inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx, uint32x4_t* out) {
+#pragma GCC unroll 2
+  for (int h = 0; h < 2; ++h) {
+    const uint16x8_t e0 = spread<LB>(g, h), e1 = spread<LB>(g + 1, h);
+    out[2 * h] = vmlal_u16(vmull_u16(vget_low_u16(e0), vget_low_u16(bx[h])), vget_low_u16(e1), vget_low_u16(fx[h]));
+    out[2 * h + 1] =
+        vmlal_u16(vmull_u16(vget_high_u16(e0), vget_high_u16(bx[h])), vget_high_u16(e1), vget_high_u16(fx[h]));
+  }
+}
+
+template <int kMip>
+void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
+                          int toff, int width, int height, const uint8_t* __restrict colormap,
+                          uint8_t* __restrict out) {
+  constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
+  const int bw = width / B, bh = height / B;
+  const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
+  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
+  const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
   const uint8_t* const tex_end = texels + tw * th;
-  uint8_t rowbuf[kRowBufferBytes];
-  int ty = wrap(toff, th);  // texture row of surface row y
-  for (int by = 0; by < bh; ++by) {
-    std::memcpy(r0, grid + by * grid_width, size_t(cols) * 2);
-    std::memcpy(r1, grid + (by + 1) * grid_width, size_t(cols) * 2);
-    for (int k = cols; k < kMaxBlockColumns + 24; ++k) r0[k] = r1[k] = 0;
-    for (int fy = 0; fy < B; ++fy) {
-      const int y = by * B + fy;
-      const uint16_t wt = uint16_t(B - fy), wb = uint16_t(fy);
-      // Weights of halves 0 and 1: w00 = (B - fx) wt, w10 = fx wt, w01 = (B - fx) wb, w11 = fx wb.
-      const uint16x8_t w00[2] = {vmulq_n_u16(BX0, wt), vmulq_n_u16(BX1, wt)};
-      const uint16x8_t w10[2] = {vmulq_n_u16(FX0, wt), vmulq_n_u16(FX1, wt)};
-      const uint16x8_t w01[2] = {vmulq_n_u16(BX0, wb), vmulq_n_u16(BX1, wb)};
-      const uint16x8_t w11[2] = {vmulq_n_u16(FX0, wb), vmulq_n_u16(FX1, wb)};
-      const uint8_t* trow = texels + ty * tw;
-      if (++ty == th) ty = 0;
-      uint8_t* drow = out + y * width;
-      const uint8_t* row_end;
-      const uint8_t* texrow = texel_row(trow, c0, tw, width, tex_end, rowbuf, &row_end);
+  // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
+  auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  // Narrow textures (tw < 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
+  uint8x16_t period[2];
+  {
+    uint8_t k8[32];
+    for (int k = 0, c = c0; k < 32; ++k) {
+      k8[k] = uint8_t(c);
+      if (++c == tw) c = 0;
+    }
+    period[0] = vld1q_u8(k8);
+    period[1] = vld1q_u8(k8 + 16);
+  }
+  // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
+  // they are laid out once and the whole surface is one strip reading run[] cyclically from
+  // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
+  const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
+  if (all_rows)
+    for (int t = 0; t < th; ++t)
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                                                     buf + t * stride);
+  int strip_bands = bh;
+  if (!all_rows) {
+    const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
+    strip_bands = fit < bh ? fit : bh;
+  }
+
+  // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
+  // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
+  uint16_t w[4][16];
+  for (int k = 0; k < 16; ++k) {
+    w[0][k] = uint16_t((B - k % B) << (4 + kMip));
+    w[1][k] = uint16_t((k % B) << (4 + kMip));
+    w[2][k] = uint16_t((B - k % B) << (2 * kMip));
+    w[3][k] = uint16_t((k % B) << (2 * kMip));
+  }
+  const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
+  const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
+#if defined(__aarch64__)
+  // Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
+  uint8x16_t IDX[4];
+  for (int j = 0; j < 4; ++j) {
+    uint8_t b[16];
+    for (int l = 0; l < 4; ++l) {
+      b[4 * l] = uint8_t(4 * j + l);
+      b[4 * l + 1] = b[4 * l + 2] = b[4 * l + 3] = 0xff;
+    }
+    IDX[j] = vld1q_u8(b);
+  }
+#endif
+  uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
+
+  for (int by0 = 0; by0 < bh; by0 += strip_bands) {
+    const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
+    int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
+    if (all_rows) {
+      first = (t0 + by0 * B) % th;
+    } else {
+      count = nb * B;
+      int t = (t0 + by0 * B) % th;
+      for (int r = 0; r < count; ++r) {
+        run[r] = in_place(t) ? texels + t * tw + c0
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                                buf + r * stride);
+        if (++t == th) t = 0;
+      }
+    }
+    uint8_t* const strip = out + by0 * B * width;
+    for (int g = 0; g < groups; ++g) {
+      const int b0 = g * G;
+      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
+        const uint16_t* r = grid + by * grid_width + b0;
+        if (direct) return r;
+        const int n = bw + 1 - b0;
+        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
+        return pad;
+      };
+      uint32x4_t num[4], delta[4], prev[4];
       {
-        constexpr int x = 0;
-        const int len = width;
-        for (int i = 0; i < len; i += 16) {
-          const int m = len - i < 16 ? len - i : 16;
-          const int bx0 = (x + i) >> LB;
-          uint16x8_t rows16[2];
-          for (int h = 0; h < 2; ++h) {
-            const uint16x8_t g00 = spread<LB>(r0 + bx0, h), g10 = spread<LB>(r0 + bx0 + 1, h);
-            const uint16x8_t g01 = spread<LB>(r1 + bx0, h), g11 = spread<LB>(r1 + bx0 + 1, h);
-            uint32x4_t lo = vmull_u16(vget_low_u16(g00), vget_low_u16(w00[h]));
-            lo = vmlal_u16(lo, vget_low_u16(g10), vget_low_u16(w10[h]));
-            lo = vmlal_u16(lo, vget_low_u16(g01), vget_low_u16(w01[h]));
-            lo = vmlal_u16(lo, vget_low_u16(g11), vget_low_u16(w11[h]));
-            uint32x4_t hi = vmull_u16(vget_high_u16(g00), vget_high_u16(w00[h]));
-            hi = vmlal_u16(hi, vget_high_u16(g10), vget_high_u16(w10[h]));
-            hi = vmlal_u16(hi, vget_high_u16(g01), vget_high_u16(w01[h]));
-            hi = vmlal_u16(hi, vget_high_u16(g11), vget_high_u16(w11[h]));
-            rows16[h] = vcombine_u16(vshrn_n_u32(lo, S + 8), vshrn_n_u32(hi, S + 8));
-          }
-          const uint8x16_t rows = vcombine_u8(vmovn_u16(rows16[0]), vmovn_u16(rows16[1]));
-          const uint8x16_t t = vld1q_u8(texels16(texrow + i, m, row_end, tmp));
-          uint8x16x2_t pair;
-          pair.val[0] = t;
-          pair.val[1] = rows;
-          vst2q_u8(reinterpret_cast<uint8_t*>(idx), pair);
-          lookup_n(drow + x + i, colormap, idx, m);
+        const uint16_t* r0 = row_of(by0);
+        weigh<LB>(r0, BX0, FX0, num);
+        weigh<LB>(r0, BX1, FX1, prev);
+      }
+      auto step_for = [&](int by) {  // delta = the band above grid row by's row step
+        uint32x4_t next[4];
+        weigh<LB>(row_of(by), BX1, FX1, next);
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {
+          delta[j] = vsubq_u32(next[j], prev[j]);
+          prev[j] = next[j];
         }
+      };
+      const int m = width - 16 * g;  // lanes on the surface (16 but in the last group)
+      uint8_t* d = strip + 16 * g;
+      int k = first;
+      auto next_run = [&]() {
+        const uint8_t* r = run[k];
+        if (++k == count) k = 0;
+        return r;
+      };
+      // Software-pipelined: row y + 1's indices are formed while row y's colormap loads are
+      // in flight (after the strip's last row they are formed again from a readable row, unused).
+      // step_for may run at any point of a row before the next row's indices: it changes only
+      // the step that follows them.
+#if defined(__aarch64__)
+      // The rows' colormap indices travel as eight 64-bit index pairs P (lanes 2i, 2i + 1)
+      // from one row to the next. Full groups run a band at a time in hand-scheduled assembly
+      // (below); the last partial group of a row runs this C++ version.
+      uint64_t P[8];
+      auto indices = [&](const uint8_t* src) {  // P = the indices of the row at src
+        const uint8x16_t t = vld1q_u8(src + 16 * g);
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {
+          const uint64x2_t v =
+              vreinterpretq_u64_u8(vqtbx1q_u8(vreinterpretq_u8_u32(vshrq_n_u32(num[j], 8)), t, IDX[j]));
+          P[2 * j] = vgetq_lane_u64(v, 0);
+          P[2 * j + 1] = vgetq_lane_u64(v, 1);
+          num[j] = vaddq_u32(num[j], delta[j]);
+        }
+      };
+      step_for(by0 + 1);
+      indices(next_run());
+      if (m >= 16) {
+        // Each row: the scalar work of its pairs first (ALU and load/store only: the
+        // colormap loads, packing, one stp), then the NEON work of the next row (ushr, tbx,
+        // step, and the 64-bit moves into the pairs). An in-order core (Cortex-A53) never
+        // waits on a NEON result inside a row, nor has a short instruction held behind a long
+        // NEON one. x0-x7: pairs; x9-x16: high indices; x17: texel run; v16-v19: the step;
+        // v20-v23: IDX; v27: texels; v28-v31: index vectors. A band's last row steps with the
+        // next band's delta (dn).
+#define SB_BLOCK_ROW \
+  "orr x9, xzr, x0, lsr #32\n\t" \
+  "orr x10, xzr, x1, lsr #32\n\t" \
+  "orr x11, xzr, x2, lsr #32\n\t" \
+  "orr x12, xzr, x3, lsr #32\n\t" \
+  "orr x13, xzr, x4, lsr #32\n\t" \
+  "ldr x17, [%[rp]], #8\n\t" \
+  "orr x14, xzr, x5, lsr #32\n\t" \
+  "ldrb w0, [%[cm], w0, uxtw]\n\t" \
+  "orr x15, xzr, x6, lsr #32\n\t" \
+  "ldrb w9, [%[cm], x9]\n\t" \
+  "orr x16, xzr, x7, lsr #32\n\t" \
+  "ldrb w1, [%[cm], w1, uxtw]\n\t" \
+  "cmp %[rp], %[re]\n\t" \
+  "ldrb w10, [%[cm], x10]\n\t" \
+  "csel %[rp], %[rb], %[rp], eq\n\t" \
+  "ldrb w2, [%[cm], w2, uxtw]\n\t" \
+  "add x17, x17, %[goff]\n\t" \
+  "ldrb w11, [%[cm], x11]\n\t" \
+  "orr x0, x0, x9, lsl #8\n\t" \
+  "ldrb w3, [%[cm], w3, uxtw]\n\t" \
+  "orr x1, x1, x10, lsl #8\n\t" \
+  "ldrb w12, [%[cm], x12]\n\t" \
+  "ldr q27, [x17]\n\t" \
+  "orr x2, x2, x11, lsl #8\n\t" \
+  "ldrb w4, [%[cm], w4, uxtw]\n\t" \
+  "orr x0, x0, x1, lsl #16\n\t" \
+  "ldrb w13, [%[cm], x13]\n\t" \
+  "orr x3, x3, x12, lsl #8\n\t" \
+  "ldrb w5, [%[cm], w5, uxtw]\n\t" \
+  "ldrb w14, [%[cm], x14]\n\t" \
+  "orr x2, x2, x3, lsl #16\n\t" \
+  "ldrb w6, [%[cm], w6, uxtw]\n\t" \
+  "orr x4, x4, x13, lsl #8\n\t" \
+  "ldrb w15, [%[cm], x15]\n\t" \
+  "orr x5, x5, x14, lsl #8\n\t" \
+  "ldrb w7, [%[cm], w7, uxtw]\n\t" \
+  "orr x0, x0, x2, lsl #32\n\t" \
+  "ldrb w16, [%[cm], x16]\n\t" \
+  "orr x4, x4, x5, lsl #16\n\t" \
+  "orr x6, x6, x15, lsl #8\n\t" \
+  "orr x7, x7, x16, lsl #8\n\t" \
+  "orr x6, x6, x7, lsl #16\n\t" \
+  "orr x4, x4, x6, lsl #32\n\t" \
+  "stp x0, x4, [%[d]]\n\t" \
+  "add %[d], %[d], %[w]\n\t" \
+  "ushr v28.4s, %[n0].4s, #8\n\t"                     \
+  "ushr v29.4s, %[n1].4s, #8\n\t"                     \
+  "ushr v30.4s, %[n2].4s, #8\n\t"                     \
+  "ushr v31.4s, %[n3].4s, #8\n\t"                     \
+  "add %[n0].4s, %[n0].4s, v16.4s\n\t"                \
+  "add %[n1].4s, %[n1].4s, v17.4s\n\t"                \
+  "tbx v28.16b, {v27.16b}, v20.16b\n\t"               \
+  "tbx v29.16b, {v27.16b}, v21.16b\n\t"               \
+  "add %[n2].4s, %[n2].4s, v18.4s\n\t"                \
+  "add %[n3].4s, %[n3].4s, v19.4s\n\t"                \
+  "tbx v30.16b, {v27.16b}, v22.16b\n\t"               \
+  "tbx v31.16b, {v27.16b}, v23.16b\n\t"               \
+  "fmov x0, d28\n\t"                                  \
+  "mov x1, v28.d[1]\n\t"                              \
+  "fmov x2, d29\n\t"                                  \
+  "mov x3, v29.d[1]\n\t"                              \
+  "fmov x4, d30\n\t"                                  \
+  "mov x5, v30.d[1]\n\t"                              \
+  "fmov x6, d31\n\t"                                  \
+  "mov x7, v31.d[1]\n\t"
+        const int64_t goff = 16 * g, wstride = width;
+        for (int band = 0; band < nb; ++band) {
+          uint32x4_t cur[4];
+          for (int j = 0; j < 4; ++j) cur[j] = delta[j];
+          if (band + 1 < nb) step_for(by0 + band + 2);  // delta = the next band's step
+          const uint8_t* const* rp = run + k;
+          int64_t rows = B - 1;
+          asm volatile(
+              "ldp x0, x1, [%[P]]\n\t"
+              "ldp x2, x3, [%[P], #16]\n\t"
+              "ldp x4, x5, [%[P], #32]\n\t"
+              "ldp x6, x7, [%[P], #48]\n\t"
+              "ldp q20, q21, [%[ix]]\n\t"
+              "ldp q22, q23, [%[ix], #32]\n\t"
+              "ldp q16, q17, [%[dl]]\n\t"
+              "ldp q18, q19, [%[dl], #32]\n\t"
+              "1:\n\t" SB_BLOCK_ROW
+              "subs %[rows], %[rows], #1\n\t"
+              "b.ne 1b\n\t"
+              "ldp q16, q17, [%[dn]]\n\t"
+              "ldp q18, q19, [%[dn], #32]\n\t" SB_BLOCK_ROW
+              "stp x0, x1, [%[P]]\n\t"
+              "stp x2, x3, [%[P], #16]\n\t"
+              "stp x4, x5, [%[P], #32]\n\t"
+              "stp x6, x7, [%[P], #48]\n\t"
+              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [rp] "+r"(rp),
+                [d] "+r"(d), [rows] "+r"(rows)
+              : [P] "r"(P), [ix] "r"(IDX), [dl] "r"(cur), [dn] "r"(band + 1 < nb ? delta : cur),
+                [rb] "r"(run), [re] "r"(run + count), [goff] "r"(goff), [cm] "r"(colormap), [w] "r"(wstride)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x9", "x10", "x11", "x12", "x13", "x14", "x15",
+                "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v27", "v28", "v29", "v30",
+                "v31", "cc", "memory");
+          k = int(rp - run);
+        }
+#undef SB_BLOCK_ROW
+        continue;
+      }
+      auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
+        if (band_end) step_for(next_grid_row);
+        uint64_t p[8];
+        std::memcpy(p, P, sizeof p);
+        indices(next_run());
+        uint8_t wd[16];
+        for (int i = 0; i < 8; ++i) {
+          wd[2 * i] = colormap[uint32_t(p[i])];
+          wd[2 * i + 1] = colormap[p[i] >> 32];
+        }
+        std::memcpy(d, wd, size_t(m));
+        d += width;
+      };
+#else
+      // Software-pipelined: row y + 1's indices are formed while row y's colormap loads are
+      // in flight (after the strip's last row they are formed again from a readable row, unused).
+      // ARMv7 (out-of-order Cortex-A9, few registers): row y + 1's 32-bit indices
+      // row << 8 | texel (vsli of the row onto the widened texel) are stored to a small
+      // aligned buffer while row y's colormap loads run from the previous one.
+      alignas(16) uint32_t ib[2][16];
+      int cur = 0;
+      auto indices = [&](const uint8_t* src) {
+        const uint8x16_t t = vld1q_u8(src + 16 * g);
+        const uint16x8_t lo = vmovl_u8(vget_low_u8(t)), hi = vmovl_u8(vget_high_u8(t));
+        const uint32x4_t t32[4] = {vmovl_u16(vget_low_u16(lo)), vmovl_u16(vget_high_u16(lo)),
+                                   vmovl_u16(vget_low_u16(hi)), vmovl_u16(vget_high_u16(hi))};
+        uint32_t* const o = ib[cur ^ 1];
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {
+          vst1q_u32(o + 4 * j, vsliq_n_u32(t32[j], vshrq_n_u32(num[j], 16), 8));
+          num[j] = vaddq_u32(num[j], delta[j]);
+        }
+        cur ^= 1;
+      };
+      step_for(by0 + 1);
+      indices(next_run());
+      auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
+        if (band_end) step_for(next_grid_row);
+        const uint32_t* const p = ib[cur];
+        indices(next_run());
+        uint32_t wd[4];
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j)
+          wd[j] = uint32_t(colormap[p[4 * j]]) | uint32_t(colormap[p[4 * j + 1]]) << 8 |
+                  uint32_t(colormap[p[4 * j + 2]]) << 16 | uint32_t(colormap[p[4 * j + 3]]) << 24;
+        if (m >= 16) {
+          std::memcpy(d, wd, 16);
+        } else {
+          std::memcpy(d, wd, size_t(m));
+        }
+        d += width;
+      };
+      if (m >= 16) {
+        // Full groups: a band at a time in assembly. Each row: the scalar work of row y
+        // (index pairs by ldrd from the aligned buffer, colormap bytes, packed words; str,
+        // not strd: the output has any alignment) interleaved with the NEON work of row y + 1
+        // (vsli of the row onto the widened texel), stored over row y's indices once they are
+        // all read. q0-q3: the step
+        // (the band's last row steps with the next band's); q8-q15: temporaries.
+#define SB_BLOCK_ROW7(doff) \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vld1.8 {d16-d17}, [r0]\n\t" \
+  "ldrd r0, r1, [%[dl], #144]\n\t" \
+  "ldrd r2, r3, [%[dl], #152]\n\t" \
+  "vmovl.u8 q9, d16\n\t" \
+  "ldrd ip, lr, [%[dl], #160]\n\t" \
+  "vmovl.u8 q10, d17\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q11, d18\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vmovl.u16 q12, d19\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d20\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vmovl.u16 q14, d21\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vshr.u32 q9, %q[n0], #16\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vsli.32 q11, q9, #8\n\t" \
+  "orr r0, r0, r1, lsl #8\n\t" \
+  "vshr.u32 q9, %q[n1], #16\n\t" \
+  "orr r2, r2, r3, lsl #8\n\t" \
+  "vsli.32 q12, q9, #8\n\t" \
+  "ldrd r1, r3, [%[dl], #168]\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "orr r0, r0, r2, lsl #16\n\t" \
+  "orr r1, r1, r3, lsl #8\n\t" \
+  "orr ip, ip, r1, lsl #16\n\t" \
+  "str r0, [%[d], #0]\n\t" \
+  "str ip, [%[d], #4]\n\t" \
+  "ldrd r0, r1, [%[dl], #176]\n\t" \
+  "ldrd r2, r3, [%[dl], #184]\n\t" \
+  "vshr.u32 q9, %q[n2], #16\n\t" \
+  "ldrd ip, lr, [%[dl], #192]\n\t" \
+  "vsli.32 q13, q9, #8\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vshr.u32 q9, %q[n3], #16\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vsli.32 q14, q9, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r0, r0, r1, lsl #8\n\t" \
+  "orr r2, r2, r3, lsl #8\n\t" \
+  "ldrd r1, r3, [%[dl], #200]\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "orr r0, r0, r2, lsl #16\n\t" \
+  "orr r1, r1, r3, lsl #8\n\t" \
+  "orr ip, ip, r1, lsl #16\n\t" \
+  "str r0, [%[d], #8]\n\t" \
+  "str ip, [%[d], #12]\n\t" \
+  "ldr r1, [%[dl], #128]\n\t" \
+  "add %[d], %[d], r1\n\t" \
+  "add r0, %[dl], #144\n\t" \
+  "vst1.32 {d22-d25}, [r0:128]!\n\t" \
+  "vst1.32 {d26-d29}, [r0:128]\n\t" \
+  "add r1, %[dl], #" doff "\n\t" \
+  "vld1.32 {d16-d19}, [r1:128]!\n\t" \
+  "vld1.32 {d20-d23}, [r1:128]\n\t" \
+  "vadd.i32 %q[n0], %q[n0], q8\n\t" \
+  "vadd.i32 %q[n1], %q[n1], q9\n\t" \
+  "vadd.i32 %q[n2], %q[n2], q10\n\t" \
+  "vadd.i32 %q[n3], %q[n3], q11\n\t"
+        // The assembly's one data block: this band's step, the next band's, the row stride, the
+        // current row's indices (one base register for all of them: ARMv7 has few).
+        struct alignas(16) {
+          uint32x4_t dd[9];
+          uint32_t ib[16];
+        } blk;
+        blk.dd[8] = vdupq_n_u32(uint32_t(width));
+        std::memcpy(blk.ib, ib[cur], sizeof blk.ib);
+        uint32x4_t* const dd = blk.dd;
+        const uint8_t* srcs[B + 1];    // the next row's texels, for each row of the band
+        for (int band = 0; band < nb; ++band) {
+          for (int j = 0; j < 4; ++j) dd[j] = delta[j];
+          if (band + 1 < nb) step_for(by0 + band + 2);
+          for (int j = 0; j < 4; ++j) dd[4 + j] = delta[j];
+          for (int r = 0; r < B; ++r) srcs[r] = next_run() + 16 * g;
+          srcs[B] = nullptr;  // the loop runs while a row follows the next one
+          const uint8_t* const* sa = srcs;
+          asm volatile(
+              "1:\n\t" SB_BLOCK_ROW7("0")
+              "ldr r0, [%[sa], #4]\n\t"
+              "cmp r0, #0\n\t"
+              "bne 1b\n\t" SB_BLOCK_ROW7("64")
+              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [sa] "+r"(sa),
+                [d] "+r"(d)
+              : [cm] "r"(colormap), [dl] "r"(dd)
+              : "r0", "r1", "r2", "r3", "ip", "lr", "d16", "d17",
+                "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "cc",
+                "memory");
+        }
+#undef SB_BLOCK_ROW7
+        continue;
+      }
+#endif
+      for (int band = 0; band < nb; ++band) {
+        for (int fy = 0; fy < B - 1; ++fy) row(false, 0);
+        row(band + 1 < nb, by0 + band + 2);
       }
     }
   }
@@ -135,10 +541,10 @@ void surface_block_neon(const uint16_t* grid, int grid_width, const uint8_t* tex
     return;
   }
   switch (mip) {
-    case 0: return surface_block_rows<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 1: return surface_block_rows<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 2: return surface_block_rows<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    default: return surface_block_rows<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 0: return surface_block_groups<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 1: return surface_block_groups<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 2: return surface_block_groups<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    default: return surface_block_groups<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
   }
 }
 

@@ -59,105 +59,13 @@ void surface_span_sse2(uint8_t* __restrict dest, int n, const uint8_t* __restric
 }
 
 // ---------------------------------------------------------------- 2. surface block builder
-//
-// Per texel, num = g00 w00 + g10 w10 + g01 w01 + g11 w11 with the bilinear weights
-// w00 = (B - fx)(B - fy), w10 = fx (B - fy), w01 = (B - fx) fy, w11 = fx fy: the same
-// integer as the scalar builder's stepped numerator. Grid pairs (g00, g10) and weight pairs
-// (w00, w10) sit in 16-bit halves of 32-bit lanes, so one pmaddwd gives g00 w00 + g10 w10.
-// The surface is walked a row at a time in chunks of 16 texels (chunks start on block
-// boundaries, so a lane's fx depends only on its index), split where the texture wraps.
+// asm/surface_block_x86.h (shared with asm/avx2.cpp).
 
-template <int kMip>
-void surface_block_rows(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
-                        int toff, int width, int height, const uint8_t* __restrict colormap,
-                        uint8_t* __restrict out) {
-  constexpr int B = 16 >> kMip, LB = 4 - kMip, S = 2 * (4 - kMip);
-  const int bw = width / B, bh = height / B;
-  // (g[bx], g[bx + 1]) of the block row's top (p0) and bottom (p1) grid rows; zero padding
-  // for the lanes of a final partial chunk.
-  alignas(16) uint32_t p0[kMaxBlockColumns + 16], p1[kMaxBlockColumns + 16];
-  __m128i A[4];  // lanes k = 4j + i: (B - fx) | fx << 16, fx = k % B
-  for (int j = 0; j < 4; ++j) {
-    auto pat = [](int k) { return int32_t((B - k % B) | (k % B) << 16); };
-    A[j] = _mm_setr_epi32(pat(4 * j), pat(4 * j + 1), pat(4 * j + 2), pat(4 * j + 3));
-  }
-  const __m128i mask = _mm_set1_epi32(0xff00), zero = _mm_setzero_si128();
-  const int c0 = wrap(soff, tw);
-  alignas(16) uint16_t idx[16];
-  alignas(16) uint8_t tmp[16];
-
-  const uint8_t* const tex_end = texels + tw * th;
-  uint8_t rowbuf[kRowBufferBytes];
-  int ty = wrap(toff, th);  // texture row of surface row y
-  for (int by = 0; by < bh; ++by) {
-    const uint16_t* g0 = grid + by * grid_width;
-    const uint16_t* g1 = g0 + grid_width;
-    for (int bx = 0; bx < bw; ++bx) {
-      p0[bx] = uint32_t(g0[bx]) | uint32_t(g0[bx + 1]) << 16;
-      p1[bx] = uint32_t(g1[bx]) | uint32_t(g1[bx + 1]) << 16;
-    }
-    for (int bx = bw; bx < bw + 16; ++bx) p0[bx] = p1[bx] = 0;
-    for (int fy = 0; fy < B; ++fy) {
-      const int y = by * B + fy;
-      const __m128i wt = _mm_set1_epi16(int16_t(B - fy)), wb = _mm_set1_epi16(int16_t(fy));
-      __m128i W0[4], W1[4];
-      for (int j = 0; j < 4; ++j) {
-        W0[j] = _mm_mullo_epi16(A[j], wt);
-        W1[j] = _mm_mullo_epi16(A[j], wb);
-      }
-      const uint8_t* trow = texels + ty * tw;
-      if (++ty == th) ty = 0;
-      uint8_t* drow = out + y * width;
-      const uint8_t* row_end;
-      const uint8_t* texrow = texel_row(trow, c0, tw, width, tex_end, rowbuf, &row_end);
-      {
-        constexpr int x = 0;
-        const int len = width;
-        for (int i = 0; i < len; i += 16) {
-          const int m = len - i < 16 ? len - i : 16;
-          const int bx0 = (x + i) >> LB;
-          __m128i row[4];
-          for (int j = 0; j < 4; ++j) {
-            __m128i e0, e1;
-            if constexpr (LB == 1) {
-              e0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p0 + bx0 + 2 * j));
-              e1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(p1 + bx0 + 2 * j));
-              e0 = _mm_unpacklo_epi32(e0, e0);
-              e1 = _mm_unpacklo_epi32(e1, e1);
-            } else {
-              e0 = _mm_set1_epi32(int32_t(p0[bx0 + ((4 * j) >> LB)]));
-              e1 = _mm_set1_epi32(int32_t(p1[bx0 + ((4 * j) >> LB)]));
-            }
-            const __m128i num = add32(_mm_madd_epi16(e0, W0[j]), _mm_madd_epi16(e1, W1[j]));
-            row[j] = _mm_and_si128(_mm_srli_epi32(num, S), mask);
-          }
-          const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(texels16(texrow + i, m, row_end, tmp)));
-          // Rows are at most 0x3f00: the signed pack is exact.
-          _mm_store_si128(reinterpret_cast<__m128i*>(idx),
-                          _mm_add_epi16(_mm_packs_epi32(row[0], row[1]), _mm_unpacklo_epi8(t, zero)));
-          _mm_store_si128(reinterpret_cast<__m128i*>(idx + 8),
-                          _mm_add_epi16(_mm_packs_epi32(row[2], row[3]), _mm_unpackhi_epi8(t, zero)));
-          lookup_n(drow + x + i, colormap, idx, m);
-        }
-      }
-    }
-  }
-}
+#include "asm/surface_block_x86.h"
 
 void surface_block_sse2(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width, int tex_height,
                         int mip, int soff, int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
-  if (width <= 0 || height <= 0) return;
-  if (width / (16 >> mip) > kMaxBlockColumns || mip < 0 || mip > 3) {
-    surface_block_scalar(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap,
-                         out);
-    return;
-  }
-  switch (mip) {
-    case 0: return surface_block_rows<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 1: return surface_block_rows<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    case 2: return surface_block_rows<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    default: return surface_block_rows<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-  }
+  surface_block_x86(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap, out);
 }
 
 // ---------------------------------------------------------------- 3. z span

@@ -5,9 +5,9 @@
 #
 #   bench/count.sh            everything (about 2 minutes on 2 cores once built)
 #   bench/count.sh --quick    kernels only, no whole-frame callgrind runs
-#   bench/count.sh --quick --only=span,persp
-#                             just the cases whose names start so (starbow_count_kernels list);
-#                             the other rows of bench/counts.md are kept as they were
+#   bench/count.sh --only=block_mip,span [--variants=scalar,neon]   the cases whose names
+#                             start so (starbow_count_kernels list), those variants; only those
+#                             rows of bench/counts.md are replaced (see bench/count_report.py)
 #
 # Builds (only what it needs, own build dirs, -no-pie so addresses match the binary):
 #   build/count          starbow_count_kernels + starbow (x86-64, native)
@@ -65,6 +65,18 @@ EOF
     gcc -O2 -shared -fPIC -o "$PLUG/lib$n.so" "$PLUG/src/$top/$c" -I"$PLUG/src/$top/include/qemu" \
         $(pkg-config --cflags --libs glib-2.0)
   done
+fi
+# hotblocks keys its table by pc ^ instruction count, so two blocks can share an entry (one
+# block's executions then counted under the other's address and length: seen on armhf, a
+# 71-instruction loop merged into a 19-instruction block). Key by pc ^ count << 48 instead
+# (unique for user-space addresses). Applied once to a cached plugin build too.
+if [ ! -f "$PLUG/hotblocks-key-fixed" ]; then
+  hb=$(ls "$PLUG"/src/*/contrib/plugins/hotblocks.c | head -1)
+  sed -i "s/uint64_t hash = pc ^ insns;/uint64_t hash = pc ^ ((uint64_t) insns << 48);/" "$hb"
+  # shellcheck disable=SC2046
+  gcc -O2 -shared -fPIC -o "$PLUG/libhotblocks.so" "$hb" -I"$(dirname "$hb")/../../include/qemu" \
+      $(pkg-config --cflags --libs glib-2.0)
+  touch "$PLUG/hotblocks-key-fixed"
 fi
 
 # ---- builds

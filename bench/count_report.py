@@ -15,10 +15,10 @@
 #   consecutive blocks on out-of-order cores is not credited: a mild over-estimate there.
 # Also the whole frame on x86-64: callgrind over a flythrough of F and 2F frames.
 #
-# --only=CASES (comma-separated case-name prefixes, e.g. --only=span,persp): count just those
-# cases; bench/counts.md keeps its other rows (and its whole-frame section unless that is rerun)
-# and has only the matching rows replaced.
 # Writes the table to stdout and to bench/counts.md.
+# Filter (bench/count.sh --quick passes arguments through): --only=PREFIX[,PREFIX...] keeps
+# the cases starting with a prefix (e.g. --only=block_mip or --only=span,persp), --variants=a,b keeps those
+# variants; a filtered run replaces only its own rows of the existing bench/counts.md.
 import json, math, os, re, subprocess, sys, time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -113,8 +113,8 @@ class Disasm:
     INV = dict(eq="ne", ne="eq", cs="cc", cc="cs", hs="lo", lo="hs", mi="pl", pl="mi", vs="vc", vc="vs",
                hi="ls", ls="hi", ge="lt", lt="ge", gt="le", le="gt")
 
-    # llvm-mca 14 has no Cortex-A9 timing for register-list pushes and pops: time them as one
-    # store or load per register (the same memory traffic).
+    # llvm-mca 14 has no Cortex-A9 timing for register-list pushes and pops (nor ldm/stm): time
+    # them as one store or load per register (the same memory traffic), plus the writeback.
     def split_lists(self, code):
         out = []
         for c in code:
@@ -130,6 +130,19 @@ class Disasm:
                 out += [f"{op} {r}, [{m.group(2)}, #{4 * i}]" for i, r in enumerate(regs)]
                 continue
             m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c2)
+            g = re.match(r"^(v?)(ldm|stm)(?:ia)?(?:\.\d+)? (\w+)(!?), \{(.*)\}$", c2)
+            if g and not m:  # ldm/stm (vldm/vstm) on another base: one load/store per register
+                regs = []
+                for part in g.group(5).split(","):
+                    part = part.strip()
+                    r = re.match(r"^([rd])(\d+)-[rd](\d+)$", part)
+                    regs += [f"{r.group(1)}{i}" for i in range(int(r.group(2)), int(r.group(3)) + 1)] if r else [part]
+                size = 8 if g.group(1) else 4
+                op = ("vldr" if g.group(2) == "ldm" else "vstr") if g.group(1) else ("ldr" if g.group(2) == "ldm" else "str")
+                out += [f"{op} {r}, [{g.group(3)}, #{size * i}]" for i, r in enumerate(regs)]
+                if g.group(4):
+                    out.append(f"add {g.group(3)}, {g.group(3)}, #{size * len(regs)}")
+                continue
             if not m:
                 out.append(c)
                 continue
@@ -289,10 +302,33 @@ def fmt(x, d=2):
     return "—" if x is None else f"{x:.{d}f}"
 
 
+def opt(name):
+    for a in sys.argv[1:]:
+        if a.startswith(f"--{name}="):
+            return tuple(x for x in a.split("=", 1)[1].split(",") if x)
+    return ()
+
+
+ONLY, VARIANTS = opt("only"), opt("variants")
+
+
+def merge_rows(path, rows):
+    """Replaces the table rows (same kernel, target, variant) of an existing counts.md."""
+    lines = open(path).read().split("\n")
+    key = lambda l: tuple(c.strip() for c in l.split("|")[1:4])
+    for r in rows:
+        hits = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l) == key(r)]
+        if hits:
+            lines[hits[0]] = r
+        else:  # after the last row of the same kernel, else at the table's end
+            same = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l)[0] == key(r)[0]]
+            last = [i for i, l in enumerate(lines) if l.startswith("| ")]
+            lines.insert((same or last)[-1] + 1, r)
+    open(path, "w").write("\n".join(lines))
+
+
 def main():
-    quick = "--quick" in sys.argv
-    only = next((a.split("=", 1)[1].split(",") for a in sys.argv if a.startswith("--only=")), None)
-    wanted = lambda case: only is None or any(case.startswith(o) for o in only if o)
+    quick = "--quick" in sys.argv or bool(ONLY or VARIANTS)
     t0 = time.time()
     results = []  # (target, case, variant, ipu, {cpu: cyc}, cover, gather)
     for t in TARGETS:
@@ -301,10 +337,9 @@ def main():
             continue
         runner = t["qemu"] if t["name"] != "x86-64" else []
         cases = [l.split() for l in sh(runner + [t["exe"], "list"]).stdout.splitlines()]
+        cases = [c for c in cases if (not ONLY or c[0].startswith(ONLY)) and (not VARIANTS or c[1] in VARIANTS)]
         dis = Disasm(t)
         for case, variant, units in cases:
-            if not wanted(case):
-                continue
             units = int(units)
             r = reps_for(units)
             args = lambda n: [case, variant, str(n)]
@@ -372,23 +407,6 @@ def main():
         vsq = "" if quake is None or worst is None else f"{quake / worst:.2f}"
         md.append(f"| {KERNEL[case]} | {t['name']} | {variant} | {ipu:.2f} | " + " | ".join(cells)
                   + f" | {cover:.0%} | {ratio} | {vsq} |")
-    old_frame = []
-    if only is not None:
-        # Keep the other cases' rows (and the frame section when not rerun) from the last full run.
-        old_path = os.path.join(ROOT, "bench", "counts.md")
-        old = open(old_path).read().splitlines() if os.path.exists(old_path) else []
-        label_case = {v: k for k, v in KERNEL.items()}
-        mine = md[md.index(header) + 2:]
-        kept = [l for l in old if l.startswith("| ") and l.split(" | ")[0][2:] in label_case
-                and not wanted(label_case[l.split(" | ")[0][2:]])]
-        order = lambda l: list(KERNEL).index(label_case[l.split(" | ")[0][2:]])
-        md[md.index(header) + 2:] = sorted(kept + mine, key=order)  # stable: targets stay in order
-        if "## Whole frames" in "\n".join(old) and not frame:
-            i = next(i for i, l in enumerate(old) if l.startswith("## Whole frames"))
-            old_frame = [""] + [l for l in old[i:] if not l.startswith("Run time")]
-            while old_frame and old_frame[-1] == "":
-                old_frame.pop()
-    md += old_frame
     if frame:
         label, rows = frame
         md += ["", f"## Whole frames, x86-64 (callgrind; {label}, 320x240, flythrough 100 minus 50 frames)", "",
@@ -401,7 +419,11 @@ def main():
             md.append(f"| {mode} | {ppf:.1f} | {span:.1f} | {pf / 1e6:.2f} M | 59.1 per pixel, span drawer 19.8 |")
     md += ["", f"Run time: {time.time() - t0:.0f} s."]
     text = "\n".join(md) + "\n"
-    open(os.path.join(ROOT, "bench", "counts.md"), "w").write(text)
+    if ONLY or VARIANTS:
+        merge_rows(os.path.join(ROOT, "bench", "counts.md"), [l for l in md if l.startswith("| ") and "---" not in l
+                                                              and not l.startswith("| kernel |")])
+    else:
+        open(os.path.join(ROOT, "bench", "counts.md"), "w").write(text)
     print(text)
 
 

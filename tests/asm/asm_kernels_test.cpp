@@ -252,6 +252,16 @@ TEST(AsmSurfaceBlock, EveryVariantMatchesScalarEveryMip) {
       check_block(k, rng, BlockCase{mip, 4096 >> mip, b, 16 >> mip, 16 >> mip, -b, 0, 257}, Light::kRandom, false);
       check_block(k, rng, BlockCase{mip, b, 4096 >> mip, 256 >> mip, 16 >> mip, 0, -7 * b, 2}, Light::kRandom, false);
       check_block(k, rng, BlockCase{mip, 48 >> mip, 48 >> mip, b, b, 3 * b, 2 * b, 4}, Light::kAlternating, false);
+      // Tall and wide (the tuned builders' texel runs then come in strips of bands), with a
+      // texture taller than the surface and with one shorter but too big to lay out at once;
+      // widths that are not a multiple of 16 texels at this mip.
+      check_block(k, rng, BlockCase{mip, 4096 >> mip, 320 >> mip, 256 >> mip, 512 >> mip, -b, 3 * b, 257},
+                  Light::kRandom, false);
+      check_block(k, rng, BlockCase{mip, 4080 >> mip, 256 >> mip, 80 >> mip, 96 >> mip, 5 * b, -9 * b, 256},
+                  Light::kSmooth, false);
+      check_block(k, rng, BlockCase{mip, 272 >> mip, 400 >> mip, 48 >> mip, 32 >> mip, -7 * b, 11 * b, 18},
+                  Light::kAlternating, false);
+      cases += 3;
       // Wider than the tuned variants' block column limit: they fall back to the reference.
       check_block(k, rng, BlockCase{mip, 4352 >> mip, b, 64 >> mip, 64 >> mip, 0, 0, 273}, Light::kRandom, false);
       cases += 5;

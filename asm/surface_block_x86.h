@@ -1,0 +1,217 @@
+// asm/surface_block_x86.h: internal to asm/: the x86 surface block builder, shared by
+// asm/sse2.cpp (SSE2) and asm/avx2.cpp (the same source compiled with -mavx2: VEX encoding).
+// Include it inside an anonymous namespace after <emmintrin.h> and <cstring>, and after
+// asm/variants.h (wrap, kMaxBlockColumns, surface_block_scalar): each file gets its own
+// internal copy, so the AVX2 instance can never stand in for the SSE2 one at link time.
+//
+// As the NEON builder (asm/neon.cpp, section 2): sixteen lanes (16 >> LB blocks side by side)
+// walked down their B rows, the light numerators in 32-bit lanes scaled by 4^mip so that the
+// colormap row is byte 2 of every lane, stepped by one vector add per four texels and row.
+// The lanes' first numerators come from pmaddwd of grid pairs (g00, g10) with weight pairs
+// (B - fx, fx). Indices ((num >> 8) & ~0xff) | texel leave the vector two at a time (64-bit
+// moves); the sixteen colormap loads are independent and are packed into two 64-bit stores.
+
+// dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
+// least 32 bytes must be writable).
+// period: bytes (c0 + k) mod tw for k < 32 (used with SSSE3 for narrow textures).
+inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
+                     const __m128i* period) {
+  int d;  // a period of the run, >= 16
+  if (tw >= 16) {
+    const int a = tw - c0 < n ? tw - c0 : n;
+    std::memcpy(dst, row + c0, size_t(a));
+    if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
+    d = tw;
+  } else {
+    d = tw;
+    while (d < 16) d += tw;  // (no divide); at most 30
+#if defined(__SSSE3__)  // the AVX2 instance: the first 32 bytes by two shuffles of the row
+    if (row + 16 <= tex_end) {
+      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm_shuffle_epi8(v, period[0]));
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + 16), _mm_shuffle_epi8(v, period[1]));
+      for (int x = 32; x < n; x += 16)
+        _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x),
+                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
+      return;
+    }
+#else
+    (void)tex_end;
+    (void)period;
+#endif
+    for (int k = 0, c = c0; k < d; ++k) {
+      dst[k] = row[c];
+      if (++c == tw) c = 0;
+    }
+  }
+  for (int x = d; x < n; x += 16)
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x), _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
+}
+
+constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
+
+constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
+
+// A group's sixteen lanes of one grid row as pmaddwd pairs (g[b], g[b + 1]), quarter j = lanes
+// 4j .. 4j + 3; b = the group's first block. Reads g[b .. b + 8] at most (G + 1 entries).
+template <int LB>
+inline __m128i grid_pairs(const uint16_t* g, int j) {
+  if constexpr (LB == 1) {
+    const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g));
+    const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + 1));
+    const __m128i p = j < 2 ? _mm_unpacklo_epi16(a, c) : _mm_unpackhi_epi16(a, c);  // blocks 4(j/2) ..
+    return j % 2 == 0 ? _mm_unpacklo_epi32(p, p) : _mm_unpackhi_epi32(p, p);
+  } else {
+    uint32_t v;
+    std::memcpy(&v, g + ((4 * j) >> LB), 4);
+    return _mm_set1_epi32(int32_t(v));
+  }
+}
+
+template <int kMip>
+void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
+                          int toff, int width, int height, const uint8_t* __restrict colormap,
+                          uint8_t* __restrict out) {
+  constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
+  const int bw = width / B, bh = height / B;
+  const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
+  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
+  const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
+  const uint8_t* const tex_end = texels + tw * th;
+  auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  __m128i period[2];  // narrow textures' runs (tile_row)
+  {
+    alignas(16) uint8_t k8[32];
+    for (int k = 0, c = c0; k < 32; ++k) {
+      k8[k] = uint8_t(c);
+      if (++c == tw) c = 0;
+    }
+    period[0] = _mm_load_si128(reinterpret_cast<const __m128i*>(k8));
+    period[1] = _mm_load_si128(reinterpret_cast<const __m128i*>(k8 + 16));
+  }
+  // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
+  // they are laid out once and the whole surface is one strip reading run[] cyclically from
+  // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
+  const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
+  if (all_rows)
+    for (int t = 0; t < th; ++t)
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                                                     buf + t * stride);
+  int strip_bands = bh;
+  if (!all_rows) {
+    const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
+    strip_bands = fit < bh ? fit : bh;
+  }
+
+  // Lanes k = 4j + i: weight pairs (B - fx, fx) << (4 + mip) for the first numerator (the
+  // scaled B T, at most 256 per weight: pmaddwd's signed factors stay exact) and << 2 mip for
+  // the row steps (U - T, then each next grid row's difference).
+  __m128i A0[4], A1[4];
+  for (int j = 0; j < 4; ++j) {
+    auto pat = [](int k, int s) { return int32_t((B - k % B) << s | (k % B) << (16 + s)); };
+    A0[j] = _mm_setr_epi32(pat(4 * j, 4 + kMip), pat(4 * j + 1, 4 + kMip), pat(4 * j + 2, 4 + kMip),
+                           pat(4 * j + 3, 4 + kMip));
+    A1[j] = _mm_setr_epi32(pat(4 * j, 2 * kMip), pat(4 * j + 1, 2 * kMip), pat(4 * j + 2, 2 * kMip),
+                           pat(4 * j + 3, 2 * kMip));
+  }
+  const __m128i keep = _mm_set1_epi32(int32_t(0xffffff00u)), zero = _mm_setzero_si128();
+  uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
+
+  for (int by0 = 0; by0 < bh; by0 += strip_bands) {
+    const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
+    int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
+    if (all_rows) {
+      first = (t0 + by0 * B) % th;
+    } else {
+      count = nb * B;
+      int t = (t0 + by0 * B) % th;
+      for (int r = 0; r < count; ++r) {
+        run[r] = in_place(t) ? texels + t * tw + c0
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                                buf + r * stride);
+        if (++t == th) t = 0;
+      }
+    }
+    uint8_t* const strip = out + by0 * B * width;
+    for (int g = 0; g < groups; ++g) {
+      const int b0 = g * G;
+      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
+        const uint16_t* r = grid + by * grid_width + b0;
+        if (direct) return r;
+        const int n = bw + 1 - b0;
+        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
+        return pad;
+      };
+      __m128i num[4], delta[4], prev[4];
+      {
+        const uint16_t* r0 = row_of(by0);
+        for (int j = 0; j < 4; ++j) {
+          const __m128i e = grid_pairs<LB>(r0, j);
+          num[j] = _mm_madd_epi16(e, A0[j]);
+          prev[j] = _mm_madd_epi16(e, A1[j]);
+        }
+      }
+      const int m = width - 16 * g;  // lanes on the surface (16 but in the last group)
+      uint8_t* d = strip + 16 * g;
+      int k = first;
+      for (int band = 0; band < nb; ++band) {
+        const uint16_t* r1 = row_of(by0 + band + 1);
+#pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) {  // this band's row step; num continues from the last band
+          const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
+          delta[j] = _mm_sub_epi32(next, prev[j]);
+          prev[j] = next;
+        }
+        for (int fy = 0; fy < B; ++fy, d += width) {
+          const uint8_t* src = run[k];
+          if (++k == count) k = 0;
+          const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + 16 * g));
+          const __m128i lo = _mm_unpacklo_epi8(t, zero), hi = _mm_unpackhi_epi8(t, zero);
+          const __m128i t32[4] = {_mm_unpacklo_epi16(lo, zero), _mm_unpackhi_epi16(lo, zero),
+                                  _mm_unpacklo_epi16(hi, zero), _mm_unpackhi_epi16(hi, zero)};
+          uint64_t w[2];
+#pragma GCC unroll 2
+          for (int h = 0; h < 2; ++h) {  // eight texels at a time: fewer live registers
+            uint64_t v = 0;
+#pragma GCC unroll 2
+            for (int jj = 0; jj < 2; ++jj) {
+              const int j = 2 * h + jj;
+              const __m128i idx = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(num[j], 8), keep), t32[j]);
+              num[j] = _mm_add_epi32(num[j], delta[j]);
+              const uint64_t a = uint64_t(_mm_cvtsi128_si64(idx));
+              const uint64_t c = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
+              v |= (uint64_t(colormap[uint32_t(a)]) | uint64_t(colormap[a >> 32]) << 8 |
+                    uint64_t(colormap[uint32_t(c)]) << 16 | uint64_t(colormap[c >> 32]) << 24)
+                   << (32 * jj);
+            }
+            w[h] = v;
+          }
+          if (m >= 16) {
+            std::memcpy(d, w, 16);
+          } else {
+            std::memcpy(d, w, size_t(m));
+          }
+        }
+      }
+    }
+  }
+}
+
+inline void surface_block_x86(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width,
+                              int tex_height, int mip, int soff, int toff, int width, int height,
+                              const uint8_t* colormap, uint8_t* out) {
+  if (width <= 0 || height <= 0) return;
+  if (width / (16 >> mip) > kMaxBlockColumns || mip < 0 || mip > 3) {
+    surface_block_scalar(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap,
+                         out);
+    return;
+  }
+  switch (mip) {
+    case 0: return surface_block_groups<0>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 1: return surface_block_groups<1>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    case 2: return surface_block_groups<2>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+    default: return surface_block_groups<3>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
+  }
+}
