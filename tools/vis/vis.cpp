@@ -214,6 +214,32 @@ void expand_rows(const PortalFile& prt, int nodes, size_t nwords, const std::vec
 
 }  // namespace
 
+std::vector<int> prt_leaf_contents(const BspData& bsp, int num_leaves) {
+  std::vector<int> c(size_t(num_leaves), -1);
+  for (int i = 0; i < num_leaves && size_t(i) + 1 < bsp.leaves.size(); ++i) c[size_t(i)] = bsp.leaves[size_t(i) + 1].contents;
+  return c;
+}
+
+int drop_sky_portals(PortalFile* prt, const std::vector<int>& leaf_contents) {
+  constexpr int kSky = -6;  // CONTENTS_SKY
+  std::vector<char> sky(size_t(prt->num_clusters), 1);
+  for (int l = 0; l < prt->num_leaves; ++l) {
+    int node = prt->clustered() ? prt->leaf_cluster[size_t(l)] : l;
+    int c = size_t(l) < leaf_contents.size() ? leaf_contents[size_t(l)] : -1;
+    if (node >= 0 && node < prt->num_clusters && c != kSky) sky[size_t(node)] = 0;
+  }
+  size_t kept = 0;
+  for (size_t i = 0; i < prt->portals.size(); ++i) {
+    const PrtPortal& p = prt->portals[i];
+    if (sky[size_t(p.leaf[0])] || sky[size_t(p.leaf[1])]) continue;
+    if (kept != i) prt->portals[kept] = std::move(prt->portals[i]);
+    ++kept;
+  }
+  int dropped = int(prt->portals.size() - kept);
+  prt->portals.resize(kept);
+  return dropped;
+}
+
 Status compute_pvs(const PortalFile& prt, const VisOptions& opt, std::vector<uint8_t>* rows, VisStats* stats,
                    std::vector<uint8_t>* phs) {
   Graph g;
@@ -318,6 +344,10 @@ Status run_vis(const std::string& bsp_path, const VisOptions& opt, VisStats* sta
   if (bsp.models.empty() || bsp.models[0].visleafs != prt.num_leaves)
     return make_error("%s: %d leaves, but %s has %d visleafs (stale .prt?)", prt_path.c_str(), prt.num_leaves,
                       bsp_path.c_str(), bsp.models.empty() ? 0 : bsp.models[0].visleafs);
+  if (!opt.trans_sky) {
+    int dropped = drop_sky_portals(&prt, prt_leaf_contents(bsp, prt.num_leaves));
+    if (!opt.quiet && dropped) say(log, user, "sky: %d portals into sky dropped (sky is opaque; -transsky keeps them)", dropped);
+  }
   const double t_read = since(t0);
   std::vector<uint8_t> rows;
   SB_TRY(compute_pvs(prt, opt, &rows, stats));

@@ -62,6 +62,7 @@ Status read_prt(const char* path, PortalFile* out);
 
 struct VisOptions {
   bool fast = false;
+  bool trans_sky = false;   // -transsky: see through sky (run_vis keeps portals into sky)
   bool chop_source = true;  // full mode: also narrow the source by the separators of (pass,
                             // previous pass) (tighter, slower; -nochop turns it off)
   bool symmetric = false;
@@ -84,6 +85,13 @@ struct VisStats {
   double seconds_total = 0;
   bool full = false;
 };
+
+// Sky is opaque (a sky surface is drawn and hides what lies behind it): drops every portal
+// with a sky node on either side (a PRT2 cluster is sky when all its leaves are). Sky leaves
+// then see only their own node. `leaf_contents[i]` is the contents of PRT leaf i (BSP leaf
+// i + 1). Returns the number of portals dropped. run_vis does this unless opt.trans_sky.
+int drop_sky_portals(PortalFile* prt, const std::vector<int>& leaf_contents);
+std::vector<int> prt_leaf_contents(const BspData& bsp, int num_leaves);
 
 // Computes uncompressed rows: rows->size() == num_leaves * row_bytes, row i for PRT leaf i.
 // When phs is not null it receives the PHS rows in the same layout. Progress lines go to
