@@ -252,8 +252,8 @@ TEST_P(SbvisStart, LinesOfSightAreInThePvsAndPicturesUnchanged) {
   }
   tools::BspData bsp;
   ASSERT_TRUE(tools::read_bsp(out.c_str(), &bsp).is_ok());
-  // The portals run_vis used: sky is opaque (no portals into sky nodes).
-  EXPECT_GT(tools::vis::drop_sky_portals(&prt, tools::vis::prt_leaf_contents(bsp, prt.num_leaves)), 0);
+  // The portals as run_vis used them: sky is opaque (no portals into sky nodes), leaf boxes.
+  EXPECT_GT(tools::vis::prepare_portals(&prt, bsp, opt), 0);
   std::vector<uint8_t> rows;
   VisStats st2;
   ASSERT_TRUE(tools::vis::compute_pvs(prt, opt, &rows, &st2).is_ok());

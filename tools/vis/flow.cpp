@@ -141,7 +141,7 @@ inline bool try_separator(V e0, V edge, V q, V ce, bool e_is_back, const Wind& v
 // all of that winding on one side, so only those two are tested.
 // Separators for an edge of one winding are at most 2 * its points; both windings: at most
 // 4 * kMaxPts planes.
-constexpr int kMaxSeps = 4 * kMaxPts;
+}  // namespace
 
 int find_separators(const Wind& back, const Wind& front, Plane* out) {
   int count = 0;
@@ -187,6 +187,8 @@ int find_separators(const Wind& back, const Wind& front, Plane* out) {
   }
   return count;
 }
+
+namespace {
 
 // Runs fn(index, worker) for index in [0, count) on `threads` threads.
 template <class Fn>

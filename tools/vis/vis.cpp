@@ -6,6 +6,8 @@
 #include <cstdarg>
 #include <cstdio>
 #include <map>
+#include <atomic>
+#include <thread>
 
 #include "tools/vis/vis.h"
 #include "tools/vis/vis_graph.h"
@@ -212,6 +214,94 @@ void expand_rows(const PortalFile& prt, int nodes, size_t nwords, const std::vec
   }
 }
 
+
+// PRT2, full mode, leaf boxes known: per-leaf rows of node bits (leaves x nwords). A leaf
+// sees its own cluster and the clusters next to it; a cluster D further away only when,
+// for some portal p out of its cluster and some portal q into D that p sees, the leaf's
+// box is (at least partly) in front of every separator of (q, p): a line from the leaf to
+// D crosses such a p and then such a q, and continues from q through p into the leaf.
+void refine_leaf_rows(const PortalFile& prt, const Graph& g, const std::vector<uint64_t>& vis, size_t nwords,
+                      int threads, std::vector<uint64_t>* out) {
+  const int nl = prt.num_leaves;
+  out->assign(size_t(nl) * nwords, 0);
+  std::vector<std::vector<int>> members(static_cast<size_t>(g.nodes));
+  for (int l = 0; l < nl; ++l) members[size_t(prt.leaf_cluster[size_t(l)])].push_back(l);
+  // Partly in front: the box corner farthest along the normal, the box grown by a unit
+  // (BSP29 boxes are whole units), with 0.1 units to spare.
+  auto in_front = [&](int l, const Plane& pl) {
+    const float* b = &prt.leaf_boxes[size_t(l) * 6];
+    double d = -pl.d;
+    const double n[3] = {pl.n.x, pl.n.y, pl.n.z};
+    for (int k = 0; k < 3; ++k) d += n[k] * (n[k] > 0 ? double(b[3 + k]) + 1.0 : double(b[k]) - 1.0);
+    return d > -0.1;
+  };
+  std::atomic<int> next{0};
+  auto work = [&]() {
+    std::vector<Plane> seps(static_cast<size_t>(kMaxSeps));
+    for (;;) {
+      const int c = next.fetch_add(1);
+      if (c >= g.nodes) break;
+      const std::vector<int>& mem = members[size_t(c)];
+      for (int l : mem) {
+        uint64_t* row = &(*out)[size_t(l) * nwords];
+        row[size_t(c) >> 6] |= uint64_t(1) << (c & 63);
+        for (int p : g.node_portals[size_t(c)]) {
+          const int to = g.portals[size_t(p)].to;
+          row[size_t(to) >> 6] |= uint64_t(1) << (to & 63);
+        }
+      }
+      for (int p : g.node_portals[size_t(c)]) {
+        const uint64_t* b = &vis[size_t(p) * g.words];
+        for (size_t w = 0; w < g.words; ++w) {
+          uint64_t x = b[w];
+          while (x) {
+            const int q = int(w * 64) + __builtin_ctzll(x);
+            x &= x - 1;
+            const int d = g.portals[size_t(q)].to;
+            const uint64_t bit = uint64_t(1) << (d & 63);
+            bool need = false;
+            for (int l : mem) need = need || !((*out)[size_t(l) * nwords + (size_t(d) >> 6)] & bit);
+            if (!need) continue;
+            const int ns =
+                mem.size() > 1 ? find_separators(g.portals[size_t(q)].w, g.portals[size_t(p)].w, seps.data()) : 0;
+            for (int l : mem) {
+              uint64_t& word = (*out)[size_t(l) * nwords + (size_t(d) >> 6)];
+              if (word & bit) continue;
+              bool ok = true;
+              for (int k = 0; k < ns && ok; ++k) ok = in_front(l, seps[size_t(k)]);
+              if (ok) word |= bit;
+            }
+          }
+        }
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+}
+
+// Leaf byte rows from per-leaf node rows.
+void expand_leaf_rows(const PortalFile& prt, int nodes, size_t nwords, const std::vector<uint64_t>& leaf_rows,
+                      std::vector<uint8_t>* rows) {
+  const size_t row_bytes = (size_t(prt.num_leaves) + 7) / 8;
+  rows->assign(size_t(prt.num_leaves) * row_bytes, 0);
+  std::vector<std::vector<int>> members(static_cast<size_t>(nodes));
+  for (int l = 0; l < prt.num_leaves; ++l) members[size_t(prt.leaf_cluster[size_t(l)])].push_back(l);
+  for (int l = 0; l < prt.num_leaves; ++l) {
+    uint8_t* row = &(*rows)[size_t(l) * row_bytes];
+    for (size_t w = 0; w < nwords; ++w) {
+      uint64_t x = leaf_rows[size_t(l) * nwords + w];
+      while (x) {
+        const int v = int(w * 64) + __builtin_ctzll(x);
+        x &= x - 1;
+        for (int m : members[size_t(v)]) row[size_t(m) >> 3] |= uint8_t(1u << (m & 7));
+      }
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<int> prt_leaf_contents(const BspData& bsp, int num_leaves) {
@@ -237,6 +327,20 @@ int drop_sky_portals(PortalFile* prt, const std::vector<int>& leaf_contents) {
   }
   int dropped = int(prt->portals.size() - kept);
   prt->portals.resize(kept);
+  return dropped;
+}
+
+int prepare_portals(PortalFile* prt, const BspData& bsp, const VisOptions& opt) {
+  int dropped = opt.trans_sky ? 0 : drop_sky_portals(prt, prt_leaf_contents(bsp, prt->num_leaves));
+  prt->leaf_boxes.clear();
+  if (size_t(prt->num_leaves) + 1 <= bsp.leaves.size()) {
+    prt->leaf_boxes.resize(size_t(prt->num_leaves) * 6);
+    for (int l = 0; l < prt->num_leaves; ++l)
+      for (int k = 0; k < 3; ++k) {
+        prt->leaf_boxes[size_t(l) * 6 + size_t(k)] = bsp.leaves[size_t(l) + 1].mins[k];
+        prt->leaf_boxes[size_t(l) * 6 + 3 + size_t(k)] = bsp.leaves[size_t(l) + 1].maxs[k];
+      }
+  }
   return dropped;
 }
 
@@ -277,7 +381,23 @@ Status compute_pvs(const PortalFile& prt, const VisOptions& opt, std::vector<uin
   std::vector<uint64_t> hear;
   union_of_rows(nodes, nwords, node_rows, &hear);
   int64_t hear_total = leaf_total(nodes, nwords, hear, node_size);
-  expand_rows(prt, nodes, nwords, node_rows, rows);
+  if (prt.clustered() && !opt.fast && !opt.symmetric && prt.leaf_boxes.size() == size_t(prt.num_leaves) * 6) {
+    std::vector<uint64_t> leaf_rows;
+    refine_leaf_rows(prt, g, vis, nwords, opt.threads, &leaf_rows);
+    int64_t total = 0;
+    for (int l = 0; l < prt.num_leaves; ++l)
+      for (size_t w = 0; w < nwords; ++w) {
+        uint64_t x = leaf_rows[size_t(l) * nwords + w];
+        while (x) {
+          total += node_size[w * 64 + size_t(__builtin_ctzll(x))];
+          x &= x - 1;
+        }
+      }
+    stats->visible_total = total;
+    expand_leaf_rows(prt, nodes, nwords, leaf_rows, rows);
+  } else {
+    expand_rows(prt, nodes, nwords, node_rows, rows);
+  }
   if (phs) expand_rows(prt, nodes, nwords, hear, phs);
   stats->row_bytes = (size_t(prt.num_leaves) + 7) / 8;
   const double nl = prt.num_leaves ? double(prt.num_leaves) : 1.0;
@@ -344,8 +464,8 @@ Status run_vis(const std::string& bsp_path, const VisOptions& opt, VisStats* sta
   if (bsp.models.empty() || bsp.models[0].visleafs != prt.num_leaves)
     return make_error("%s: %d leaves, but %s has %d visleafs (stale .prt?)", prt_path.c_str(), prt.num_leaves,
                       bsp_path.c_str(), bsp.models.empty() ? 0 : bsp.models[0].visleafs);
-  if (!opt.trans_sky) {
-    int dropped = drop_sky_portals(&prt, prt_leaf_contents(bsp, prt.num_leaves));
+  {
+    int dropped = prepare_portals(&prt, bsp, opt);
     if (!opt.quiet && dropped) say(log, user, "sky: %d portals into sky dropped (sky is opaque; -transsky keeps them)", dropped);
   }
   const double t_read = since(t0);

@@ -13,7 +13,10 @@
 //     inside of a cluster (detail brushes do not block vis).
 //   - PVS rows: row_bytes = (visleafs + 7) / 8; bit (i & 7) of byte (i >> 3) is leaf i + 1.
 //     With clusters, a leaf's row is the union of the leaves of every cluster its cluster
-//     sees (its own included).
+//     sees (its own included), less (when leaf boxes are known, full mode) the clusters no
+//     line from the leaf's box can reach: a line from the leaf to cluster D leaves the
+//     leaf's cluster through one of its portals p and enters D through a portal q that p
+//     sees, so the leaf lies in front of every separator of (q, p) for some such pair.
 //   - PHS row of a leaf: the union of the PVS rows of the leaves in its PVS.
 //   - Compression: a non-zero byte is copied; a run of k zero bytes (1..255) is written as
 //     0, k (longer runs as several pairs). This is what sb::decompress_pvs reads.
@@ -53,6 +56,10 @@ struct PortalFile {
   int num_clusters = 0;           // portal graph nodes: num_leaves for PRT1
   std::vector<int> leaf_cluster;  // PRT2: cluster of every leaf; empty for PRT1
   std::vector<PrtPortal> portals;
+  // Optional (run_vis fills it from the BSP): every leaf's box, mins then maxs. With it, a
+  // PRT2 leaf's row keeps only the clusters that a line from its box can reach (see
+  // compute_pvs); without it every leaf of a cluster gets the cluster's row.
+  std::vector<float> leaf_boxes;
   bool clustered() const { return !leaf_cluster.empty(); }
 };
 
@@ -92,6 +99,9 @@ struct VisStats {
 // i + 1). Returns the number of portals dropped. run_vis does this unless opt.trans_sky.
 int drop_sky_portals(PortalFile* prt, const std::vector<int>& leaf_contents);
 std::vector<int> prt_leaf_contents(const BspData& bsp, int num_leaves);
+// What run_vis does to the portal file before compute_pvs: drop_sky_portals unless
+// opt.trans_sky, and leaf_boxes from the BSP's leaves. Returns the portals dropped.
+int prepare_portals(PortalFile* prt, const BspData& bsp, const VisOptions& opt);
 
 // Computes uncompressed rows: rows->size() == num_leaves * row_bytes, row i for PRT leaf i.
 // When phs is not null it receives the PHS rows in the same layout. Progress lines go to
