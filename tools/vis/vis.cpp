@@ -215,41 +215,54 @@ void expand_rows(const PortalFile& prt, int nodes, size_t nwords, const std::vec
 }
 
 
-// PRT2, full mode, leaf boxes known: per-leaf rows of node bits (leaves x nwords). A leaf
-// sees its own cluster and the clusters next to it; a cluster D further away only when,
-// for some portal p out of its cluster and some portal q into D that p sees, the leaf's
-// box is (at least partly) in front of every separator of (q, p): a line from the leaf to
-// D crosses such a p and then such a q, and continues from q through p into the leaf.
-void refine_leaf_rows(const PortalFile& prt, const Graph& g, const std::vector<uint64_t>& vis, size_t nwords,
-                      int threads, std::vector<uint64_t>* out) {
+// PRT2, full mode, leaf boxes known: leaf byte rows. A leaf sees every leaf of its own
+// cluster and of the clusters next to it. Further away, a line from leaf L (cluster C) to
+// leaf M (cluster D) leaves C through a portal p, and enters D through a portal q that p
+// sees; it runs from q through p on to L, and from p through q on to M. So L is kept for M
+// only when, for some such (p, q), L's box is (at least partly) in front of every
+// separator of (q, p) and M's box in front of every separator of (p, q).
+void refine_leaf_rows(const PortalFile& prt, const Graph& g, const std::vector<uint64_t>& vis, int threads,
+                      std::vector<uint8_t>* rows) {
   const int nl = prt.num_leaves;
-  out->assign(size_t(nl) * nwords, 0);
+  const size_t rb = (size_t(nl) + 7) / 8;
+  rows->assign(size_t(nl) * rb, 0);
   std::vector<std::vector<int>> members(static_cast<size_t>(g.nodes));
   for (int l = 0; l < nl; ++l) members[size_t(prt.leaf_cluster[size_t(l)])].push_back(l);
   // Partly in front: the box corner farthest along the normal, the box grown by a unit
   // (BSP29 boxes are whole units), with 0.1 units to spare.
-  auto in_front = [&](int l, const Plane& pl) {
+  auto in_front = [&](int l, const Plane* seps, int ns) {
     const float* b = &prt.leaf_boxes[size_t(l) * 6];
-    double d = -pl.d;
-    const double n[3] = {pl.n.x, pl.n.y, pl.n.z};
-    for (int k = 0; k < 3; ++k) d += n[k] * (n[k] > 0 ? double(b[3 + k]) + 1.0 : double(b[k]) - 1.0);
-    return d > -0.1;
+    for (int k = 0; k < ns; ++k) {
+      const Plane& pl = seps[k];
+      const double n[3] = {pl.n.x, pl.n.y, pl.n.z};
+      double d = -pl.d;
+      for (int j = 0; j < 3; ++j) d += n[j] * (n[j] > 0 ? double(b[3 + j]) + 1.0 : double(b[j]) - 1.0);
+      if (d <= -0.1) return false;
+    }
+    return true;
   };
   std::atomic<int> next{0};
   auto work = [&]() {
-    std::vector<Plane> seps(static_cast<size_t>(kMaxSeps));
+    std::vector<Plane> src_seps(static_cast<size_t>(kMaxSeps)), dst_seps(static_cast<size_t>(kMaxSeps));
+    std::vector<int> pass_l, pass_m;
+    std::vector<uint64_t> whole;  // per member of C: clusters all of whose leaves are set
+    const size_t nwords = (size_t(g.nodes) + 63) / 64;
     for (;;) {
       const int c = next.fetch_add(1);
       if (c >= g.nodes) break;
       const std::vector<int>& mem = members[size_t(c)];
-      for (int l : mem) {
-        uint64_t* row = &(*out)[size_t(l) * nwords];
-        row[size_t(c) >> 6] |= uint64_t(1) << (c & 63);
-        for (int p : g.node_portals[size_t(c)]) {
-          const int to = g.portals[size_t(p)].to;
-          row[size_t(to) >> 6] |= uint64_t(1) << (to & 63);
+      whole.assign(mem.size() * nwords, 0);
+      auto set_all = [&](int d) {
+        for (size_t i = 0; i < mem.size(); ++i) {
+          uint64_t& w = whole[i * nwords + (size_t(d) >> 6)];
+          if (w >> (d & 63) & 1) continue;
+          w |= uint64_t(1) << (d & 63);
+          uint8_t* row = &(*rows)[size_t(mem[i]) * rb];
+          for (int m : members[size_t(d)]) row[size_t(m) >> 3] |= uint8_t(1u << (m & 7));
         }
-      }
+      };
+      set_all(c);
+      for (int p : g.node_portals[size_t(c)]) set_all(g.portals[size_t(p)].to);
       for (int p : g.node_portals[size_t(c)]) {
         const uint64_t* b = &vis[size_t(p) * g.words];
         for (size_t w = 0; w < g.words; ++w) {
@@ -258,18 +271,38 @@ void refine_leaf_rows(const PortalFile& prt, const Graph& g, const std::vector<u
             const int q = int(w * 64) + __builtin_ctzll(x);
             x &= x - 1;
             const int d = g.portals[size_t(q)].to;
-            const uint64_t bit = uint64_t(1) << (d & 63);
-            bool need = false;
-            for (int l : mem) need = need || !((*out)[size_t(l) * nwords + (size_t(d) >> 6)] & bit);
-            if (!need) continue;
-            const int ns =
-                mem.size() > 1 ? find_separators(g.portals[size_t(q)].w, g.portals[size_t(p)].w, seps.data()) : 0;
-            for (int l : mem) {
-              uint64_t& word = (*out)[size_t(l) * nwords + (size_t(d) >> 6)];
-              if (word & bit) continue;
-              bool ok = true;
-              for (int k = 0; k < ns && ok; ++k) ok = in_front(l, seps[size_t(k)]);
-              if (ok) word |= bit;
+            pass_l.clear();
+            for (size_t i = 0; i < mem.size(); ++i)
+              if (!(whole[i * nwords + (size_t(d) >> 6)] >> (d & 63) & 1)) pass_l.push_back(int(i));
+            if (pass_l.empty()) continue;
+            if (mem.size() > 1) {
+              const int ns = find_separators(g.portals[size_t(q)].w, g.portals[size_t(p)].w, src_seps.data());
+              size_t k = 0;
+              for (int i : pass_l)
+                if (in_front(mem[size_t(i)], src_seps.data(), ns)) pass_l[k++] = i;
+              pass_l.resize(k);
+              if (pass_l.empty()) continue;
+            }
+            const std::vector<int>& dm = members[size_t(d)];
+            pass_m.clear();
+            if (dm.size() > 1) {
+              const int ns = find_separators(g.portals[size_t(p)].w, g.portals[size_t(q)].w, dst_seps.data());
+              for (int m : dm)
+                if (in_front(m, dst_seps.data(), ns)) pass_m.push_back(m);
+            } else {
+              pass_m = dm;
+            }
+            if (pass_m.size() == dm.size()) {
+              for (int i : pass_l) {
+                whole[size_t(i) * nwords + (size_t(d) >> 6)] |= uint64_t(1) << (d & 63);
+                uint8_t* row = &(*rows)[size_t(mem[size_t(i)]) * rb];
+                for (int m : dm) row[size_t(m) >> 3] |= uint8_t(1u << (m & 7));
+              }
+            } else {
+              for (int i : pass_l) {
+                uint8_t* row = &(*rows)[size_t(mem[size_t(i)]) * rb];
+                for (int m : pass_m) row[size_t(m) >> 3] |= uint8_t(1u << (m & 7));
+              }
             }
           }
         }
@@ -280,26 +313,6 @@ void refine_leaf_rows(const PortalFile& prt, const Graph& g, const std::vector<u
   for (int t = 1; t < threads; ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
-}
-
-// Leaf byte rows from per-leaf node rows.
-void expand_leaf_rows(const PortalFile& prt, int nodes, size_t nwords, const std::vector<uint64_t>& leaf_rows,
-                      std::vector<uint8_t>* rows) {
-  const size_t row_bytes = (size_t(prt.num_leaves) + 7) / 8;
-  rows->assign(size_t(prt.num_leaves) * row_bytes, 0);
-  std::vector<std::vector<int>> members(static_cast<size_t>(nodes));
-  for (int l = 0; l < prt.num_leaves; ++l) members[size_t(prt.leaf_cluster[size_t(l)])].push_back(l);
-  for (int l = 0; l < prt.num_leaves; ++l) {
-    uint8_t* row = &(*rows)[size_t(l) * row_bytes];
-    for (size_t w = 0; w < nwords; ++w) {
-      uint64_t x = leaf_rows[size_t(l) * nwords + w];
-      while (x) {
-        const int v = int(w * 64) + __builtin_ctzll(x);
-        x &= x - 1;
-        for (int m : members[size_t(v)]) row[size_t(m) >> 3] |= uint8_t(1u << (m & 7));
-      }
-    }
-  }
 }
 
 }  // namespace
@@ -382,19 +395,10 @@ Status compute_pvs(const PortalFile& prt, const VisOptions& opt, std::vector<uin
   union_of_rows(nodes, nwords, node_rows, &hear);
   int64_t hear_total = leaf_total(nodes, nwords, hear, node_size);
   if (prt.clustered() && !opt.fast && !opt.symmetric && prt.leaf_boxes.size() == size_t(prt.num_leaves) * 6) {
-    std::vector<uint64_t> leaf_rows;
-    refine_leaf_rows(prt, g, vis, nwords, opt.threads, &leaf_rows);
+    refine_leaf_rows(prt, g, vis, opt.threads, rows);
     int64_t total = 0;
-    for (int l = 0; l < prt.num_leaves; ++l)
-      for (size_t w = 0; w < nwords; ++w) {
-        uint64_t x = leaf_rows[size_t(l) * nwords + w];
-        while (x) {
-          total += node_size[w * 64 + size_t(__builtin_ctzll(x))];
-          x &= x - 1;
-        }
-      }
+    for (uint8_t byte : *rows) total += __builtin_popcount(byte);
     stats->visible_total = total;
-    expand_leaf_rows(prt, nodes, nwords, leaf_rows, rows);
   } else {
     expand_rows(prt, nodes, nwords, node_rows, rows);
   }
