@@ -255,10 +255,12 @@ std::vector<int> leaves_within(const BspWorld& w, float x_max, float y_max) {
   return out;
 }
 
-class SbvisDetail : public ::testing::TestWithParam<bool> {};  // param: PRT2 (clusters) or PRT1
+// Param: 0 PRT2 (default clusters), 1 PRT1, 2 PRT2 with big clusters split (-clusterleaves 8).
+class SbvisDetail : public ::testing::TestWithParam<int> {};
 
 TEST_P(SbvisDetail, WestOfTheDetailRoomDoesNotSeeRoomB) {
-  const bool clusters = GetParam();
+  const bool clusters = GetParam() != 1;
+  const int split = GetParam() == 2 ? 8 : tools::bsp::BspOptions().cluster_leaves;
   auto run = [&](const std::string& name, int cluster_leaves, Vised* out) {
     tools::bsp::BspOptions bo;
     bo.prt1_only = !clusters;
@@ -273,7 +275,7 @@ TEST_P(SbvisDetail, WestOfTheDetailRoomDoesNotSeeRoomB) {
     ASSERT_TRUE(out->status.is_ok()) << out->status.message();
   };
   Vised v;
-  run(clusters ? "vis_detail2" : "vis_detail1", tools::bsp::BspOptions().cluster_leaves, &v);
+  run(GetParam() == 0 ? "vis_detail2" : GetParam() == 1 ? "vis_detail1" : "vis_detail2_split", split, &v);
   if (HasFatalFailure()) return;
   std::cout << "[ sbvis ] detail room (" << (clusters ? "PRT2" : "PRT1") << "): " << v.stats.leaves << " leaves, "
             << v.stats.clusters << " clusters, visible leaves per leaf " << v.stats.mean_visible << "\n";
@@ -301,7 +303,7 @@ TEST_P(SbvisDetail, WestOfTheDetailRoomDoesNotSeeRoomB) {
   std::string err;
   EXPECT_EQ(render_difference(v.bsp, v.novis, views, 160, 100, &err), 0u);
   EXPECT_TRUE(err.empty()) << err;
-  if (!clusters) return;
+  if (GetParam() != 0) return;
   // The test can fail: with one cluster per detail subtree (-clusterleaves 0) and every
   // leaf given its cluster's row (no leaf boxes), west leaves share the row of leaves that
   // see B.
@@ -325,8 +327,9 @@ TEST_P(SbvisDetail, WestOfTheDetailRoomDoesNotSeeRoomB) {
   EXPECT_LT(v.stats.mean_visible, cs.mean_visible);
 }
 
-INSTANTIATE_TEST_SUITE_P(Formats, SbvisDetail, ::testing::Values(true, false),
-                         [](const ::testing::TestParamInfo<bool>& i) { return i.param ? "Prt2" : "Prt1"; });
+INSTANTIATE_TEST_SUITE_P(Formats, SbvisDetail, ::testing::Values(0, 1, 2), [](const ::testing::TestParamInfo<int>& i) {
+  return i.param == 0 ? "Prt2" : i.param == 1 ? "Prt1" : "Prt2SplitClusters";
+});
 
 // Rooms A (x 0..256) and B (x 512..768), y 0..256, z 0..256, with a block of sky between
 // them. Sky is drawn opaque: A must not see B through it (with -transsky the portals

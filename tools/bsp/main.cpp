@@ -18,7 +18,7 @@ void usage() {
                "  -noclip           no clipping hulls 1 and 2\n"
                "  -notjunc          do not fix T-junctions (vertices inside other faces' edges)\n"
                "  -prt1             write PRT1 leaf portals even when the map has func_detail (default PRT2)\n"
-               "  -clusterleaves <n>  PRT2: split a detail cluster of more than n leaves (default 8; 0: never)...\n"
+               "  -clusterleaves <n>  PRT2: split a detail cluster of more than n leaves (default 0: never)...\n"
                "  -clusterextent <u>  ...when its leaves also span more than u units (default 512)\n"
                "  -noprogress       no progress bar / progress lines on stderr\n"
                "  -threads <n>      worker threads (default 2; 1 = everything on one thread)\n"

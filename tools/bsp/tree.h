@@ -82,9 +82,9 @@ struct ClusterPortals {
 // structural node (its children are tested in turn). A cluster's leaves all share one PVS
 // row, so a big cluster makes every leaf that sees part of it see all of it; smaller
 // clusters give a tighter PVS for more vis work. max_leaves 0: every detail subtree is one
-// cluster (the classic func_detail clusters).
+// cluster (the classic func_detail clusters; sbbsp's default, see BspOptions).
 struct ClusterLimits {
-  int max_leaves = 8;
+  int max_leaves = 0;
   double max_extent = 512;
 };
 bool has_detail_splits(const Tree& tree);
