@@ -30,6 +30,9 @@
 //     of both directions see it.
 //   Both are conservative: a leaf is hidden only when no straight line from the source leaf's
 //   portals reaches it (up to the 0.01-unit plane epsilon).
+//   Sky is opaque (its surface is drawn over whatever lies behind it): run_vis drops the
+//   portals into sky leaves (or all-sky clusters) first, as ericw-tools does without
+//   -transsky; a sky leaf then sees its own node only. -transsky keeps them.
 //   Every leaf sees itself. Rows are not symmetrised (full mode is nearly symmetric;
 //   -sym ORs the transpose in).
 // Full mode handles portals in order of fewest might-see portals first, in fixed batches; a
