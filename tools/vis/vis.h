@@ -13,10 +13,11 @@
 //     inside of a cluster (detail brushes do not block vis).
 //   - PVS rows: row_bytes = (visleafs + 7) / 8; bit (i & 7) of byte (i >> 3) is leaf i + 1.
 //     With clusters, a leaf's row is the union of the leaves of every cluster its cluster
-//     sees (its own included), less (when leaf boxes are known, full mode) the clusters no
-//     line from the leaf's box can reach: a line from the leaf to cluster D leaves the
-//     leaf's cluster through one of its portals p and enters D through a portal q that p
-//     sees, so the leaf lies in front of every separator of (q, p) for some such pair.
+//     sees (its own included), less (when leaf boxes are known, full mode, not -sym) the ones no
+//     line from the leaf's box can reach: a line from leaf L to leaf M of cluster D leaves
+//     L's cluster through one of its portals p and enters D through a portal q that p
+//     sees, so for some such pair L's box is partly in front of every separator of (q, p)
+//     and M's box partly in front of every separator of (p, q) (vis.cpp refine_leaf_rows).
 //   - PHS row of a leaf: the union of the PVS rows of the leaves in its PVS.
 //   - Compression: a non-zero byte is copied; a run of k zero bytes (1..255) is written as
 //     0, k (longer runs as several pairs). This is what sb::decompress_pvs reads.
