@@ -250,12 +250,14 @@ TEST_P(SbvisStart, LinesOfSightAreInThePvsAndPicturesUnchanged) {
   if (clusters && prt.clustered()) {
     EXPECT_LT(prt.num_clusters, prt.num_leaves);
   }
+  tools::BspData bsp;
+  ASSERT_TRUE(tools::read_bsp(out.c_str(), &bsp).is_ok());
+  // The portals as run_vis used them: sky is opaque (no portals into sky nodes), leaf boxes.
+  EXPECT_GT(tools::vis::prepare_portals(&prt, bsp, opt), 0);
   std::vector<uint8_t> rows;
   VisStats st2;
   ASSERT_TRUE(tools::vis::compute_pvs(prt, opt, &rows, &st2).is_ok());
   EXPECT_EQ(st2.visible_total, st.visible_total);
-  tools::BspData bsp;
-  ASSERT_TRUE(tools::read_bsp(out.c_str(), &bsp).is_ok());
   const int visleafs = bsp.models[0].visleafs;
   const size_t rb = (size_t(visleafs) + 7) / 8;
   const tools::DModel& m = bsp.models[0];

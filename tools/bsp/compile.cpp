@@ -321,7 +321,10 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
         int count = 0;
         if (has_detail_splits(tree) && !opt.prt1_only) {
           ClusterPortals cp;
-          build_cluster_portals(tree, planes, &cp);
+          ClusterLimits lim;
+          lim.max_leaves = opt.cluster_leaves;
+          lim.max_extent = opt.cluster_extent;
+          build_cluster_portals(tree, planes, lim, &cp);
           prt = portal_text_clusters(tree, cp, leaf_index, rep->visleafs, &count, &rep->clusters);
         } else {
           prt = portal_text(tree, leaf_index, rep->visleafs, &count);

@@ -31,6 +31,9 @@ struct BspOptions {
   bool clip_hulls = true;          // -noclip: hulls 1 and 2 left empty
   bool tjunc = true;               // -notjunc: T-junctions left as they are (emit.h)
   bool prt1_only = false;          // -prt1: PRT1 (leaf portals) even when the map has detail
+  int cluster_leaves = 0;          // -clusterleaves / -clusterextent: PRT2 clusters bigger than
+  double cluster_extent = 512;     // both are split (tree.h ClusterLimits; 0 leaves: never, the
+                                   // default: sbvis refines leaf rows within clusters itself)
   bool progress = true;            // -noprogress: no progress bar / quarter lines on stderr
   bool write_files = true;         // false: compile into memory only (tests)
   int threads = 2;                 // >1: clip hulls 1 and 2 are built on two threads

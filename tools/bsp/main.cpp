@@ -18,6 +18,8 @@ void usage() {
                "  -noclip           no clipping hulls 1 and 2\n"
                "  -notjunc          do not fix T-junctions (vertices inside other faces' edges)\n"
                "  -prt1             write PRT1 leaf portals even when the map has func_detail (default PRT2)\n"
+               "  -clusterleaves <n>  PRT2: split a detail cluster of more than n leaves (default 0: never)...\n"
+               "  -clusterextent <u>  ...when its leaves also span more than u units (default 512)\n"
                "  -noprogress       no progress bar / progress lines on stderr\n"
                "  -threads <n>      worker threads (default 2; 1 = everything on one thread)\n"
                "  -bsp2             write BSP2 even when BSP29 would do\n"
@@ -73,6 +75,12 @@ int main(int argc, char** argv) {
       opt.tjunc = false;
     } else if (!std::strcmp(a, "-prt1")) {
       opt.prt1_only = true;
+    } else if (!std::strcmp(a, "-clusterleaves")) {
+      if (!number_arg(argc, argv, &i, &v) || v < 0) { std::fprintf(stderr, "sbbsp: -clusterleaves needs a number >= 0\n"); return 2; }
+      opt.cluster_leaves = int(v);
+    } else if (!std::strcmp(a, "-clusterextent")) {
+      if (!number_arg(argc, argv, &i, &v) || v < 0) { std::fprintf(stderr, "sbbsp: -clusterextent needs a number >= 0\n"); return 2; }
+      opt.cluster_extent = v;
     } else if (!std::strcmp(a, "-noprogress")) {
       opt.progress = false;
     } else if (!std::strcmp(a, "-verbose") || !std::strcmp(a, "-v")) {

@@ -680,21 +680,52 @@ int prune_equal(Tree* t) {
   return removed;
 }
 
+namespace {
+
+// PVS (non-solid) leaves under n and their bounds, for every node of the subtree.
+int count_visible(const Tree& t, int n, std::vector<int>* out, std::vector<Bounds>* bb) {
+  const TreeNode& node = t.nodes[size_t(n)];
+  int c = 0;
+  Bounds b;
+  if (node.is_leaf()) {
+    if (visible_leaf(node.contents)) c = 1, b = node.bounds;
+  } else {
+    c = count_visible(t, node.children[0], out, bb) + count_visible(t, node.children[1], out, bb);
+    for (int k = 0; k < 2; ++k)
+      if ((*out)[size_t(node.children[k])]) b.add((*bb)[size_t(node.children[k])]);
+  }
+  (*out)[size_t(n)] = c;
+  (*bb)[size_t(n)] = b;
+  return c;
+}
+
+}  // namespace
+
 bool has_detail_splits(const Tree& t) {
   for (const TreeNode& n : t.nodes)
     if (!n.is_leaf() && n.detail_split) return true;
   return false;
 }
 
-void build_cluster_portals(const Tree& t, const PlaneSet& planes, ClusterPortals* out) {
+void build_cluster_portals(const Tree& t, const PlaneSet& planes, const ClusterLimits& lim, ClusterPortals* out) {
   *out = ClusterPortals();
-  // The structural tree: same indices, detail-split nodes made leaves.
+  // The structural tree: same indices, detail-split nodes made leaves unless they are too big
+  // a cluster (see ClusterLimits): those are portalled like structural nodes.
   Tree s;
   s.nodes.resize(t.nodes.size());
+  std::vector<int> vis_count(t.nodes.size(), 0);
+  std::vector<Bounds> vis_bounds(t.nodes.size());
+  count_visible(t, t.root, &vis_count, &vis_bounds);
+  auto extent = [&](size_t i) {
+    const Bounds& b = vis_bounds[i];
+    if (!vis_count[i]) return 0.0;
+    return std::max({b.maxs.x - b.mins.x, b.maxs.y - b.mins.y, b.maxs.z - b.mins.z});
+  };
   for (size_t i = 0; i < t.nodes.size(); ++i) {
     const TreeNode& a = t.nodes[i];
     TreeNode& b = s.nodes[i];
-    b.plane = a.detail_split ? -1 : a.plane;
+    const bool big = lim.max_leaves > 0 && vis_count[i] > lim.max_leaves && extent(i) > lim.max_extent;
+    b.plane = a.detail_split && !big ? -1 : a.plane;
     b.children[0] = a.children[0];
     b.children[1] = a.children[1];
   }

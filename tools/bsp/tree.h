@@ -77,8 +77,18 @@ struct ClusterPortals {
   std::vector<int> roots;
   std::vector<Portal> portals;
 };
+// A detail subtree with more than max_leaves PVS leaves whose PVS leaves span more than
+// max_extent units on some axis is not one cluster: its top split is portalled like a
+// structural node (its children are tested in turn). A cluster's leaves all share one PVS
+// row, so a big cluster makes every leaf that sees part of it see all of it; smaller
+// clusters give a tighter PVS for more vis work. max_leaves 0: every detail subtree is one
+// cluster (the classic func_detail clusters; sbbsp's default, see BspOptions).
+struct ClusterLimits {
+  int max_leaves = 0;
+  double max_extent = 512;
+};
 bool has_detail_splits(const Tree& tree);
-void build_cluster_portals(const Tree& tree, const PlaneSet& planes, ClusterPortals* out);
+void build_cluster_portals(const Tree& tree, const PlaneSet& planes, const ClusterLimits& limits, ClusterPortals* out);
 
 // Leaf contents from the brushes (see the header comment).
 void set_leaf_contents(Tree* tree, const std::vector<Brush>& brushes, const PlaneSet& planes);

@@ -101,32 +101,33 @@ inline bool clip_in_place(const Wind** cur, const Plane& pl, Wind* a, Wind* b) {
   return true;
 }
 
-// Tests the plane through the edge e0 -> e0 + edge and the point q: it qualifies when `back`
-// is wholly behind it (not all within kEps) and `front` wholly in front (likewise), after
-// orienting it. Distances are compared unnormalised (d^2 against kEps^2 |n|^2) so rejected
-// candidates cost no square root.
-inline bool try_separator(V e0, V edge, V q, const Wind& back, const Wind& front, Plane* out) {
+// Tests the plane through the edge e0 -> e0 + edge of winding e (centre ce) and the vertex q
+// of the other winding v. The plane has all of e on one side (convex, planar, the plane holds
+// one of its edges): it qualifies when e's centre lies off it (more than kEps) and v lies
+// wholly on the other side (some point more than kEps off, none more than kEps on e's side).
+// It is oriented with `back` behind and `front` in front (e_is_back: e is `back`). Distances
+// are compared unnormalised (d^2 against kEps^2 |n|^2) so rejected candidates cost no
+// square root.
+inline bool try_separator(V e0, V edge, V q, V ce, bool e_is_back, const Wind& v, Plane* out) {
   V n = cross(edge, q - e0);
   double len2 = dot(n, n);
   if (len2 < 1e-8) return false;
   const double e2 = kEps * kEps * len2;
   const double base = dot(n, e0);
-  bool pos = false, neg = false;
-  for (int i = 0; i < back.n; ++i) {
-    double d = dot(n, back.p[i]) - base;
-    if (d * d > e2) (d > 0 ? pos : neg) = true;
-  }
-  if (pos == neg) return false;  // straddles (numerically) or lies in the plane
-  const double sign = pos ? -1.0 : 1.0;
-  bool ahead = false;
-  for (int i = 0; i < front.n; ++i) {
-    double d = (dot(n, front.p[i]) - base) * sign;
+  const double dc = dot(n, ce) - base;
+  if (dc * dc <= e2) return false;  // e (nearly) in the plane
+  const double side = dc > 0 ? -1.0 : 1.0;  // v must lie where side * d > 0
+  bool off = false;
+  for (int i = 0; i < v.n; ++i) {
+    double d = (dot(n, v.p[i]) - base) * side;
     if (d * d > e2) {
       if (d < 0) return false;
-      ahead = true;
+      off = true;
     }
   }
-  if (!ahead) return false;
+  if (!off) return false;
+  // back behind: with e = back its centre side is negative; with e = front v (back) is.
+  const double sign = e_is_back ? (dc > 0 ? -1.0 : 1.0) : (dc > 0 ? 1.0 : -1.0);
   double inv = sign / std::sqrt(len2);
   out->n = n * inv;
   out->d = base * inv;
@@ -140,7 +141,7 @@ inline bool try_separator(V e0, V edge, V q, const Wind& back, const Wind& front
 // all of that winding on one side, so only those two are tested.
 // Separators for an edge of one winding are at most 2 * its points; both windings: at most
 // 4 * kMaxPts planes.
-constexpr int kMaxSeps = 4 * kMaxPts;
+}  // namespace
 
 int find_separators(const Wind& back, const Wind& front, Plane* out) {
   int count = 0;
@@ -180,12 +181,14 @@ int find_separators(const Wind& back, const Wind& front, Plane* out) {
       // v lies on the positive side of nlo and the negative side of nhi: a plane can only
       // separate when e is on the other side.
       const V c = ce - e0;
-      if (dot(nlo, c) < 0 && try_separator(e0, edge, v.p[lo], back, front, &pl)) out[count++] = pl;
-      if (hi != lo && dot(nhi, c) > 0 && try_separator(e0, edge, v.p[hi], back, front, &pl)) out[count++] = pl;
+      if (dot(nlo, c) < 0 && try_separator(e0, edge, v.p[lo], ce, pass == 0, v, &pl)) out[count++] = pl;
+      if (hi != lo && dot(nhi, c) > 0 && try_separator(e0, edge, v.p[hi], ce, pass == 0, v, &pl)) out[count++] = pl;
     }
   }
   return count;
 }
+
+namespace {
 
 // Runs fn(index, worker) for index in [0, count) on `threads` threads.
 template <class Fn>

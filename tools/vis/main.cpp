@@ -1,9 +1,10 @@
 // tools/vis/main.cpp: sbvis, the VIS stage of the map compiler.
 //
-//   sbvis [-fast] [-nochop] [-threads N] [-sym] [-q] file.bsp
+//   sbvis [-fast] [-nochop] [-threads N] [-transsky] [-sym] [-q] file.bsp
 //     -fast         the portal flood only (quick, looser)
 //     -nochop       full flow without the source narrowing (faster, a little looser)
 //     -threads N    worker threads (default 2)
+//     -transsky     see through sky (by default sky is opaque: no portals into sky leaves)
 //     -sym          make the PVS symmetric (a sees b => b sees a)
 //     -q            quiet: the summary only
 // Reads file.prt (PRT1, or PRT2 with detail clusters; written by sbbsp next to the BSP),
@@ -18,7 +19,7 @@
 
 namespace {
 
-void usage() { std::fprintf(stderr, "usage: sbvis [-fast] [-nochop] [-threads N] [-sym] [-q] file.bsp\n"); }
+void usage() { std::fprintf(stderr, "usage: sbvis [-fast] [-nochop] [-threads N] [-transsky] [-sym] [-q] file.bsp\n"); }
 
 void print_line(void*, const char* line) {
   std::printf("%s\n", line);
@@ -36,6 +37,8 @@ int main(int argc, char** argv) {
       opt.fast = true;
     } else if (!std::strcmp(a, "-nochop")) {
       opt.chop_source = false;
+    } else if (!std::strcmp(a, "-transsky")) {
+      opt.trans_sky = true;
     } else if (!std::strcmp(a, "-sym")) {
       opt.symmetric = true;
     } else if (!std::strcmp(a, "-q")) {

@@ -13,7 +13,11 @@
 //     inside of a cluster (detail brushes do not block vis).
 //   - PVS rows: row_bytes = (visleafs + 7) / 8; bit (i & 7) of byte (i >> 3) is leaf i + 1.
 //     With clusters, a leaf's row is the union of the leaves of every cluster its cluster
-//     sees (its own included).
+//     sees (its own included), less (when leaf boxes are known, full mode, not -sym) the ones no
+//     line from the leaf's box can reach: a line from leaf L to leaf M of cluster D leaves
+//     L's cluster through one of its portals p and enters D through a portal q that p
+//     sees, so for some such pair L's box is partly in front of every separator of (q, p)
+//     and M's box partly in front of every separator of (p, q) (vis.cpp refine_leaf_rows).
 //   - PHS row of a leaf: the union of the PVS rows of the leaves in its PVS.
 //   - Compression: a non-zero byte is copied; a run of k zero bytes (1..255) is written as
 //     0, k (longer runs as several pairs). This is what sb::decompress_pvs reads.
@@ -27,6 +31,9 @@
 //     of both directions see it.
 //   Both are conservative: a leaf is hidden only when no straight line from the source leaf's
 //   portals reaches it (up to the 0.01-unit plane epsilon).
+//   Sky is opaque (its surface is drawn over whatever lies behind it): run_vis drops the
+//   portals into sky leaves (or all-sky clusters) first, as ericw-tools does without
+//   -transsky; a sky leaf then sees its own node only. -transsky keeps them.
 //   Every leaf sees itself. Rows are not symmetrised (full mode is nearly symmetric;
 //   -sym ORs the transpose in).
 // Full mode handles portals in order of fewest might-see portals first, in fixed batches; a
@@ -53,6 +60,10 @@ struct PortalFile {
   int num_clusters = 0;           // portal graph nodes: num_leaves for PRT1
   std::vector<int> leaf_cluster;  // PRT2: cluster of every leaf; empty for PRT1
   std::vector<PrtPortal> portals;
+  // Optional (run_vis fills it from the BSP): every leaf's box, mins then maxs. With it, a
+  // PRT2 leaf's row keeps only the clusters that a line from its box can reach (see
+  // compute_pvs); without it every leaf of a cluster gets the cluster's row.
+  std::vector<float> leaf_boxes;
   bool clustered() const { return !leaf_cluster.empty(); }
 };
 
@@ -62,6 +73,7 @@ Status read_prt(const char* path, PortalFile* out);
 
 struct VisOptions {
   bool fast = false;
+  bool trans_sky = false;   // -transsky: see through sky (run_vis keeps portals into sky)
   bool chop_source = true;  // full mode: also narrow the source by the separators of (pass,
                             // previous pass) (tighter, slower; -nochop turns it off)
   bool symmetric = false;
@@ -84,6 +96,16 @@ struct VisStats {
   double seconds_total = 0;
   bool full = false;
 };
+
+// Sky is opaque (a sky surface is drawn and hides what lies behind it): drops every portal
+// with a sky node on either side (a PRT2 cluster is sky when all its leaves are). Sky leaves
+// then see only their own node. `leaf_contents[i]` is the contents of PRT leaf i (BSP leaf
+// i + 1). Returns the number of portals dropped. run_vis does this unless opt.trans_sky.
+int drop_sky_portals(PortalFile* prt, const std::vector<int>& leaf_contents);
+std::vector<int> prt_leaf_contents(const BspData& bsp, int num_leaves);
+// What run_vis does to the portal file before compute_pvs: drop_sky_portals unless
+// opt.trans_sky, and leaf_boxes from the BSP's leaves. Returns the portals dropped.
+int prepare_portals(PortalFile* prt, const BspData& bsp, const VisOptions& opt);
 
 // Computes uncompressed rows: rows->size() == num_leaves * row_bytes, row i for PRT leaf i.
 // When phs is not null it receives the PHS rows in the same layout. Progress lines go to

@@ -64,6 +64,12 @@ struct Graph {
   size_t words = 0;                            // 64-bit words per portal bitset
 };
 
+// The separators of (back, front) (flow.cpp): planes with `back` behind and `front` in front;
+// a line from a point of `back` through a point of `front` continues in front of each. At
+// most kMaxSeps.
+constexpr int kMaxSeps = 4 * kMaxPts;
+int find_separators(const Wind& back, const Wind& front, Plane* out);
+
 // Builds the graph of `prt` (nodes: clusters, which are the leaves for PRT1).
 Status build_graph(const PortalFile& prt, Graph* g);
 
