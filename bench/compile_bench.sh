@@ -230,7 +230,7 @@ lines.append("Written by bench/compile_bench.sh (counts: bench/bsp_stats.py). Ne
 lines.append("Numbers taken %s to %s on %s, %s CPUs (load average at the start: %s, other work"
              % (started, finished, uname, ncpu, load))
 lines.append("running); %s thread(s) per stage; median of %s run(s)." % (threads, runs))
-lines.append("The stages were being changed while this was measured: rerun before quoting. Times are")
+lines.append("Tools built from commit %s. Times are" % __import__("subprocess").run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip())
 lines.append("wall-clock seconds of each program (process start to exit, file I/O included) on a shared,")
 lines.append("noisy machine: treat them as ±30%, as REFERENCE.md does. ericw figures: ../shared/quake/REFERENCE.md.")
 lines.append("")

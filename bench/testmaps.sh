@@ -143,7 +143,7 @@ L.append("Written by bench/testmaps.sh from %s to %s: every .map under ../shared
 L.append("(ericw-tools' compiler test maps, Quake 1 and 2 and a few Half-Life / Hexen 2 ones, and the")
 L.append("7dfps map), default flags, sbvis -fast, %s s limit per stage. Most name a WAD that is not" % limit)
 L.append("there, so they compile with missing textures; that alone is not a failure.")
-L.append("The stages were being changed while this ran: rerun before quoting.")
+L.append("Tools built from commit %s." % __import__("subprocess").run(["git", "describe", "--always", "--dirty"], capture_output=True, text=True).stdout.strip())
 L.append("")
 L.append("Results: " + ", ".join("%s %d" % (k, count[k]) for k in
                                 ("ok", "leak", "error", "crash", "timeout") if k in count) +
