@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace sb::tools::bsp {
 namespace {
@@ -357,6 +358,7 @@ int Emitter::emit_hull0(const Tree& tree, const std::vector<bool>& face_visible,
   }
   *first_face = int(bsp_->faces.size());
   std::vector<std::vector<uint32_t>> face_ids_of(tree.faces.size());
+  std::vector<int> face_start(tree.faces.size(), -1);  // child of its node the face points into
   int head;
   if (tree.nodes[size_t(tree.root)].is_leaf()) {
     // A model needs a node: one whose children are both the root leaf.
@@ -380,8 +382,11 @@ int Emitter::emit_hull0(const Tree& tree, const std::vector<bool>& face_visible,
       const TreeNode& node = tree.nodes[size_t(todo.back())];
       todo.pop_back();
       if (node.is_leaf()) continue;
-      for (int f : node.faces)
-        if (face_visible[size_t(f)]) face_polygons(tree.faces[size_t(f)], &polys[size_t(f)]);
+      for (int f : node.faces) {
+        if (!face_visible[size_t(f)]) continue;
+        face_polygons(tree.faces[size_t(f)], &polys[size_t(f)]);
+        face_start[size_t(f)] = tree.faces[size_t(f)].plane == node.plane ? node.children[0] : node.children[1];
+      }
       todo.push_back(node.children[1]);
       todo.push_back(node.children[0]);
     }
@@ -391,13 +396,39 @@ int Emitter::emit_hull0(const Tree& tree, const std::vector<bool>& face_visible,
   *num_faces = int(bsp_->faces.size()) - *first_face;
   // Marksurfaces.
   std::vector<std::vector<uint32_t>> marks(bsp_->leaves.size() - size_t(first_leaf));
+  // A face cut into several pieces (subdivision, T-junction splits) marks each piece only in
+  // the leaves that piece touches (it is walked down the tree again from the face's node); a
+  // piece that finds none (degenerate) falls back to all the face's leaves.
+  auto mark = [&](int leaf, uint32_t id) {
+    int out = (*leaf_index)[size_t(leaf)];
+    if (out <= 0) return;
+    marks[size_t(out - first_leaf)].push_back(id);
+  };
+  std::vector<int> touched, kept;
+  Winding w;
   for (size_t f = 0; f < tree.faces.size(); ++f) {
-    if (face_ids_of[f].empty()) continue;
-    for (int leaf : leaves_of_face[f]) {
-      int out = (*leaf_index)[size_t(leaf)];
-      if (out <= 0) continue;
-      auto& m = marks[size_t(out - first_leaf)];
-      m.insert(m.end(), face_ids_of[f].begin(), face_ids_of[f].end());
+    const std::vector<uint32_t>& ids = face_ids_of[f];
+    if (ids.empty()) continue;
+    if (ids.size() == 1 || leaves_of_face[f].size() == 1 || face_start[f] < 0) {
+      for (int leaf : leaves_of_face[f])
+        for (uint32_t id : ids) mark(leaf, id);
+      continue;
+    }
+    for (uint32_t id : ids) {
+      const DFace& d = bsp_->faces[id];
+      w.clear();
+      for (int32_t k = 0; k < d.num_edges; ++k) {
+        int32_t se = bsp_->surfedges[size_t(d.first_edge + k)];
+        const DEdge& e = bsp_->edges[size_t(se < 0 ? -se : se)];
+        uint32_t v = se < 0 ? e.v[1] : e.v[0];
+        w.emplace_back(bsp_->vertices[3 * v], bsp_->vertices[3 * v + 1], bsp_->vertices[3 * v + 2]);
+      }
+      polygon_front_leaves(tree, planes_, face_start[f], w, &touched);
+      // Within the face's own leaves (welding may move a vertex by up to 0.01 units).
+      kept.clear();
+      std::set_intersection(touched.begin(), touched.end(), leaves_of_face[f].begin(), leaves_of_face[f].end(),
+                            std::back_inserter(kept));
+      for (int leaf : kept.empty() ? leaves_of_face[f] : kept) mark(leaf, id);
     }
   }
   for (size_t i = 0; i < marks.size(); ++i) {

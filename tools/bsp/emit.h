@@ -4,7 +4,8 @@
 // is subdivided so that its texture extents stay within `subdivide` texels on both axes
 // (sky and liquid faces excepted: they have no lightmap); all solid leaves share leaf 0;
 // the other leaves are numbered in tree order (the world's first, so that world leaf i is
-// PVS bit i - 1); marksurfaces list, per leaf, the faces in front of which it lies.
+// PVS bit i - 1); marksurfaces list, per leaf, the faces in front of which it lies (a face
+// cut into pieces marks each piece only in the leaves that piece touches).
 // Vertices are welded within 0.01 units (and snapped to integers within 0.01); an edge is
 // reused only by one other face walking it the other way, so no edge has more than two faces.
 // T-junctions (with `fix_tjunctions`, per model): every vertex of the model's faces that lies

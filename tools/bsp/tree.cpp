@@ -607,6 +607,16 @@ void push_face(const Tree& t, const PlaneSet& planes, int n, const Winding& w, c
 
 }  // namespace
 
+void polygon_front_leaves(const Tree& t, const PlaneSet& planes, int start, const Winding& w, std::vector<int>* out) {
+  out->clear();
+  if (w.size() < 3) return;
+  Bounds b;
+  for (const Vec3& v : w) b.add(v);
+  push_face(t, planes, start, w, b, out);
+  std::sort(out->begin(), out->end());
+  out->erase(std::unique(out->begin(), out->end()), out->end());
+}
+
 void face_front_leaves(const Tree& t, const PlaneSet& planes, std::vector<std::vector<int>>* leaves_of_face) {
   leaves_of_face->assign(t.faces.size(), {});
   for (const TreeNode& node : t.nodes) {

@@ -136,6 +136,10 @@ bool fill_from_outside(Tree* tree, const PlaneSet& planes, const std::vector<Vec
 // For every node face: the non-solid leaves in front of it that it touches. Faces touching
 // none (or with texinfo -1) get an empty list.
 void face_front_leaves(const Tree& tree, const PlaneSet& planes, std::vector<std::vector<int>>* leaves_of_face);
+// The non-solid leaves that polygon `w` (a piece of a face on some node) touches, walking
+// down from `start`, the child of that node the face points into (sorted, unique).
+void polygon_front_leaves(const Tree& tree, const PlaneSet& planes, int start, const Winding& w,
+                          std::vector<int>* out);
 
 // Collapses nodes whose children are both solid leaves and that keep no visible face
 // (`face_visible[f]`). Returns the number of nodes removed.
