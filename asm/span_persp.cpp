@@ -187,10 +187,11 @@ inline RunSteps steps16_dd(int32_t delta, int64_t dd) {
   const int64_t num = pd - pdd * 120;
   const int64_t q = num >> 4;
   const int64_t last_step = q + pdd * 15;
-  const int64_t reach = pd - (num & 15);
-  const int64_t reject = (num | last_step | reach) >> 63;  // -1: linear
-  const int32_t linear = int32_t(((pd >> 4) ^ s) - s), d0 = int32_t((q ^ s) - s);
-  return {d0 ^ ((d0 ^ linear) & int32_t(reject)), int32_t(dd & ~reject)};
+  // The reach' test is implied: reach' = 16 d0' + 120 dd' = 8 (d0' + last_step) >= 0 when
+  // num >= 0 (then d0' >= 0) and last_step >= 0, and reach' = |delta| - (num & 15) <= |delta|.
+  const int64_t reject = (num | last_step) >> 63;  // -1: linear
+  const int64_t pick = q ^ ((q ^ (pd >> 4)) & reject);  // d0' or the linear step, mirrored
+  return {int32_t((pick ^ s) - s), int32_t(dd & ~reject)};
 }
 
 // One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
