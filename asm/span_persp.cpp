@@ -612,18 +612,15 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     auto stage_b = [&](auto g) {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
-        if constexpr (kCurve) {
-          fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
-        } else {
-          u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
-        }
-      } else if constexpr (G == 1) {
+        if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
         tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
-      } else if constexpr (G == 2) {
+      } else if constexpr (G == 1) {
+        if constexpr (kCurve) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+      } else if constexpr (G == 3) {
         if constexpr (kCurve) fu2 = fu2 * c2, fv2 = fv2 * c2;
-      } else if constexpr (G == 4) {
+      } else if constexpr (G == 5) {
         if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
-      } else if constexpr (G == 6) {
+      } else if constexpr (G == 8) {
         if constexpr (kCurve) u2 = steps16_dd(s3u - s2u, iu2), v2 = steps16_dd(s3v - s2v, iv2);
       }
     };
