@@ -565,6 +565,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   const double zck = zc * -0.0625;
   // (urow + ux * pos) of samples 2 and 3: the first half of sample(), one pass ahead.
   double tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+  Run16<kCurve> run_a(s0.u, s0.v, su, sv);
   while (left > 48) {
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
     const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
@@ -622,11 +623,12 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
       } else if constexpr (G == 8) {
         if constexpr (kCurve) u2 = steps16_dd(s3u - s2u, iu2), v2 = steps16_dd(s3v - s2v, iv2);
+      } else if constexpr (G == 9) {
+        run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
     };
     {
-      Run16<kCurve> run(s0.u, s0.v, su, sv);
-      run.draw(dest, texels, w, stage_a);
+      run_a.draw(dest, texels, w, stage_a);
     }
     group_end();
     {
