@@ -565,7 +565,14 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   const double zck = zc * -0.0625;
   // (urow + ux * pos) of samples 2 and 3: the first half of sample(), one pass ahead.
   double tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
-  Run16<kCurve> run_a(s0.u, s0.v, su, sv);
+  // The runs' register state set up in the group before them (the second run's only on
+  // 64-bit targets: armhf runs out of registers).
+#if defined(SB_SPAN_PACKED)
+  constexpr bool kEarlyB = true;
+#else
+  constexpr bool kEarlyB = false;
+#endif
+  Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
   while (left > 48) {
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
     const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
@@ -608,6 +615,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
       } else if constexpr (G == 8) {
         if constexpr (kCurve) u1 = steps16_dd(s2u - s1.u, iu1), v1 = steps16_dd(s2v - s1.v, iv1);
+      } else if constexpr (G == 9) {
+        if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
       }
     };
     auto stage_b = [&](auto g) {
@@ -632,8 +641,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
     group_end();
     {
-      Run16<kCurve> run(s1.u, s1.v, u1, v1);
-      run.draw(dest + 16, texels, w, stage_b);
+      if constexpr (!kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);
+      run_b.draw(dest + 16, texels, w, stage_b);
     }
     group_end();
     dest += 32;
