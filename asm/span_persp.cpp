@@ -172,21 +172,26 @@ inline int32_t cvt_sat(double x) {
 // |dd| <= |delta| / 120 < 2^25 and |d0| < 2^28, so the range checks on ddf (|ddf| < 1e9)
 // and d0 (int32) never decide anything that this test does not: a saturated or NaN
 // conversion of ddf is rejected here, or gives dd = 0, which yields the linear step too.
+inline RunSteps steps16_dd(int32_t delta, int64_t dd);
 inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
   const int32_t delta = b - a;
   const double c = double(delta) / 16 * curve;
   const double ddf = -2.0 * c;
-  const int64_t dd = cvt_sat(ddf);
+  return steps16_dd(delta, cvt_sat(ddf));
+}
+// steps16_sel's integer part, from delta and dd = cvt_sat(ddf).
+inline RunSteps steps16_dd(int32_t delta, int64_t dd) {
   // Masks, not conditions: the compiler turns those into branches on the signs.
   const int64_t s = int64_t(delta >> 31);  // -1 when delta < 0
   const int64_t pd = (int64_t(delta) ^ s) - s, pdd = (dd ^ s) - s;
   const int64_t num = pd - pdd * 120;
   const int64_t q = num >> 4;
   const int64_t last_step = q + pdd * 15;
-  const int64_t reach = pd - (num & 15);
-  const int64_t reject = (num | last_step | reach) >> 63;  // -1: linear
-  const int32_t linear = int32_t(((pd >> 4) ^ s) - s), d0 = int32_t((q ^ s) - s);
-  return {d0 ^ ((d0 ^ linear) & int32_t(reject)), int32_t(dd & ~reject)};
+  // The reach' test is implied: reach' = 16 d0' + 120 dd' = 8 (d0' + last_step) >= 0 when
+  // num >= 0 (then d0' >= 0) and last_step >= 0, and reach' = |delta| - (num & 15) <= |delta|.
+  const int64_t reject = (num | last_step) >> 63;  // -1: linear
+  const int64_t pick = q ^ ((q ^ (pd >> 4)) & reject);  // d0' or the linear step, mirrored
+  return {int32_t((pick ^ s) - s), int32_t(dd & ~reject)};
 }
 
 // One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
@@ -266,11 +271,24 @@ class Run16 {
     if constexpr (G == 9) finish(dest);
   }
   SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
-    group<0>(dest, texels, w), group_end(), group<1>(dest, texels, w), group_end();
-    group<2>(dest, texels, w), group_end(), group<3>(dest, texels, w), group_end();
-    group<4>(dest, texels, w), group_end(), group<5>(dest, texels, w), group_end();
-    group<6>(dest, texels, w), group_end(), group<7>(dest, texels, w), group_end();
-    group<8>(dest, texels, w), group_end(), group<9>(dest, texels, w);
+    draw(dest, texels, w, [](auto) {});
+  }
+  // The same, with stage(std::integral_constant<int, G>) placed inside group G: other work
+  // (the next runs' setup) interleaved with the pixels, one dependent step per group, so
+  // in-order cores cover its latencies with the texel loads.
+  template <class Stage>
+  SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, Stage&& stage) {
+    using std::integral_constant;
+    group<0>(dest, texels, w), stage(integral_constant<int, 0>{}), group_end();
+    group<1>(dest, texels, w), stage(integral_constant<int, 1>{}), group_end();
+    group<2>(dest, texels, w), stage(integral_constant<int, 2>{}), group_end();
+    group<3>(dest, texels, w), stage(integral_constant<int, 3>{}), group_end();
+    group<4>(dest, texels, w), stage(integral_constant<int, 4>{}), group_end();
+    group<5>(dest, texels, w), stage(integral_constant<int, 5>{}), group_end();
+    group<6>(dest, texels, w), stage(integral_constant<int, 6>{}), group_end();
+    group<7>(dest, texels, w), stage(integral_constant<int, 7>{}), group_end();
+    group<8>(dest, texels, w), stage(integral_constant<int, 8>{}), group_end();
+    group<9>(dest, texels, w), stage(integral_constant<int, 9>{});
   }
 
  private:
@@ -534,31 +552,111 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
   // over 16 pixels): left > 48. Samples r + 4 and r + 5 are then at o_{r+4} - o_{r+2} =
   // min(32, left - 33) and o_{r+5} - o_{r+3} = min(32, left - 49) past P_{r+2}, P_{r+3}.
+  // In the loop, ddf = -2 (delta / 16 * curve) with curve = zc / 2 * (z_a + z_b) is computed
+  // as delta * (zck * (z_a + z_b)), zck = zc * -1/16: the same bits. Scaling by a power of
+  // two is exact and commutes with rounding, so zck (z_a + z_b) = -curve / 8 and both ddf
+  // are -round(delta * curve) / 8, whenever no value is subnormal or infinite.
+  // Subnormal (|zc| < 2^-1018, or a product below 2^-1022): |ddf| < 1 either way, dd = 0.
+  // Overflow: curve infinite makes ddf infinite with the sign delta * -zc, and then
+  // |delta zck (z_a + z_b)| > DBL_MAX / 8 saturates to the same int32 (delta != 0); for
+  // delta = 0 the walker's NaN gives dd = 0 or INT32_MIN, both rejected or 0 by
+  // steps16_dd, which then returns {0, 0} like dd = 0 does. A product overflowing later
+  // (delta / 16 * curve, or the * -2) overflows in both forms at the same rounding point.
+  const double zck = zc * -0.0625;
+  // (urow + ux * pos) of samples 2 and 3: the first half of sample(), one pass ahead.
+  double tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+  // The runs' register state set up in the group before them (the second run's only on
+  // 64-bit targets: armhf runs out of registers).
+#if defined(SB_SPAN_PACKED)
+  constexpr bool kEarlyB = true;
+#else
+  constexpr bool kEarlyB = false;
+#endif
+  Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
   while (left > 48) {
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
     const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
     const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
-    const Sample s2 = sample(pos2, z2);
-    const double c1 = zc * 0.5 * (s1.z + s2.z);
-    const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
-    const Sample s3 = sample(pos3, z3);
-    const double c2 = zc * 0.5 * (s2.z + s3.z);
-    const RunSteps u2 = steps16<kCurve>(s2.u, s3.u, c2), v2 = steps16<kCurve>(s2.v, s3.v, c2);
+    // Software-pipelined setup: samples 2 and 3 (their divides issued a pass earlier), the
+    // steps of runs r + 1 (needed by the second run of this pass) and r + 2 (the next pass),
+    // and the divides for samples 4 and 5, one dependent operation per pixel group. Each
+    // operation is sample()'s / steps16's, in their order.
+    double sum1, sum2, c1 = 0.0, c2 = 0.0, zi4, zi5, tu4, tv4, tu5, tv5;
+    double qu2, qv2, qu3, qv3, fu1 = 0.0, fv1 = 0.0, fu2 = 0.0, fv2 = 0.0;
+    int32_t s2u = 0, s2v = 0, s3u = 0, s3v = 0;
+    int64_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
+    RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
-    recip2(zrow + zix * pos4, zrow + zix * pos5, &z4, &z5);
-    draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
-    draw16<kCurve>(dest + 16, texels, w, s1.u, s1.v, u1, v1);
+    auto stage_a = [&](auto g) {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        qu2 = tu2 * z2, qv2 = tv2 * z2, qu3 = tu3 * z3, qv3 = tv3 * z3;
+        sum1 = s1.z + z2, sum2 = z2 + z3;
+        zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
+      } else if constexpr (G == 1) {
+        qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
+        if constexpr (kCurve) c1 = zck * sum1, c2 = zck * sum2;
+      } else if constexpr (G == 2) {
+        qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
+      } else if constexpr (G == 3) {
+        qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
+        recip2(zi4, zi5, &z4, &z5);
+      } else if constexpr (G == 4) {
+        s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
+      } else if constexpr (G == 5) {
+        if constexpr (kCurve) {
+          fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
+        } else {
+          u1 = {(s2u - s1.u) / 16, 0}, v1 = {(s2v - s1.v) / 16, 0};
+        }
+      } else if constexpr (G == 6) {
+        if constexpr (kCurve) fu1 = fu1 * c1, fv1 = fv1 * c1;
+      } else if constexpr (G == 7) {
+        if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
+      } else if constexpr (G == 8) {
+        if constexpr (kCurve) u1 = steps16_dd(s2u - s1.u, iu1), v1 = steps16_dd(s2v - s1.v, iv1);
+      } else if constexpr (G == 9) {
+        if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
+      }
+    };
+    auto stage_b = [&](auto g) {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
+        tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
+      } else if constexpr (G == 1) {
+        if constexpr (kCurve) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+      } else if constexpr (G == 3) {
+        if constexpr (kCurve) fu2 = fu2 * c2, fv2 = fv2 * c2;
+      } else if constexpr (G == 5) {
+        if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+      } else if constexpr (G == 8) {
+        if constexpr (kCurve) u2 = steps16_dd(s3u - s2u, iu2), v2 = steps16_dd(s3v - s2v, iv2);
+      } else if constexpr (G == 9) {
+        run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
+      }
+    };
+    {
+      run_a.draw(dest, texels, w, stage_a);
+    }
+    group_end();
+    {
+      if constexpr (!kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);
+      run_b.draw(dest + 16, texels, w, stage_b);
+    }
+    group_end();
     dest += 32;
     P = P2;
     left -= 32;
-    s0 = s2;
-    s1 = s3;
+    s0 = Sample{s2u, s2v, z2};
+    s1 = Sample{s3u, s3v, z3};
     su = u2;
     sv = v2;
     z2 = z4;
     z3 = z5;
     pos2 = pos4;
     pos3 = pos5;
+    tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
   }
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = sample(pos2, z2);

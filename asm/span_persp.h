@@ -54,8 +54,8 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // only the linear inner loop's work plus the run's setup: two runs per loop pass, each run
 // fully unrolled and software-pipelined two pixels at a time (u and v packed in one 64-bit
 // register on 64-bit targets; texels gathered into words for one store per 8 / 4 on ARM);
-// the setup (to_fixed of the next samples, the next runs' steps) branch-free beside the
-// drawing; the divides for the samples two runs ahead issued in pairs (one vector divide on
+// the setup (to_fixed of the next samples, the next runs' steps) branch-free and
+// interleaved with the drawing, one dependent step per pixel group; the divides for the samples two runs ahead issued in pairs (one vector divide on
 // aarch64) so their latency runs under the drawing; full runs' divisions by the constant 16,
 // the last run's by constants too (no 64-bit divide instruction or armhf library call).
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
