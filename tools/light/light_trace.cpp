@@ -31,6 +31,21 @@ int LineTracer::first_blocker(const glm::vec3& a, const glm::vec3& b) const {
   return trace(head_, a, b);
 }
 
+namespace {
+
+// Signed distances of a and b from the plane (axial planes without the dot product).
+inline void plane_distances(const Plane& p, const glm::vec3& a, const glm::vec3& b, float* da, float* db) {
+  if (p.type < 3) {
+    *da = a[p.type] - p.dist;
+    *db = b[p.type] - p.dist;
+  } else {
+    *da = glm::dot(p.normal, a) - p.dist;
+    *db = glm::dot(p.normal, b) - p.dist;
+  }
+}
+
+}  // namespace
+
 // Walks the segment a -> b from `node`. The near part of a split segment is walked first;
 // the far part continues in the loop (one recursion per split, bounded by the tree depth).
 int LineTracer::trace(int node, glm::vec3 a, glm::vec3 b) const {
@@ -38,13 +53,7 @@ int LineTracer::trace(int node, glm::vec3 a, glm::vec3 b) const {
     const Node& n = world_.nodes[node];
     const Plane& p = world_.planes[n.plane];
     float da, db;
-    if (p.type < 3) {
-      da = a[p.type] - p.dist;
-      db = b[p.type] - p.dist;
-    } else {
-      da = glm::dot(p.normal, a) - p.dist;
-      db = glm::dot(p.normal, b) - p.dist;
-    }
+    plane_distances(p, a, b, &da, &db);
     if (da >= 0 && db >= 0) {
       node = n.children[0];
       continue;
@@ -85,13 +94,7 @@ bool LineTracer::trace_hit(int node, glm::vec3 a, glm::vec3 b, int split, Hit* o
     const Node& n = world_.nodes[node];
     const Plane& p = world_.planes[n.plane];
     float da, db;
-    if (p.type < 3) {
-      da = a[p.type] - p.dist;
-      db = b[p.type] - p.dist;
-    } else {
-      da = glm::dot(p.normal, a) - p.dist;
-      db = glm::dot(p.normal, b) - p.dist;
-    }
+    plane_distances(p, a, b, &da, &db);
     if (da >= 0 && db >= 0) {
       node = n.children[0];
       continue;
