@@ -118,6 +118,35 @@ Vec3 intersect(const Vec3& a, const Vec3& b, double da, double db, const Plane& 
   return r;
 }
 
+// Per-vertex plane distances and sides (0 front, 1 back, 2 on the plane, within eps), with
+// counts per side: on the stack for ordinary windings (no heap traffic in the hottest
+// routines of CSG and tree building), in a thread-local buffer beyond that.
+struct VertexSides {
+  static constexpr size_t kStack = 64;
+  double d_stack[kStack];
+  int s_stack[kStack];
+  double* d = d_stack;
+  int* s = s_stack;
+  int counts[3] = {0, 0, 0};
+
+  VertexSides(const Winding& w, const Plane& plane, double eps) {
+    const size_t n = w.size();
+    if (n > kStack) {
+      thread_local std::vector<double> d_heap;
+      thread_local std::vector<int> s_heap;
+      d_heap.resize(n);
+      s_heap.resize(n);
+      d = d_heap.data();
+      s = s_heap.data();
+    }
+    for (size_t i = 0; i < n; ++i) {
+      d[i] = plane.distance(w[i]);
+      s[i] = d[i] > eps ? 0 : (d[i] < -eps ? 1 : 2);
+      counts[s[i]]++;
+    }
+  }
+};
+
 }  // namespace
 
 void split_winding(const Winding& w, const Plane& plane, Winding* front, Winding* back, double eps) {
@@ -125,27 +154,10 @@ void split_winding(const Winding& w, const Plane& plane, Winding* front, Winding
   back->clear();
   size_t n = w.size();
   if (n < 3) return;
-  // Per-vertex distances and sides: on the stack for ordinary windings (no heap traffic in
-  // the hottest routine of CSG and tree building), in a thread-local buffer beyond that.
-  constexpr size_t kStack = 64;
-  double d_stack[kStack];
-  int s_stack[kStack];
-  thread_local std::vector<double> d_heap;
-  thread_local std::vector<int> s_heap;
-  double* d = d_stack;
-  int* s = s_stack;
-  if (n > kStack) {
-    d_heap.resize(n);
-    s_heap.resize(n);
-    d = d_heap.data();
-    s = s_heap.data();
-  }
-  int counts[3] = {0, 0, 0};
-  for (size_t i = 0; i < n; ++i) {
-    d[i] = plane.distance(w[i]);
-    s[i] = d[i] > eps ? 0 : (d[i] < -eps ? 1 : 2);
-    counts[s[i]]++;
-  }
+  VertexSides vs(w, plane, eps);
+  const double* d = vs.d;
+  const int* s = vs.s;
+  const int* counts = vs.counts;
   if (counts[0] == 0 && counts[1] == 0) return;  // on the plane
   if (counts[1] == 0) { *front = w; return; }
   if (counts[0] == 0) { *back = w; return; }
@@ -174,25 +186,10 @@ void clip_winding_to(const Winding& w, const Plane& plane, bool keep_front, doub
   out->clear();
   size_t n = w.size();
   if (n < 3) return;
-  constexpr size_t kStack = 64;
-  double d_stack[kStack];
-  int s_stack[kStack];
-  thread_local std::vector<double> d_heap;
-  thread_local std::vector<int> s_heap;
-  double* d = d_stack;
-  int* s = s_stack;
-  if (n > kStack) {
-    d_heap.resize(n);
-    s_heap.resize(n);
-    d = d_heap.data();
-    s = s_heap.data();
-  }
-  int counts[3] = {0, 0, 0};
-  for (size_t i = 0; i < n; ++i) {
-    d[i] = plane.distance(w[i]);
-    s[i] = d[i] > eps ? 0 : (d[i] < -eps ? 1 : 2);
-    counts[s[i]]++;
-  }
+  VertexSides vs(w, plane, eps);
+  const double* d = vs.d;
+  const int* s = vs.s;
+  const int* counts = vs.counts;
   const int keep = keep_front ? 0 : 1;
   if ((counts[0] == 0 && counts[1] == 0) || counts[1 - keep] == 0) {  // on the plane, or all kept
     out->assign(w.begin(), w.end());
