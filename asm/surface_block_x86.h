@@ -48,6 +48,46 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, co
     _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x), _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
 }
 
+// colormap[q[0]] | colormap[q[1]] << 8 | ... | colormap[q[7]] << 56. In asm (scalar only: the
+// same for the SSE2 and the AVX2 instance) so that the indices are read from memory rather than
+// extracted from the vector that stored them (GCC's choice: more uops than two loads each).
+inline uint64_t pack8(const uint8_t* cm, const uint16_t* q) {
+  uint64_t v, a, b;
+  asm("movzwl (%[q]), %k[v]\n\t"
+      "movzwl 2(%[q]), %k[a]\n\t"
+      "movzbl (%[cm],%[v]), %k[v]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "shl $8, %k[a]\n\t"
+      "or %k[a], %k[v]\n\t"
+      "movzwl 4(%[q]), %k[a]\n\t"
+      "movzwl 6(%[q]), %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $16, %k[a]\n\t"
+      "shl $24, %k[b]\n\t"
+      "or %k[a], %k[v]\n\t"
+      "or %k[b], %k[v]\n\t"
+      "movzwl 8(%[q]), %k[a]\n\t"
+      "movzwl 10(%[q]), %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $32, %[a]\n\t"
+      "shl $40, %[b]\n\t"
+      "or %[a], %[v]\n\t"
+      "or %[b], %[v]\n\t"
+      "movzwl 12(%[q]), %k[a]\n\t"
+      "movzwl 14(%[q]), %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $48, %[a]\n\t"
+      "shl $56, %[b]\n\t"
+      "or %[a], %[v]\n\t"
+      "or %[b], %[v]"
+      : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b)
+      : [cm] "r"(cm), [q] "r"(q), "m"(*reinterpret_cast<const uint16_t(*)[8]>(q)));
+  return v;
+}
+
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
 constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
@@ -115,8 +155,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     A1[j] = _mm_setr_epi32(pat(4 * j, 2 * kMip), pat(4 * j + 1, 2 * kMip), pat(4 * j + 2, 2 * kMip),
                            pat(4 * j + 3, 2 * kMip));
   }
-  const __m128i keep = _mm_set1_epi32(int32_t(0xffffff00u)), zero = _mm_setzero_si128();
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
+  alignas(16) uint16_t ix[16];  // a row's colormap indices
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
@@ -168,26 +208,16 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const uint8_t* src = run[k];
           if (++k == count) k = 0;
           const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + 16 * g));
-          const __m128i lo = _mm_unpacklo_epi8(t, zero), hi = _mm_unpackhi_epi8(t, zero);
-          const __m128i t32[4] = {_mm_unpacklo_epi16(lo, zero), _mm_unpackhi_epi16(lo, zero),
-                                  _mm_unpacklo_epi16(hi, zero), _mm_unpackhi_epi16(hi, zero)};
-          uint64_t w[2];
-#pragma GCC unroll 2
-          for (int h = 0; h < 2; ++h) {  // eight texels at a time: fewer live registers
-            uint64_t v = 0;
-#pragma GCC unroll 2
-            for (int jj = 0; jj < 2; ++jj) {
-              const int j = 2 * h + jj;
-              const __m128i idx = _mm_or_si128(_mm_and_si128(_mm_srli_epi32(num[j], 8), keep), t32[j]);
-              num[j] = _mm_add_epi32(num[j], delta[j]);
-              const uint64_t a = uint64_t(_mm_cvtsi128_si64(idx));
-              const uint64_t c = uint64_t(_mm_cvtsi128_si64(_mm_unpackhi_epi64(idx, idx)));
-              v |= (uint64_t(colormap[uint32_t(a)]) | uint64_t(colormap[a >> 32]) << 8 |
-                    uint64_t(colormap[uint32_t(c)]) << 16 | uint64_t(colormap[c >> 32]) << 24)
-                   << (32 * jj);
-            }
-            w[h] = v;
-          }
+          // Rows (byte 2 of every lane, nothing above) packed to bytes, interleaved with the
+          // texels: sixteen 16-bit indices, stored and read back one at a time.
+          const __m128i r = _mm_packus_epi16(
+              _mm_packs_epi32(_mm_srli_epi32(num[0], 16), _mm_srli_epi32(num[1], 16)),
+              _mm_packs_epi32(_mm_srli_epi32(num[2], 16), _mm_srli_epi32(num[3], 16)));
+#pragma GCC unroll 4
+          for (int j = 0; j < 4; ++j) num[j] = _mm_add_epi32(num[j], delta[j]);
+          _mm_store_si128(reinterpret_cast<__m128i*>(ix), _mm_unpacklo_epi8(t, r));
+          _mm_store_si128(reinterpret_cast<__m128i*>(ix + 8), _mm_unpackhi_epi8(t, r));
+          const uint64_t w[2] = {pack8(colormap, ix), pack8(colormap, ix + 8)};
           if (m >= 16) {
             std::memcpy(d, w, 16);
           } else {
