@@ -12,10 +12,9 @@
 // moves); the sixteen colormap loads are independent and are packed into two 64-bit stores.
 
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
-// least 32 bytes must be writable).
-// period: bytes (c0 + k) mod tw for k < 32 (used with SSSE3 for narrow textures).
-inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
-                     const __m128i* period) {
+// least 32 bytes must be writable). Narrow textures (tw < 16): 16-byte copies of the row every
+// tw bytes up to 32, then 16-byte copies from one period (the first multiple of tw >= 16) back.
+inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
     const int a = tw - c0 < n ? tw - c0 : n;
@@ -25,58 +24,103 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, co
   } else {
     d = tw;
     while (d < 16) d += tw;  // (no divide); at most 30
-#if defined(__SSSE3__)  // the AVX2 instance: the first 32 bytes by two shuffles of the row
-    if (row + 16 <= tex_end) {
-      const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm_shuffle_epi8(v, period[0]));
-      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + 16), _mm_shuffle_epi8(v, period[1]));
-      for (int x = 32; x < n; x += 16)
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x),
-                         _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
-      return;
+    __m128i tmp[3];  // the row, when reading 16 + tw bytes from it would pass tex_end
+    if (row + tw + 16 > tex_end) {
+      tmp[0] = tmp[1] = tmp[2] = _mm_setzero_si128();
+      std::memcpy(tmp, row, size_t(tw));
+      row = reinterpret_cast<const uint8_t*>(tmp);
     }
-#else
-    (void)tex_end;
-    (void)period;
-#endif
-    for (int k = 0, c = c0; k < d; ++k) {
-      dst[k] = row[c];
-      if (++c == tw) c = 0;
-    }
+    const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(row));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(dst), _mm_loadu_si128(reinterpret_cast<const __m128i*>(row + c0)));
+    for (int p = tw - c0; p < 32; p += tw) _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + p), v);
+    for (int x = 32; x < n; x += 16)
+      _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x), _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
+    return;
   }
   for (int x = d; x < n; x += 16)
     _mm_storeu_si128(reinterpret_cast<__m128i*>(dst + x), _mm_loadu_si128(reinterpret_cast<const __m128i*>(dst + x - d)));
 }
 
-// colormap[q[0]] | colormap[q[1]] << 8 | ... | colormap[q[7]] << 56. In asm (scalar only: the
-// same for the SSE2 and the AVX2 instance) so that the indices are read from memory rather than
-// extracted from the vector that stored them (GCC's choice: more uops than two loads each).
-inline uint64_t pack8(const uint8_t* cm, const uint16_t* q) {
+// i mod n (positive): without a divide when i is in -n .. 2n - 1.
+inline int wrap_near(int i, int n) {
+  if (unsigned(i) < unsigned(n)) return i;
+  if (i < 0 && i >= -n) return i + n;
+  if (i >= n && i - n < n) return i - n;
+  return wrap(i, n);
+}
+
+// colormap[q[0]] | colormap[q[1]] << 8 | ... | colormap[q[7]] << 56, with q[0 .. 3] given in qa
+// (four 16-bit fields) and q[4 .. 7] read from memory: the load ports and the ALUs share the
+// work. In asm (scalar only: the same for the SSE2 and the AVX2 instance) because GCC would
+// extract every index from the vector that stored it (pextrw: more uops than a load each).
+inline uint64_t pack8(const uint8_t* cm, uint64_t qa, const uint16_t* q) {
   uint64_t v, a, b;
-  asm("movzwl (%[q]), %k[v]\n\t"
-      "movzwl 2(%[q]), %k[a]\n\t"
-      "movzbl (%[cm],%[v]), %k[v]\n\t"
-      "movzbl (%[cm],%[a]), %k[a]\n\t"
-      "shl $8, %k[a]\n\t"
-      "or %k[a], %k[v]\n\t"
-      "movzwl 4(%[q]), %k[a]\n\t"
-      "movzwl 6(%[q]), %k[b]\n\t"
-      "movzbl (%[cm],%[a]), %k[a]\n\t"
+  asm(
+      "movzwl %w[qa], %k[a]\n\t"
+      "mov %k[qa], %k[b]\n\t"
+      "shr $16, %k[b]\n\t"
+      "shr $32, %[qa]\n\t"
+      "movzbl (%[cm],%[a]), %k[v]\n\t"
       "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "movzwl %w[qa], %k[a]\n\t"
+      "shr $16, %k[qa]\n\t"
+      "shl $8, %k[b]\n\t"
+      "or %k[b], %k[v]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[qa]), %k[b]\n\t"
       "shl $16, %k[a]\n\t"
       "shl $24, %k[b]\n\t"
       "or %k[a], %k[v]\n\t"
       "or %k[b], %k[v]\n\t"
-      "movzwl 8(%[q]), %k[a]\n\t"
-      "movzwl 10(%[q]), %k[b]\n\t"
+      "movzwl %[m4], %k[a]\n\t"
+      "movzwl %[m5], %k[b]\n\t"
       "movzbl (%[cm],%[a]), %k[a]\n\t"
       "movzbl (%[cm],%[b]), %k[b]\n\t"
       "shl $32, %[a]\n\t"
       "shl $40, %[b]\n\t"
       "or %[a], %[v]\n\t"
       "or %[b], %[v]\n\t"
-      "movzwl 12(%[q]), %k[a]\n\t"
-      "movzwl 14(%[q]), %k[b]\n\t"
+      "movzwl %[m6], %k[a]\n\t"
+      "movzwl %[m7], %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $48, %[a]\n\t"
+      "shl $56, %[b]\n\t"
+      "or %[a], %[v]\n\t"
+      "or %[b], %[v]"
+      : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b), [qa] "+r"(qa)
+      : [cm] "r"(cm), [m4] "m"(q[4]), [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
+  return v;
+}
+
+// The same with all eight indices read from memory.
+inline uint64_t pack8m(const uint8_t* cm, const uint16_t* q) {
+  uint64_t v, a, b;
+  asm(
+      "movzwl %[m0], %k[a]\n\t"
+      "movzwl %[m1], %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[v]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $8, %k[b]\n\t"
+      "or %k[b], %k[v]\n\t"
+      "movzwl %[m2], %k[a]\n\t"
+      "movzwl %[m3], %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $16, %k[a]\n\t"
+      "shl $24, %k[b]\n\t"
+      "or %k[a], %k[v]\n\t"
+      "or %k[b], %k[v]\n\t"
+      "movzwl %[m4], %k[a]\n\t"
+      "movzwl %[m5], %k[b]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[b]\n\t"
+      "shl $32, %[a]\n\t"
+      "shl $40, %[b]\n\t"
+      "or %[a], %[v]\n\t"
+      "or %[b], %[v]\n\t"
+      "movzwl %[m6], %k[a]\n\t"
+      "movzwl %[m7], %k[b]\n\t"
       "movzbl (%[cm],%[a]), %k[a]\n\t"
       "movzbl (%[cm],%[b]), %k[b]\n\t"
       "shl $48, %[a]\n\t"
@@ -84,7 +128,8 @@ inline uint64_t pack8(const uint8_t* cm, const uint16_t* q) {
       "or %[a], %[v]\n\t"
       "or %[b], %[v]"
       : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b)
-      : [cm] "r"(cm), [q] "r"(q), "m"(*reinterpret_cast<const uint16_t(*)[8]>(q)));
+      : [cm] "r"(cm), [m0] "m"(q[0]), [m1] "m"(q[1]), [m2] "m"(q[2]), [m3] "m"(q[3]), [m4] "m"(q[4]),
+        [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
   return v;
 }
 
@@ -108,35 +153,93 @@ inline __m128i grid_pairs(const uint16_t* g, int j) {
   }
 }
 
+// One strip: nb bands from grid row by0, the groups of sixteen lanes (G blocks) one after the
+// other down the strip. Its own function, small and aligned so that its loops never straddle
+// a page (the instruction counter splits blocks there; the loops are the same either way).
+template <int kMip>
+__attribute__((noinline, aligned(2048))) void block_strip(const uint16_t* grid, int grid_width, int bw, int by0,
+                                                          int nb, const __m128i* A0, const __m128i* A1,
+                                                          const uint8_t* const* run, int first, int count,
+                                                          const uint8_t* __restrict colormap,
+                                                          uint8_t* __restrict strip, int width) {
+  constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
+  uint16_t pad[24];             // a last group's grid entries, zero padded (never read past a grid row)
+  alignas(16) uint16_t ix[16];  // a row's colormap indices
+  for (int col = 0, b0 = 0; col < width; col += 16, b0 += G) {
+    uint8_t* d = strip + col;
+    const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+    auto entries = [&](const uint16_t* r) -> const uint16_t* {  // a grid row from the group's first block
+      if (direct) return r;
+      const int n = bw + 1 - b0;
+      for (int i = 0; i < 24; ++i) pad[i] = i < n ? r[i] : 0;
+      return pad;
+    };
+    const uint16_t* gr = grid + by0 * grid_width + b0;
+    __m128i num[4], delta[4], prev[4];
+    {
+      const uint16_t* r0 = entries(gr);
+      for (int j = 0; j < 4; ++j) {
+        const __m128i e = grid_pairs<LB>(r0, j);
+        num[j] = _mm_madd_epi16(e, A0[j]);
+        prev[j] = _mm_madd_epi16(e, A1[j]);
+      }
+    }
+    const int m = width - col;  // lanes on the surface (16 but in the last group)
+    int k = first;  // first, count and the strip's rows are multiples of B: run[] wraps between bands
+    for (int band = 0; band < nb; ++band) {
+      gr += grid_width;
+      const uint16_t* r1 = entries(gr);
+  #pragma GCC unroll 4
+      for (int j = 0; j < 4; ++j) {  // this band's row step; num continues from the last band
+        const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
+        delta[j] = _mm_sub_epi32(next, prev[j]);
+        prev[j] = next;
+      }
+      if (k == count) k = 0;
+      const uint8_t* const* rr = run + k;
+      k += B;
+      for (int fy = 0; fy < B; ++fy, d += width) {
+        const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rr[fy] + col));
+        // Rows (byte 2 of every lane, nothing above) packed to bytes, interleaved with the
+        // texels: sixteen 16-bit indices, stored and read back one at a time.
+        const __m128i r = _mm_packus_epi16(
+            _mm_packs_epi32(_mm_srli_epi32(num[0], 16), _mm_srli_epi32(num[1], 16)),
+            _mm_packs_epi32(_mm_srli_epi32(num[2], 16), _mm_srli_epi32(num[3], 16)));
+  #pragma GCC unroll 4
+        for (int j = 0; j < 4; ++j) num[j] = _mm_add_epi32(num[j], delta[j]);
+        const __m128i i0 = _mm_unpacklo_epi8(t, r), i1 = _mm_unpackhi_epi8(t, r);
+        _mm_store_si128(reinterpret_cast<__m128i*>(ix), i0);
+        _mm_store_si128(reinterpret_cast<__m128i*>(ix + 8), i1);
+        const uint64_t w[2] = {pack8(colormap, uint64_t(_mm_cvtsi128_si64(i0)), ix), pack8m(colormap, ix + 8)};
+        if (m >= 16) {
+          std::memcpy(d, w, 16);
+        } else {
+          std::memcpy(d, w, size_t(m));
+        }
+      }
+    }
+  }
+}
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
                           uint8_t* __restrict out) {
-  constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
+  constexpr int B = 16 >> kMip;
   const int bw = width / B, bh = height / B;
-  const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
-  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  const int n16 = (width + 15) & ~15, stride = n16 + 16;
+  const int c0 = wrap_near(soff, tw), t0 = wrap_near(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
   const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
   const uint8_t* const tex_end = texels + tw * th;
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
-  __m128i period[2];  // narrow textures' runs (tile_row)
-  {
-    alignas(16) uint8_t k8[32];
-    for (int k = 0, c = c0; k < 32; ++k) {
-      k8[k] = uint8_t(c);
-      if (++c == tw) c = 0;
-    }
-    period[0] = _mm_load_si128(reinterpret_cast<const __m128i*>(k8));
-    period[1] = _mm_load_si128(reinterpret_cast<const __m128i*>(k8 + 16));
-  }
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end),
                                                      buf + t * stride);
   int strip_bands = bh;
   if (!all_rows) {
@@ -155,77 +258,23 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     A1[j] = _mm_setr_epi32(pat(4 * j, 2 * kMip), pat(4 * j + 1, 2 * kMip), pat(4 * j + 2, 2 * kMip),
                            pat(4 * j + 3, 2 * kMip));
   }
-  uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
-  alignas(16) uint16_t ix[16];  // a row's colormap indices
-
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
     int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
     if (all_rows) {
-      first = (t0 + by0 * B) % th;
+      first = wrap_near(t0 + by0 * B, th);
     } else {
       count = nb * B;
-      int t = (t0 + by0 * B) % th;
+      int t = wrap_near(t0 + by0 * B, th);
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end),
                                 buf + r * stride);
         if (++t == th) t = 0;
       }
     }
     uint8_t* const strip = out + by0 * B * width;
-    for (int g = 0; g < groups; ++g) {
-      const int b0 = g * G;
-      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
-      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
-        const uint16_t* r = grid + by * grid_width + b0;
-        if (direct) return r;
-        const int n = bw + 1 - b0;
-        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
-        return pad;
-      };
-      __m128i num[4], delta[4], prev[4];
-      {
-        const uint16_t* r0 = row_of(by0);
-        for (int j = 0; j < 4; ++j) {
-          const __m128i e = grid_pairs<LB>(r0, j);
-          num[j] = _mm_madd_epi16(e, A0[j]);
-          prev[j] = _mm_madd_epi16(e, A1[j]);
-        }
-      }
-      const int m = width - 16 * g;  // lanes on the surface (16 but in the last group)
-      uint8_t* d = strip + 16 * g;
-      int k = first;
-      for (int band = 0; band < nb; ++band) {
-        const uint16_t* r1 = row_of(by0 + band + 1);
-#pragma GCC unroll 4
-        for (int j = 0; j < 4; ++j) {  // this band's row step; num continues from the last band
-          const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
-          delta[j] = _mm_sub_epi32(next, prev[j]);
-          prev[j] = next;
-        }
-        for (int fy = 0; fy < B; ++fy, d += width) {
-          const uint8_t* src = run[k];
-          if (++k == count) k = 0;
-          const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + 16 * g));
-          // Rows (byte 2 of every lane, nothing above) packed to bytes, interleaved with the
-          // texels: sixteen 16-bit indices, stored and read back one at a time.
-          const __m128i r = _mm_packus_epi16(
-              _mm_packs_epi32(_mm_srli_epi32(num[0], 16), _mm_srli_epi32(num[1], 16)),
-              _mm_packs_epi32(_mm_srli_epi32(num[2], 16), _mm_srli_epi32(num[3], 16)));
-#pragma GCC unroll 4
-          for (int j = 0; j < 4; ++j) num[j] = _mm_add_epi32(num[j], delta[j]);
-          _mm_store_si128(reinterpret_cast<__m128i*>(ix), _mm_unpacklo_epi8(t, r));
-          _mm_store_si128(reinterpret_cast<__m128i*>(ix + 8), _mm_unpackhi_epi8(t, r));
-          const uint64_t w[2] = {pack8(colormap, ix), pack8(colormap, ix + 8)};
-          if (m >= 16) {
-            std::memcpy(d, w, 16);
-          } else {
-            std::memcpy(d, w, size_t(m));
-          }
-        }
-      }
-    }
+    block_strip<kMip>(grid, grid_width, bw, by0, nb, A0, A1, run, first, count, colormap, strip, width);
   }
 }
 
