@@ -165,6 +165,7 @@ __attribute__((noinline, aligned(2048))) void block_strip(const uint16_t* grid, 
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
   uint16_t pad[24];             // a last group's grid entries, zero padded (never read past a grid row)
   alignas(16) uint16_t ix[16];  // a row's colormap indices
+  alignas(16) uint8_t part[16 * B];  // a band of a last group narrower than 16 lanes
   for (int col = 0, b0 = 0; col < width; col += 16, b0 += G) {
     uint8_t* d = strip + col;
     const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
@@ -198,25 +199,29 @@ __attribute__((noinline, aligned(2048))) void block_strip(const uint16_t* grid, 
       if (k == count) k = 0;
       const uint8_t* const* rr = run + k;
       k += B;
-      for (int fy = 0; fy < B; ++fy, d += width) {
-        const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(rr[fy] + col));
+      uint8_t* dst = m >= 16 ? d : part;  // a last group narrower than 16: via part[]
+      const int step = m >= 16 ? width : 16;
+      auto row = [&](const uint8_t* src) {
+        const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + col));
         // Rows (byte 2 of every lane, nothing above) packed to bytes, interleaved with the
         // texels: sixteen 16-bit indices, stored and read back one at a time.
         const __m128i r = _mm_packus_epi16(
             _mm_packs_epi32(_mm_srli_epi32(num[0], 16), _mm_srli_epi32(num[1], 16)),
             _mm_packs_epi32(_mm_srli_epi32(num[2], 16), _mm_srli_epi32(num[3], 16)));
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
         for (int j = 0; j < 4; ++j) num[j] = _mm_add_epi32(num[j], delta[j]);
         const __m128i i0 = _mm_unpacklo_epi8(t, r), i1 = _mm_unpackhi_epi8(t, r);
         _mm_store_si128(reinterpret_cast<__m128i*>(ix), i0);
         _mm_store_si128(reinterpret_cast<__m128i*>(ix + 8), i1);
-        const uint64_t w[2] = {pack8(colormap, uint64_t(_mm_cvtsi128_si64(i0)), ix), pack8m(colormap, ix + 8)};
-        if (m >= 16) {
-          std::memcpy(d, w, 16);
-        } else {
-          std::memcpy(d, w, size_t(m));
-        }
-      }
+        const uint64_t w0 = pack8(colormap, uint64_t(_mm_cvtsi128_si64(i0)), ix), w1 = pack8m(colormap, ix + 8);
+        std::memcpy(dst, &w0, 8);
+        std::memcpy(dst + 8, &w1, 8);
+        dst += step;
+      };
+      for (int fy = 0; fy < B; ++fy) row(rr[fy]);
+      if (m < 16)
+        for (int fy = 0; fy < B; ++fy) std::memcpy(d + fy * width, part + 16 * fy, size_t(m));
+      d += B * width;
     }
   }
 }
