@@ -190,7 +190,7 @@ __attribute__((noinline, aligned(2048))) void block_strip(const uint16_t* grid, 
     for (int band = 0; band < nb; ++band) {
       gr += grid_width;
       const uint16_t* r1 = entries(gr);
-  #pragma GCC unroll 4
+#pragma GCC unroll 4
       for (int j = 0; j < 4; ++j) {  // this band's row step; num continues from the last band
         const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
         delta[j] = _mm_sub_epi32(next, prev[j]);
@@ -287,7 +287,7 @@ inline void surface_block_x86(const uint16_t* grid, int grid_width, const uint8_
                               int tex_height, int mip, int soff, int toff, int width, int height,
                               const uint8_t* colormap, uint8_t* out) {
   if (width <= 0 || height <= 0) return;
-  if (width / (16 >> mip) > kMaxBlockColumns || mip < 0 || mip > 3) {
+  if (mip < 0 || mip > 3 || (width >> (4 - mip)) > kMaxBlockColumns) {
     surface_block_scalar(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap,
                          out);
     return;
