@@ -49,11 +49,16 @@ inline int wrap_near(int i, int n) {
   return wrap(i, n);
 }
 
+// The colormap base sits in r12 for both lookups: left free, GCC may copy it through a
+// temporary of the row before, which costs nothing on hardware but reads as a chain from one
+// row to the next to llvm-mca (it times each block as a loop of itself).
+//
 // colormap[q[0]] | colormap[q[1]] << 8 | ... | colormap[q[7]] << 56, with q[0 .. 3] given in qa
 // (four 16-bit fields) and q[4 .. 7] read from memory: the load ports and the ALUs share the
 // work. In asm (scalar only: the same for the SSE2 and the AVX2 instance) because GCC would
 // extract every index from the vector that stored it (pextrw: more uops than a load each).
 inline uint64_t pack8(const uint8_t* cm, uint64_t qa, const uint16_t* q) {
+  register const uint8_t* const cmr asm("r12") = cm;  // (r12: see above)
   uint64_t v, a, b;
   asm(
       "movzwl %w[qa], %k[a]\n\t"
@@ -89,12 +94,13 @@ inline uint64_t pack8(const uint8_t* cm, uint64_t qa, const uint16_t* q) {
       "or %[a], %[v]\n\t"
       "or %[b], %[v]"
       : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b), [qa] "+r"(qa)
-      : [cm] "r"(cm), [m4] "m"(q[4]), [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
+      : [cm] "r"(cmr), [m4] "m"(q[4]), [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
   return v;
 }
 
 // The same with all eight indices read from memory.
 inline uint64_t pack8m(const uint8_t* cm, const uint16_t* q) {
+  register const uint8_t* const cmr asm("r12") = cm;
   uint64_t v, a, b;
   asm(
       "movzwl %[m0], %k[a]\n\t"
@@ -128,7 +134,7 @@ inline uint64_t pack8m(const uint8_t* cm, const uint16_t* q) {
       "or %[a], %[v]\n\t"
       "or %[b], %[v]"
       : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b)
-      : [cm] "r"(cm), [m0] "m"(q[0]), [m1] "m"(q[1]), [m2] "m"(q[2]), [m3] "m"(q[3]), [m4] "m"(q[4]),
+      : [cm] "r"(cmr), [m0] "m"(q[0]), [m1] "m"(q[1]), [m2] "m"(q[2]), [m3] "m"(q[3]), [m4] "m"(q[4]),
         [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
   return v;
 }
@@ -156,13 +162,37 @@ inline __m128i grid_pairs(const uint16_t* g, int j) {
 // One strip: nb bands from grid row by0, the groups of sixteen lanes (G blocks) one after the
 // other down the strip. Its own function, small and aligned so that its loops never straddle
 // a page (the instruction counter splits blocks there; the loops are the same either way).
+struct Strip {
+  const uint16_t* grid;
+  const uint8_t* const* run;  // run[first] is the strip's first row; run[] wraps at count
+  const uint8_t* colormap;
+  uint8_t* out;  // the strip's first row
+  int grid_width, bw, by0, nb, first, count, width;
+};
+
+// Lanes k = 4j + i: weight pairs (B - fx, fx) << s.
+template <int B>
+inline __m128i weights(int j, int s) {
+  auto pat = [s](int k) { return int32_t((B - k % B) << s | (k % B) << (16 + s)); };
+  return _mm_setr_epi32(pat(4 * j), pat(4 * j + 1), pat(4 * j + 2), pat(4 * j + 3));
+}
+
 template <int kMip>
-__attribute__((noinline, aligned(2048))) void block_strip(const uint16_t* grid, int grid_width, int bw, int by0,
-                                                          int nb, const __m128i* A0, const __m128i* A1,
-                                                          const uint8_t* const* run, int first, int count,
-                                                          const uint8_t* __restrict colormap,
-                                                          uint8_t* __restrict strip, int width) {
+__attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
+  const uint16_t* const grid = job.grid;
+  const uint8_t* const* const run = job.run;
+  const uint8_t* __restrict const colormap = job.colormap;
+  uint8_t* __restrict const strip = job.out;
+  const int grid_width = job.grid_width, bw = job.bw, by0 = job.by0, nb = job.nb, first = job.first,
+            count = job.count, width = job.width;
+  // Weight pairs << (4 + mip) for the first numerator (the scaled B T, at most 256 per weight:
+  // pmaddwd's signed factors stay exact) and << 2 mip for the row steps (U - T, then each next
+  // grid row's difference).
+  const __m128i A0[4] = {weights<B>(0, 4 + kMip), weights<B>(1, 4 + kMip), weights<B>(2, 4 + kMip),
+                         weights<B>(3, 4 + kMip)};
+  const __m128i A1[4] = {weights<B>(0, 2 * kMip), weights<B>(1, 2 * kMip), weights<B>(2, 2 * kMip),
+                         weights<B>(3, 2 * kMip)};
   uint16_t pad[24];             // a last group's grid entries, zero padded (never read past a grid row)
   alignas(16) uint16_t ix[16];  // a row's colormap indices
   alignas(16) uint8_t part[16 * B];  // a band of a last group narrower than 16 lanes
@@ -252,17 +282,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     strip_bands = fit < bh ? fit : bh;
   }
 
-  // Lanes k = 4j + i: weight pairs (B - fx, fx) << (4 + mip) for the first numerator (the
-  // scaled B T, at most 256 per weight: pmaddwd's signed factors stay exact) and << 2 mip for
-  // the row steps (U - T, then each next grid row's difference).
-  __m128i A0[4], A1[4];
-  for (int j = 0; j < 4; ++j) {
-    auto pat = [](int k, int s) { return int32_t((B - k % B) << s | (k % B) << (16 + s)); };
-    A0[j] = _mm_setr_epi32(pat(4 * j, 4 + kMip), pat(4 * j + 1, 4 + kMip), pat(4 * j + 2, 4 + kMip),
-                           pat(4 * j + 3, 4 + kMip));
-    A1[j] = _mm_setr_epi32(pat(4 * j, 2 * kMip), pat(4 * j + 1, 2 * kMip), pat(4 * j + 2, 2 * kMip),
-                           pat(4 * j + 3, 2 * kMip));
-  }
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
     int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
@@ -278,8 +297,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         if (++t == th) t = 0;
       }
     }
-    uint8_t* const strip = out + by0 * B * width;
-    block_strip<kMip>(grid, grid_width, bw, by0, nb, A0, A1, run, first, count, colormap, strip, width);
+    const Strip job{grid, run, colormap, out + by0 * B * width, grid_width, bw, by0, nb, first, count, width};
+    block_strip<kMip>(job);
   }
 }
 
