@@ -162,6 +162,16 @@ inline __m128i grid_pairs(const uint16_t* g, int j) {
 // One strip: nb bands from grid row by0, the groups of sixteen lanes (G blocks) one after the
 // other down the strip. Its own function, small and aligned so that its loops never straddle
 // a page (the instruction counter splits blocks there; the loops are the same either way).
+// Mip 3 (B = 2, eight blocks per sixteen lanes): lanes (2b, 2b + 1) get (2 g[b], g[b] + g[b + 1]),
+// the grid row's share (B - fx) g[b] + fx g[b + 1] of the numerator, in 16-bit lanes (at most
+// 2 * 0x3fff). Reads g[0 .. 8].
+inline void edge_sums(const uint16_t* g, __m128i* s) {
+  const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g));
+  const __m128i c = _mm_loadu_si128(reinterpret_cast<const __m128i*>(g + 1));
+  s[0] = _mm_add_epi16(_mm_unpacklo_epi16(a, a), _mm_unpacklo_epi16(a, c));
+  s[1] = _mm_add_epi16(_mm_unpackhi_epi16(a, a), _mm_unpackhi_epi16(a, c));
+}
+
 struct Strip {
   const uint16_t* grid;
   const uint8_t* const* run;  // run[first] is the strip's first row; run[] wraps at count
@@ -206,13 +216,21 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
       return pad;
     };
     const uint16_t* gr = grid + by0 * grid_width + b0;
+    // Mip 3: numerators unscaled (at most 4 * 0x3fff) in 16-bit lanes, two vectors; the
+    // colormap row is num >> 10. Else four vectors of 32-bit lanes (see above).
     __m128i num[4], delta[4], prev[4];
     {
       const uint16_t* r0 = entries(gr);
-      for (int j = 0; j < 4; ++j) {
-        const __m128i e = grid_pairs<LB>(r0, j);
-        num[j] = _mm_madd_epi16(e, A0[j]);
-        prev[j] = _mm_madd_epi16(e, A1[j]);
+      if constexpr (kMip == 3) {
+        edge_sums(r0, prev);
+        num[0] = _mm_slli_epi16(prev[0], 1);
+        num[1] = _mm_slli_epi16(prev[1], 1);
+      } else {
+        for (int j = 0; j < 4; ++j) {
+          const __m128i e = grid_pairs<LB>(r0, j);
+          num[j] = _mm_madd_epi16(e, A0[j]);
+          prev[j] = _mm_madd_epi16(e, A1[j]);
+        }
       }
     }
     const int m = width - col;  // lanes on the surface (16 but in the last group)
@@ -220,11 +238,20 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
     for (int band = 0; band < nb; ++band) {
       gr += grid_width;
       const uint16_t* r1 = entries(gr);
+      if constexpr (kMip == 3) {  // this band's row step; num continues from the last band
+        __m128i next[2];
+        edge_sums(r1, next);
+        for (int j = 0; j < 2; ++j) {
+          delta[j] = _mm_sub_epi16(next[j], prev[j]);
+          prev[j] = next[j];
+        }
+      } else {
 #pragma GCC unroll 4
-      for (int j = 0; j < 4; ++j) {  // this band's row step; num continues from the last band
-        const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
-        delta[j] = _mm_sub_epi32(next, prev[j]);
-        prev[j] = next;
+        for (int j = 0; j < 4; ++j) {
+          const __m128i next = _mm_madd_epi16(grid_pairs<LB>(r1, j), A1[j]);
+          delta[j] = _mm_sub_epi32(next, prev[j]);
+          prev[j] = next;
+        }
       }
       if (k == count) k = 0;
       const uint8_t* const* rr = run + k;
@@ -233,13 +260,19 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
       const int step = m >= 16 ? width : 16;
       auto row = [&](const uint8_t* src) {
         const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + col));
-        // Rows (byte 2 of every lane, nothing above) packed to bytes, interleaved with the
-        // texels: sixteen 16-bit indices, stored and read back one at a time.
-        const __m128i r = _mm_packus_epi16(
-            _mm_packs_epi32(_mm_srli_epi32(num[0], 16), _mm_srli_epi32(num[1], 16)),
-            _mm_packs_epi32(_mm_srli_epi32(num[2], 16), _mm_srli_epi32(num[3], 16)));
+        // Rows (byte 2 of every lane, nothing above; mip 3: num >> 10) packed to bytes,
+        // interleaved with the texels: sixteen 16-bit indices, stored and read back one at a time.
+        __m128i r;
+        if constexpr (kMip == 3) {
+          r = _mm_packus_epi16(_mm_srli_epi16(num[0], 10), _mm_srli_epi16(num[1], 10));
+          num[0] = _mm_add_epi16(num[0], delta[0]);
+          num[1] = _mm_add_epi16(num[1], delta[1]);
+        } else {
+          r = _mm_packus_epi16(_mm_packs_epi32(_mm_srli_epi32(num[0], 16), _mm_srli_epi32(num[1], 16)),
+                               _mm_packs_epi32(_mm_srli_epi32(num[2], 16), _mm_srli_epi32(num[3], 16)));
 #pragma GCC unroll 4
-        for (int j = 0; j < 4; ++j) num[j] = _mm_add_epi32(num[j], delta[j]);
+          for (int j = 0; j < 4; ++j) num[j] = _mm_add_epi32(num[j], delta[j]);
+        }
         const __m128i i0 = _mm_unpacklo_epi8(t, r), i1 = _mm_unpackhi_epi8(t, r);
         _mm_store_si128(reinterpret_cast<__m128i*>(ix), i0);
         _mm_store_si128(reinterpret_cast<__m128i*>(ix + 8), i1);
