@@ -159,9 +159,6 @@ inline __m128i grid_pairs(const uint16_t* g, int j) {
   }
 }
 
-// One strip: nb bands from grid row by0, the groups of sixteen lanes (G blocks) one after the
-// other down the strip. Its own function, small and aligned so that its loops never straddle
-// a page (the instruction counter splits blocks there; the loops are the same either way).
 // Mip 3 (B = 2, eight blocks per sixteen lanes): lanes (2b, 2b + 1) get (2 g[b], g[b] + g[b + 1]),
 // the grid row's share (B - fx) g[b] + fx g[b + 1] of the numerator, in 16-bit lanes (at most
 // 2 * 0x3fff). Reads g[0 .. 8].
@@ -187,8 +184,12 @@ inline __m128i weights(int j, int s) {
   return _mm_setr_epi32(pat(4 * j), pat(4 * j + 1), pat(4 * j + 2), pat(4 * j + 3));
 }
 
-template <int kMip>
-__attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
+// One strip: nb bands from grid row by0, the groups of sixteen lanes (G blocks) one after the
+// other down the strip. kWide: width >= 16; the last group then overlaps the one before it (its texels made twice,
+// the same) so that every group has sixteen lanes on the surface and its G + 1 grid entries in
+// each row (grid_width > width / B). Else (width < 16) one group, through part[] and pad[].
+template <int kMip, bool kWide>
+__attribute__((always_inline)) inline void strip_body(const Strip& job) {
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
   const uint16_t* const grid = job.grid;
   const uint8_t* const* const run = job.run;
@@ -203,16 +204,16 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
                          weights<B>(3, 4 + kMip)};
   const __m128i A1[4] = {weights<B>(0, 2 * kMip), weights<B>(1, 2 * kMip), weights<B>(2, 2 * kMip),
                          weights<B>(3, 2 * kMip)};
-  uint16_t pad[24];             // a last group's grid entries, zero padded (never read past a grid row)
+  uint16_t pad[24];             // narrow: the grid entries, zero padded (never read past a grid row)
   alignas(16) uint16_t ix[16];  // a row's colormap indices
-  alignas(16) uint8_t part[16 * B];  // a band of a last group narrower than 16 lanes
-  for (int col = 0, b0 = 0; col < width; col += 16, b0 += G) {
+  alignas(16) uint8_t part[16 * B];  // narrow: a band
+  for (int col = 0;; col += 16) {
+    if (kWide && col > width - 16) col = width - 16;
+    const int b0 = col >> LB;
     uint8_t* d = strip + col;
-    const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
     auto entries = [&](const uint16_t* r) -> const uint16_t* {  // a grid row from the group's first block
-      if (direct) return r;
-      const int n = bw + 1 - b0;
-      for (int i = 0; i < 24; ++i) pad[i] = i < n ? r[i] : 0;
+      if (kWide || G + 1 <= grid_width) return r;
+      for (int i = 0; i < 24; ++i) pad[i] = i <= bw ? r[i] : 0;
       return pad;
     };
     const uint16_t* gr = grid + by0 * grid_width + b0;
@@ -233,7 +234,6 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
         }
       }
     }
-    const int m = width - col;  // lanes on the surface (16 but in the last group)
     int k = first;  // first, count and the strip's rows are multiples of B: run[] wraps between bands
     for (int band = 0; band < nb; ++band) {
       gr += grid_width;
@@ -256,8 +256,8 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
       if (k == count) k = 0;
       const uint8_t* const* rr = run + k;
       k += B;
-      uint8_t* dst = m >= 16 ? d : part;  // a last group narrower than 16: via part[]
-      const int step = m >= 16 ? width : 16;
+      uint8_t* dst = kWide ? d : part;
+      const int step = kWide ? width : 16;
       auto row = [&](const uint8_t* src) {
         const __m128i t = _mm_loadu_si128(reinterpret_cast<const __m128i*>(src + col));
         // Rows (byte 2 of every lane, nothing above; mip 3: num >> 10) packed to bytes,
@@ -282,11 +282,24 @@ __attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
         dst += step;
       };
       for (int fy = 0; fy < B; ++fy) row(rr[fy]);
-      if (m < 16)
-        for (int fy = 0; fy < B; ++fy) std::memcpy(d + fy * width, part + 16 * fy, size_t(m));
+      if (!kWide)
+        for (int fy = 0; fy < B; ++fy) std::memcpy(d + fy * width, part + 16 * fy, size_t(width));
       d += B * width;
     }
+    if (!kWide || col + 16 >= width) break;
   }
+}
+
+// The strip functions: small and aligned so that their loops never straddle a page (the
+// instruction counter splits blocks there; the loops are the same either way).
+template <int kMip>
+__attribute__((noinline, aligned(2048))) void block_strip(const Strip& job) {
+  strip_body<kMip, true>(job);
+}
+
+template <int kMip>
+__attribute__((noinline)) void block_strip_narrow(const Strip& job) {
+  strip_body<kMip, false>(job);
 }
 
 template <int kMip>
@@ -331,7 +344,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
     const Strip job{grid, run, colormap, out + by0 * B * width, grid_width, bw, by0, nb, first, count, width};
-    block_strip<kMip>(job);
+    if (width >= 16)
+      block_strip<kMip>(job);
+    else
+      block_strip_narrow<kMip>(job);
   }
 }
 
