@@ -6,10 +6,12 @@
 //
 // As the NEON builder (asm/neon.cpp, section 2): sixteen lanes (16 >> LB blocks side by side)
 // walked down their B rows, the light numerators in 32-bit lanes scaled by 4^mip so that the
-// colormap row is byte 2 of every lane, stepped by one vector add per four texels and row.
-// The lanes' first numerators come from pmaddwd of grid pairs (g00, g10) with weight pairs
-// (B - fx, fx). Indices ((num >> 8) & ~0xff) | texel leave the vector two at a time (64-bit
-// moves); the sixteen colormap loads are independent and are packed into two 64-bit stores.
+// colormap row is byte 2 of every lane, stepped by one vector add per four texels and row
+// (mip 3: unscaled, in 16-bit lanes, one add per eight texels). The lanes' first numerators
+// come from pmaddwd of grid pairs (g00, g10) with weight pairs (B - fx, fx). The rows, packed
+// to bytes and interleaved with the texels, make sixteen 16-bit indices row << 8 | texel,
+// stored to the stack and read back (four from a register); the sixteen colormap loads are
+// independent and are packed into two 64-bit stores.
 
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable). Narrow textures (tw < 16): 16-byte copies of the row every
@@ -185,9 +187,10 @@ inline __m128i weights(int j, int s) {
 }
 
 // One strip: nb bands from grid row by0, the groups of sixteen lanes (G blocks) one after the
-// other down the strip. kWide: width >= 16; the last group then overlaps the one before it (its texels made twice,
-// the same) so that every group has sixteen lanes on the surface and its G + 1 grid entries in
-// each row (grid_width > width / B). Else (width < 16) one group, through part[] and pad[].
+// other down the strip. kWide: width >= 16; the last group then overlaps the one before it
+// (its texels made twice, the same) so that every group has sixteen lanes on the surface and
+// its G + 1 grid entries in each row (grid_width > width / B). Else (width < 16) one group,
+// through part[] and pad[].
 template <int kMip, bool kWide>
 __attribute__((always_inline)) inline void strip_body(const Strip& job) {
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
