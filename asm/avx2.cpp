@@ -261,8 +261,9 @@ void surface_block_any(const uint16_t* grid, int grid_width, const uint8_t* texe
     default: return surface_block_rows<3, kGather>(grid, grid_width, texels, tw, th, soff, toff, width, height, colormap, out);
   }
 }
-// Without gathers: asm/surface_block_x86.h's builder (block groups down their rows, 64-bit
-// index moves, scalar colormap loads) compiled for AVX2 (VEX encoding: no register copies).
+// Without gathers: asm/surface_block_x86.h's builder (block groups down their rows, indices
+// stored and read back, scalar colormap loads) compiled for AVX2 (VEX encoding: no register
+// copies).
 #include "asm/surface_block_x86.h"
 const SurfaceBlockFn surface_block_avx2 = surface_block_x86;
 const SurfaceBlockFn surface_block_avx2_gather = surface_block_any<true>;
