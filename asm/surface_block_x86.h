@@ -100,17 +100,18 @@ inline uint64_t pack8(const uint8_t* cm, uint64_t qa, const uint16_t* q) {
   return v;
 }
 
-// The same with all eight indices read from memory.
+// The same with all eight indices read from memory, the first two by one 32-bit load (one
+// load fewer, two ALU operations more).
 inline uint64_t pack8m(const uint8_t* cm, const uint16_t* q) {
   register const uint8_t* const cmr asm("r12") = cm;
   uint64_t v, a, b;
-  asm(
-      "movzwl %[m0], %k[a]\n\t"
-      "movzwl %[m1], %k[b]\n\t"
-      "movzbl (%[cm],%[a]), %k[v]\n\t"
-      "movzbl (%[cm],%[b]), %k[b]\n\t"
-      "shl $8, %k[b]\n\t"
-      "or %k[b], %k[v]\n\t"
+  asm("mov %[p0], %k[a]\n\t"
+      "movzwl %w[a], %k[b]\n\t"
+      "shr $16, %k[a]\n\t"
+      "movzbl (%[cm],%[b]), %k[v]\n\t"
+      "movzbl (%[cm],%[a]), %k[a]\n\t"
+      "shl $8, %k[a]\n\t"
+      "or %k[a], %k[v]\n\t"
       "movzwl %[m2], %k[a]\n\t"
       "movzwl %[m3], %k[b]\n\t"
       "movzbl (%[cm],%[a]), %k[a]\n\t"
@@ -136,8 +137,7 @@ inline uint64_t pack8m(const uint8_t* cm, const uint16_t* q) {
       "or %[a], %[v]\n\t"
       "or %[b], %[v]"
       : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b)
-      : [cm] "r"(cmr), [m0] "m"(q[0]), [m1] "m"(q[1]), [m2] "m"(q[2]), [m3] "m"(q[3]), [m4] "m"(q[4]),
-        [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
+      : [cm] "r"(cmr), [p0] "m"(*reinterpret_cast<const uint16_t(*)[2]>(q + 0)), [m2] "m"(q[2]), [m3] "m"(q[3]), [m4] "m"(q[4]), [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
   return v;
 }
 
