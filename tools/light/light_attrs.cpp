@@ -128,23 +128,47 @@ void Occluders::build(const BspWorld& w, const LineTracer& tracer, const std::ve
   }
 }
 
+bool Occluders::group_blocks(const Group& g, const glm::vec3& a, const glm::vec3& b) const {
+  if (!segment_hits_box(a, b, g.mins, g.maxs)) return false;
+  for (uint32_t i = g.first; i < g.first + g.count; ++i) {
+    const Poly& p = polys_[i];
+    float da = glm::dot(p.normal, a) - p.dist, db = glm::dot(p.normal, b) - p.dist;
+    if ((da > 0) == (db > 0) || da == db) continue;  // does not cross the plane
+    glm::vec3 x = a + (b - a) * (da / (da - db));
+    if (x.x < p.mins.x || x.y < p.mins.y || x.z < p.mins.z || x.x > p.maxs.x || x.y > p.maxs.y || x.z > p.maxs.z)
+      continue;
+    bool inside = true;
+    for (uint32_t k = 0; k < p.count && inside; ++k)
+      inside = glm::dot(x - verts_[p.first + k], edge_normals_[p.first + k]) <= 0.01f;
+    if (inside) return true;
+  }
+  return false;
+}
+
 bool Occluders::blocks(const glm::vec3& a, const glm::vec3& b, uint32_t receiver) const {
   for (const Group& g : groups_) {
     if (!g.all && (receiver == 0 || receiver != g.entity)) continue;
-    if (!segment_hits_box(a, b, g.mins, g.maxs)) continue;
-    for (uint32_t i = g.first; i < g.first + g.count; ++i) {
-      const Poly& p = polys_[i];
-      float da = glm::dot(p.normal, a) - p.dist, db = glm::dot(p.normal, b) - p.dist;
-      if ((da > 0) == (db > 0) || da == db) continue;  // does not cross the plane
-      glm::vec3 x = a + (b - a) * (da / (da - db));
-      if (x.x < p.mins.x || x.y < p.mins.y || x.z < p.mins.z || x.x > p.maxs.x || x.y > p.maxs.y || x.z > p.maxs.z)
-        continue;
-      bool inside = true;
-      for (uint32_t k = 0; k < p.count && inside; ++k)
-        inside = glm::dot(x - verts_[p.first + k], edge_normals_[p.first + k]) <= 0.01f;
-      if (inside) return true;
-    }
+    if (group_blocks(g, a, b)) return true;
   }
+  return false;
+}
+
+void Occluders::candidates(const glm::vec3& mins, const glm::vec3& maxs, uint32_t receiver,
+                           std::vector<uint32_t>* out) const {
+  out->clear();
+  for (uint32_t i = 0; i < groups_.size(); ++i) {
+    const Group& g = groups_[i];
+    if (!g.all && (receiver == 0 || receiver != g.entity)) continue;
+    if (g.mins.x > maxs.x || g.mins.y > maxs.y || g.mins.z > maxs.z || g.maxs.x < mins.x || g.maxs.y < mins.y ||
+        g.maxs.z < mins.z)
+      continue;
+    out->push_back(i);
+  }
+}
+
+bool Occluders::blocks_among(const glm::vec3& a, const glm::vec3& b, const std::vector<uint32_t>& groups) const {
+  for (uint32_t i : groups)
+    if (group_blocks(groups_[i], a, b)) return true;
   return false;
 }
 

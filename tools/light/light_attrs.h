@@ -37,6 +37,10 @@ class Occluders {
   // True when a polygon blocks the segment a -> b for a receiving face of entity `receiver`
   // (0: no entity attributes).
   bool blocks(const glm::vec3& a, const glm::vec3& b, uint32_t receiver) const;
+  // The groups that may block segments lying inside the box mins..maxs towards a face of
+  // entity `receiver` (into *out, cleared first); blocks_among tests only those.
+  void candidates(const glm::vec3& mins, const glm::vec3& maxs, uint32_t receiver, std::vector<uint32_t>* out) const;
+  bool blocks_among(const glm::vec3& a, const glm::vec3& b, const std::vector<uint32_t>& groups) const;
 
  private:
   struct Poly {
@@ -51,6 +55,7 @@ class Occluders {
     glm::vec3 mins{0}, maxs{0};
     uint32_t first = 0, count = 0;  // into polys_
   };
+  bool group_blocks(const Group& g, const glm::vec3& a, const glm::vec3& b) const;
   std::vector<glm::vec3> verts_, edge_normals_;
   std::vector<Poly> polys_;
   std::vector<Group> groups_;

@@ -379,6 +379,7 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
   const float face_plane = glm::dot(g.normal, g.centroid);
   const uint32_t receiver = sc.attrs.empty() ? 0 : sc.attrs[face_index].entity;
   const bool occluders = !sc.occluders.empty();
+  std::vector<uint32_t> near_groups;
   // Phong: a lighting normal per sample point (and per grid point for the sky dome).
   std::vector<glm::vec3> normals, centre_normals;
   const bool phong = sc.phong.has(face_index) && !g.degenerate;
@@ -405,6 +406,13 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
         dirt = own_dirt.data();
       }
     }
+    // Occluder groups inside the box around the sample points and the light.
+    bool occ = false;
+    if (occluders) {
+      glm::vec3 lo = glm::min(g.mins, l.origin) - glm::vec3(2.0f), hi = glm::max(g.maxs, l.origin) + glm::vec3(2.0f);
+      sc.occluders.candidates(lo, hi, receiver, &near_groups);
+      occ = !near_groups.empty();
+    }
     StyleBuffer *buf = nullptr, *emit = nullptr;
     for (size_t k = 0; k < pts.size(); ++k) {
       const glm::vec3& p = pts[k];
@@ -424,7 +432,7 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
       if (l.falloff != Falloff::LocalMin) value *= (1.0f - l.anglescale) + l.anglescale * cos_n;
       ++work->traces;
       if (!sc.tracer->clear(p, l.origin)) continue;
-      if (occluders && sc.occluders.blocks(p, l.origin, receiver)) continue;
+      if (occ && sc.occluders.blocks_among(p, l.origin, near_groups)) continue;
       size_t cell = k / per;
       if (l.falloff == Falloff::LocalMin) {
         if (work->local_min.empty()) work->local_min.assign(grid, 0.0f);
