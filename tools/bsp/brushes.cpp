@@ -220,7 +220,9 @@ bool entity_light_attr(const MapEntity& e, uint32_t index, FaceAttr* out) {
   };
   double v = 0;
   if (num("_minlight", &v)) out->minlight = float(std::clamp(v, 0.0, 255.0));
-  if (const std::string* s = e.find("_minlight_color")) {
+  const std::string* mc = e.find("_minlight_color");
+  if (!mc) mc = e.find("_mincolor");
+  if (const std::string* s = mc) {
     any = true;
     double c[3];
     if (std::sscanf(s->c_str(), "%lf %lf %lf", &c[0], &c[1], &c[2]) == 3) {

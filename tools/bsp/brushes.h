@@ -108,7 +108,7 @@ class BrushGrid {
 // lump (func_group / func_detail / omitted layers are dropped). Submodel entities get their
 // "model" key set in `map`. `attrs` (optional) receives the light attribute table
 // (face_attrs.h): entry 0 the default, then one entry per brush entity other than worldspawn
-// that has a light key ("_minlight", "_minlight_color", "_shadow", "_selfshadow",
+// that has a light key ("_minlight", "_minlight_color" or "_mincolor", "_shadow", "_selfshadow",
 // "_shadowself", "_lightignore", "_phong", "_phong_angle"); Brush::attr indexes it.
 void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vector<ModelSource>* models,
                   std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings,

@@ -1,8 +1,13 @@
 // tools/common/face_attrs.h: per-face light attributes that sbbsp hands to sblight in a side
 // file next to the BSP ("maps/foo.bsp" -> "maps/foo.faceattr"), from the light keys of brush
-// entities (worldspawn, func_group, func_detail*, and every brush model):
-//   "_minlight" n, "_minlight_color" "r g b" (0..255, default white), "_shadow" n,
-//   "_selfshadow" / "_shadowself" n, "_lightignore" n, "_phong" n, "_phong_angle" degrees.
+// entities (func_group, func_detail*, and every brush model; worldspawn's keys are the light
+// stage's global settings and are not repeated here):
+//   "_minlight" n, "_minlight_color" / "_mincolor" "r g b" (0..255 or 0..1, default white),
+//   "_shadow" n, "_selfshadow" / "_shadowself" n, "_lightignore" n, "_phong" n,
+//   "_phong_angle" degrees (default 89 with "_phong" "1"; alone it also enables phong).
+// sbbsp writes the file only when some entity has one of these keys (and removes a stale one
+// otherwise); faces of different attributes are never merged, so only maps that use the keys
+// can get a different BSP.
 // World-merged entities (func_group, func_detail*) lose their identity in the BSP, so the
 // attributes travel per BSP face, in BSP face order.
 //
