@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 
@@ -204,8 +205,55 @@ bool expand_brush(const Brush& b, const Vec3& hull_mins, const Vec3& hull_maxs, 
   return expand_brush(b, hp, hull_mins, hull_maxs, planes, out);
 }
 
+bool entity_light_attr(const MapEntity& e, uint32_t index, FaceAttr* out) {
+  *out = FaceAttr();
+  bool any = false;
+  auto num = [&e, &any](const char* key, double* v) {
+    const std::string* s = e.find(key);
+    if (!s) return false;
+    any = true;
+    char* end = nullptr;
+    double d = std::strtod(s->c_str(), &end);
+    if (end == s->c_str() || !std::isfinite(d)) return false;
+    *v = d;
+    return true;
+  };
+  double v = 0;
+  if (num("_minlight", &v)) out->minlight = float(std::clamp(v, 0.0, 255.0));
+  const std::string* mc = e.find("_minlight_color");
+  if (!mc) mc = e.find("_mincolor");
+  if (const std::string* s = mc) {
+    any = true;
+    double c[3];
+    if (std::sscanf(s->c_str(), "%lf %lf %lf", &c[0], &c[1], &c[2]) == 3) {
+      // 0..1 colours are scaled to 0..255 (as "_color" is read by the light tools).
+      bool unit = c[0] <= 1 && c[1] <= 1 && c[2] <= 1;
+      for (int k = 0; k < 3; ++k) out->minlight_color[k] = uint8_t(std::clamp(unit ? c[k] * 255 : c[k], 0.0, 255.0) + 0.5);
+    }
+  }
+  if (num("_shadow", &v)) {
+    if (v > 0) out->flags |= kFaceAttrShadow;
+    if (v < 0) out->flags |= kFaceAttrNoShadow;
+  }
+  if (num("_selfshadow", &v) && v > 0) out->flags |= kFaceAttrSelfShadow;
+  if (num("_shadowself", &v) && v > 0) out->flags |= kFaceAttrSelfShadow;
+  if (num("_lightignore", &v) && v > 0) out->flags |= kFaceAttrLightIgnore;
+  double angle = 0;
+  bool has_angle = num("_phong_angle", &angle) && angle > 0;
+  if (num("_phong", &v) && v > 0) out->phong_angle = has_angle ? float(std::min(angle, 180.0)) : 89.0f;
+  else if (has_angle) out->phong_angle = float(std::min(angle, 180.0));
+  if (!any) {
+    *out = FaceAttr();
+    return false;
+  }
+  out->entity = index;
+  return true;
+}
+
 void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vector<ModelSource>* models,
-                  std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings) {
+                  std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings,
+                  std::vector<FaceAttr>* attrs) {
+  if (attrs) attrs->assign(1, FaceAttr());
   models->clear();
   models->push_back(ModelSource{0, {}});
   keep_entity->assign(map.entities.size(), true);
@@ -234,6 +282,13 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
     bool illusionary = cls == "func_detail_illusionary";
     if (ei != 0 && world) (*keep_entity)[ei] = false;
     if (e.brushes.empty()) continue;
+    // Worldspawn's keys are the light stage's global settings (its minimum light etc.).
+    int attr = 0;
+    FaceAttr fa;
+    if (attrs && ei != 0 && entity_light_attr(e, uint32_t(ei), &fa)) {
+      attr = int(attrs->size());
+      attrs->push_back(fa);
+    }
     ModelSource* model = &(*models)[0];
     if (!world) {
       models->push_back(ModelSource{int(ei), {}});
@@ -244,6 +299,7 @@ void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vec
       stats->map_brushes++;
       Brush b;
       b.line = mb.line;
+      b.attr = attr;
       bool bad = false, hint = false, origin = false, clip = false;
       int liquid = 0;
       bool sky = false;

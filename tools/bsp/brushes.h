@@ -28,6 +28,7 @@
 #include "tools/bsp/geom.h"
 #include "tools/bsp/map_file.h"
 #include "tools/bsp/textures.h"
+#include "tools/common/face_attrs.h"
 
 namespace sb::tools::bsp {
 
@@ -69,6 +70,7 @@ struct Brush {
   // only faces it covers entirely, never another _wall brush's), None (func_detail_fence).
   enum class Clips { All, Covered, None };
   Clips clips = Clips::All;
+  int attr = 0;  // index into the light attribute table (build_models; 0: no light keys)
 };
 
 struct ModelSource {
@@ -104,9 +106,16 @@ class BrushGrid {
 
 // Builds every model's brushes. `keep_entity[i]` says whether entity i stays in the entity
 // lump (func_group / func_detail / omitted layers are dropped). Submodel entities get their
-// "model" key set in `map`.
+// "model" key set in `map`. `attrs` (optional) receives the light attribute table
+// (face_attrs.h): entry 0 the default, then one entry per brush entity other than worldspawn
+// that has a light key ("_minlight", "_minlight_color" or "_mincolor", "_shadow", "_selfshadow",
+// "_shadowself", "_lightignore", "_phong", "_phong_angle"); Brush::attr indexes it.
 void build_models(MapFile& map, TextureSet& textures, PlaneSet& planes, std::vector<ModelSource>* models,
-                  std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings);
+                  std::vector<bool>* keep_entity, BrushStats* stats, std::vector<std::string>* warnings,
+                  std::vector<FaceAttr>* attrs = nullptr);
+
+// The light attribute of entity `index` of `e` (face_attrs.h); false when it has no light key.
+bool entity_light_attr(const MapEntity& e, uint32_t index, FaceAttr* out);
 
 // Recomputes every side's winding from the planes; drops sides with no polygon.
 // False when fewer than 4 sides remain (no volume).

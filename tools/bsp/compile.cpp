@@ -178,7 +178,8 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
   std::vector<ModelSource> models;
   std::vector<bool> keep;
   BrushStats bstats;
-  build_models(map, textures, planes, &models, &keep, &bstats, &rep->warnings);
+  std::vector<FaceAttr> attr_table;
+  build_models(map, textures, planes, &models, &keep, &bstats, &rep->warnings, &attr_table);
   rep->brushes = bstats.map_brushes;
   rep->skipped_brushes = bstats.skipped;
   rep->models = int(models.size());
@@ -407,6 +408,12 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
     bsp.models.push_back(dm);
   }
   rep->csg_faces = total_csg;
+  // Light attributes per output face; kept only when some face has one.
+  rep->face_attrs.clear();
+  if (attr_table.size() > 1) {
+    rep->face_attrs.reserve(emitter.face_attrs().size());
+    for (int a : emitter.face_attrs()) rep->face_attrs.push_back(attr_table[size_t(a)]);
+  }
   rep->tjunc_vertices = emitter.stats().tjunc_vertices;
   rep->tjunc_face_splits = emitter.stats().tjunc_face_splits;
   rep->split_percent = rep->bsp_faces_in ? 100.0 * (rep->bsp_faces_after - rep->bsp_faces_in) / rep->bsp_faces_in : 0;
@@ -448,6 +455,13 @@ Status compile_map(const BspOptions& opt, CompileReport* rep, LogFn log, void* l
       std::remove(prt_path.c_str());  // a stale .prt would describe another tree
     }
     if (!rep->leaked) std::remove(replace_ext(out, ".pts").c_str());
+    std::string attr_path = face_attr_path(out);
+    if (!rep->face_attrs.empty()) {
+      SB_TRY(write_face_attrs(attr_path.c_str(), bsp, rep->face_attrs));
+      rep->face_attr_path = attr_path;
+    } else {
+      std::remove(attr_path.c_str());  // a stale side file would describe other faces
+    }
   } else {
     std::vector<uint8_t> bytes;
     SB_TRY(serialize_bsp(bsp, opt.format, &bytes, &rep->format_written));

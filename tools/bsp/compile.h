@@ -6,6 +6,7 @@
 //           [hulls 1, 2: expand (bevel planes found once per brush, reused for hull 2) ->
 //           csg -> bsp -> portals -> contents -> fill from outside (world) -> prune -> emit]
 //           -> textures lump -> entities -> write (BSP29 / BSP2 / 2PSB: BspOptions::format)
+//           + the light attribute side file (.faceattr, face_attrs.h) when an entity has light keys
 // Flood sources: point entities with an origin; when all of them are lights (an item prefab
 // lit for preview) there is nothing to flood from: no outside fill, no leak, outside_kept.
 // Output is deterministic for the same input, whatever the thread count (threads only build
@@ -19,6 +20,7 @@
 
 #include "engine/core/error.h"
 #include "tools/common/bsp_data.h"
+#include "tools/common/face_attrs.h"
 
 namespace sb::tools::bsp {
 
@@ -57,6 +59,11 @@ struct CompileReport {
   bool outside_kept = false;       // no point entity to flood from (none, or lights only): no
                                    // outside fill, not a leak ("no entities to flood from; outside kept")
   std::string pts_path, prt_path;  // written files (empty when not written)
+  // Light attributes per BSP face (tools/common/face_attrs.h), from the light keys of brush
+  // entities; empty when no entity has one. Written next to the BSP as face_attr_path(bsp)
+  // (removed there when empty).
+  std::vector<FaceAttr> face_attrs;
+  std::string face_attr_path;
   std::vector<std::string> warnings;
   std::vector<StageTime> times;
   int brushes = 0, skipped_brushes = 0, models = 0;

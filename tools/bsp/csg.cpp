@@ -144,6 +144,7 @@ void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::v
           face.texinfo = pass == 0 ? s.texinfo : -1;
           face.contents = A.contents;
           face.detail = detail_like(A.contents);
+          face.attr = A.attr;
           out->push_back(std::move(face));
           stats->hidden += pass;
         }
@@ -224,10 +225,10 @@ bool try_merge(const Winding& w1, const Winding& w2, const Vec3& normal, Winding
 }  // namespace
 
 int merge_faces(std::vector<Face>* faces, const PlaneSet& planes) {
-  std::map<std::tuple<int, int, int, bool>, std::vector<size_t>> groups;
+  std::map<std::tuple<int, int, int, bool, int>, std::vector<size_t>> groups;
   for (size_t i = 0; i < faces->size(); ++i) {
     const Face& f = (*faces)[i];
-    groups[{f.plane, f.texinfo, f.contents, f.detail}].push_back(i);
+    groups[{f.plane, f.texinfo, f.contents, f.detail, f.attr}].push_back(i);
   }
   std::vector<char> dead(faces->size(), 0);
   // Two faces can share an edge only where their boxes touch: checked before try_merge.

@@ -26,6 +26,7 @@ struct Face {
   int contents = 0;   // contents of the brush behind the face
   bool detail = false;
   bool hint = false;  // a hint brush's side: chosen as a splitter first, never drawn
+  int attr = 0;       // the brush's light attribute (Brush::attr); faces merge only within one
   Bounds bounds;
   void update_bounds() {
     bounds = Bounds();
@@ -42,7 +43,7 @@ struct CsgStats {
 void csg_faces(const std::vector<Brush>& brushes, const PlaneSet& planes, std::vector<Face>* out,
                CsgStats* stats, Progress* progress = nullptr);
 
-// Merges faces of `faces` with equal plane, texinfo, contents and detail flag where they
+// Merges faces of `faces` with equal plane, texinfo, contents, detail flag and attr where they
 // share an edge and the result is convex. Returns the number of merges.
 int merge_faces(std::vector<Face>* faces, const PlaneSet& planes);
 

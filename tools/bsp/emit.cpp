@@ -108,6 +108,7 @@ void Emitter::write_face(const Face& f, const std::vector<uint32_t>& vs, std::ve
   for (size_t i = 0; i < vs.size(); ++i) bsp_->surfedges.push_back(edge(vs[i], vs[(i + 1) % vs.size()]));
   out_ids->push_back(uint32_t(bsp_->faces.size()));
   bsp_->faces.push_back(d);
+  face_attr_.push_back(f.attr);
   stats_.faces_out++;
 }
 

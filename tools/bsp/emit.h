@@ -53,6 +53,8 @@ class Emitter {
 
   int plane_index(int canonical);
   const EmitStats& stats() const { return stats_; }
+  // Per output face (in BspData::faces order): the csg Face::attr it came from.
+  const std::vector<int>& face_attrs() const { return face_attr_; }
 
  private:
   using Polys = std::vector<std::vector<uint32_t>>;  // vertex index lists of one tree face
@@ -68,6 +70,7 @@ class Emitter {
   int emit_clip_node(const Tree& tree, int n);
 
   BspData* bsp_;
+  std::vector<int> face_attr_;
   const PlaneSet& planes_;
   const TextureSet& textures_;
   double subdivide_;

@@ -75,7 +75,7 @@ void resolve_light_options(const LightOptions& o, LightSettings* s) {
 }  // namespace
 
 Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts_in, LightStats* stats,
-                 std::vector<uint8_t>* rgb) {
+                 std::vector<uint8_t>* rgb, const std::vector<FaceAttr>* attrs) {
   LightStats st;
   LightOptions opts = opts_in;
   if (opts.extra != 1 && opts.extra != 2 && opts.extra != 4) opts.extra = 1;
@@ -119,6 +119,15 @@ Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts_in, Li
   scene.world = &w;
   scene.tracer = &tracer;
   scene.opts = opts;
+  if (attrs && !attrs->empty()) {
+    if (attrs->size() != w.num_faces)
+      return make_error("%s: %zu face attributes for %u faces", name, attrs->size(), w.num_faces);
+    scene.attrs = *attrs;
+    scene.occluders.build(w, tracer, scene.attrs);
+    scene.phong.build(w, scene.attrs);
+    st.occluder_polygons = uint32_t(scene.occluders.polygons());
+    st.phong_faces = uint32_t(scene.phong.faces());
+  }
   prepare_scene(&scene, &settings);
   bool any_dirt = settings.minlight_dirt > 0 && settings.minlight > 0;
   for (const PointLight& l : settings.lights) any_dirt |= l.dirt > 0;

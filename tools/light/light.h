@@ -30,7 +30,9 @@
 // factor when dirt applies to it), bounce (radiosity, light_bounce.h: gathered light that
 // faces reflect, added to style 0 or, with bouncestyled, to the emitting style), then the
 // conversion to bytes (minimum light last, itself dirtied when "_minlight_dirt" applies).
-// Not implemented: sunlight penumbra, deviance, phong shading, BSPX / LIGHTING_E5BGR9.
+// Brush entity keys (_minlight, _minlight_color, _shadow, _selfshadow, _lightignore, _phong,
+// _phong_angle) come per face from sbbsp's side file: see light_attrs.h.
+// Not implemented: sunlight penumbra, deviance, BSPX / LIGHTING_E5BGR9.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -38,6 +40,7 @@
 
 #include "engine/core/error.h"
 #include "tools/common/bsp_data.h"
+#include "tools/common/face_attrs.h"
 
 namespace sb::tools {
 
@@ -84,12 +87,16 @@ struct LightStats {
   uint64_t bounce_misses = 0;  // bounce rays that hit a surface no face could be found for
   bool palette_missing = false;  // bounce ran with grey reflectivity (no palette)
   double mean_sample = 0;      // mean style-0 sample value over lit faces
+  uint32_t occluder_polygons = 0;  // faces of brush entities that cast shadows (light_attrs.h)
+  uint32_t phong_faces = 0;        // faces lit with phong normals
 };
 
 // Relights `bsp` in place. `name` names the file in messages. When opts.want_rgb, *rgb gets
 // 3 bytes per lighting-lump byte (the .lit payload, without header); otherwise it is cleared.
+// `attrs` (optional, one per face: sbbsp's .faceattr side file, tools/common/face_attrs.h)
+// carries the brush entities' light keys (light_attrs.h); null or empty: none.
 Status light_bsp(const char* name, BspData* bsp, const LightOptions& opts, LightStats* stats,
-                 std::vector<uint8_t>* rgb);
+                 std::vector<uint8_t>* rgb, const std::vector<FaceAttr>* attrs = nullptr);
 
 // Writes a .lit file: "QLIT", int32 version 1 (little endian), then `rgb`.
 Status write_lit(const char* path, const std::vector<uint8_t>& rgb);

@@ -313,6 +313,12 @@ void face_setup(const LightScene& sc, uint32_t face_index, FaceWork* work) {
   const Face& f = w.faces[face_index];
   if (w.texinfo[f.texinfo].flags & kTexSpecial) return;
   work->lit = true;
+  if (!sc.attrs.empty()) {
+    const FaceAttr& a = sc.attrs[face_index];
+    work->minlight = a.minlight;
+    work->minlight_color = glm::vec3(a.minlight_color[0], a.minlight_color[1], a.minlight_color[2]) / 255.0f;
+    work->light_ignore = (a.flags & kFaceAttrLightIgnore) != 0;
+  }
   FaceGeometry g;
   build_geometry(w, f, &g);
   work->degenerate = g.degenerate;
@@ -368,8 +374,22 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
   }
 
   style_buffer(work->light, 0, grid);
+  if (work->light_ignore) return;
   Accumulator acc{work, grid, sc.bounces > 0, set.bouncestyled};
   const float face_plane = glm::dot(g.normal, g.centroid);
+  const uint32_t receiver = sc.attrs.empty() ? 0 : sc.attrs[face_index].entity;
+  const bool occluders = !sc.occluders.empty();
+  std::vector<uint32_t> near_groups;
+  // Phong: a lighting normal per sample point (and per grid point for the sky dome).
+  std::vector<glm::vec3> normals, centre_normals;
+  const bool phong = sc.phong.has(face_index) && !g.degenerate;
+  if (phong) {
+    normals.resize(pts.size());
+    for (size_t k = 0; k < pts.size(); ++k) normals[k] = sc.phong.normal_at(face_index, g.verts, g.normal, pts[k]);
+    centre_normals.resize(centres.size());
+    for (size_t k = 0; k < centres.size(); ++k)
+      centre_normals[k] = sc.phong.normal_at(face_index, g.verts, g.normal, centres[k]);
+  }
 
   for (size_t li = 0; li < set.lights.size(); ++li) {
     const PointLight& l = set.lights[li];
@@ -386,6 +406,13 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
         dirt = own_dirt.data();
       }
     }
+    // Occluder groups inside the box around the sample points and the light.
+    bool occ = false;
+    if (occluders) {
+      glm::vec3 lo = glm::min(g.mins, l.origin) - glm::vec3(2.0f), hi = glm::max(g.maxs, l.origin) + glm::vec3(2.0f);
+      sc.occluders.candidates(lo, hi, receiver, &near_groups);
+      occ = !near_groups.empty();
+    }
     StyleBuffer *buf = nullptr, *emit = nullptr;
     for (size_t k = 0; k < pts.size(); ++k) {
       const glm::vec3& p = pts[k];
@@ -393,7 +420,7 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
       float dist = glm::length(d);
       if (dist < 1e-3f) dist = 1e-3f;
       glm::vec3 dir = d / dist;
-      float cos_n = glm::dot(dir, g.normal);
+      float cos_n = glm::dot(dir, phong ? normals[k] : g.normal);
       if (cos_n <= 0) continue;
       float value = falloff_value(l, dist);
       if (value == 0) continue;
@@ -405,6 +432,7 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
       if (l.falloff != Falloff::LocalMin) value *= (1.0f - l.anglescale) + l.anglescale * cos_n;
       ++work->traces;
       if (!sc.tracer->clear(p, l.origin)) continue;
+      if (occ && sc.occluders.blocks_among(p, l.origin, near_groups)) continue;
       size_t cell = k / per;
       if (l.falloff == Falloff::LocalMin) {
         if (work->local_min.empty()) work->local_min.assign(grid, 0.0f);
@@ -428,15 +456,24 @@ void light_face_direct(const LightScene& sc, uint32_t face_index, FaceWork* work
       cos_n = std::max(cos_n, 0.0f);
       float value = s.intensity * ((1.0f - s.anglescale) + s.anglescale * cos_n);
       const std::vector<glm::vec3>& P = s.dome ? centres : pts;
+      const std::vector<glm::vec3>& PN = s.dome ? centre_normals : normals;
       size_t pp = s.dome ? 1 : per;
       float wgt = s.dome ? 1.0f : weight;
       const float* dirt = has_dirt && s.dirt > 0 ? global_dirt.data() : nullptr;
       StyleBuffer *buf = nullptr, *emit = nullptr;
       for (size_t k = 0; k < P.size(); ++k) {
+        float pv = value;
+        if (phong) {  // the angle factor with the sample's normal (none when it faces away)
+          float c = -glm::dot(s.dir, PN[k]);
+          if (c < -kGrazeEpsilon) continue;
+          pv = s.intensity * ((1.0f - s.anglescale) + s.anglescale * std::max(c, 0.0f));
+        }
         ++work->traces;
-        if (sc.tracer->first_blocker(P[k], P[k] - s.dir * span) != kContentsSky) continue;
+        glm::vec3 far = P[k] - s.dir * span;
+        if (sc.tracer->first_blocker(P[k], far) != kContentsSky) continue;
+        if (occluders && sc.occluders.blocks(P[k], far, receiver)) continue;
         size_t cell = k / pp;
-        float v = value * wgt;
+        float v = pv * wgt;
         if (dirt) v *= dirt[cell];
         acc.add(s.style, &buf, &emit, cell, v, s.color, 1.0f);
       }
@@ -488,14 +525,18 @@ void finish_face(const LightScene& sc, const FaceWork& work, FaceLightmap* out) 
       // The monochrome lightmap holds the brightest channel (as the Quake light tools write it, so
       // that engines which normalise a .lit against the .bsp lightmap see equal intensity).
       float m = std::max({r, gg, bb});
+      if (work.light_ignore) r = gg = bb = m = 0;
       if (b.style == 0) {
-        float floor = set.minlight;
+        // The entity's minimum light (coloured) when it gives one, else worldspawn's (white).
+        const bool own = work.minlight >= 0;
+        float floor = own ? work.minlight : set.minlight;
         if (dirty_min) floor *= dirt_factor(work.occlusion[k], set.dirtscale, set.dirtgain);
-        if (!work.local_min.empty()) floor = std::max(floor, work.local_min[k]);
-        m = std::max(m, floor);
-        r = std::max(r, floor);
-        gg = std::max(gg, floor);
-        bb = std::max(bb, floor);
+        glm::vec3 fc = own ? floor * work.minlight_color : glm::vec3(floor);
+        if (!work.local_min.empty()) fc = glm::max(fc, glm::vec3(work.local_min[k]));
+        m = std::max(m, std::max({fc.r, fc.g, fc.b}));
+        r = std::max(r, fc.r);
+        gg = std::max(gg, fc.g);
+        bb = std::max(bb, fc.b);
       }
       c.mono[k] = to_byte(m);
       c.sum += c.mono[k];

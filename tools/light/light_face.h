@@ -16,6 +16,7 @@
 
 #include "engine/formats/bsp.h"
 #include "tools/light/light.h"
+#include "tools/light/light_attrs.h"
 #include "tools/light/light_entities.h"
 #include "tools/light/light_trace.h"
 
@@ -54,6 +55,10 @@ struct LightScene {
   std::vector<HitFace> hit_faces;
   std::vector<uint32_t> hit_plane;  // per face: plane index when usable, else UINT32_MAX
                                     // (compact, for the hit search)
+  // Brush entity attributes (light_attrs.h): one per face, or empty (no side file).
+  std::vector<FaceAttr> attrs;
+  Occluders occluders;
+  PhongNormals phong;
 
   bool light_may_see(size_t light, uint32_t face) const {
     return (light_faces[light * face_words + face / 64] >> (face % 64)) & 1;
@@ -84,6 +89,9 @@ struct FaceWork {
                                   // (already times its reflectivity and bouncescale)
   std::vector<StyleBuffer> gathered;  // bounce pass result (read by nobody during the pass)
   std::vector<float> local_min;   // delay 4 floors (output units), style 0; may be empty
+  float minlight = -1;            // the face's entity "_minlight" (< 0: the worldspawn value)
+  glm::vec3 minlight_color{1.0f}; // its "_minlight_color" / 255
+  bool light_ignore = false;      // "_lightignore": minimum light only
   uint64_t traces = 0;            // direct-light rays
   uint64_t dirt_rays = 0, bounce_rays = 0, bounce_misses = 0;
 };

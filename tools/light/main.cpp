@@ -18,7 +18,9 @@
 //   Without -palette / -basedir the palette is looked for at <bsp dir>/../gfx/palette.lmp
 //   and <bsp dir>/gfx/palette.lmp; with none, bounce uses grey reflectivity (a warning).
 //   Options override the worldspawn keys of the same name (light_entities.h).
-// The BSP is relit in place and written back in the format it was read in.
+// The BSP is relit in place and written back in the format it was read in. When sbbsp left
+// file.faceattr beside it (brush entity light keys, tools/common/face_attrs.h), it is read
+// and checked against the BSP (a corrupt or mismatched one is an error).
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -28,6 +30,7 @@
 #include "engine/core/log.h"
 #include "engine/formats/lmp.h"
 #include "tools/common/bsp_data.h"
+#include "tools/common/face_attrs.h"
 #include "tools/light/light.h"
 
 namespace {
@@ -211,9 +214,19 @@ int main(int argc, char** argv) {
   if (!opts.quiet)
     std::printf("sblight: %s (%s): %zu faces, extra %dx%d\n", path, format_name(bsp.format), bsp.faces.size(),
                 opts.extra, opts.extra);
+  // Brush entity light keys from sbbsp's side file (absent: none).
+  std::vector<sb::tools::FaceAttr> attrs;
+  bool attrs_found = false;
+  const std::string attr_path = sb::tools::face_attr_path(path);
+  st = sb::tools::read_face_attrs(attr_path.c_str(), bsp, &attrs, &attrs_found);
+  if (!st) {
+    std::fprintf(stderr, "sblight: %s\n", st.message());
+    return 1;
+  }
+  if (attrs_found && !opts.quiet) std::printf("sblight: face attributes from %s\n", attr_path.c_str());
   sb::tools::LightStats stats;
   std::vector<uint8_t> rgb;
-  st = sb::tools::light_bsp(path, &bsp, opts, &stats, want_lit ? &rgb : nullptr);
+  st = sb::tools::light_bsp(path, &bsp, opts, &stats, want_lit ? &rgb : nullptr, &attrs);
   if (!st) {
     std::fprintf(stderr, "sblight: %s\n", st.message());
     return 1;
@@ -247,6 +260,9 @@ int main(int argc, char** argv) {
               stats.dirt_seconds, (unsigned long long)stats.dirt_rays, stats.direct_seconds, stats.bounce_seconds,
               stats.bounces, stats.bounces == 1 ? "" : "es", (unsigned long long)stats.bounce_rays,
               (unsigned long long)stats.bounce_misses, stats.bounces && stats.palette_missing ? ", grey: no palette" : "");
+  if (attrs_found)
+    std::printf("sblight: face attributes: %u occluder polygons, %u phong faces\n", stats.occluder_polygons,
+                stats.phong_faces);
   if (stats.styles_dropped) std::printf("sblight: %u faces dropped light styles (more than 4)\n", stats.styles_dropped);
   return 0;
 }
