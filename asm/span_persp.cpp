@@ -514,7 +514,7 @@ namespace {
 // accumulator copy (x = constant), merged into the later instruction that overwrites it.
 template <class T>
 SB_INLINE void pin(T& x) {
-  if constexpr (sizeof(T) == 8 && std::is_integral_v<T>) {
+  if constexpr (std::is_integral_v<T>) {
     __asm__ volatile("" : "+r"(x));
   } else {
     __asm__ volatile("" : "+w"(x));
@@ -769,7 +769,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       // the bytes loaded in the last slot, the gathered byte pairs.
       uint64_t c0, c1, c2, c3, e, pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
       lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
-      const uint64_t w = uint64_t(width);
+      const uint64_t w64 = uint64_t(width);
       do {
         int32x2_t n4, n5;
         uint64_t x1p = 0, x2p = 0, x3p = 0;
@@ -787,14 +787,13 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
             off = vminnmq_f64(ll, k32);
             pin(n2), pin(n3), pin(off);
           } else if constexpr (G == 2) {
-            x1p = lanes(n1), x2p = lanes(n2), x3p = lanes(n3);
+            x1p = lanes(n1), x2p = lanes(n2);
             pos45 = vaddq_f64(pp, off);
             zi45 = kZrow;
-            pin(x1p), pin(x2p), pin(x3p), pin(pos45), pin(zi45);
+            pin(x1p), pin(x2p), pin(pos45), pin(zi45);
           } else if constexpr (G == 3) {
             b_uv = x1p, b_d = steps16_packed(x1p, x2p);
-            a_uv = x2p, a_d = steps16_packed(x2p, x3p);
-            pin(b_d), pin(a_d);
+            pin(b_d);
           } else if constexpr (G == 4) {
             zi45 = vfmaq_f64(zi45, kZix, pos45);
             ts4 = kUVrow, ts5 = kUVrow;
@@ -813,7 +812,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
           } else if constexpr (G == 12) {
             pp = vaddq_f64(pp, k16);
             q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
-            pin(pp), pin(q4), pin(q5);
+            x2p = lanes(n2), x3p = lanes(n3);
+            pin(pp), pin(q4), pin(q5), pin(x2p), pin(x3p);
+          } else if constexpr (G == 13) {
+            a_uv = x2p, a_d = steps16_packed(x2p, x3p);
+            pin(a_d);
           } else if constexpr (G == 14) {
             i4 = vcvtq_n_s64_f64(q4, 16), i5 = vcvtq_n_s64_f64(q5, 16);
             pin(i4), pin(i5);
@@ -826,7 +829,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
           }
         };
         auto slot = [&](auto j) SB_LAMBDA_INLINE {
-          lin_slot<decltype(j)::value>(c0, c1, c2, c3, e, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1, dest, texels, w,
+          lin_slot<decltype(j)::value>(c0, c1, c2, c3, e, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1, dest, texels, w64,
                                        b_uv, b_d, a_uv, a_d, stage);
         };
         using std::integral_constant;
