@@ -173,16 +173,18 @@ inline int32_t cvt_sat(double x) {
 // |dd| <= |delta| / 120 < 2^25 and |d0| < 2^28, so the range checks on ddf (|ddf| < 1e9)
 // and d0 (int32) never decide anything that this test does not: a saturated or NaN
 // conversion of ddf is rejected here, or gives dd = 0, which yields the linear step too.
-inline RunSteps steps16_dd(int32_t delta, int64_t dd);
+inline RunSteps steps16_dd(int32_t delta, int32_t dd);
 inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
   const int32_t delta = b - a;
   const double c = double(delta) / 16 * curve;
   const double ddf = -2.0 * c;
   return steps16_dd(delta, cvt_sat(ddf));
 }
-// steps16_sel's integer part, from delta and dd = cvt_sat(ddf).
-inline RunSteps steps16_dd(int32_t delta, int64_t dd) {
+// steps16_sel's integer part, from delta and dd = cvt_sat(ddf) (an int32).
+#if UINTPTR_MAX > 0xffffffffu
+inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
   // Masks, not conditions: the compiler turns those into branches on the signs.
+  const int64_t dd = dd32;
   const int64_t s = int64_t(delta >> 31);  // -1 when delta < 0
   const int64_t pd = (int64_t(delta) ^ s) - s, pdd = (dd ^ s) - s;
   const int64_t num = pd - pdd * 120;
@@ -194,6 +196,24 @@ inline RunSteps steps16_dd(int32_t delta, int64_t dd) {
   const int64_t pick = q ^ ((q ^ (pd >> 4)) & reject);  // d0' or the linear step, mirrored
   return {int32_t((pick ^ s) - s), int32_t(dd & ~reject)};
 }
+#else
+// 32-bit targets: the same in 32-bit arithmetic. With pd = |delta| < 2^31 and pdd = dd
+// mirrored (|pdd| = |dd| <= 2^31), the test above (num >= 0 and last_step = floor(num / 16)
+// + 15 pdd >= 0) is 120 |dd| <= pd: for pdd >= 0, num >= 0 is pd >= 120 pdd and then
+// last_step >= 0; for pdd < 0, num > 0 and floor(num / 16) >= 15 |pdd| (an integer) iff
+// num >= 240 |pdd| iff pd >= 120 |pdd|. Then num = pd - 120 pdd lies in [0, 2 pd] < 2^32:
+// its uint32 value (arithmetic mod 2^32) is exact and d0' = num >> 4. Rejected: the linear
+// step (pd >> 4, mirrored) and dd = 0.
+inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
+  const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
+  const uint32_t pd = (uint32_t(delta) ^ s) - s, pdd = (uint32_t(dd) ^ s) - s;
+  const uint32_t sd = uint32_t(dd >> 31), add = (uint32_t(dd) ^ sd) - sd;  // |dd|
+  const uint32_t accept = -uint32_t(uint64_t(add) * 120 <= pd);  // all ones: second order
+  const uint32_t q = (pd - pdd * 120) >> 4, lin = pd >> 4;
+  const uint32_t pick = lin ^ ((q ^ lin) & accept);  // d0' or the linear step, mirrored
+  return {int32_t((pick ^ s) - s), int32_t(uint32_t(dd) & accept)};
+}
+#endif
 
 // One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
 // linear), even and odd pixels in two independent chains (u_{k+2} = u_k + e_k,
@@ -1003,7 +1023,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     double sum1, sum2, c1 = 0.0, c2 = 0.0, zi4, zi5, tu4, tv4, tu5, tv5;
     double qu2, qv2, qu3, qv3, fu1 = 0.0, fv1 = 0.0, fu2 = 0.0, fv2 = 0.0;
     int32_t s2u = 0, s2v = 0, s3u = 0, s3v = 0;
-    int64_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
+    int32_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
     RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
     auto stage_a = [&](auto g) {
