@@ -20,7 +20,6 @@
 
 #include "asm/surface_span.h"
 
-
 namespace sb::simd {
 namespace {
 
@@ -522,12 +521,12 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 
 namespace {
 #if defined(__aarch64__) && defined(__GNUC__)
-// aarch64 (the "Lin32" passes of persp_fast): the two runs of a loop pass (32 pixels) as one software
+// aarch64, persp_fast's long spans: the two runs of a loop pass (32 pixels) as one software
 // pipeline of eight groups of four pixels, written in asm so that each slot keeps its order:
 // the shifts and steps of group j (latency 2), the caller's stage (double / vector work,
 // latency 6), then the multiply-adds of group j beside the loads of group j - 1 (latency 4)
-// and the gather and store of groups j - 2, j - 3. An in-order core (Cortex-A53) then
-// rarely waits. u, v packed as in draw_run (uv = v 2^32 + u).
+// and the gather and store of groups j - 2, j - 3: in-order issue (llvm-mca's Cortex-A53
+// model also completes in order) seldom waits. u, v packed as in draw_run (v 2^32 + u).
 //   linear: pixel 4 g + i of a run on chain i, stepped by e = 4 duv: chain i holds
 //           uv_0 + (4 g + i) duv (mod 2^64), draw_run's value.
 //   second order: two chains (fewer registers), c0 = uv_k, c1 = uv_{k+1}, stepped two pixels
