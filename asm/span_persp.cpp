@@ -157,6 +157,10 @@ inline int32_t cvt_sat(double x) {
   return r;
 #elif defined(__SSE2__)
   return _mm_cvttsd_si32(_mm_set_sd(x));
+#elif defined(__GNUC__) && defined(__arm__) && defined(__ARM_FP) && (__ARM_FP & 8)
+  float r;  // vcvt: truncating, saturating, NaN -> 0
+  __asm__("vcvt.s32.f64 %0, %P1" : "=t"(r) : "w"(x));
+  return __builtin_bit_cast(int32_t, r);
 #else
   return x > -2147483648.0 && x < 2147483647.0 ? int32_t(x) : INT32_MIN;
 #endif
