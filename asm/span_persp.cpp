@@ -157,6 +157,10 @@ inline int32_t cvt_sat(double x) {
   return r;
 #elif defined(__SSE2__)
   return _mm_cvttsd_si32(_mm_set_sd(x));
+#elif defined(__GNUC__) && defined(__arm__) && defined(__ARM_FP) && (__ARM_FP & 8)
+  float r;  // vcvt: truncating, saturating, NaN -> 0
+  __asm__("vcvt.s32.f64 %0, %P1" : "=t"(r) : "w"(x));
+  return __builtin_bit_cast(int32_t, r);
 #else
   return x > -2147483648.0 && x < 2147483647.0 ? int32_t(x) : INT32_MIN;
 #endif
@@ -172,16 +176,18 @@ inline int32_t cvt_sat(double x) {
 // |dd| <= |delta| / 120 < 2^25 and |d0| < 2^28, so the range checks on ddf (|ddf| < 1e9)
 // and d0 (int32) never decide anything that this test does not: a saturated or NaN
 // conversion of ddf is rejected here, or gives dd = 0, which yields the linear step too.
-inline RunSteps steps16_dd(int32_t delta, int64_t dd);
+inline RunSteps steps16_dd(int32_t delta, int32_t dd);
 inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
   const int32_t delta = b - a;
   const double c = double(delta) / 16 * curve;
   const double ddf = -2.0 * c;
   return steps16_dd(delta, cvt_sat(ddf));
 }
-// steps16_sel's integer part, from delta and dd = cvt_sat(ddf).
-inline RunSteps steps16_dd(int32_t delta, int64_t dd) {
+// steps16_sel's integer part, from delta and dd = cvt_sat(ddf) (an int32).
+#if UINTPTR_MAX > 0xffffffffu
+inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
   // Masks, not conditions: the compiler turns those into branches on the signs.
+  const int64_t dd = dd32;
   const int64_t s = int64_t(delta >> 31);  // -1 when delta < 0
   const int64_t pd = (int64_t(delta) ^ s) - s, pdd = (dd ^ s) - s;
   const int64_t num = pd - pdd * 120;
@@ -193,6 +199,24 @@ inline RunSteps steps16_dd(int32_t delta, int64_t dd) {
   const int64_t pick = q ^ ((q ^ (pd >> 4)) & reject);  // d0' or the linear step, mirrored
   return {int32_t((pick ^ s) - s), int32_t(dd & ~reject)};
 }
+#else
+// 32-bit targets: the same in 32-bit arithmetic. With pd = |delta| < 2^31 and pdd = dd
+// mirrored (|pdd| = |dd| <= 2^31), the test above (num >= 0 and last_step = floor(num / 16)
+// + 15 pdd >= 0) is 120 |dd| <= pd: for pdd >= 0, num >= 0 is pd >= 120 pdd and then
+// last_step >= 0; for pdd < 0, num > 0 and floor(num / 16) >= 15 |pdd| (an integer) iff
+// num >= 240 |pdd| iff pd >= 120 |pdd|. Then num = pd - 120 pdd lies in [0, 2 pd] < 2^32:
+// its uint32 value (arithmetic mod 2^32) is exact and d0' = num >> 4. Rejected: the linear
+// step (pd >> 4, mirrored) and dd = 0.
+inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
+  const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
+  const uint32_t pd = (uint32_t(delta) ^ s) - s, pdd = (uint32_t(dd) ^ s) - s;
+  const uint32_t sd = uint32_t(dd >> 31), add = (uint32_t(dd) ^ sd) - sd;  // |dd|
+  const uint32_t accept = -uint32_t(uint64_t(add) * 120 <= pd);  // all ones: second order
+  const uint32_t q = (pd - pdd * 120) >> 4, lin = pd >> 4;
+  const uint32_t pick = lin ^ ((q ^ lin) & accept);  // d0' or the linear step, mirrored
+  return {int32_t((pick ^ s) - s), int32_t(uint32_t(dd) & accept)};
+}
+#endif
 
 // One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
 // linear), even and odd pixels in two independent chains (u_{k+2} = u_k + e_k,
@@ -221,6 +245,7 @@ inline RunSteps steps16(int32_t a, int32_t b, double curve) {
 }
 
 #define SB_INLINE inline __attribute__((always_inline))
+#define SB_LAMBDA_INLINE __attribute__((always_inline))
 
 // Ends a group of the software-pipelined run below. ARM (in-order cores): an empty volatile
 // asm, which the compiler's scheduler does not move instructions across, so each group's
@@ -499,6 +524,206 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 }
 
 namespace {
+#if defined(__aarch64__) && defined(__GNUC__)
+// aarch64, persp_fast's long spans: the two runs of a loop pass (32 pixels) as one software
+// pipeline of eight groups of four pixels, written in asm so that each slot keeps its order:
+// the shifts and steps of group j (latency 2), the caller's stage (double / vector work,
+// latency 6), then the multiply-adds of group j beside the loads of group j - 1 (latency 4)
+// and the gather and store of groups j - 2, j - 3: in-order issue (llvm-mca's Cortex-A53
+// model also completes in order) seldom waits. u, v packed as in draw_run (v 2^32 + u).
+//   linear: pixel 4 g + i of a run on chain i, stepped by e = 4 duv: chain i holds
+//           uv_0 + (4 g + i) duv (mod 2^64), draw_run's value.
+//   second order: two chains (fewer registers), c0 = uv_k, c1 = uv_{k+1}, stepped two pixels
+//           at a time by e0, e1 (uv_{k+2} - uv_k), each e by dd4 = 4 dduv, as Run16 does.
+// Keeps a value computed where it is written: an empty asm the compiler cannot move
+// (volatile) that takes the value, so its computation is neither sunk below it nor, for an
+// accumulator copy (x = constant), merged into the later instruction that overwrites it.
+template <class T>
+SB_INLINE void pin(T& x) {
+  if constexpr (std::is_integral_v<T>) {
+    __asm__ volatile("" : "+r"(x));
+  } else {
+    __asm__ volatile("" : "+w"(x));
+  }
+}
+// The linear steps of a full run from packed samples a, b (v 2^32 + u, 0 <= u, v < 2^31):
+// (b - a) / 16 for u and v (truncating), packed as dv 2^32 + du (du sign-extended).
+// x / 16 truncated = (x + (x < 0 ? 15 : 0)) >> 4 (arithmetic shift: a floor).
+SB_INLINE uint64_t steps16_packed(uint64_t a, uint64_t b) {
+  uint64_t du, dv, t, u;
+  __asm__(
+      "sub %w[du], %w[b], %w[a]\n\t"
+      "lsr %[t], %[a], #32\n\t"
+      "lsr %[dv], %[b], #32\n\t"
+      "asr %w[u], %w[du], #31\n\t"
+      "sub %w[dv], %w[dv], %w[t]\n\t"
+      "add %w[du], %w[du], %w[u], lsr #28\n\t"
+      "asr %w[t], %w[dv], #31\n\t"
+      "sbfx %[du], %[du], #4, #28\n\t"
+      "add %w[dv], %w[dv], %w[t], lsr #28\n\t"
+      "asr %w[dv], %w[dv], #4\n\t"
+      "add %[du], %[du], %[dv], lsl #32"
+      : [du] "=&r"(du), [dv] "=&r"(dv), [t] "=&r"(t), [u] "=&r"(u)
+      : [a] "r"(a), [b] "r"(b));
+  return du;
+}
+// The chain setup, linear: run start uv0 (v 2^32 + u), packed step duv.
+SB_INLINE void lin_start(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, uint64_t& e, uint64_t uv0,
+                         uint64_t duv) {
+  const uint64_t dd = duv + duv;
+  c0 = uv0;
+  c1 = uv0 + duv;
+  c2 = uv0 + dd;
+  c3 = c1 + dd;
+  e = dd + dd;
+}
+// The same with second-order steps dduv (uv_k = uv_0 + k duv + k (k - 1) / 2 dduv): c0 =
+// uv_0, c1 = uv_1, e0 = uv_2 - uv_0 = 2 duv + dduv, e1 = uv_3 - uv_1 = 2 duv + 3 dduv.
+SB_INLINE void lin_start2(uint64_t& c0, uint64_t& c1, uint64_t& e0, uint64_t& e1, uint64_t& dd4, uint64_t uv0,
+                          uint64_t duv, uint64_t dduv) {
+  c0 = uv0;
+  c1 = uv0 + duv;
+  e0 = 2 * duv + dduv;
+  e1 = e0 + 2 * dduv;
+  dd4 = 4 * dduv;
+}
+// Slot J (0 .. 9) of a pass: the shifts and steps of group J; the gather of group
+// J - 2's bytes into two pairs and of group J - 3's pairs into a word; stage(2 J); the
+// multiply-adds of group J beside the loads of group J - 1 (the multiply-adds write over
+// their shifted v, the loads over their address: fewer registers); the store of group J - 3
+// (slot 9 also gathers and stores group 7); stage(2 J + 1); then slot 3 starts the chains
+// of the second run (b_uv, b_d: start and packed step, set by the stage), slot 7 those of the
+// next pass's first (a_uv, a_d). The state as scalars (references): it stays in registers.
+template <int J, bool kCurve, class Stage>
+SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, uint64_t& e, uint64_t& e1,
+                        uint64_t& dd4, uint64_t& pa0,
+                        uint64_t& pa1, uint64_t& pa2, uint64_t& pa3, uint64_t& b0, uint64_t& b1, uint64_t& b2,
+                        uint64_t& b3, uint64_t& g0, uint64_t& g1, uint8_t* __restrict dest,
+                        const uint8_t* __restrict texels, uint64_t w, const uint64_t& b_uv, const uint64_t& b_d,
+                        const uint64_t& b_dd, const uint64_t& a_uv, const uint64_t& a_d, const uint64_t& a_dd,
+                        Stage& stage) {
+  uint64_t h0, h1, h2, h3, l0, l1, l2, l3, x = 0;
+  if constexpr (J < 8 && kCurve) {
+    // Second order, two chains (fewer registers): c0 = uv_k, c1 = uv_{k+1} (k = 4 g), each
+    // stepped two pixels by e0, e1 (uv_{k+2} - uv_k), each e by dd = 4 dduv.
+    uint64_t t0, t1;
+    __asm__ volatile(
+        "lsr %[h0], %[c0], #48\n\t"
+        "lsr %w[l0], %w[c0], #16\n\t"
+        "add %[t0], %[c0], %[e0]\n\t"
+        "add %[t1], %[c1], %[e1]\n\t"
+        "lsr %[h1], %[c1], #48\n\t"
+        "lsr %w[l1], %w[c1], #16\n\t"
+        "add %[e0], %[e0], %[dd]\n\t"
+        "add %[e1], %[e1], %[dd]\n\t"
+        "lsr %[h2], %[t0], #48\n\t"
+        "lsr %w[l2], %w[t0], #16\n\t"
+        "lsr %[h3], %[t1], #48\n\t"
+        "lsr %w[l3], %w[t1], #16\n\t"
+        "add %[c0], %[t0], %[e0]\n\t"
+        "add %[c1], %[t1], %[e1]\n\t"
+        "add %[e0], %[e0], %[dd]\n\t"
+        "add %[e1], %[e1], %[dd]"
+        : [h0] "=&r"(h0), [h1] "=&r"(h1), [h2] "=&r"(h2), [h3] "=&r"(h3), [l0] "=&r"(l0), [l1] "=&r"(l1),
+          [l2] "=&r"(l2), [l3] "=&r"(l3), [t0] "=&r"(t0), [t1] "=&r"(t1), [c0] "+r"(c0), [c1] "+r"(c1),
+          [e0] "+r"(e), [e1] "+r"(e1)
+        : [dd] "r"(dd4));
+  } else if constexpr (J < 8) {
+    __asm__ volatile(
+        "lsr %[h0], %[c0], #48\n\t"
+        "lsr %w[l0], %w[c0], #16\n\t"
+        "lsr %[h1], %[c1], #48\n\t"
+        "lsr %w[l1], %w[c1], #16\n\t"
+        "lsr %[h2], %[c2], #48\n\t"
+        "lsr %w[l2], %w[c2], #16\n\t"
+        "lsr %[h3], %[c3], #48\n\t"
+        "lsr %w[l3], %w[c3], #16\n\t"
+        "add %[c0], %[c0], %[e]\n\t"
+        "add %[c1], %[c1], %[e]\n\t"
+        "add %[c2], %[c2], %[e]\n\t"
+        "add %[c3], %[c3], %[e]"
+        : [h0] "=&r"(h0), [h1] "=&r"(h1), [h2] "=&r"(h2), [h3] "=&r"(h3), [l0] "=&r"(l0), [l1] "=&r"(l1),
+          [l2] "=&r"(l2), [l3] "=&r"(l3), [c0] "+r"(c0), [c1] "+r"(c1), [c2] "+r"(c2), [c3] "+r"(c3)
+        : [e] "r"(e));
+  }
+  if constexpr (J >= 3) {
+    uint64_t n0, n1;
+    __asm__ volatile(
+        "orr %[x], %[g0], %[g1], lsl #16\n\t"
+        "orr %[n0], %[b0], %[b1], lsl #8\n\t"
+        "orr %[n1], %[b2], %[b3], lsl #8"
+        : [x] "=&r"(x), [n0] "=&r"(n0), [n1] "=&r"(n1)
+        : [g0] "r"(g0), [g1] "r"(g1), [b0] "r"(b0), [b1] "r"(b1), [b2] "r"(b2), [b3] "r"(b3));
+    g0 = n0, g1 = n1;
+  } else if constexpr (J == 2) {
+    __asm__ volatile(
+        "orr %[g0], %[b0], %[b1], lsl #8\n\t"
+        "orr %[g1], %[b2], %[b3], lsl #8"
+        : [g0] "=&r"(g0), [g1] "=&r"(g1)
+        : [b0] "r"(b0), [b1] "r"(b1), [b2] "r"(b2), [b3] "r"(b3));
+  }
+  stage(std::integral_constant<int, 2 * J>{});
+  if constexpr (J == 0) {
+    __asm__ volatile(
+        "madd %w[h0], %w[h0], %w[w], %w[l0]\n\t"
+        "madd %w[h1], %w[h1], %w[w], %w[l1]\n\t"
+        "madd %w[h2], %w[h2], %w[w], %w[l2]\n\t"
+        "madd %w[h3], %w[h3], %w[w], %w[l3]"
+        : [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [h3] "+r"(h3)
+        : [l0] "r"(l0), [l1] "r"(l1), [l2] "r"(l2), [l3] "r"(l3), [w] "r"(w));
+  } else if constexpr (J < 8) {
+    __asm__ volatile(
+        "madd %w[h0], %w[h0], %w[w], %w[l0]\n\t"
+        "ldrb %w[p0], [%[tx], %w[p0], uxtw]\n\t"
+        "madd %w[h1], %w[h1], %w[w], %w[l1]\n\t"
+        "ldrb %w[p1], [%[tx], %w[p1], uxtw]\n\t"
+        "madd %w[h2], %w[h2], %w[w], %w[l2]\n\t"
+        "ldrb %w[p2], [%[tx], %w[p2], uxtw]\n\t"
+        "madd %w[h3], %w[h3], %w[w], %w[l3]\n\t"
+        "ldrb %w[p3], [%[tx], %w[p3], uxtw]"
+        : [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [h3] "+r"(h3), [p0] "+r"(pa0), [p1] "+r"(pa1),
+          [p2] "+r"(pa2), [p3] "+r"(pa3)
+        : [l0] "r"(l0), [l1] "r"(l1), [l2] "r"(l2), [l3] "r"(l3), [w] "r"(w), [tx] "r"(texels));
+  } else if constexpr (J == 8) {
+    __asm__ volatile(
+        "ldrb %w[p0], [%[tx], %w[p0], uxtw]\n\t"
+        "ldrb %w[p1], [%[tx], %w[p1], uxtw]\n\t"
+        "ldrb %w[p2], [%[tx], %w[p2], uxtw]\n\t"
+        "ldrb %w[p3], [%[tx], %w[p3], uxtw]"
+        : [p0] "+r"(pa0), [p1] "+r"(pa1), [p2] "+r"(pa2), [p3] "+r"(pa3)
+        : [tx] "r"(texels));
+  }
+  if constexpr (J >= 3) {
+    __asm__ volatile("str %w[x], %[m]" : [m] "=m"(*reinterpret_cast<uint32_t*>(dest + 4 * (J - 3))) : [x] "r"(x));
+  }
+  if constexpr (J == 9) {
+    __asm__ volatile(
+        "orr %[x], %[g0], %[g1], lsl #16\n\t"
+        "str %w[x], %[m]"
+        : [x] "=&r"(x), [m] "=m"(*reinterpret_cast<uint32_t*>(dest + 28))
+        : [g0] "r"(g0), [g1] "r"(g1));
+  }
+  stage(std::integral_constant<int, 2 * J + 1>{});
+  if constexpr (J == 3) {
+    if constexpr (kCurve) {
+      lin_start2(c0, c1, e, e1, dd4, b_uv, b_d, b_dd);
+    } else {
+      lin_start(c0, c1, c2, c3, e, b_uv, b_d);
+    }
+  }
+  if constexpr (J == 7) {
+    if constexpr (kCurve) {
+      lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+    } else {
+      lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+    }
+  }
+  if constexpr (J >= 1 && J <= 8) b0 = pa0, b1 = pa1, b2 = pa2, b3 = pa3;
+  if constexpr (J < 8) pa0 = h0, pa1 = h1, pa2 = h2, pa3 = h3;
+}
+#endif
+
+
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
 // row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
 template <bool kCurve>
@@ -573,6 +798,223 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   constexpr bool kEarlyB = false;
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
+#if defined(__aarch64__) && defined(__GNUC__)
+  {
+    // aarch64: the passes drawn by lin_slot (above); the samples' double arithmetic in
+    // 2-lane vectors, each lane the scalar operation above (same bits): [u, v] of
+    // one sample per vector, positions, depths and divides as [sample 4, sample 5], the
+    // fused forms those of the scalar code (urow + ux * pos, zrow + zix * pos: fmadd).
+    // to_fixed in integers: fix(q, m) = min(max(sat32(trunc(q 2^16)), 0), m), with fcvtzs
+    // #16 (trunc(q 2^16) exactly, saturating to int64, NaN -> 0: the same as converting
+    // the product q * 65536.0, a scaling by 2^16 that is exact or overflows to a saturated
+    // value either way) and sqxtn to int32. Equal to to_fixed: NaN and x = q 2^16 <= 0
+    // give trunc <= 0 -> 0; for x > m (m an integer >= 0) trunc(x) >= m, kept >= m by the
+    // saturations -> m; else 0 < x <= m and trunc(x) fits. A sample's clamped [u, v] in
+    // one 64-bit lane is v 2^32 + u: a run's packed start.
+    // Pipeline: a pass (runs r, r + 1) finishes samples r + 2, r + 3 (converted a pass
+    // earlier), takes the steps of runs r + 1, r + 2 from them, computes the positions and
+    // divides of samples r + 4, r + 5 and converts those. Second order: the steps as the
+    // loop above takes them (ddf = delta (zck (z_a + z_b))), and only for spans of two
+    // passes or more (for one the vector setup costs more than it saves).
+    if (left > (kCurve ? 80 : 48)) {
+      const float64x2_t kZrow = vdupq_n_f64(zrow), kZix = vdupq_n_f64(zix), kMin = vdupq_n_f64(kMinZi);
+      const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
+      const float64x2_t kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
+      const float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
+      const int32x2_t kMax = vcreate_s32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
+      const int32x2_t kZero = vdup_n_s32(0);
+      auto pack = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+      // [P_{r+2}, P_{r+3}] accumulated as the walker does (P_{r+3} = P_{r+2} + 16 exactly
+      // as computed, so adding 16 twice to both lanes gives the next pass's pair, bit for
+      // bit); [left - 33, left - 49] as doubles (exact integers).
+      const double P2i = (P + double(16)) + double(16);
+      float64x2_t pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
+      float64x2_t ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
+      float64x2_t z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
+      float64x2_t pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
+      // Samples r + 2, r + 3 converted, narrowed and clamped below (not yet above), as the
+      // loop leaves them.
+      int32x2_t n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
+      int32x2_t n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
+      n2 = vmax_s32(n2, kZero), n3 = vmax_s32(n3, kZero);
+      if constexpr (kCurve) n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);  // second order: clamped above too
+      // Second order: the depths [z_r, z_{r+1}] and [z_{r+1}, z_{r+2}].
+      float64x2_t zp = vcombine_f64(vdup_n_f64(s0.z), vdup_n_f64(s1.z));
+      float64x2_t zs = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
+      // Samples r, r + 1 as [u, v] vectors (the tail reads them; few integer registers).
+      int32x2_t n0 = vcreate_s32((uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u));
+      int32x2_t n1 = vcreate_s32((uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u));
+      // lin_slot's state: the chains of the run being addressed, the last group's
+      // addresses, the bytes loaded in the last slot, the gathered byte pairs.
+      uint64_t c0, c1, c2, c3, e, pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+      uint64_t e1 = 0, dd4 = 0;  // second order: chain 1's step, the steps' step
+      if constexpr (kCurve) {
+        lin_start2(c0, c1, e, e1, dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d),
+                   pack(sv.dd, su.dd));
+      } else {
+        lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+      }
+      const uint64_t w64 = uint64_t(width);
+      do {
+        int32x2_t n4, n5;
+        uint64_t x1p = 0, x2p = 0, x3p = 0;
+        uint64_t b_uv = 0, b_d = 0, a_uv = 0, a_d = 0, b_dd = 0, a_dd = 0;
+        float64x2_t off, pos45, zi45, z45, ts4, ts5, q4, q5, zsn;
+        int64x2_t i4, i5;
+        // Second order, runs r + 1, r + 2: deltas, their doubles, the products, dd.
+        float64x2_t sum, c;
+        int32_t du1 = 0, dv1 = 0, du2 = 0, dv2 = 0, iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
+        double fu1 = 0, fv1 = 0, fu2 = 0, fv2 = 0;
+        // Second order: the stage, the linear one's vector work (the conversion of samples
+        // r + 4, r + 5 done within the pass, so that the next pass starts on clamped samples)
+        // and the steps of runs r + 1, r + 2 as steps16_sel computes them (ddf = delta (zck
+        // (z_a + z_b)), see above).
+        auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
+          constexpr int G = decltype(g)::value;
+          auto lanes = [](int32x2_t x) { return vget_lane_u64(vreinterpret_u64_s32(x), 0); };
+          if constexpr (G == 0) {
+            x1p = lanes(n1), x2p = lanes(n2), x3p = lanes(n3);
+            sum = vaddq_f64(zs, z23);  // [z_{r+1} + z_{r+2}, z_{r+2} + z_{r+3}]
+            off = vminnmq_f64(ll, k32);
+            pin(x1p), pin(x2p), pin(x3p), pin(sum), pin(off);
+          } else if constexpr (G == 1) {
+            du1 = int32_t(x2p) - int32_t(x1p), dv1 = int32_t(x2p >> 32) - int32_t(x1p >> 32);
+            du2 = int32_t(x3p) - int32_t(x2p), dv2 = int32_t(x3p >> 32) - int32_t(x2p >> 32);
+            pin(du1), pin(dv1), pin(du2), pin(dv2);
+            fu2 = double(du2), fv2 = double(dv2);
+          } else if constexpr (G == 2) {
+            c = vmulq_n_f64(sum, zck);
+            fu1 = double(du1), fv1 = double(dv1);
+            pos45 = vaddq_f64(pp, off);
+            zi45 = kZrow;
+            pin(c), pin(fu1), pin(fv1), pin(fu2), pin(fv2), pin(pos45), pin(zi45);
+          } else if constexpr (G == 4) {
+            const double ca = vgetq_lane_f64(c, 0), cb = vgetq_lane_f64(c, 1);
+            fu1 = fu1 * ca, fv1 = fv1 * ca, fu2 = fu2 * cb, fv2 = fv2 * cb;
+            zi45 = vfmaq_f64(zi45, kZix, pos45);
+            ts4 = kUVrow, ts5 = kUVrow;
+            pin(fu1), pin(fv1), pin(fu2), pin(fv2), pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 6) {
+            iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
+            zi45 = vmaxnmq_f64(zi45, kMin);
+            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
+            pin(iu1), pin(iv1), pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 7) {
+            const RunSteps u1 = steps16_dd(du1, iu1), v1 = steps16_dd(dv1, iv1);
+            b_uv = x1p, b_d = pack(v1.d, u1.d), b_dd = pack(v1.dd, u1.dd);
+          } else if constexpr (G == 8) {
+            z45 = vdivq_f64(kOne, zi45);
+            pin(z45);
+          } else if constexpr (G == 10) {
+            pp = vaddq_f64(pp, k16);
+            ll = vsubq_f64(ll, k32);
+            q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
+            pin(pp), pin(ll), pin(q4), pin(q5);
+          } else if constexpr (G == 12) {
+            pp = vaddq_f64(pp, k16);
+            i4 = vcvtq_n_s64_f64(q4, 16), i5 = vcvtq_n_s64_f64(q5, 16);
+            x2p = lanes(n2), x3p = lanes(n3);
+            iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+            pin(pp), pin(i4), pin(i5), pin(x2p), pin(x3p), pin(iu2), pin(iv2);
+          } else if constexpr (G == 13) {
+            const int32_t du = int32_t(x3p) - int32_t(x2p), dv = int32_t(x3p >> 32) - int32_t(x2p >> 32);
+            const RunSteps u2 = steps16_dd(du, iu2), v2 = steps16_dd(dv, iv2);
+            a_uv = x2p, a_d = pack(v2.d, u2.d), a_dd = pack(v2.dd, u2.dd);
+            pin(a_d), pin(a_dd);
+          } else if constexpr (G == 14) {
+            n4 = vqmovn_s64(i4), n5 = vqmovn_s64(i5);
+            pin(n4), pin(n5);
+          } else if constexpr (G == 16) {
+            n4 = vmax_s32(n4, kZero), n5 = vmax_s32(n5, kZero);
+            pin(n4), pin(n5);
+          } else if constexpr (G == 18) {
+            n4 = vmin_s32(n4, kMax), n5 = vmin_s32(n5, kMax);
+            zsn = vextq_f64(z23, z45, 1);  // [z_{r+3}, z_{r+4}]
+            pin(n4), pin(n5), pin(zsn);
+          }
+        };
+        auto stage = [&](auto g) SB_LAMBDA_INLINE {
+          constexpr int G = decltype(g)::value;
+          auto lanes = [](int32x2_t x) { return vget_lane_u64(vreinterpret_u64_s32(x), 0); };
+
+          // Even stages (between the shifts and the loads): the vector work, two chains;
+          // odd stages: integer work.
+          if constexpr (G == 0) {
+            n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);
+            off = vminnmq_f64(ll, k32);
+            pin(n2), pin(n3), pin(off);
+          } else if constexpr (G == 2) {
+            x1p = lanes(n1), x2p = lanes(n2);
+            pos45 = vaddq_f64(pp, off);
+            zi45 = kZrow;
+            pin(x1p), pin(x2p), pin(pos45), pin(zi45);
+          } else if constexpr (G == 3) {
+            b_uv = x1p, b_d = steps16_packed(x1p, x2p);
+            pin(b_d);
+          } else if constexpr (G == 4) {
+            zi45 = vfmaq_f64(zi45, kZix, pos45);
+            ts4 = kUVrow, ts5 = kUVrow;
+            pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 6) {
+            zi45 = vmaxnmq_f64(zi45, kMin);
+            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
+            pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 8) {
+            z45 = vdivq_f64(kOne, zi45);
+            pin(z45);
+          } else if constexpr (G == 10) {
+            pp = vaddq_f64(pp, k16);
+            ll = vsubq_f64(ll, k32);
+            pin(pp), pin(ll);
+          } else if constexpr (G == 12) {
+            pp = vaddq_f64(pp, k16);
+            q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
+            x2p = lanes(n2), x3p = lanes(n3);
+            pin(pp), pin(q4), pin(q5), pin(x2p), pin(x3p);
+          } else if constexpr (G == 13) {
+            a_uv = x2p, a_d = steps16_packed(x2p, x3p);
+            pin(a_d);
+          } else if constexpr (G == 14) {
+            i4 = vcvtq_n_s64_f64(q4, 16), i5 = vcvtq_n_s64_f64(q5, 16);
+            pin(i4), pin(i5);
+          } else if constexpr (G == 16) {
+            n4 = vqmovn_s64(i4), n5 = vqmovn_s64(i5);
+            pin(n4), pin(n5);
+          } else if constexpr (G == 18) {
+            n4 = vmax_s32(n4, kZero), n5 = vmax_s32(n5, kZero);
+            pin(n4), pin(n5);
+          }
+        };
+        auto slot = [&](auto j) SB_LAMBDA_INLINE {
+          if constexpr (kCurve) {
+            lin_slot<decltype(j)::value, true>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3,
+                                               g0, g1, dest, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, stage2);
+          } else {
+            lin_slot<decltype(j)::value, false>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3,
+                                                g0, g1, dest, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, stage);
+          }
+        };
+        using std::integral_constant;
+        slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
+        slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
+        slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
+        slot(integral_constant<int, 9>{});
+        dest += 32;
+        left -= 32;
+        n0 = n2, n1 = n3, n2 = n4, n3 = n5;
+        if constexpr (kCurve) zp = z23, zs = zsn;
+        z23 = z45, pos23 = pos45;
+      } while (left > 48);
+      // The state the tail below reads (it takes no position from P); run r's steps again.
+      s0 = Sample{vget_lane_s32(n0, 0), vget_lane_s32(n0, 1), vgetq_lane_f64(zp, 0)};
+      s1 = Sample{vget_lane_s32(n1, 0), vget_lane_s32(n1, 1), vgetq_lane_f64(zp, 1)};
+      su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
+      sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+      z2 = vgetq_lane_f64(z23, 0), z3 = vgetq_lane_f64(z23, 1);
+      pos2 = vgetq_lane_f64(pos23, 0), pos3 = vgetq_lane_f64(pos23, 1);
+    }
+  }
+#endif
   while (left > 48) {
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
     const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
@@ -584,7 +1026,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     double sum1, sum2, c1 = 0.0, c2 = 0.0, zi4, zi5, tu4, tv4, tu5, tv5;
     double qu2, qv2, qu3, qv3, fu1 = 0.0, fv1 = 0.0, fu2 = 0.0, fv2 = 0.0;
     int32_t s2u = 0, s2v = 0, s3u = 0, s3v = 0;
-    int64_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
+    int32_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
     RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
     auto stage_a = [&](auto g) {
