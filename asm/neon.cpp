@@ -180,6 +180,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   }
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
+#if !defined(__aarch64__)
+  // ARMv7 full groups run a strip at a time in assembly: at most kStripBands bands, their
+  // rows' texel runs (strip_rows, srcs), deltas and first indices (blk).
+  constexpr int kStripBands = 32;
+  if (strip_bands > kStripBands) strip_bands = kStripBands;
+  const uint8_t* strip_rows[kStripBands * B + 4];
+  alignas(64) const uint8_t* sbuf[kStripBands * B + 8];
+  alignas(16) uint32x4_t blk[4 + 4 * kStripBands];
+#endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
@@ -197,6 +206,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
     uint8_t* const strip = out + by0 * B * width;
+#if !defined(__aarch64__)
+    {  // the strip's rows in order, four past its end (read cyclically from run[first])
+      int k = first;
+      for (int y = 0; y < nb * B + 4; ++y) {
+        strip_rows[y] = run[k];
+        if (++k == count) k = 0;
+      }
+    }
+#endif
     for (int g = 0; g < groups; ++g) {
       const int b0 = g * G;
       const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
@@ -416,111 +434,115 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         d += width;
       };
       if (m >= 16) {
-        // Full groups: a band at a time in assembly. Each row: the scalar work of row y
-        // (index pairs by ldrd from the aligned buffer, colormap bytes, packed words; str,
-        // not strd: the output has any alignment) interleaved with the NEON work of row y + 1
-        // (vsli of the row onto the widened texel), stored over row y's indices once they are
-        // all read. q0-q3: the step
-        // (the band's last row steps with the next band's); q8-q15: temporaries.
-#define SB_BLOCK_ROW7(doff) \
+        // Full groups: the whole strip in one assembly loop. Each row: the scalar work of row y
+        // (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str: the
+        // output has any alignment) interleaved with the NEON work of row y + 1 (16-bit
+        // row << 8 | texel by vshrn and vsli, widened into q12-q15 once row y's are read).
+        // Row y forms row y + 1 and steps by the delta of row y + 1's band: the delta changes
+        // (q8-q11 from the next 64 bytes at dp) before each row y with (y + 1) % B == 0,
+        // counted by k = R - 1 - y. The last row is the loop's tail copy.
+#define SB_ROW7 \
   "ldr r0, [%[sa]], #4\n\t" \
-  "vld1.8 {d16-d17}, [r0]\n\t" \
-  "ldrd r0, r1, [%[dl], #144]\n\t" \
-  "ldrd r2, r3, [%[dl], #152]\n\t" \
-  "vmovl.u8 q9, d16\n\t" \
-  "ldrd ip, lr, [%[dl], #160]\n\t" \
-  "vmovl.u8 q10, d17\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
-  "vmovl.u16 q11, d18\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
   "ldrb r1, [%[cm], r1]\n\t" \
-  "vmovl.u16 q12, d19\n\t" \
+  "vshrn.i32 d4, %q[n0], #16\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
-  "vmovl.u16 q13, d20\n\t" \
+  "vshrn.i32 d5, %q[n1], #16\n\t" \
   "ldrb r3, [%[cm], r3]\n\t" \
-  "vmovl.u16 q14, d21\n\t" \
+  "vshrn.i32 d6, %q[n2], #16\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
-  "vshr.u32 q9, %q[n0], #16\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
-  "vsli.32 q11, q9, #8\n\t" \
-  "orr r0, r0, r1, lsl #8\n\t" \
-  "vshr.u32 q9, %q[n1], #16\n\t" \
-  "orr r2, r2, r3, lsl #8\n\t" \
-  "vsli.32 q12, q9, #8\n\t" \
-  "ldrd r1, r3, [%[dl], #168]\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "orr r0, r0, r2, lsl #16\n\t" \
-  "orr r1, r1, r3, lsl #8\n\t" \
-  "orr ip, ip, r1, lsl #16\n\t" \
-  "str r0, [%[d], #0]\n\t" \
-  "str ip, [%[d], #4]\n\t" \
-  "ldrd r0, r1, [%[dl], #176]\n\t" \
-  "ldrd r2, r3, [%[dl], #184]\n\t" \
-  "vshr.u32 q9, %q[n2], #16\n\t" \
-  "ldrd ip, lr, [%[dl], #192]\n\t" \
-  "vsli.32 q13, q9, #8\n\t" \
+  "vshrn.i32 d7, %q[n3], #16\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
   "ldrb r0, [%[cm], r0]\n\t" \
-  "vshr.u32 q9, %q[n3], #16\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vsli.32 q14, q9, #8\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
-  "orr r0, r0, r1, lsl #8\n\t" \
-  "orr r2, r2, r3, lsl #8\n\t" \
-  "ldrd r1, r3, [%[dl], #200]\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "orr r0, r0, r2, lsl #16\n\t" \
-  "orr r1, r1, r3, lsl #8\n\t" \
-  "orr ip, ip, r1, lsl #16\n\t" \
-  "str r0, [%[d], #8]\n\t" \
-  "str ip, [%[d], #12]\n\t" \
-  "ldr r1, [%[dl], #128]\n\t" \
-  "add %[d], %[d], r1\n\t" \
-  "add r0, %[dl], #144\n\t" \
-  "vst1.32 {d22-d25}, [r0:128]!\n\t" \
-  "vst1.32 {d26-d29}, [r0:128]\n\t" \
-  "add r1, %[dl], #" doff "\n\t" \
-  "vld1.32 {d16-d19}, [r1:128]!\n\t" \
-  "vld1.32 {d20-d23}, [r1:128]\n\t" \
   "vadd.i32 %q[n0], %q[n0], q8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
   "vadd.i32 %q[n1], %q[n1], q9\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
   "vadd.i32 %q[n2], %q[n2], q10\n\t" \
-  "vadd.i32 %q[n3], %q[n3], q11\n\t"
-        // The assembly's one data block: this band's step, the next band's, the row stride, the
-        // current row's indices (one base register for all of them: ARMv7 has few).
-        struct alignas(16) {
-          uint32x4_t dd[9];
-          uint32_t ib[16];
-        } blk;
-        blk.dd[8] = vdupq_n_u32(uint32_t(width));
-        std::memcpy(blk.ib, ib[cur], sizeof blk.ib);
-        uint32x4_t* const dd = blk.dd;
-        const uint8_t* srcs[B + 1];    // the next row's texels, for each row of the band
-        for (int band = 0; band < nb; ++band) {
-          for (int j = 0; j < 4; ++j) dd[j] = delta[j];
-          if (band + 1 < nb) step_for(by0 + band + 2);
-          for (int j = 0; j < 4; ++j) dd[4 + j] = delta[j];
-          for (int r = 0; r < B; ++r) srcs[r] = next_run() + 16 * g;
-          srcs[B] = nullptr;  // the loop runs while a row follows the next one
-          const uint8_t* const* sa = srcs;
-          asm volatile(
-              "1:\n\t" SB_BLOCK_ROW7("0")
-              "ldr r0, [%[sa], #4]\n\t"
-              "cmp r0, #0\n\t"
-              "bne 1b\n\t" SB_BLOCK_ROW7("64")
-              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [sa] "+r"(sa),
-                [d] "+r"(d)
-              : [cm] "r"(colormap), [dl] "r"(dd)
-              : "r0", "r1", "r2", "r3", "ip", "lr", "d16", "d17",
-                "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "cc",
-                "memory");
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vadd.i32 %q[n3], %q[n3], q11\n\t" \
+  "str r1, [%[d], #0]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r1, r2, d28\n\t" \
+  "str r0, [%[d], #4]\n\t" \
+  "vmov r3, ip, d29\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "str r1, [%[d], #8]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "str r0, [%[d], #12]\n\t" \
+  "add %[d], %[d], %[st]\n\t"
+        // blk: the first row's indices, then the deltas of the strip's bands (D[b]: band b).
+        std::memcpy(blk, ib[cur], sizeof ib[cur]);
+        for (int j = 0; j < 4; ++j) blk[4 + j] = delta[j];
+        for (int band = 1; band < nb; ++band) {
+          step_for(by0 + band + 1);
+          for (int j = 0; j < 4; ++j) blk[4 + 4 * band + j] = delta[j];
         }
-#undef SB_BLOCK_ROW7
+        const int rows = nb * B;
+        // srcs[y] = row y + 1's texels (srcs[rows - 1]: a readable row past the strip), then a
+        // null. srcs[y] lies at a multiple of 4 B bytes exactly when (y + 1) % B == 0.
+        const uint8_t** const srcs = sbuf + 1;
+        {
+          const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
+          for (int y = 0; y < rows; y += 4)
+            vst1q_u32(reinterpret_cast<uint32_t*>(srcs + y),
+                      vaddq_u32(vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + 1 + y)), off));
+          srcs[rows] = nullptr;
+        }
+        const uint8_t** sa = srcs;
+        const uint32x4_t* dp = blk;
+        asm volatile(
+            "vld1.32 {d24-d27}, [%[dp]:128]!\n\t"
+            "vld1.32 {d28-d31}, [%[dp]:128]!\n\t"
+            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
+            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+            "1:\n\t" SB_ROW7
+            "tst %[sa], %[bm]\n\t"
+            "bne 1b\n\t"
+            "ldr r0, [%[sa], #4]\n\t"
+            "cmp r0, #0\n\t"
+            "beq 3f\n\t"
+            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
+            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+            "b 1b\n\t"
+            "3:\n\t" SB_ROW7
+            : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [sa] "+r"(sa),
+              [d] "+r"(d), [dp] "+r"(dp)
+            : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1)
+            : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17",
+              "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31",
+              "cc", "memory");
+#undef SB_ROW7
         continue;
       }
 #endif
