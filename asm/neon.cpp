@@ -118,6 +118,57 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
   }
 }
 
+#if !defined(__aarch64__)
+// D[4 b .. 4 b + 3], b < n: the row step of the band between grid rows g + b gw and
+// g + (b + 1) gw (a full group: its G + 1 entries inside each row), from the rows'
+// difference (|difference| < 2^14); bx, fx: the row-step weights, quarter q of the lanes.
+template <int LB>
+__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, const int16x4_t* bxp,
+                                           const int16x4_t* fxp, uint32x4_t* D) {
+  const int16x4_t bx0 = bxp[0], bx1 = bxp[1], bx2 = bxp[2], bx3 = bxp[3];
+  const int16x4_t fx0 = fxp[0], fx1 = fxp[1], fx2 = fxp[2], fx3 = fxp[3];
+  auto put = [&](int16x4_t a0, int16x4_t a1, int16x4_t a2, int16x4_t a3, int16x4_t c0, int16x4_t c1,
+                 int16x4_t c2, int16x4_t c3, uint32x4_t* o) __attribute__((always_inline)) {
+    // quarter q: v_j bx + v_j+1 fx (a: v_j, c: v_j+1 in every lane)
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 0), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a0, bx0), c0, fx0)));
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 1), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a1, bx1), c1, fx1)));
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 2), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a2, bx2), c2, fx2)));
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
+  };
+  for (int b = 0; b < n; ++b, g += gw, D += 4) {
+    if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
+      const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
+      const int16x8_t c = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw + 1), vld1q_u16(g + 1)));
+      const int16x8x2_t z = vzipq_s16(vshlq_n_s16(a, 1), vaddq_s16(a, c));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 0), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[0]), 6)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 1), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[0]), 6)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 2), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[1]), 6)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 3), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[1]), 6)));
+    } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
+      const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
+      const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
+      put(vdup_lane_s16(a, 0), vdup_lane_s16(a, 1), vdup_lane_s16(a, 2), vdup_lane_s16(a, 3), vdup_lane_s16(c, 0),
+          vdup_lane_s16(c, 1), vdup_lane_s16(c, 2), vdup_lane_s16(c, 3), D);
+    } else {  // lanes 0..2: v_0 .. v_2 (mip 0: v_0, v_1)
+      uint16x4_t r0 = vreinterpret_u16_u32(vld1_dup_u32(reinterpret_cast<const uint32_t*>(g)));
+      uint16x4_t r1 = vreinterpret_u16_u32(vld1_dup_u32(reinterpret_cast<const uint32_t*>(g + gw)));
+      if constexpr (LB == 3) {
+        r0 = vld1_lane_u16(g + 2, r0, 2);
+        r1 = vld1_lane_u16(g + gw + 2, r1, 2);
+      }
+      const int16x4_t v = vreinterpret_s16_u16(vsub_u16(r1, r0));
+      const int16x4_t v0 = vdup_lane_s16(v, 0), v1 = vdup_lane_s16(v, 1);
+      if constexpr (LB == 3) {
+        const int16x4_t v2 = vdup_lane_s16(v, 2);
+        put(v0, v0, v1, v1, v1, v1, v2, v2, D);
+      } else {
+        put(v0, v0, v0, v0, v1, v1, v1, v1, D);
+      }
+    }
+  }
+}
+#endif
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -187,7 +238,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows[kStripBands * B + 4];
   alignas(64) const uint8_t* sbuf[kStripBands * B + 8];
-  alignas(16) uint32x4_t blk[4 + 4 * kStripBands];
+  alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
+  int16x4_t BXS[4], FXS[4];
+  for (int q = 0; q < 4; ++q) {
+    BXS[q] = vreinterpret_s16_u16(vld1_u16(w[2] + 4 * q));
+    FXS[q] = vreinterpret_s16_u16(vld1_u16(w[3] + 4 * q));
+  }
 #endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
@@ -447,26 +503,26 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmov r3, ip, d25\n\t" \
   "vld1.8 {d0-d1}, [r0]\n\t" \
   "ldrb r1, [%[cm], r1]\n\t" \
-  "vshrn.i32 d4, %q[n0], #16\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
-  "vshrn.i32 d5, %q[n1], #16\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
   "ldrb r3, [%[cm], r3]\n\t" \
-  "vshrn.i32 d6, %q[n2], #16\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
-  "vshrn.i32 d7, %q[n3], #16\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
   "orr r1, r1, r2, lsl #8\n\t" \
   "vmov r0, r2, d26\n\t" \
   "orr r3, r3, ip, lsl #8\n\t" \
   "vmov ip, lr, d27\n\t" \
   "orr r1, r1, r3, lsl #16\n\t" \
   "ldrb r0, [%[cm], r0]\n\t" \
-  "vadd.i32 %q[n0], %q[n0], q8\n\t" \
+  "vadd.i32 q4, q4, q8\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
-  "vadd.i32 %q[n1], %q[n1], q9\n\t" \
+  "vadd.i32 q5, q5, q9\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
-  "vadd.i32 %q[n2], %q[n2], q10\n\t" \
+  "vadd.i32 q6, q6, q10\n\t" \
   "ldrb lr, [%[cm], lr]\n\t" \
-  "vadd.i32 %q[n3], %q[n3], q11\n\t" \
+  "vadd.i32 q7, q7, q11\n\t" \
   "str r1, [%[d], #0]\n\t" \
   "orr r0, r0, r2, lsl #8\n\t" \
   "vmovl.u8 q1, d1\n\t" \
@@ -501,13 +557,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "orr r0, r0, ip, lsl #16\n\t" \
   "str r0, [%[d], #12]\n\t" \
   "add %[d], %[d], %[st]\n\t"
-        // blk: the first row's indices, then the deltas of the strip's bands (D[b]: band b).
-        std::memcpy(blk, ib[cur], sizeof ib[cur]);
-        for (int j = 0; j < 4; ++j) blk[4 + j] = delta[j];
-        for (int band = 1; band < nb; ++band) {
-          step_for(by0 + band + 1);
-          for (int j = 0; j < 4; ++j) blk[4 + 4 * band + j] = delta[j];
-        }
+        // blk: the numerators (second row), the first row's indices, the bands' deltas (D[b]: band b).
+        for (int j = 0; j < 4; ++j) blk[j] = num[j];
+        std::memcpy(blk + 4, ib[cur], sizeof ib[cur]);
+        for (int j = 0; j < 4; ++j) blk[8 + j] = delta[j];
+        band_deltas<LB>(grid + (by0 + 1) * grid_width + b0, grid_width, nb - 1, BXS, FXS, blk + 12);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[rows - 1]: a readable row past the strip), then a
         // null. srcs[y] lies at a multiple of 4 B bytes exactly when (y + 1) % B == 0.
@@ -522,10 +576,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint8_t** sa = srcs;
         const uint32x4_t* dp = blk;
         asm volatile(
+            "vld1.32 {d8-d11}, [%[dp]:128]!\n\t"
+            "vld1.32 {d12-d15}, [%[dp]:128]!\n\t"
             "vld1.32 {d24-d27}, [%[dp]:128]!\n\t"
             "vld1.32 {d28-d31}, [%[dp]:128]!\n\t"
             "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
             "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+            "b 1f\n\t"
+            ".balign 256\n"  // the loop inside one 256-byte block: no page crossing
             "1:\n\t" SB_ROW7
             "tst %[sa], %[bm]\n\t"
             "bne 1b\n\t"
@@ -536,10 +594,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
             "b 1b\n\t"
             "3:\n\t" SB_ROW7
-            : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [sa] "+r"(sa),
-              [d] "+r"(d), [dp] "+r"(dp)
+            : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp)
             : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1)
-            : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17",
+            : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9",
+              "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17",
               "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31",
               "cc", "memory");
 #undef SB_ROW7
