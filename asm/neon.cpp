@@ -135,6 +135,7 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, con
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 2), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a2, bx2), c2, fx2)));
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
+#pragma GCC unroll 2
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
     if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
       const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
@@ -147,19 +148,18 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, con
     } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
       const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
       const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
-      put(vdup_lane_s16(a, 0), vdup_lane_s16(a, 1), vdup_lane_s16(a, 2), vdup_lane_s16(a, 3), vdup_lane_s16(c, 0),
-          vdup_lane_s16(c, 1), vdup_lane_s16(c, 2), vdup_lane_s16(c, 3), D);
-    } else {  // lanes 0..2: v_0 .. v_2 (mip 0: v_0, v_1)
-      uint16x4_t r0 = vreinterpret_u16_u32(vld1_dup_u32(reinterpret_cast<const uint32_t*>(g)));
-      uint16x4_t r1 = vreinterpret_u16_u32(vld1_dup_u32(reinterpret_cast<const uint32_t*>(g + gw)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 0),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx0, a, 0), fx0, c, 0)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 1),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx1, a, 1), fx1, c, 1)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 2),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx2, a, 2), fx2, c, 2)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 3),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx3, a, 3), fx3, c, 3)));
+    } else {  // v_0 .. v_2 (mip 0: v_0, v_1) by scalar loads
+      const int16x4_t v0 = vdup_n_s16(int16_t(g[gw] - g[0])), v1 = vdup_n_s16(int16_t(g[gw + 1] - g[1]));
       if constexpr (LB == 3) {
-        r0 = vld1_lane_u16(g + 2, r0, 2);
-        r1 = vld1_lane_u16(g + gw + 2, r1, 2);
-      }
-      const int16x4_t v = vreinterpret_s16_u16(vsub_u16(r1, r0));
-      const int16x4_t v0 = vdup_lane_s16(v, 0), v1 = vdup_lane_s16(v, 1);
-      if constexpr (LB == 3) {
-        const int16x4_t v2 = vdup_lane_s16(v, 2);
+        const int16x4_t v2 = vdup_n_s16(int16_t(g[gw + 2] - g[2]));
         put(v0, v0, v1, v1, v1, v1, v2, v2, D);
       } else {
         put(v0, v0, v0, v0, v1, v1, v1, v1, D);
