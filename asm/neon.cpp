@@ -281,6 +281,138 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
         return pad;
       };
+#if !defined(__aarch64__)
+      if (width - 16 * g >= 16) {
+        // Full groups: the whole strip in one assembly loop. Each row: the scalar work of row y
+        // (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str: the
+        // output has any alignment) interleaved with the NEON work of row y + 1 (16-bit
+        // row << 8 | texel by vshrn and vsli, widened into q12-q15 once row y's are read).
+        // Row y forms row y + 1 and steps by the delta of row y + 1's band: the delta changes
+        // (q8-q11 from the next 64 bytes at dp) before each row y with (y + 1) % B == 0,
+        // counted by k = R - 1 - y. The last row is the loop's tail copy.
+#define SB_ROW7 \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vadd.i32 q4, q4, q8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vadd.i32 q5, q5, q9\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vadd.i32 q6, q6, q10\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vadd.i32 q7, q7, q11\n\t" \
+  "str r1, [%[d], #0]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r1, r2, d28\n\t" \
+  "str r0, [%[d], #4]\n\t" \
+  "vmov r3, ip, d29\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "str r1, [%[d], #8]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "str r0, [%[d], #12]\n\t" \
+  "add %[d], %[d], %[st]\n\t"
+        // blk: the first row's numerators, then the bands' deltas (D[b]: band b).
+        const uint16_t* const r0 = grid + by0 * grid_width + b0;
+        weigh<LB>(r0, BX0, FX0, blk);
+        band_deltas<LB>(r0, grid_width, nb, BXS, FXS, blk + 4);
+        const int rows = nb * B;
+        // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
+        // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when (y + 1) % B == 0.
+        const uint8_t** const srcs = sbuf + 1;
+        {
+          const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
+          for (int y = 0; y <= rows; y += 4)
+            vst1q_u32(reinterpret_cast<uint32_t*>(sbuf + y),
+                      vaddq_u32(vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + y)), off));
+          srcs[rows] = nullptr;
+        }
+        uint8_t* d = strip + 16 * g;
+        const uint8_t** sa = srcs;
+        const uint32x4_t* dp = blk;
+        asm volatile(
+            "ldr r0, [%[sa], #-4]\n\t"  // row 0's indices and the step to row 1
+            "vld1.32 {d8-d11}, [%[dp]:128]!\n\t"
+            "vld1.32 {d12-d15}, [%[dp]:128]!\n\t"
+            "vld1.8 {d0-d1}, [r0]\n\t"
+            "vshrn.i32 d4, q4, #16\n\t"
+            "vshrn.i32 d5, q5, #16\n\t"
+            "vshrn.i32 d6, q6, #16\n\t"
+            "vshrn.i32 d7, q7, #16\n\t"
+            "vmovl.u8 q1, d1\n\t"
+            "vmovl.u8 q0, d0\n\t"
+            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
+            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+            "vsli.16 q0, q2, #8\n\t"
+            "vsli.16 q1, q3, #8\n\t"
+            "vadd.i32 q4, q4, q8\n\t"
+            "vadd.i32 q5, q5, q9\n\t"
+            "vadd.i32 q6, q6, q10\n\t"
+            "vadd.i32 q7, q7, q11\n\t"
+            "vmovl.u16 q12, d0\n\t"
+            "vmovl.u16 q13, d1\n\t"
+            "vmovl.u16 q14, d2\n\t"
+            "vmovl.u16 q15, d3\n\t"
+            "b 1f\n\t"
+            ".balign 256\n"  // the loop inside one 256-byte block: no page crossing
+            "1:\n\t" SB_ROW7
+            "tst %[sa], %[bm]\n\t"
+            "bne 1b\n\t"
+            "ldr r0, [%[sa], #4]\n\t"
+            "cmp r0, #0\n\t"
+            "beq 3f\n\t"
+            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
+            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+            "b 1b\n\t"
+            "3:\n\t" SB_ROW7
+            : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp)
+            : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1)
+            : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9",
+              "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17",
+              "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31",
+              "cc", "memory");
+#undef SB_ROW7
+        continue;
+      }
+#endif
       uint32x4_t num[4], delta[4], prev[4];
       {
         const uint16_t* r0 = row_of(by0);
@@ -489,120 +621,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         d += width;
       };
-      if (m >= 16) {
-        // Full groups: the whole strip in one assembly loop. Each row: the scalar work of row y
-        // (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str: the
-        // output has any alignment) interleaved with the NEON work of row y + 1 (16-bit
-        // row << 8 | texel by vshrn and vsli, widened into q12-q15 once row y's are read).
-        // Row y forms row y + 1 and steps by the delta of row y + 1's band: the delta changes
-        // (q8-q11 from the next 64 bytes at dp) before each row y with (y + 1) % B == 0,
-        // counted by k = R - 1 - y. The last row is the loop's tail copy.
-#define SB_ROW7 \
-  "ldr r0, [%[sa]], #4\n\t" \
-  "vmov r1, r2, d24\n\t" \
-  "vmov r3, ip, d25\n\t" \
-  "vld1.8 {d0-d1}, [r0]\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vshrn.i32 d4, q4, #16\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vshrn.i32 d5, q5, #16\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "vshrn.i32 d6, q6, #16\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vshrn.i32 d7, q7, #16\n\t" \
-  "orr r1, r1, r2, lsl #8\n\t" \
-  "vmov r0, r2, d26\n\t" \
-  "orr r3, r3, ip, lsl #8\n\t" \
-  "vmov ip, lr, d27\n\t" \
-  "orr r1, r1, r3, lsl #16\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
-  "vadd.i32 q4, q4, q8\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vadd.i32 q5, q5, q9\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vadd.i32 q6, q6, q10\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
-  "vadd.i32 q7, q7, q11\n\t" \
-  "str r1, [%[d], #0]\n\t" \
-  "orr r0, r0, r2, lsl #8\n\t" \
-  "vmovl.u8 q1, d1\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "vmovl.u8 q0, d0\n\t" \
-  "orr r0, r0, ip, lsl #16\n\t" \
-  "vmov r1, r2, d28\n\t" \
-  "str r0, [%[d], #4]\n\t" \
-  "vmov r3, ip, d29\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vsli.16 q0, q2, #8\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vsli.16 q1, q3, #8\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "orr r1, r1, r2, lsl #8\n\t" \
-  "vmov r0, r2, d30\n\t" \
-  "orr r3, r3, ip, lsl #8\n\t" \
-  "vmov ip, lr, d31\n\t" \
-  "orr r1, r1, r3, lsl #16\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
-  "vmovl.u16 q12, d0\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vmovl.u16 q13, d1\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vmovl.u16 q14, d2\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
-  "vmovl.u16 q15, d3\n\t" \
-  "str r1, [%[d], #8]\n\t" \
-  "orr r0, r0, r2, lsl #8\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "orr r0, r0, ip, lsl #16\n\t" \
-  "str r0, [%[d], #12]\n\t" \
-  "add %[d], %[d], %[st]\n\t"
-        // blk: the numerators (second row), the first row's indices, the bands' deltas (D[b]: band b).
-        for (int j = 0; j < 4; ++j) blk[j] = num[j];
-        std::memcpy(blk + 4, ib[cur], sizeof ib[cur]);
-        for (int j = 0; j < 4; ++j) blk[8 + j] = delta[j];
-        band_deltas<LB>(grid + (by0 + 1) * grid_width + b0, grid_width, nb - 1, BXS, FXS, blk + 12);
-        const int rows = nb * B;
-        // srcs[y] = row y + 1's texels (srcs[rows - 1]: a readable row past the strip), then a
-        // null. srcs[y] lies at a multiple of 4 B bytes exactly when (y + 1) % B == 0.
-        const uint8_t** const srcs = sbuf + 1;
-        {
-          const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
-          for (int y = 0; y < rows; y += 4)
-            vst1q_u32(reinterpret_cast<uint32_t*>(srcs + y),
-                      vaddq_u32(vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + 1 + y)), off));
-          srcs[rows] = nullptr;
-        }
-        const uint8_t** sa = srcs;
-        const uint32x4_t* dp = blk;
-        asm volatile(
-            "vld1.32 {d8-d11}, [%[dp]:128]!\n\t"
-            "vld1.32 {d12-d15}, [%[dp]:128]!\n\t"
-            "vld1.32 {d24-d27}, [%[dp]:128]!\n\t"
-            "vld1.32 {d28-d31}, [%[dp]:128]!\n\t"
-            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
-            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-            "b 1f\n\t"
-            ".balign 256\n"  // the loop inside one 256-byte block: no page crossing
-            "1:\n\t" SB_ROW7
-            "tst %[sa], %[bm]\n\t"
-            "bne 1b\n\t"
-            "ldr r0, [%[sa], #4]\n\t"
-            "cmp r0, #0\n\t"
-            "beq 3f\n\t"
-            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
-            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-            "b 1b\n\t"
-            "3:\n\t" SB_ROW7
-            : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp)
-            : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1)
-            : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9",
-              "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17",
-              "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31",
-              "cc", "memory");
-#undef SB_ROW7
-        continue;
-      }
 #endif
       for (int band = 0; band < nb; ++band) {
         for (int fy = 0; fy < B - 1; ++fy) row(false, 0);
