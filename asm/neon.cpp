@@ -135,7 +135,51 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, con
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 2), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a2, bx2), c2, fx2)));
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
-#pragma GCC unroll 2
+  if constexpr (LB == 1) {  // two bands a pass, interleaved (the NEON pipe is in order)
+    for (int pairs = n >> 1; pairs > 0; --pairs) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      asm volatile(
+          "vld1.16 {d16-d17}, [%[g0]]!\n\t"
+          "vld1.16 {d18-d19}, [%[g1]]!\n\t"
+          "vld1.16 {d20-d21}, [%[g2]]!\n\t"
+          "sub %[g0], %[g0], #14\n\t"
+          "sub %[g1], %[g1], #14\n\t"
+          "sub %[g2], %[g2], #14\n\t"
+          "vld1.16 {d22-d23}, [%[g0]]\n\t"
+          "vld1.16 {d24-d25}, [%[g1]]\n\t"
+          "vld1.16 {d26-d27}, [%[g2]]\n\t"
+          "vsub.i16 q14, q9, q8\n\t"
+          "vsub.i16 q15, q10, q9\n\t"
+          "vsub.i16 q11, q12, q11\n\t"
+          "vsub.i16 q12, q13, q12\n\t"
+          "vadd.i16 q11, q11, q14\n\t"
+          "vshl.i16 q14, q14, #1\n\t"
+          "vadd.i16 q12, q12, q15\n\t"
+          "vshl.i16 q15, q15, #1\n\t"
+          "vzip.16 q14, q11\n\t"
+          "vzip.16 q15, q12\n\t"
+          "vshll.s16 q0, d28, #6\n\t"
+          "vshll.s16 q4, d30, #6\n\t"
+          "vshll.s16 q1, d29, #6\n\t"
+          "vshll.s16 q5, d31, #6\n\t"
+          "vshll.s16 q2, d22, #6\n\t"
+          "vshll.s16 q6, d24, #6\n\t"
+          "vshll.s16 q3, d23, #6\n\t"
+          "vshll.s16 q7, d25, #6\n\t"
+          "vst1.32 {d0-d3}, [%[D]:128]!\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vst1.32 {d8-d11}, [%[D]:128]!\n\t"
+          "vst1.32 {d12-d15}, [%[D]:128]!\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D)
+          :
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "d30", "d31", "memory");
+      g += 2 * gw - 1;
+    }
+    n &= 1;
+  }
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
     if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
       const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
