@@ -123,7 +123,7 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
 // g + (b + 1) gw (a full group: its G + 1 entries inside each row), from the rows'
 // difference (|difference| < 2^14); bx, fx: the row-step weights, quarter q of the lanes.
 template <int LB>
-__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, const int16x4_t* bxp,
+__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const int16x4_t* bxp,
                                            const int16x4_t* fxp, uint32x4_t* D) {
   const int16x4_t bx0 = bxp[0], bx1 = bxp[1], bx2 = bxp[2], bx3 = bxp[3];
   const int16x4_t fx0 = fxp[0], fx1 = fxp[1], fx2 = fxp[2], fx3 = fxp[3];
@@ -179,6 +179,50 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, con
       g += 2 * gw - 1;
     }
     n &= 1;
+  }
+  if constexpr (LB >= 3) {  // two bands a pass; reads four entries a row (up to two past the group's)
+    const int pairs = (n < over ? n : over) >> 1;
+    if (pairs > 0) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      int k = pairs;
+      asm volatile(
+          "vld1.16 {d16-d19}, [%[bx]]\n\t"
+          "vld1.16 {d20-d23}, [%[fx]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d24}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d25}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d26}, [%[g2]], %[st]\n\t"
+          "vsub.i16 d0, d25, d24\n\t"
+          "vsub.i16 d1, d26, d25\n\t"
+          "vmull.s16 q2, d16, d0[0]\n\t"
+          "vmull.s16 q3, d17, d0[0]\n\t"
+          "vmull.s16 q4, d18, d0[%c[la]]\n\t"
+          "vmull.s16 q5, d19, d0[%c[la]]\n\t"
+          "vmull.s16 q6, d16, d1[0]\n\t"
+          "vmull.s16 q7, d17, d1[0]\n\t"
+          "vmull.s16 q12, d18, d1[%c[la]]\n\t"
+          "vmull.s16 q13, d19, d1[%c[la]]\n\t"
+          "vmlal.s16 q2, d20, d0[1]\n\t"
+          "vmlal.s16 q3, d21, d0[1]\n\t"
+          "vmlal.s16 q4, d22, d0[%c[lc]]\n\t"
+          "vmlal.s16 q5, d23, d0[%c[lc]]\n\t"
+          "vmlal.s16 q6, d20, d1[1]\n\t"
+          "vmlal.s16 q7, d21, d1[1]\n\t"
+          "vmlal.s16 q12, d22, d1[%c[lc]]\n\t"
+          "vmlal.s16 q13, d23, d1[%c[lc]]\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vst1.32 {d8-d11}, [%[D]:128]!\n\t"
+          "vst1.32 {d12-d15}, [%[D]:128]!\n\t"
+          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
+          : [st] "r"(4 * gw), [bx] "r"(bxp), [fx] "r"(fxp), [la] "i"(LB == 3 ? 1 : 0), [lc] "i"(LB == 3 ? 2 : 1)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "cc", "memory");
+      n -= 2 * pairs;
+    }
   }
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
     if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
@@ -397,7 +441,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         weigh<LB>(r0, BX0, FX0, blk);
-        band_deltas<LB>(r0, grid_width, nb, BXS, FXS, blk + 4);
+        band_deltas<LB>(r0, grid_width, nb, by0 + nb < bh ? nb : nb - 1, BXS, FXS, blk + 4);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when (y + 1) % B == 0.
