@@ -180,6 +180,58 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
     }
     n &= 1;
   }
+  if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
+    if (n >= 2) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      int k = n >> 1;
+      asm volatile(
+          "vld1.16 {d16-d19}, [%[bx]]\n\t"
+          "vld1.16 {d20-d23}, [%[fx]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d24}, [%[g0]]!\n\t"
+          "vld1.16 {d25}, [%[g1]]!\n\t"
+          "vld1.16 {d26}, [%[g2]]!\n\t"
+          "sub %[g0], %[g0], #6\n\t"
+          "sub %[g1], %[g1], #6\n\t"
+          "sub %[g2], %[g2], #6\n\t"
+          "vld1.16 {d27}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d28}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d29}, [%[g2]], %[st]\n\t"
+          "vsub.i16 d0, d25, d24\n\t"
+          "vsub.i16 d2, d26, d25\n\t"
+          "vsub.i16 d1, d28, d27\n\t"
+          "vsub.i16 d3, d29, d28\n\t"
+          "vmull.s16 q2, d16, d0[0]\n\t"
+          "vmull.s16 q3, d17, d0[1]\n\t"
+          "vmull.s16 q4, d18, d0[2]\n\t"
+          "vmull.s16 q5, d19, d0[3]\n\t"
+          "vmull.s16 q6, d16, d2[0]\n\t"
+          "vmull.s16 q7, d17, d2[1]\n\t"
+          "vmull.s16 q12, d18, d2[2]\n\t"
+          "vmull.s16 q13, d19, d2[3]\n\t"
+          "vmlal.s16 q2, d20, d1[0]\n\t"
+          "vmlal.s16 q3, d21, d1[1]\n\t"
+          "vmlal.s16 q4, d22, d1[2]\n\t"
+          "vmlal.s16 q5, d23, d1[3]\n\t"
+          "vmlal.s16 q6, d20, d3[0]\n\t"
+          "vmlal.s16 q7, d21, d3[1]\n\t"
+          "vmlal.s16 q12, d22, d3[2]\n\t"
+          "vmlal.s16 q13, d23, d3[3]\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vst1.32 {d8-d11}, [%[D]:128]!\n\t"
+          "vst1.32 {d12-d15}, [%[D]:128]!\n\t"
+          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
+          : [st] "r"(4 * gw - 2), [bx] "r"(bxp), [fx] "r"(fxp)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "cc", "memory");
+      n &= 1;
+    }
+  }
   if constexpr (LB >= 3) {  // two bands a pass; reads four entries a row (up to two past the group's)
     const int pairs = (n < over ? n : over) >> 1;
     if (pairs > 0) {
