@@ -377,7 +377,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   constexpr int kStripBands = 32;
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows[kStripBands * B + 4];
-  alignas(64) const uint8_t* sbuf[kStripBands * B + 8];
+  alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
   alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
   int16x4_t BXS[4], FXS[4];
   for (int q = 0; q < 4; ++q) {
@@ -423,57 +423,58 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       };
 #if !defined(__aarch64__)
       if (width - 16 * g >= 16) {
-        // Full groups: the whole strip in one assembly loop. Each row: the scalar work of row y
-        // (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str: the
-        // output has any alignment) interleaved with the NEON work of row y + 1 (16-bit
+        // Full groups: the whole strip in one assembly loop, two rows a pass. Row y: the step
+        // to row y + 1 (numerators q4-q7 += the delta of row y's band, q8-q11), the scalar work
+        // of row y (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str:
+        // the output has any alignment) interleaved with the NEON work of row y + 1 (16-bit
         // row << 8 | texel by vshrn and vsli, widened into q12-q15 once row y's are read).
-        // Row y forms row y + 1 and steps by the delta of row y + 1's band: the delta changes
-        // (q8-q11 from the next 64 bytes at dp) before each row y with (y + 1) % B == 0,
-        // counted by k = R - 1 - y. The last row is the loop's tail copy.
+        // The delta changes (the next 64 bytes at dp) at each band's first row: srcs[y] lies at
+        // a multiple of 4 B bytes exactly then; a null srcs[y] ends the strip.
 #define SB_ROW7 \
   "ldr r0, [%[sa]], #4\n\t" \
   "vmov r1, r2, d24\n\t" \
+  "add %[d], %[d], %[st]\n\t" \
   "vmov r3, ip, d25\n\t" \
-  "vld1.8 {d0-d1}, [r0]\n\t" \
   "ldrb r1, [%[cm], r1]\n\t" \
-  "vshrn.i32 d4, q4, #16\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vshrn.i32 d5, q5, #16\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "vshrn.i32 d6, q6, #16\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vshrn.i32 d7, q7, #16\n\t" \
-  "orr r1, r1, r2, lsl #8\n\t" \
-  "vmov r0, r2, d26\n\t" \
-  "orr r3, r3, ip, lsl #8\n\t" \
-  "vmov ip, lr, d27\n\t" \
-  "orr r1, r1, r3, lsl #16\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
   "vadd.i32 q4, q4, q8\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
   "vadd.i32 q5, q5, q9\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
   "vadd.i32 q6, q6, q10\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
   "vadd.i32 q7, q7, q11\n\t" \
-  "str r1, [%[d], #0]\n\t" \
-  "orr r0, r0, r2, lsl #8\n\t" \
-  "vmovl.u8 q1, d1\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "vmovl.u8 q0, d0\n\t" \
-  "orr r0, r0, ip, lsl #16\n\t" \
-  "vmov r1, r2, d28\n\t" \
-  "str r0, [%[d], #4]\n\t" \
-  "vmov r3, ip, d29\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vsli.16 q0, q2, #8\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
-  "vsli.16 q1, q3, #8\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "str r1, [%[d], #0]\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmov r1, r2, d28\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "str r0, [%[d], #4]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
   "orr r1, r1, r2, lsl #8\n\t" \
   "vmov r0, r2, d30\n\t" \
-  "orr r3, r3, ip, lsl #8\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
   "vmov ip, lr, d31\n\t" \
   "orr r1, r1, r3, lsl #16\n\t" \
   "ldrb r0, [%[cm], r0]\n\t" \
@@ -488,20 +489,21 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "orr r0, r0, r2, lsl #8\n\t" \
   "orr ip, ip, lr, lsl #8\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
-  "str r0, [%[d], #12]\n\t" \
-  "add %[d], %[d], %[st]\n\t"
-        // blk: the first row's numerators, then the bands' deltas (D[b]: band b).
+  "str r0, [%[d], #12]\n\t"
+
+        // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
+        // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         weigh<LB>(r0, BX0, FX0, blk);
         band_deltas<LB>(r0, grid_width, nb, by0 + nb < bh ? nb : nb - 1, BXS, FXS, blk + 4);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
-        // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when (y + 1) % B == 0.
-        const uint8_t** const srcs = sbuf + 1;
+        // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
+        const uint8_t** const srcs = sbuf + 16;
         {
           const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
           for (int y = 0; y <= rows; y += 4)
-            vst1q_u32(reinterpret_cast<uint32_t*>(sbuf + y),
+            vst1q_u32(reinterpret_cast<uint32_t*>(srcs - 1 + y),
                       vaddq_u32(vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + y)), off));
           srcs[rows] = nullptr;
         }
@@ -509,7 +511,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint8_t** sa = srcs;
         const uint32x4_t* dp = blk;
         asm volatile(
-            "ldr r0, [%[sa], #-4]\n\t"  // row 0's indices and the step to row 1
+            "sub %[d], %[d], %[st]\n\t"
+            "ldr r0, [%[sa], #-4]\n\t"  // row 0's indices
             "vld1.32 {d8-d11}, [%[dp]:128]!\n\t"
             "vld1.32 {d12-d15}, [%[dp]:128]!\n\t"
             "vld1.8 {d0-d1}, [r0]\n\t"
@@ -523,26 +526,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
             "vsli.16 q0, q2, #8\n\t"
             "vsli.16 q1, q3, #8\n\t"
-            "vadd.i32 q4, q4, q8\n\t"
-            "vadd.i32 q5, q5, q9\n\t"
-            "vadd.i32 q6, q6, q10\n\t"
-            "vadd.i32 q7, q7, q11\n\t"
             "vmovl.u16 q12, d0\n\t"
             "vmovl.u16 q13, d1\n\t"
             "vmovl.u16 q14, d2\n\t"
             "vmovl.u16 q15, d3\n\t"
             "b 1f\n\t"
-            ".balign 256\n"  // the loop inside one 256-byte block: no page crossing
-            "1:\n\t" SB_ROW7
+            ".balign 512\n"  // the loop inside one 512-byte block: no page crossing
+            "1:\n\t" SB_ROW7 SB_ROW7
             "tst %[sa], %[bm]\n\t"
             "bne 1b\n\t"
-            "ldr r0, [%[sa], #4]\n\t"
+            "ldr r0, [%[sa]]\n\t"
             "cmp r0, #0\n\t"
             "beq 3f\n\t"
             "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
             "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
             "b 1b\n\t"
-            "3:\n\t" SB_ROW7
+            "3:\n\t"
             : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp)
             : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1)
             : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9",
