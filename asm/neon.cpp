@@ -491,6 +491,65 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "orr r0, r0, ip, lsl #16\n\t" \
   "str r0, [%[d], #12]\n\t"
 
+        // Word-aligned output (the usual case): the same with strd (r8 holds a third word).
+#define SB_ROW7A \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "add %[d], %[d], %[st]\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vadd.i32 q4, q4, q8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vadd.i32 q5, q5, q9\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vadd.i32 q6, q6, q10\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vadd.i32 q7, q7, q11\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r8, r2, d28\n\t" \
+  "strd r1, r0, [%[d], #0]\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  "ldrb r8, [%[cm], r8]\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r8, r8, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r8, r8, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "strd r8, r0, [%[d], #8]\n\t"
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
@@ -510,44 +569,54 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         uint8_t* d = strip + 16 * g;
         const uint8_t** sa = srcs;
         const uint32x4_t* dp = blk;
-        asm volatile(
-            "sub %[d], %[d], %[st]\n\t"
-            "ldr r0, [%[sa], #-4]\n\t"  // row 0's indices
-            "vld1.32 {d8-d11}, [%[dp]:128]!\n\t"
-            "vld1.32 {d12-d15}, [%[dp]:128]!\n\t"
-            "vld1.8 {d0-d1}, [r0]\n\t"
-            "vshrn.i32 d4, q4, #16\n\t"
-            "vshrn.i32 d5, q5, #16\n\t"
-            "vshrn.i32 d6, q6, #16\n\t"
-            "vshrn.i32 d7, q7, #16\n\t"
-            "vmovl.u8 q1, d1\n\t"
-            "vmovl.u8 q0, d0\n\t"
-            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
-            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-            "vsli.16 q0, q2, #8\n\t"
-            "vsli.16 q1, q3, #8\n\t"
-            "vmovl.u16 q12, d0\n\t"
-            "vmovl.u16 q13, d1\n\t"
-            "vmovl.u16 q14, d2\n\t"
-            "vmovl.u16 q15, d3\n\t"
-            "b 1f\n\t"
-            ".balign 512\n"  // the loop inside one 512-byte block: no page crossing
-            "1:\n\t" SB_ROW7 SB_ROW7
-            "tst %[sa], %[bm]\n\t"
-            "bne 1b\n\t"
-            "ldr r0, [%[sa]]\n\t"
-            "cmp r0, #0\n\t"
-            "beq 3f\n\t"
-            "vld1.32 {d16-d19}, [%[dp]:128]!\n\t"
-            "vld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-            "b 1b\n\t"
-            "3:\n\t"
-            : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp)
-            : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1)
-            : "r0", "r1", "r2", "r3", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9",
-              "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17",
-              "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31",
-              "cc", "memory");
+        // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
+        // 512-byte block (no page crossing).
+#define SB_STRIP7(ROW) \
+  "sub %[d], %[d], %[st]\n\t" \
+  "ldr r0, [%[sa], #-4]\n\t" \
+  "vld1.32 {d8-d11}, [%[dp]:128]!\n\t" \
+  "vld1.32 {d12-d15}, [%[dp]:128]!\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
+  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "b 1f\n\t" \
+  ".balign 512\n" \
+  "1:\n\t" ROW ROW \
+  "tst %[sa], %[bm]\n\t" \
+  "bne 1b\n\t" \
+  "ldr r0, [%[sa]]\n\t" \
+  "cmp r0, #0\n\t" \
+  "beq 3f\n\t" \
+  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
+  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  "b 1b\n\t" \
+  "3:\n\t"
+#define SB_STRIP7_OPS \
+  : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
+  : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1) \
+  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", \
+  "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
+  "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
+  "cc", "memory"
+        if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0)
+          asm volatile(SB_STRIP7(SB_ROW7A) SB_STRIP7_OPS);
+        else
+          asm volatile(SB_STRIP7(SB_ROW7) SB_STRIP7_OPS);
+#undef SB_STRIP7
+#undef SB_STRIP7_OPS
+#undef SB_ROW7A
 #undef SB_ROW7
         continue;
       }
