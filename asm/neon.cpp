@@ -404,10 +404,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     uint8_t* const strip = out + by0 * B * width;
 #if !defined(__aarch64__)
     {  // the strip's rows in order, four past its end (read cyclically from run[first])
-      int k = first;
-      for (int y = 0; y < nb * B + 4; ++y) {
-        strip_rows[y] = run[k];
-        if (++k == count) k = 0;
+      const int n = nb * B + 4;
+      for (int y = 0, k = first; y < n;) {
+        const int m = count - k < n - y ? count - k : n - y;  // rows before run[] wraps
+        int i = 0;
+        for (; i + 4 <= m; i += 4)
+          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y + i), vld1q_u32(reinterpret_cast<const uint32_t*>(run + k + i)));
+        for (; i < m; ++i) strip_rows[y + i] = run[k + i];
+        y += m;
+        k = 0;
       }
     }
 #endif
@@ -554,7 +559,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         weigh<LB>(r0, BX0, FX0, blk);
-        band_deltas<LB>(r0, grid_width, nb, by0 + nb < bh ? nb : nb - 1, BXS, FXS, blk + 4);
+        // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
+        band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, BXS, FXS, blk + 4);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
