@@ -567,9 +567,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint8_t** const srcs = sbuf + 16;
         {
           const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
-          for (int y = 0; y <= rows; y += 4)
-            vst1q_u32(reinterpret_cast<uint32_t*>(srcs - 1 + y),
-                      vaddq_u32(vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + y)), off));
+          const uint32_t* r = reinterpret_cast<const uint32_t*>(strip_rows);
+          const uint32_t* const r_end = r + rows;
+          uint32_t* o = reinterpret_cast<uint32_t*>(srcs - 1);
+          do {
+            vst1q_u32(o, vaddq_u32(vld1q_u32(r), off));
+            r += 4, o += 4;
+          } while (r <= r_end);
           srcs[rows] = nullptr;
         }
         uint8_t* d = strip + 16 * g;
