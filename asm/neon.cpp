@@ -119,12 +119,10 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
 }
 
 #if !defined(__aarch64__)
-// D[4 b .. 4 b + 3], b < n: the row step of the band between grid rows g + b gw and
-// g + (b + 1) gw (a full group: its G + 1 entries inside each row), from the rows'
-// difference (|difference| < 2^14); bx, fx: the row-step weights, quarter q of the lanes.
+// band_deltas' bands one at a time (the rest after its two-band passes).
 template <int LB>
-__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const int16x4_t* bxp,
-                                           const int16x4_t* fxp, uint32x4_t* D) {
+__attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const int16x4_t* bxp,
+                                               const int16x4_t* fxp, uint32x4_t* D) {
   const int16x4_t bx0 = bxp[0], bx1 = bxp[1], bx2 = bxp[2], bx3 = bxp[3];
   const int16x4_t fx0 = fxp[0], fx1 = fxp[1], fx2 = fxp[2], fx3 = fxp[3];
   auto put = [&](int16x4_t a0, int16x4_t a1, int16x4_t a2, int16x4_t a3, int16x4_t c0, int16x4_t c1,
@@ -135,147 +133,6 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 2), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a2, bx2), c2, fx2)));
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
-  if constexpr (LB == 1) {  // two bands a pass, interleaved (the NEON pipe is in order)
-    for (int pairs = n >> 1; pairs > 0; --pairs) {
-      const uint16_t* g1 = g + gw;
-      const uint16_t* g2 = g1 + gw;
-      asm volatile(
-          "vld1.16 {d16-d17}, [%[g0]]!\n\t"
-          "vld1.16 {d18-d19}, [%[g1]]!\n\t"
-          "vld1.16 {d20-d21}, [%[g2]]!\n\t"
-          "sub %[g0], %[g0], #14\n\t"
-          "sub %[g1], %[g1], #14\n\t"
-          "sub %[g2], %[g2], #14\n\t"
-          "vld1.16 {d22-d23}, [%[g0]]\n\t"
-          "vld1.16 {d24-d25}, [%[g1]]\n\t"
-          "vld1.16 {d26-d27}, [%[g2]]\n\t"
-          "vsub.i16 q14, q9, q8\n\t"
-          "vsub.i16 q15, q10, q9\n\t"
-          "vsub.i16 q11, q12, q11\n\t"
-          "vsub.i16 q12, q13, q12\n\t"
-          "vadd.i16 q11, q11, q14\n\t"
-          "vshl.i16 q14, q14, #1\n\t"
-          "vadd.i16 q12, q12, q15\n\t"
-          "vshl.i16 q15, q15, #1\n\t"
-          "vzip.16 q14, q11\n\t"
-          "vzip.16 q15, q12\n\t"
-          "vshll.s16 q0, d28, #6\n\t"
-          "vshll.s16 q4, d30, #6\n\t"
-          "vshll.s16 q1, d29, #6\n\t"
-          "vshll.s16 q5, d31, #6\n\t"
-          "vshll.s16 q2, d22, #6\n\t"
-          "vshll.s16 q6, d24, #6\n\t"
-          "vshll.s16 q3, d23, #6\n\t"
-          "vshll.s16 q7, d25, #6\n\t"
-          "vst1.32 {d0-d3}, [%[D]:128]!\n\t"
-          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
-          "vst1.32 {d8-d11}, [%[D]:128]!\n\t"
-          "vst1.32 {d12-d15}, [%[D]:128]!\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D)
-          :
-          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15",
-            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
-            "d30", "d31", "memory");
-      g += 2 * gw - 1;
-    }
-    n &= 1;
-  }
-  if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
-    if (n >= 2) {
-      const uint16_t* g1 = g + gw;
-      const uint16_t* g2 = g1 + gw;
-      int k = n >> 1;
-      asm volatile(
-          "vld1.16 {d16-d19}, [%[bx]]\n\t"
-          "vld1.16 {d20-d23}, [%[fx]]\n\t"
-          "1:\n\t"
-          "vld1.16 {d24}, [%[g0]]!\n\t"
-          "vld1.16 {d25}, [%[g1]]!\n\t"
-          "vld1.16 {d26}, [%[g2]]!\n\t"
-          "sub %[g0], %[g0], #6\n\t"
-          "sub %[g1], %[g1], #6\n\t"
-          "sub %[g2], %[g2], #6\n\t"
-          "vld1.16 {d27}, [%[g0]], %[st]\n\t"
-          "vld1.16 {d28}, [%[g1]], %[st]\n\t"
-          "vld1.16 {d29}, [%[g2]], %[st]\n\t"
-          "vsub.i16 d0, d25, d24\n\t"
-          "vsub.i16 d2, d26, d25\n\t"
-          "vsub.i16 d1, d28, d27\n\t"
-          "vsub.i16 d3, d29, d28\n\t"
-          "vmull.s16 q2, d16, d0[0]\n\t"
-          "vmull.s16 q3, d17, d0[1]\n\t"
-          "vmull.s16 q4, d18, d0[2]\n\t"
-          "vmull.s16 q5, d19, d0[3]\n\t"
-          "vmull.s16 q6, d16, d2[0]\n\t"
-          "vmull.s16 q7, d17, d2[1]\n\t"
-          "vmull.s16 q12, d18, d2[2]\n\t"
-          "vmull.s16 q13, d19, d2[3]\n\t"
-          "vmlal.s16 q2, d20, d1[0]\n\t"
-          "vmlal.s16 q3, d21, d1[1]\n\t"
-          "vmlal.s16 q4, d22, d1[2]\n\t"
-          "vmlal.s16 q5, d23, d1[3]\n\t"
-          "vmlal.s16 q6, d20, d3[0]\n\t"
-          "vmlal.s16 q7, d21, d3[1]\n\t"
-          "vmlal.s16 q12, d22, d3[2]\n\t"
-          "vmlal.s16 q13, d23, d3[3]\n\t"
-          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
-          "vst1.32 {d8-d11}, [%[D]:128]!\n\t"
-          "vst1.32 {d12-d15}, [%[D]:128]!\n\t"
-          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
-          "subs %[k], %[k], #1\n\t"
-          "bne 1b\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
-          : [st] "r"(4 * gw - 2), [bx] "r"(bxp), [fx] "r"(fxp)
-          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15",
-            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
-            "cc", "memory");
-      n &= 1;
-    }
-  }
-  if constexpr (LB >= 3) {  // two bands a pass; reads four entries a row (up to two past the group's)
-    const int pairs = (n < over ? n : over) >> 1;
-    if (pairs > 0) {
-      const uint16_t* g1 = g + gw;
-      const uint16_t* g2 = g1 + gw;
-      int k = pairs;
-      asm volatile(
-          "vld1.16 {d16-d19}, [%[bx]]\n\t"
-          "vld1.16 {d20-d23}, [%[fx]]\n\t"
-          "1:\n\t"
-          "vld1.16 {d24}, [%[g0]], %[st]\n\t"
-          "vld1.16 {d25}, [%[g1]], %[st]\n\t"
-          "vld1.16 {d26}, [%[g2]], %[st]\n\t"
-          "vsub.i16 d0, d25, d24\n\t"
-          "vsub.i16 d1, d26, d25\n\t"
-          "vmull.s16 q2, d16, d0[0]\n\t"
-          "vmull.s16 q3, d17, d0[0]\n\t"
-          "vmull.s16 q4, d18, d0[%c[la]]\n\t"
-          "vmull.s16 q5, d19, d0[%c[la]]\n\t"
-          "vmull.s16 q6, d16, d1[0]\n\t"
-          "vmull.s16 q7, d17, d1[0]\n\t"
-          "vmull.s16 q12, d18, d1[%c[la]]\n\t"
-          "vmull.s16 q13, d19, d1[%c[la]]\n\t"
-          "vmlal.s16 q2, d20, d0[1]\n\t"
-          "vmlal.s16 q3, d21, d0[1]\n\t"
-          "vmlal.s16 q4, d22, d0[%c[lc]]\n\t"
-          "vmlal.s16 q5, d23, d0[%c[lc]]\n\t"
-          "vmlal.s16 q6, d20, d1[1]\n\t"
-          "vmlal.s16 q7, d21, d1[1]\n\t"
-          "vmlal.s16 q12, d22, d1[%c[lc]]\n\t"
-          "vmlal.s16 q13, d23, d1[%c[lc]]\n\t"
-          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
-          "vst1.32 {d8-d11}, [%[D]:128]!\n\t"
-          "vst1.32 {d12-d15}, [%[D]:128]!\n\t"
-          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
-          "subs %[k], %[k], #1\n\t"
-          "bne 1b\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
-          : [st] "r"(4 * gw), [bx] "r"(bxp), [fx] "r"(fxp), [la] "i"(LB == 3 ? 1 : 0), [lc] "i"(LB == 3 ? 2 : 1)
-          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15",
-            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "cc", "memory");
-      n -= 2 * pairs;
-    }
-  }
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
     if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
       const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
@@ -306,6 +163,159 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
       }
     }
   }
+}
+
+// D[4 b .. 4 b + 3], b < n: the row step of the band between grid rows g + b gw and
+// g + (b + 1) gw (a full group: its G + 1 entries inside each row), from the rows'
+// difference (|difference| < 2^14); bx, fx: the row-step weights, quarter q of the lanes.
+// Two bands a pass in assembly (d0-d7, d16-d31: no callee-saved registers to keep); over:
+// bands whose four-entry reads (mips 0-1) stay inside the grid.
+template <int LB>
+__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const int16x4_t* bxp,
+                                           const int16x4_t* fxp, uint32x4_t* D) {
+  if constexpr (LB == 1) {  // two bands a pass, interleaved (the NEON pipe is in order)
+    for (int pairs = n >> 1; pairs > 0; --pairs) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      asm volatile(
+          "vld1.16 {d16-d17}, [%[g0]]!\n\t"
+          "vld1.16 {d18-d19}, [%[g1]]!\n\t"
+          "vld1.16 {d20-d21}, [%[g2]]!\n\t"
+          "sub %[g0], %[g0], #14\n\t"
+          "sub %[g1], %[g1], #14\n\t"
+          "sub %[g2], %[g2], #14\n\t"
+          "vld1.16 {d22-d23}, [%[g0]]\n\t"
+          "vld1.16 {d24-d25}, [%[g1]]\n\t"
+          "vld1.16 {d26-d27}, [%[g2]]\n\t"
+          "vsub.i16 q14, q9, q8\n\t"
+          "vsub.i16 q15, q10, q9\n\t"
+          "vsub.i16 q11, q12, q11\n\t"
+          "vsub.i16 q12, q13, q12\n\t"
+          "vadd.i16 q11, q11, q14\n\t"
+          "vshl.i16 q14, q14, #1\n\t"
+          "vadd.i16 q12, q12, q15\n\t"
+          "vshl.i16 q15, q15, #1\n\t"
+          "vzip.16 q14, q11\n\t"
+          "vzip.16 q15, q12\n\t"
+          "vshll.s16 q0, d28, #6\n\t"
+          "vshll.s16 q8, d30, #6\n\t"
+          "vshll.s16 q1, d29, #6\n\t"
+          "vshll.s16 q9, d31, #6\n\t"
+          "vshll.s16 q2, d22, #6\n\t"
+          "vshll.s16 q3, d23, #6\n\t"
+          "vshll.s16 q10, d24, #6\n\t"
+          "vshll.s16 q11, d25, #6\n\t"
+          "vst1.32 {d0-d3}, [%[D]:128]!\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vst1.32 {d16-d19}, [%[D]:128]!\n\t"
+          "vst1.32 {d20-d23}, [%[D]:128]!\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D)
+          :
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "d30", "d31", "memory");
+      g += 2 * gw - 1;
+    }
+    n &= 1;
+  }
+  if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
+    if (n >= 2) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      int k = n >> 1;
+      asm volatile(
+          "vld1.16 {d16-d19}, [%[bx]]\n\t"
+          "vld1.16 {d20-d23}, [%[fx]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d24}, [%[g0]]!\n\t"
+          "vld1.16 {d25}, [%[g1]]!\n\t"
+          "vld1.16 {d26}, [%[g2]]!\n\t"
+          "sub %[g0], %[g0], #6\n\t"
+          "sub %[g1], %[g1], #6\n\t"
+          "sub %[g2], %[g2], #6\n\t"
+          "vld1.16 {d27}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d28}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d29}, [%[g2]], %[st]\n\t"
+          "vsub.i16 d0, d25, d24\n\t"
+          "vsub.i16 d2, d26, d25\n\t"
+          "vsub.i16 d1, d28, d27\n\t"
+          "vsub.i16 d3, d29, d28\n\t"
+          "vmull.s16 q2, d16, d0[0]\n\t"
+          "vmull.s16 q3, d17, d0[1]\n\t"
+          "vmull.s16 q12, d18, d0[2]\n\t"
+          "vmull.s16 q13, d19, d0[3]\n\t"
+          "vmull.s16 q14, d16, d2[0]\n\t"
+          "vmull.s16 q15, d17, d2[1]\n\t"
+          "vmlal.s16 q2, d20, d1[0]\n\t"
+          "vmlal.s16 q3, d21, d1[1]\n\t"
+          "vmlal.s16 q12, d22, d1[2]\n\t"
+          "vmlal.s16 q13, d23, d1[3]\n\t"
+          "vmlal.s16 q14, d20, d3[0]\n\t"
+          "vmlal.s16 q15, d21, d3[1]\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vmull.s16 q2, d18, d2[2]\n\t"
+          "vmull.s16 q3, d19, d2[3]\n\t"
+          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
+          "vmlal.s16 q2, d22, d3[2]\n\t"
+          "vmlal.s16 q3, d23, d3[3]\n\t"
+          "vst1.32 {d28-d31}, [%[D]:128]!\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
+          : [st] "r"(4 * gw - 2), [bx] "r"(bxp), [fx] "r"(fxp)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "d30", "d31", "cc", "memory");
+      n &= 1;
+    }
+  }
+  if constexpr (LB >= 3) {  // two bands a pass; reads four entries a row (up to two past the group's)
+    const int pairs = (n < over ? n : over) >> 1;
+    if (pairs > 0) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      int k = pairs;
+      asm volatile(
+          "vld1.16 {d16-d19}, [%[bx]]\n\t"
+          "vld1.16 {d20-d23}, [%[fx]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d24}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d25}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d26}, [%[g2]], %[st]\n\t"
+          "vsub.i16 d0, d25, d24\n\t"
+          "vsub.i16 d1, d26, d25\n\t"
+          "vmull.s16 q2, d16, d0[0]\n\t"
+          "vmull.s16 q3, d17, d0[0]\n\t"
+          "vmull.s16 q12, d18, d0[%c[la]]\n\t"
+          "vmull.s16 q13, d19, d0[%c[la]]\n\t"
+          "vmull.s16 q14, d16, d1[0]\n\t"
+          "vmull.s16 q15, d17, d1[0]\n\t"
+          "vmull.s16 q1, d18, d1[%c[la]]\n\t"
+          "vmlal.s16 q2, d20, d0[1]\n\t"
+          "vmlal.s16 q3, d21, d0[1]\n\t"
+          "vmlal.s16 q12, d22, d0[%c[lc]]\n\t"
+          "vmlal.s16 q13, d23, d0[%c[lc]]\n\t"
+          "vmlal.s16 q14, d20, d1[1]\n\t"
+          "vmlal.s16 q15, d21, d1[1]\n\t"
+          "vmlal.s16 q1, d22, d1[%c[lc]]\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vmull.s16 q2, d19, d1[%c[la]]\n\t"
+          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
+          "vmlal.s16 q2, d23, d1[%c[lc]]\n\t"
+          "vst1.32 {d28-d31}, [%[D]:128]!\n\t"
+          "vst1.32 {d2-d5}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
+          : [st] "r"(4 * gw), [bx] "r"(bxp), [fx] "r"(fxp), [la] "i"(LB == 3 ? 1 : 0), [lc] "i"(LB == 3 ? 2 : 1)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "d30", "d31", "cc", "memory");
+      n -= 2 * pairs;
+    }
+  }
+  if (n > 0) band_deltas_one<LB>(g, gw, n, bxp, fxp, D);
 }
 #endif
 
