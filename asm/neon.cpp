@@ -173,50 +173,45 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
 template <int LB>
 __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const int16x4_t* bxp,
                                            const int16x4_t* fxp, uint32x4_t* D) {
-  if constexpr (LB == 1) {  // two bands a pass, interleaved (the NEON pipe is in order)
-    for (int pairs = n >> 1; pairs > 0; --pairs) {
-      const uint16_t* g1 = g + gw;
-      const uint16_t* g2 = g1 + gw;
+  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: v_j << 7, (v_j + v_j+1) << 6, stored interleaved (vst2)
+    if (n >= 2) {
+      const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
+      int k = n >> 1;
       asm volatile(
-          "vld1.16 {d16-d17}, [%[g0]]!\n\t"
-          "vld1.16 {d18-d19}, [%[g1]]!\n\t"
-          "vld1.16 {d20-d21}, [%[g2]]!\n\t"
-          "sub %[g0], %[g0], #14\n\t"
-          "sub %[g1], %[g1], #14\n\t"
-          "sub %[g2], %[g2], #14\n\t"
-          "vld1.16 {d22-d23}, [%[g0]]\n\t"
-          "vld1.16 {d24-d25}, [%[g1]]\n\t"
-          "vld1.16 {d26-d27}, [%[g2]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d20-d21}, [%[g2]], %[st]\n\t"
+          "vld1.16 {d22-d23}, [%[h0]], %[st]\n\t"
+          "vld1.16 {d24-d25}, [%[h1]], %[st]\n\t"
+          "vld1.16 {d26-d27}, [%[h2]], %[st]\n\t"
           "vsub.i16 q14, q9, q8\n\t"
           "vsub.i16 q15, q10, q9\n\t"
           "vsub.i16 q11, q12, q11\n\t"
           "vsub.i16 q12, q13, q12\n\t"
           "vadd.i16 q11, q11, q14\n\t"
-          "vshl.i16 q14, q14, #1\n\t"
           "vadd.i16 q12, q12, q15\n\t"
-          "vshl.i16 q15, q15, #1\n\t"
-          "vzip.16 q14, q11\n\t"
-          "vzip.16 q15, q12\n\t"
-          "vshll.s16 q0, d28, #6\n\t"
-          "vshll.s16 q8, d30, #6\n\t"
-          "vshll.s16 q1, d29, #6\n\t"
-          "vshll.s16 q9, d31, #6\n\t"
-          "vshll.s16 q2, d22, #6\n\t"
+          "vshll.s16 q0, d28, #7\n\t"
+          "vshll.s16 q1, d22, #6\n\t"
+          "vshll.s16 q2, d29, #7\n\t"
           "vshll.s16 q3, d23, #6\n\t"
-          "vshll.s16 q10, d24, #6\n\t"
+          "vshll.s16 q8, d30, #7\n\t"
+          "vshll.s16 q9, d24, #6\n\t"
+          "vshll.s16 q10, d31, #7\n\t"
           "vshll.s16 q11, d25, #6\n\t"
-          "vst1.32 {d0-d3}, [%[D]:128]!\n\t"
-          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
-          "vst1.32 {d16-d19}, [%[D]:128]!\n\t"
-          "vst1.32 {d20-d23}, [%[D]:128]!\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D)
-          :
-          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
-            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
-            "d30", "d31", "memory");
-      g += 2 * gw - 1;
+          "vst2.32 {d0-d3}, [%[D]:128]!\n\t"
+          "vst2.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vst2.32 {d16-d19}, [%[D]:128]!\n\t"
+          "vst2.32 {d20-d23}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
+            [k] "+r"(k)
+          : [st] "r"(4 * gw)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
+            "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", "cc", "memory");
+      n &= 1;
     }
-    n &= 1;
   }
   if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
     if (n >= 2) {
