@@ -215,22 +215,18 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
   }
   if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
     if (n >= 2) {
-      const uint16_t* g1 = g + gw;
-      const uint16_t* g2 = g1 + gw;
+      const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
       int k = n >> 1;
       asm volatile(
           "vld1.16 {d16-d19}, [%[bx]]\n\t"
           "vld1.16 {d20-d23}, [%[fx]]\n\t"
           "1:\n\t"
-          "vld1.16 {d24}, [%[g0]]!\n\t"
-          "vld1.16 {d25}, [%[g1]]!\n\t"
-          "vld1.16 {d26}, [%[g2]]!\n\t"
-          "sub %[g0], %[g0], #6\n\t"
-          "sub %[g1], %[g1], #6\n\t"
-          "sub %[g2], %[g2], #6\n\t"
-          "vld1.16 {d27}, [%[g0]], %[st]\n\t"
-          "vld1.16 {d28}, [%[g1]], %[st]\n\t"
-          "vld1.16 {d29}, [%[g2]], %[st]\n\t"
+          "vld1.16 {d24}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d25}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d26}, [%[g2]], %[st]\n\t"
+          "vld1.16 {d27}, [%[h0]], %[st]\n\t"
+          "vld1.16 {d28}, [%[h1]], %[st]\n\t"
+          "vld1.16 {d29}, [%[h2]], %[st]\n\t"
           "vsub.i16 d0, d25, d24\n\t"
           "vsub.i16 d2, d26, d25\n\t"
           "vsub.i16 d1, d28, d27\n\t"
@@ -257,8 +253,9 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
           "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
           "subs %[k], %[k], #1\n\t"
           "bne 1b\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
-          : [st] "r"(4 * gw - 2), [bx] "r"(bxp), [fx] "r"(fxp)
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
+            [k] "+r"(k)
+          : [st] "r"(4 * gw), [bx] "r"(bxp), [fx] "r"(fxp)
           : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
             "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
             "d30", "d31", "cc", "memory");
