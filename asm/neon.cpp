@@ -375,7 +375,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 #if !defined(__aarch64__)
   // ARMv7 full groups run a strip at a time in assembly: at most kStripBands bands, their
-  // rows' texel runs (strip_rows, srcs), deltas and first indices (blk).
+  // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk).
   constexpr int kStripBands = 32;
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows[kStripBands * B + 4];
@@ -411,7 +411,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const int m = count - k < n - y ? count - k : n - y;  // rows before run[] wraps
         int i = 0;
         for (; i + 4 <= m; i += 4)
-          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y + i), vld1q_u32(reinterpret_cast<const uint32_t*>(run + k + i)));
+          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y + i),
+                    vld1q_u32(reinterpret_cast<const uint32_t*>(run + k + i)));
         for (; i < m; ++i) strip_rows[y + i] = run[k + i];
         y += m;
         k = 0;
