@@ -119,6 +119,52 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
 }
 
 #if !defined(__aarch64__)
+// out[0..3] = the numerators of a full group's first row: g's entries weighted by bx, fx
+// (16 lanes each; (B - fx) << (4 + mip) and fx << (4 + mip), <= 256). Reads four entries at
+// g and g + 1 (mips 0-1: past the group's, inside the grid as g is never its last row).
+template <int LB>
+__attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_t* bx, const uint16_t* fx,
+                                                uint32x4_t* out) {
+  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: g_j << 8, (g_j + g_j+1) << 7, stored interleaved
+    asm volatile(
+        "vld1.16 {d16-d17}, [%[g]]!\n\t"
+        "sub %[g], %[g], #14\n\t"
+        "vld1.16 {d18-d19}, [%[g]]\n\t"
+        "vshll.u16 q0, d16, #8\n\t"
+        "vadd.i16 q9, q9, q8\n\t"
+        "vshll.u16 q2, d17, #8\n\t"
+        "vshll.u16 q1, d18, #7\n\t"
+        "vshll.u16 q3, d19, #7\n\t"
+        "vst2.32 {d0-d3}, [%[o]:128]!\n\t"
+        "vst2.32 {d4-d7}, [%[o]:128]\n\t"
+        : [g] "+r"(g), [o] "+r"(out)
+        :
+        : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "memory");
+    (void)bx, (void)fx;
+  } else {  // quarter q: entries j = 4 q >> LB and j + 1 as scalars (lanes of d0 and d1)
+    asm volatile(
+        "vld1.16 {d0}, [%[g]]!\n\t"
+        "sub %[g], %[g], #6\n\t"
+        "vld1.16 {d1}, [%[g]]\n\t"
+        "vld1.16 {d16-d19}, [%[bx]]\n\t"
+        "vld1.16 {d20-d23}, [%[fx]]\n\t"
+        "vmull.u16 q2, d16, d0[%c[j0]]\n\t"
+        "vmull.u16 q3, d17, d0[%c[j1]]\n\t"
+        "vmull.u16 q12, d18, d0[%c[j2]]\n\t"
+        "vmull.u16 q13, d19, d0[%c[j3]]\n\t"
+        "vmlal.u16 q2, d20, d1[%c[j0]]\n\t"
+        "vmlal.u16 q3, d21, d1[%c[j1]]\n\t"
+        "vmlal.u16 q12, d22, d1[%c[j2]]\n\t"
+        "vmlal.u16 q13, d23, d1[%c[j3]]\n\t"
+        "vst1.32 {d4-d7}, [%[o]:128]!\n\t"
+        "vst1.32 {d24-d27}, [%[o]:128]\n\t"
+        : [g] "+r"(g), [o] "+r"(out)
+        : [bx] "r"(bx), [fx] "r"(fx), [j0] "i"(0), [j1] "i"(4 >> LB), [j2] "i"(8 >> LB), [j3] "i"(12 >> LB)
+        : "d0", "d1", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24",
+          "d25", "d26", "d27", "memory");
+  }
+}
+
 // band_deltas' bands one at a time (the rest after its two-band passes).
 template <int LB>
 __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const int16x4_t* bxp,
@@ -561,7 +607,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
-        weigh<LB>(r0, BX0, FX0, blk);
+        first_numerators<LB>(r0, w[0], w[1], blk);
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
         band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, BXS, FXS, blk + 4);
         const int rows = nb * B;
