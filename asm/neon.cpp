@@ -167,10 +167,12 @@ __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_
 
 // band_deltas' bands one at a time (the rest after its two-band passes).
 template <int LB>
-__attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const int16x4_t* bxp,
-                                               const int16x4_t* fxp, uint32x4_t* D) {
-  const int16x4_t bx0 = bxp[0], bx1 = bxp[1], bx2 = bxp[2], bx3 = bxp[3];
-  const int16x4_t fx0 = fxp[0], fx1 = fxp[1], fx2 = fxp[2], fx3 = fxp[3];
+__attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const uint16_t* bxp,
+                                               const uint16_t* fxp, uint32x4_t* D) {
+  const int16x4_t bx0 = vreinterpret_s16_u16(vld1_u16(bxp)), bx1 = vreinterpret_s16_u16(vld1_u16(bxp + 4));
+  const int16x4_t bx2 = vreinterpret_s16_u16(vld1_u16(bxp + 8)), bx3 = vreinterpret_s16_u16(vld1_u16(bxp + 12));
+  const int16x4_t fx0 = vreinterpret_s16_u16(vld1_u16(fxp)), fx1 = vreinterpret_s16_u16(vld1_u16(fxp + 4));
+  const int16x4_t fx2 = vreinterpret_s16_u16(vld1_u16(fxp + 8)), fx3 = vreinterpret_s16_u16(vld1_u16(fxp + 12));
   auto put = [&](int16x4_t a0, int16x4_t a1, int16x4_t a2, int16x4_t a3, int16x4_t c0, int16x4_t c1,
                  int16x4_t c2, int16x4_t c3, uint32x4_t* o) __attribute__((always_inline)) {
     // quarter q: v_j bx + v_j+1 fx (a: v_j, c: v_j+1 in every lane)
@@ -213,12 +215,12 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
 
 // D[4 b .. 4 b + 3], b < n: the row step of the band between grid rows g + b gw and
 // g + (b + 1) gw (a full group: its G + 1 entries inside each row), from the rows'
-// difference (|difference| < 2^14); bx, fx: the row-step weights, quarter q of the lanes.
+// difference (|difference| < 2^14); bxp, fxp: the row-step weights of the 16 lanes.
 // Two bands a pass in assembly (d0-d7, d16-d31: no callee-saved registers to keep); over:
 // bands whose four-entry reads (mips 0-1) stay inside the grid.
 template <int LB>
-__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const int16x4_t* bxp,
-                                           const int16x4_t* fxp, uint32x4_t* D) {
+__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const uint16_t* bxp,
+                                           const uint16_t* fxp, uint32x4_t* D) {
   if constexpr (LB == 1) {  // lanes 2j, 2j + 1: v_j << 7, (v_j + v_j+1) << 6, stored interleaved (vst2)
     if (n >= 2) {
       const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
@@ -427,11 +429,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8_t* strip_rows[kStripBands * B + 4];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
   alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
-  int16x4_t BXS[4], FXS[4];
-  for (int q = 0; q < 4; ++q) {
-    BXS[q] = vreinterpret_s16_u16(vld1_u16(w[2] + 4 * q));
-    FXS[q] = vreinterpret_s16_u16(vld1_u16(w[3] + 4 * q));
-  }
 #endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
@@ -609,7 +606,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         first_numerators<LB>(r0, w[0], w[1], blk);
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, BXS, FXS, blk + 4);
+        band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
