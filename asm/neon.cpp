@@ -627,7 +627,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint32x4_t* dp = blk;
         // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
         // 512-byte block (no page crossing).
-#define SB_STRIP7(ROW) \
+#define SB_STRIP7(ROW, TEST) \
   "sub %[d], %[d], %[st]\n\t" \
   "ldr r0, [%[sa], #-4]\n\t" \
   "vld1.32 {d8-d11}, [%[dp]:128]!\n\t" \
@@ -649,12 +649,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmovl.u16 q15, d3\n\t" \
   "b 1f\n\t" \
   ".balign 512\n" \
-  "1:\n\t" ROW ROW \
-  "tst %[sa], %[bm]\n\t" \
-  "bne 1b\n\t" \
+  "1:\n\t" ROW ROW TEST \
   "ldr r0, [%[sa]]\n\t" \
-  "cmp r0, #0\n\t" \
-  "beq 3f\n\t" \
+  "cbz r0, 3f\n\t" \
   "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
   "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
   "b 1b\n\t" \
@@ -666,10 +663,21 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
   "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
   "cc", "memory"
-        if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0)
-          asm volatile(SB_STRIP7(SB_ROW7A) SB_STRIP7_OPS);
-        else
-          asm volatile(SB_STRIP7(SB_ROW7) SB_STRIP7_OPS);
+        // Every pass ends a band when B = 2; else a band ends where srcs is 4 B-aligned.
+#define SB_BAND_TEST "tst %[sa], %[bm]\n\tbne 1b\n\t"
+        constexpr bool kPassIsBand = B == 2;
+        if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
+          if constexpr (kPassIsBand)
+            asm volatile(SB_STRIP7(SB_ROW7A, "") SB_STRIP7_OPS);
+          else
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST) SB_STRIP7_OPS);
+        } else {
+          if constexpr (kPassIsBand)
+            asm volatile(SB_STRIP7(SB_ROW7, "") SB_STRIP7_OPS);
+          else
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST) SB_STRIP7_OPS);
+        }
+#undef SB_BAND_TEST
 #undef SB_STRIP7
 #undef SB_STRIP7_OPS
 #undef SB_ROW7A
