@@ -118,6 +118,247 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
   }
 }
 
+#if !defined(__aarch64__)
+// out[0..3] = the numerators of a full group's first row: g's entries weighted by bx, fx
+// (16 lanes each; (B - fx) << (4 + mip) and fx << (4 + mip), <= 256). Reads four entries at
+// g and g + 1 (mips 0-1: past the group's, inside the grid as g is never its last row).
+template <int LB>
+__attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_t* bx, const uint16_t* fx,
+                                                uint32x4_t* out) {
+  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: g_j << 8, (g_j + g_j+1) << 7, stored interleaved
+    asm volatile(
+        "vld1.16 {d16-d17}, [%[g]]!\n\t"
+        "sub %[g], %[g], #14\n\t"
+        "vld1.16 {d18-d19}, [%[g]]\n\t"
+        "vshll.u16 q0, d16, #8\n\t"
+        "vadd.i16 q9, q9, q8\n\t"
+        "vshll.u16 q2, d17, #8\n\t"
+        "vshll.u16 q1, d18, #7\n\t"
+        "vshll.u16 q3, d19, #7\n\t"
+        "vst2.32 {d0-d3}, [%[o]:128]!\n\t"
+        "vst2.32 {d4-d7}, [%[o]:128]\n\t"
+        : [g] "+r"(g), [o] "+r"(out)
+        :
+        : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "memory");
+    (void)bx, (void)fx;
+  } else {  // quarter q: entries j = 4 q >> LB and j + 1 as scalars (lanes of d0 and d1)
+    asm volatile(
+        "vld1.16 {d0}, [%[g]]!\n\t"
+        "sub %[g], %[g], #6\n\t"
+        "vld1.16 {d1}, [%[g]]\n\t"
+        "vld1.16 {d16-d19}, [%[bx]]\n\t"
+        "vld1.16 {d20-d23}, [%[fx]]\n\t"
+        "vmull.u16 q2, d16, d0[%c[j0]]\n\t"
+        "vmull.u16 q3, d17, d0[%c[j1]]\n\t"
+        "vmull.u16 q12, d18, d0[%c[j2]]\n\t"
+        "vmull.u16 q13, d19, d0[%c[j3]]\n\t"
+        "vmlal.u16 q2, d20, d1[%c[j0]]\n\t"
+        "vmlal.u16 q3, d21, d1[%c[j1]]\n\t"
+        "vmlal.u16 q12, d22, d1[%c[j2]]\n\t"
+        "vmlal.u16 q13, d23, d1[%c[j3]]\n\t"
+        "vst1.32 {d4-d7}, [%[o]:128]!\n\t"
+        "vst1.32 {d24-d27}, [%[o]:128]\n\t"
+        : [g] "+r"(g), [o] "+r"(out)
+        : [bx] "r"(bx), [fx] "r"(fx), [j0] "i"(0), [j1] "i"(4 >> LB), [j2] "i"(8 >> LB), [j3] "i"(12 >> LB)
+        : "d0", "d1", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24",
+          "d25", "d26", "d27", "memory");
+  }
+}
+
+// band_deltas' bands one at a time (the rest after its two-band passes).
+template <int LB>
+__attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const uint16_t* bxp,
+                                               const uint16_t* fxp, uint32x4_t* D) {
+  const int16x4_t bx0 = vreinterpret_s16_u16(vld1_u16(bxp)), bx1 = vreinterpret_s16_u16(vld1_u16(bxp + 4));
+  const int16x4_t bx2 = vreinterpret_s16_u16(vld1_u16(bxp + 8)), bx3 = vreinterpret_s16_u16(vld1_u16(bxp + 12));
+  const int16x4_t fx0 = vreinterpret_s16_u16(vld1_u16(fxp)), fx1 = vreinterpret_s16_u16(vld1_u16(fxp + 4));
+  const int16x4_t fx2 = vreinterpret_s16_u16(vld1_u16(fxp + 8)), fx3 = vreinterpret_s16_u16(vld1_u16(fxp + 12));
+  auto put = [&](int16x4_t a0, int16x4_t a1, int16x4_t a2, int16x4_t a3, int16x4_t c0, int16x4_t c1,
+                 int16x4_t c2, int16x4_t c3, uint32x4_t* o) __attribute__((always_inline)) {
+    // quarter q: v_j bx + v_j+1 fx (a: v_j, c: v_j+1 in every lane)
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 0), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a0, bx0), c0, fx0)));
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 1), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a1, bx1), c1, fx1)));
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 2), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a2, bx2), c2, fx2)));
+    vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
+  };
+  for (int b = 0; b < n; ++b, g += gw, D += 4) {
+    if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
+      const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
+      const int16x8_t c = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw + 1), vld1q_u16(g + 1)));
+      const int16x8x2_t z = vzipq_s16(vshlq_n_s16(a, 1), vaddq_s16(a, c));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 0), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[0]), 6)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 1), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[0]), 6)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 2), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[1]), 6)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 3), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[1]), 6)));
+    } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
+      const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
+      const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 0),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx0, a, 0), fx0, c, 0)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 1),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx1, a, 1), fx1, c, 1)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 2),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx2, a, 2), fx2, c, 2)));
+      vst1q_u32(reinterpret_cast<uint32_t*>(D + 3),
+                vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(bx3, a, 3), fx3, c, 3)));
+    } else {  // v_0 .. v_2 (mip 0: v_0, v_1) by scalar loads
+      const int16x4_t v0 = vdup_n_s16(int16_t(g[gw] - g[0])), v1 = vdup_n_s16(int16_t(g[gw + 1] - g[1]));
+      if constexpr (LB == 3) {
+        const int16x4_t v2 = vdup_n_s16(int16_t(g[gw + 2] - g[2]));
+        put(v0, v0, v1, v1, v1, v1, v2, v2, D);
+      } else {
+        put(v0, v0, v0, v0, v1, v1, v1, v1, D);
+      }
+    }
+  }
+}
+
+// D[4 b .. 4 b + 3], b < n: the row step of the band between grid rows g + b gw and
+// g + (b + 1) gw (a full group: its G + 1 entries inside each row), from the rows'
+// difference (|difference| < 2^14); bxp, fxp: the row-step weights of the 16 lanes.
+// Two bands a pass in assembly (d0-d7, d16-d31: no callee-saved registers to keep); over:
+// bands whose four-entry reads (mips 0-1) stay inside the grid.
+template <int LB>
+__attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const uint16_t* bxp,
+                                           const uint16_t* fxp, uint32x4_t* D) {
+  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: v_j << 7, (v_j + v_j+1) << 6, stored interleaved (vst2)
+    if (n >= 2) {
+      const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
+      int k = n >> 1;
+      asm volatile(
+          "1:\n\t"
+          "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d20-d21}, [%[g2]], %[st]\n\t"
+          "vld1.16 {d22-d23}, [%[h0]], %[st]\n\t"
+          "vld1.16 {d24-d25}, [%[h1]], %[st]\n\t"
+          "vld1.16 {d26-d27}, [%[h2]], %[st]\n\t"
+          "vsub.i16 q14, q9, q8\n\t"
+          "vsub.i16 q15, q10, q9\n\t"
+          "vsub.i16 q11, q12, q11\n\t"
+          "vsub.i16 q12, q13, q12\n\t"
+          "vadd.i16 q11, q11, q14\n\t"
+          "vadd.i16 q12, q12, q15\n\t"
+          "vshll.s16 q0, d28, #7\n\t"
+          "vshll.s16 q1, d22, #6\n\t"
+          "vshll.s16 q2, d29, #7\n\t"
+          "vshll.s16 q3, d23, #6\n\t"
+          "vshll.s16 q8, d30, #7\n\t"
+          "vshll.s16 q9, d24, #6\n\t"
+          "vshll.s16 q10, d31, #7\n\t"
+          "vshll.s16 q11, d25, #6\n\t"
+          "vst2.32 {d0-d3}, [%[D]:128]!\n\t"
+          "vst2.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vst2.32 {d16-d19}, [%[D]:128]!\n\t"
+          "vst2.32 {d20-d23}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
+            [k] "+r"(k)
+          : [st] "r"(4 * gw)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
+            "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", "cc", "memory");
+      n &= 1;
+    }
+  }
+  if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
+    if (n >= 2) {
+      const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
+      int k = n >> 1;
+      asm volatile(
+          "vld1.16 {d16-d19}, [%[bx]]\n\t"
+          "vld1.16 {d20-d23}, [%[fx]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d24}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d25}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d26}, [%[g2]], %[st]\n\t"
+          "vld1.16 {d27}, [%[h0]], %[st]\n\t"
+          "vld1.16 {d28}, [%[h1]], %[st]\n\t"
+          "vld1.16 {d29}, [%[h2]], %[st]\n\t"
+          "vsub.i16 d0, d25, d24\n\t"
+          "vsub.i16 d2, d26, d25\n\t"
+          "vsub.i16 d1, d28, d27\n\t"
+          "vsub.i16 d3, d29, d28\n\t"
+          "vmull.s16 q2, d16, d0[0]\n\t"
+          "vmull.s16 q3, d17, d0[1]\n\t"
+          "vmull.s16 q12, d18, d0[2]\n\t"
+          "vmull.s16 q13, d19, d0[3]\n\t"
+          "vmull.s16 q14, d16, d2[0]\n\t"
+          "vmull.s16 q15, d17, d2[1]\n\t"
+          "vmlal.s16 q2, d20, d1[0]\n\t"
+          "vmlal.s16 q3, d21, d1[1]\n\t"
+          "vmlal.s16 q12, d22, d1[2]\n\t"
+          "vmlal.s16 q13, d23, d1[3]\n\t"
+          "vmlal.s16 q14, d20, d3[0]\n\t"
+          "vmlal.s16 q15, d21, d3[1]\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vmull.s16 q2, d18, d2[2]\n\t"
+          "vmull.s16 q3, d19, d2[3]\n\t"
+          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
+          "vmlal.s16 q2, d22, d3[2]\n\t"
+          "vmlal.s16 q3, d23, d3[3]\n\t"
+          "vst1.32 {d28-d31}, [%[D]:128]!\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
+            [k] "+r"(k)
+          : [st] "r"(4 * gw), [bx] "r"(bxp), [fx] "r"(fxp)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "d30", "d31", "cc", "memory");
+      n &= 1;
+    }
+  }
+  if constexpr (LB >= 3) {  // two bands a pass; reads four entries a row (up to two past the group's)
+    const int pairs = (n < over ? n : over) >> 1;
+    if (pairs > 0) {
+      const uint16_t* g1 = g + gw;
+      const uint16_t* g2 = g1 + gw;
+      int k = pairs;
+      asm volatile(
+          "vld1.16 {d16-d19}, [%[bx]]\n\t"
+          "vld1.16 {d20-d23}, [%[fx]]\n\t"
+          "1:\n\t"
+          "vld1.16 {d24}, [%[g0]], %[st]\n\t"
+          "vld1.16 {d25}, [%[g1]], %[st]\n\t"
+          "vld1.16 {d26}, [%[g2]], %[st]\n\t"
+          "vsub.i16 d0, d25, d24\n\t"
+          "vsub.i16 d1, d26, d25\n\t"
+          "vmull.s16 q2, d16, d0[0]\n\t"
+          "vmull.s16 q3, d17, d0[0]\n\t"
+          "vmull.s16 q12, d18, d0[%c[la]]\n\t"
+          "vmull.s16 q13, d19, d0[%c[la]]\n\t"
+          "vmull.s16 q14, d16, d1[0]\n\t"
+          "vmull.s16 q15, d17, d1[0]\n\t"
+          "vmull.s16 q1, d18, d1[%c[la]]\n\t"
+          "vmlal.s16 q2, d20, d0[1]\n\t"
+          "vmlal.s16 q3, d21, d0[1]\n\t"
+          "vmlal.s16 q12, d22, d0[%c[lc]]\n\t"
+          "vmlal.s16 q13, d23, d0[%c[lc]]\n\t"
+          "vmlal.s16 q14, d20, d1[1]\n\t"
+          "vmlal.s16 q15, d21, d1[1]\n\t"
+          "vmlal.s16 q1, d22, d1[%c[lc]]\n\t"
+          "vst1.32 {d4-d7}, [%[D]:128]!\n\t"
+          "vmull.s16 q2, d19, d1[%c[la]]\n\t"
+          "vst1.32 {d24-d27}, [%[D]:128]!\n\t"
+          "vmlal.s16 q2, d23, d1[%c[lc]]\n\t"
+          "vst1.32 {d28-d31}, [%[D]:128]!\n\t"
+          "vst1.32 {d2-d5}, [%[D]:128]!\n\t"
+          "subs %[k], %[k], #1\n\t"
+          "bne 1b\n\t"
+          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [D] "+r"(D), [k] "+r"(k)
+          : [st] "r"(4 * gw), [bx] "r"(bxp), [fx] "r"(fxp), [la] "i"(LB == 3 ? 1 : 0), [lc] "i"(LB == 3 ? 2 : 1)
+          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7",
+            "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29",
+            "d30", "d31", "cc", "memory");
+      n -= 2 * pairs;
+    }
+  }
+  if (n > 0) band_deltas_one<LB>(g, gw, n, bxp, fxp, D);
+}
+#endif
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -180,6 +421,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   }
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
+#if !defined(__aarch64__)
+  // ARMv7 full groups run a strip at a time in assembly: at most kStripBands bands, their
+  // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk).
+  constexpr int kStripBands = 32;
+  if (strip_bands > kStripBands) strip_bands = kStripBands;
+  const uint8_t* strip_rows[kStripBands * B + 4];
+  alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
+  alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
+#endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
@@ -197,6 +447,21 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
     uint8_t* const strip = out + by0 * B * width;
+#if !defined(__aarch64__)
+    {  // the strip's rows in order, four past its end (read cyclically from run[first])
+      const int n = nb * B + 4;
+      for (int y = 0, k = first; y < n;) {
+        const int m = count - k < n - y ? count - k : n - y;  // rows before run[] wraps
+        int i = 0;
+        for (; i + 4 <= m; i += 4)
+          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y + i),
+                    vld1q_u32(reinterpret_cast<const uint32_t*>(run + k + i)));
+        for (; i < m; ++i) strip_rows[y + i] = run[k + i];
+        y += m;
+        k = 0;
+      }
+    }
+#endif
     for (int g = 0; g < groups; ++g) {
       const int b0 = g * G;
       const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
@@ -207,6 +472,219 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
         return pad;
       };
+#if !defined(__aarch64__)
+      if (width - 16 * g >= 16) {
+        // Full groups: the whole strip in one assembly loop, two rows a pass. Row y: the step
+        // to row y + 1 (numerators q4-q7 += the delta of row y's band, q8-q11), the scalar work
+        // of row y (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str:
+        // the output has any alignment) interleaved with the NEON work of row y + 1 (16-bit
+        // row << 8 | texel by vshrn and vsli, widened into q12-q15 once row y's are read).
+        // The delta changes (the next 64 bytes at dp) at each band's first row: srcs[y] lies at
+        // a multiple of 4 B bytes exactly then; a null srcs[y] ends the strip.
+#define SB_ROW7 \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "add %[d], %[d], %[st]\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vadd.i32 q4, q4, q8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vadd.i32 q5, q5, q9\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vadd.i32 q6, q6, q10\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vadd.i32 q7, q7, q11\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "str r1, [%[d], #0]\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmov r1, r2, d28\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "str r0, [%[d], #4]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "str r1, [%[d], #8]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "str r0, [%[d], #12]\n\t"
+
+        // Word-aligned output (the usual case): the same with strd (r8 holds a third word).
+#define SB_ROW7A \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "add %[d], %[d], %[st]\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vadd.i32 q4, q4, q8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vadd.i32 q5, q5, q9\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vadd.i32 q6, q6, q10\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vadd.i32 q7, q7, q11\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r8, r2, d28\n\t" \
+  "strd r1, r0, [%[d], #0]\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  "ldrb r8, [%[cm], r8]\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r8, r8, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r8, r8, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "strd r8, r0, [%[d], #8]\n\t"
+        // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
+        // each of its rows).
+        const uint16_t* const r0 = grid + by0 * grid_width + b0;
+        first_numerators<LB>(r0, w[0], w[1], blk);
+        // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
+        band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
+        const int rows = nb * B;
+        // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
+        // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
+        const uint8_t** const srcs = sbuf + 16;
+        {
+          const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
+          const uint32_t* r = reinterpret_cast<const uint32_t*>(strip_rows);
+          const uint32_t* const r_end = r + rows;
+          uint32_t* o = reinterpret_cast<uint32_t*>(srcs - 1);
+          do {
+            vst1q_u32(o, vaddq_u32(vld1q_u32(r), off));
+            r += 4, o += 4;
+          } while (r <= r_end);
+          srcs[rows] = nullptr;
+        }
+        uint8_t* d = strip + 16 * g;
+        const uint8_t** sa = srcs;
+        const uint32x4_t* dp = blk;
+        // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
+        // 512-byte block (no page crossing).
+#define SB_STRIP7(ROW, TEST) \
+  "sub %[d], %[d], %[st]\n\t" \
+  "ldr r0, [%[sa], #-4]\n\t" \
+  "vld1.32 {d8-d11}, [%[dp]:128]!\n\t" \
+  "vld1.32 {d12-d15}, [%[dp]:128]!\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "vshrn.i32 d4, q4, #16\n\t" \
+  "vshrn.i32 d5, q5, #16\n\t" \
+  "vshrn.i32 d6, q6, #16\n\t" \
+  "vshrn.i32 d7, q7, #16\n\t" \
+  "vmovl.u8 q1, d1\n\t" \
+  "vmovl.u8 q0, d0\n\t" \
+  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
+  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  "vsli.16 q0, q2, #8\n\t" \
+  "vsli.16 q1, q3, #8\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "b 1f\n\t" \
+  ".balign 512\n" \
+  "1:\n\t" ROW ROW TEST \
+  "ldr r0, [%[sa]]\n\t" \
+  "cbz r0, 3f\n\t" \
+  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
+  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  "b 1b\n\t" \
+  "3:\n\t"
+#define SB_STRIP7_OPS \
+  : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
+  : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1) \
+  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", \
+  "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
+  "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
+  "cc", "memory"
+        // Every pass ends a band when B = 2; else a band ends where srcs is 4 B-aligned.
+#define SB_BAND_TEST "tst %[sa], %[bm]\n\tbne 1b\n\t"
+        constexpr bool kPassIsBand = B == 2;
+        if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
+          if constexpr (kPassIsBand)
+            asm volatile(SB_STRIP7(SB_ROW7A, "") SB_STRIP7_OPS);
+          else
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST) SB_STRIP7_OPS);
+        } else {
+          if constexpr (kPassIsBand)
+            asm volatile(SB_STRIP7(SB_ROW7, "") SB_STRIP7_OPS);
+          else
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST) SB_STRIP7_OPS);
+        }
+#undef SB_BAND_TEST
+#undef SB_STRIP7
+#undef SB_STRIP7_OPS
+#undef SB_ROW7A
+#undef SB_ROW7
+        continue;
+      }
+#endif
       uint32x4_t num[4], delta[4], prev[4];
       {
         const uint16_t* r0 = row_of(by0);
@@ -415,114 +893,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         d += width;
       };
-      if (m >= 16) {
-        // Full groups: a band at a time in assembly. Each row: the scalar work of row y
-        // (index pairs by ldrd from the aligned buffer, colormap bytes, packed words; str,
-        // not strd: the output has any alignment) interleaved with the NEON work of row y + 1
-        // (vsli of the row onto the widened texel), stored over row y's indices once they are
-        // all read. q0-q3: the step
-        // (the band's last row steps with the next band's); q8-q15: temporaries.
-#define SB_BLOCK_ROW7(doff) \
-  "ldr r0, [%[sa]], #4\n\t" \
-  "vld1.8 {d16-d17}, [r0]\n\t" \
-  "ldrd r0, r1, [%[dl], #144]\n\t" \
-  "ldrd r2, r3, [%[dl], #152]\n\t" \
-  "vmovl.u8 q9, d16\n\t" \
-  "ldrd ip, lr, [%[dl], #160]\n\t" \
-  "vmovl.u8 q10, d17\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
-  "vmovl.u16 q11, d18\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vmovl.u16 q12, d19\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vmovl.u16 q13, d20\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "vmovl.u16 q14, d21\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vshr.u32 q9, %q[n0], #16\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
-  "vsli.32 q11, q9, #8\n\t" \
-  "orr r0, r0, r1, lsl #8\n\t" \
-  "vshr.u32 q9, %q[n1], #16\n\t" \
-  "orr r2, r2, r3, lsl #8\n\t" \
-  "vsli.32 q12, q9, #8\n\t" \
-  "ldrd r1, r3, [%[dl], #168]\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "orr r0, r0, r2, lsl #16\n\t" \
-  "orr r1, r1, r3, lsl #8\n\t" \
-  "orr ip, ip, r1, lsl #16\n\t" \
-  "str r0, [%[d], #0]\n\t" \
-  "str ip, [%[d], #4]\n\t" \
-  "ldrd r0, r1, [%[dl], #176]\n\t" \
-  "ldrd r2, r3, [%[dl], #184]\n\t" \
-  "vshr.u32 q9, %q[n2], #16\n\t" \
-  "ldrd ip, lr, [%[dl], #192]\n\t" \
-  "vsli.32 q13, q9, #8\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
-  "vshr.u32 q9, %q[n3], #16\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vsli.32 q14, q9, #8\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
-  "orr r0, r0, r1, lsl #8\n\t" \
-  "orr r2, r2, r3, lsl #8\n\t" \
-  "ldrd r1, r3, [%[dl], #200]\n\t" \
-  "orr ip, ip, lr, lsl #8\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "orr r0, r0, r2, lsl #16\n\t" \
-  "orr r1, r1, r3, lsl #8\n\t" \
-  "orr ip, ip, r1, lsl #16\n\t" \
-  "str r0, [%[d], #8]\n\t" \
-  "str ip, [%[d], #12]\n\t" \
-  "ldr r1, [%[dl], #128]\n\t" \
-  "add %[d], %[d], r1\n\t" \
-  "add r0, %[dl], #144\n\t" \
-  "vst1.32 {d22-d25}, [r0:128]!\n\t" \
-  "vst1.32 {d26-d29}, [r0:128]\n\t" \
-  "add r1, %[dl], #" doff "\n\t" \
-  "vld1.32 {d16-d19}, [r1:128]!\n\t" \
-  "vld1.32 {d20-d23}, [r1:128]\n\t" \
-  "vadd.i32 %q[n0], %q[n0], q8\n\t" \
-  "vadd.i32 %q[n1], %q[n1], q9\n\t" \
-  "vadd.i32 %q[n2], %q[n2], q10\n\t" \
-  "vadd.i32 %q[n3], %q[n3], q11\n\t"
-        // The assembly's one data block: this band's step, the next band's, the row stride, the
-        // current row's indices (one base register for all of them: ARMv7 has few).
-        struct alignas(16) {
-          uint32x4_t dd[9];
-          uint32_t ib[16];
-        } blk;
-        blk.dd[8] = vdupq_n_u32(uint32_t(width));
-        std::memcpy(blk.ib, ib[cur], sizeof blk.ib);
-        uint32x4_t* const dd = blk.dd;
-        const uint8_t* srcs[B + 1];    // the next row's texels, for each row of the band
-        for (int band = 0; band < nb; ++band) {
-          for (int j = 0; j < 4; ++j) dd[j] = delta[j];
-          if (band + 1 < nb) step_for(by0 + band + 2);
-          for (int j = 0; j < 4; ++j) dd[4 + j] = delta[j];
-          for (int r = 0; r < B; ++r) srcs[r] = next_run() + 16 * g;
-          srcs[B] = nullptr;  // the loop runs while a row follows the next one
-          const uint8_t* const* sa = srcs;
-          asm volatile(
-              "1:\n\t" SB_BLOCK_ROW7("0")
-              "ldr r0, [%[sa], #4]\n\t"
-              "cmp r0, #0\n\t"
-              "bne 1b\n\t" SB_BLOCK_ROW7("64")
-              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [sa] "+r"(sa),
-                [d] "+r"(d)
-              : [cm] "r"(colormap), [dl] "r"(dd)
-              : "r0", "r1", "r2", "r3", "ip", "lr", "d16", "d17",
-                "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "cc",
-                "memory");
-        }
-#undef SB_BLOCK_ROW7
-        continue;
-      }
 #endif
       for (int band = 0; band < nb; ++band) {
         for (int fy = 0; fy < B - 1; ++fy) row(false, 0);
