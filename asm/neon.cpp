@@ -105,6 +105,10 @@ constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the 
 
 constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
 
+#if defined(__aarch64__)
+constexpr int kStripRows = 512;  // rows of a strip at most (aarch64: the assembly's row and step tables)
+#endif
+
 // Lanes k of the group's weighted grid row: g[k >> LB] (B - fx) + g[(k >> LB) + 1] fx with
 // weights pre-shifted (bx = (B - fx) << s, fx = fx << s), quarter j = lanes 4j .. 4j + 3.
 template <int LB>
@@ -155,6 +159,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
     strip_bands = fit < bh ? fit : bh;
   }
+#if defined(__aarch64__)
+  if (strip_bands > kStripRows / B) strip_bands = kStripRows / B;  // the assembly's tables
+#endif
 
   // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
   // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
@@ -178,6 +185,21 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
     IDX[j] = vld1q_u8(b);
   }
+  // The assembly's table lookups: lanes 4j..4j+3 of (texel, row, 0, 0) from the texel vector T
+  // and the numerators N0..N3 held as {N3, T, N0, N1, N2} in consecutive registers (row: a
+  // lane's byte 2). Quarter j reads {T, N0}, {T, N0, N1}, {T, N0, N1, N2}, {N3, T}.
+  uint8x16_t TIX[4];
+  for (int j = 0; j < 4; ++j) {
+    uint8_t b[16];
+    for (int l = 0; l < 4; ++l) {
+      b[4 * l] = uint8_t(j < 3 ? 4 * j + l : 16 + 12 + l);
+      b[4 * l + 1] = uint8_t(j < 3 ? 16 * (j + 1) + 4 * l + 2 : 4 * l + 2);
+      b[4 * l + 2] = b[4 * l + 3] = 0xff;
+    }
+    TIX[j] = vld1q_u8(b);
+  }
+  const uint8_t* lin[kStripRows + 2];     // the strip's texel runs in row order, two rows beyond
+  uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 
@@ -196,6 +218,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         if (++t == th) t = 0;
       }
     }
+#if defined(__aarch64__)
+    for (int r = 0, t = first; r < nb * B + 2; ++r) {
+      lin[r] = run[t];
+      if (++t == count) t = 0;
+    }
+#endif
     uint8_t* const strip = out + by0 * B * width;
     for (int g = 0; g < groups; ++g) {
       const int b0 = g * G;
@@ -250,119 +278,183 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           num[j] = vaddq_u32(num[j], delta[j]);
         }
       };
-      step_for(by0 + 1);
-      indices(next_run());
       if (m >= 16) {
-        // Each row: the scalar work of its pairs first (ALU and load/store only: the
-        // colormap loads, packing, one stp), then the NEON work of the next row (ushr, tbx,
-        // step, and the 64-bit moves into the pairs). An in-order core (Cortex-A53) never
-        // waits on a NEON result inside a row, nor has a short instruction held behind a long
-        // NEON one. x0-x7: pairs; x9-x16: high indices; x17: texel run; v16-v19: the step;
-        // v20-v23: IDX; v27: texels; v28-v31: index vectors. A band's last row steps with the
-        // next band's delta (dn).
-#define SB_BLOCK_ROW \
-  "orr x9, xzr, x0, lsr #32\n\t" \
-  "orr x10, xzr, x1, lsr #32\n\t" \
-  "orr x11, xzr, x2, lsr #32\n\t" \
-  "orr x12, xzr, x3, lsr #32\n\t" \
-  "orr x13, xzr, x4, lsr #32\n\t" \
-  "ldr x17, [%[rp]], #8\n\t" \
-  "orr x14, xzr, x5, lsr #32\n\t" \
-  "ldrb w0, [%[cm], w0, uxtw]\n\t" \
-  "orr x15, xzr, x6, lsr #32\n\t" \
-  "ldrb w9, [%[cm], x9]\n\t" \
-  "orr x16, xzr, x7, lsr #32\n\t" \
-  "ldrb w1, [%[cm], w1, uxtw]\n\t" \
-  "cmp %[rp], %[re]\n\t" \
-  "ldrb w10, [%[cm], x10]\n\t" \
-  "csel %[rp], %[rb], %[rp], eq\n\t" \
-  "ldrb w2, [%[cm], w2, uxtw]\n\t" \
-  "add x17, x17, %[goff]\n\t" \
-  "ldrb w11, [%[cm], x11]\n\t" \
-  "orr x0, x0, x9, lsl #8\n\t" \
-  "ldrb w3, [%[cm], w3, uxtw]\n\t" \
-  "orr x1, x1, x10, lsl #8\n\t" \
-  "ldrb w12, [%[cm], x12]\n\t" \
-  "ldr q27, [x17]\n\t" \
-  "orr x2, x2, x11, lsl #8\n\t" \
-  "ldrb w4, [%[cm], w4, uxtw]\n\t" \
-  "orr x0, x0, x1, lsl #16\n\t" \
-  "ldrb w13, [%[cm], x13]\n\t" \
-  "orr x3, x3, x12, lsl #8\n\t" \
-  "ldrb w5, [%[cm], w5, uxtw]\n\t" \
-  "ldrb w14, [%[cm], x14]\n\t" \
-  "orr x2, x2, x3, lsl #16\n\t" \
-  "ldrb w6, [%[cm], w6, uxtw]\n\t" \
-  "orr x4, x4, x13, lsl #8\n\t" \
-  "ldrb w15, [%[cm], x15]\n\t" \
-  "orr x5, x5, x14, lsl #8\n\t" \
-  "ldrb w7, [%[cm], w7, uxtw]\n\t" \
-  "orr x0, x0, x2, lsl #32\n\t" \
-  "ldrb w16, [%[cm], x16]\n\t" \
-  "orr x4, x4, x5, lsl #16\n\t" \
-  "orr x6, x6, x15, lsl #8\n\t" \
-  "orr x7, x7, x16, lsl #8\n\t" \
-  "orr x6, x6, x7, lsl #16\n\t" \
-  "orr x4, x4, x6, lsl #32\n\t" \
-  "stp x0, x4, [%[d]]\n\t" \
-  "add %[d], %[d], %[w]\n\t" \
-  "ushr v28.4s, %[n0].4s, #8\n\t"                     \
-  "ushr v29.4s, %[n1].4s, #8\n\t"                     \
-  "ushr v30.4s, %[n2].4s, #8\n\t"                     \
-  "ushr v31.4s, %[n3].4s, #8\n\t"                     \
-  "add %[n0].4s, %[n0].4s, v16.4s\n\t"                \
-  "add %[n1].4s, %[n1].4s, v17.4s\n\t"                \
-  "tbx v28.16b, {v27.16b}, v20.16b\n\t"               \
-  "tbx v29.16b, {v27.16b}, v21.16b\n\t"               \
-  "add %[n2].4s, %[n2].4s, v18.4s\n\t"                \
-  "add %[n3].4s, %[n3].4s, v19.4s\n\t"                \
-  "tbx v30.16b, {v27.16b}, v22.16b\n\t"               \
-  "tbx v31.16b, {v27.16b}, v23.16b\n\t"               \
-  "fmov x0, d28\n\t"                                  \
-  "mov x1, v28.d[1]\n\t"                              \
-  "fmov x2, d29\n\t"                                  \
-  "mov x3, v29.d[1]\n\t"                              \
-  "fmov x4, d30\n\t"                                  \
-  "mov x5, v30.d[1]\n\t"                              \
-  "fmov x6, d31\n\t"                                  \
-  "mov x7, v31.d[1]\n\t"
-        const int64_t goff = 16 * g, wstride = width;
-        for (int band = 0; band < nb; ++band) {
-          uint32x4_t cur[4];
-          for (int j = 0; j < 4; ++j) cur[j] = delta[j];
-          if (band + 1 < nb) step_for(by0 + band + 2);  // delta = the next band's step
-          const uint8_t* const* rp = run + k;
-          int64_t rows = B - 1;
-          asm volatile(
-              "ldp x0, x1, [%[P]]\n\t"
-              "ldp x2, x3, [%[P], #16]\n\t"
-              "ldp x4, x5, [%[P], #32]\n\t"
-              "ldp x6, x7, [%[P], #48]\n\t"
-              "ldp q20, q21, [%[ix]]\n\t"
-              "ldp q22, q23, [%[ix], #32]\n\t"
-              "ldp q16, q17, [%[dl]]\n\t"
-              "ldp q18, q19, [%[dl], #32]\n\t"
-              "1:\n\t" SB_BLOCK_ROW
-              "subs %[rows], %[rows], #1\n\t"
-              "b.ne 1b\n\t"
-              "ldp q16, q17, [%[dn]]\n\t"
-              "ldp q18, q19, [%[dn], #32]\n\t" SB_BLOCK_ROW
-              "stp x0, x1, [%[P]]\n\t"
-              "stp x2, x3, [%[P], #16]\n\t"
-              "stp x4, x5, [%[P], #32]\n\t"
-              "stp x6, x7, [%[P], #48]\n\t"
-              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [rp] "+r"(rp),
-                [d] "+r"(d), [rows] "+r"(rows)
-              : [P] "r"(P), [ix] "r"(IDX), [dl] "r"(cur), [dn] "r"(band + 1 < nb ? delta : cur),
-                [rb] "r"(run), [re] "r"(run + count), [goff] "r"(goff), [cm] "r"(colormap), [w] "r"(wstride)
-              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x9", "x10", "x11", "x12", "x13", "x14", "x15",
-                "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v27", "v28", "v29", "v30",
-                "v31", "cc", "memory");
-          k = int(rp - run);
+        // Full groups: the whole strip in assembly, two rows per iteration. Each iteration
+        // first forms both rows' indices (table lookups, steps, 64-bit moves into x0-x7 and
+        // x19-x26) in one run of NEON instructions, then does their scalar work (colormap loads,
+        // packing, stores) with the next iteration's texel rows and step loaded in between: an
+        // in-order core (Cortex-A53) retires in order, so a NEON instruction (6 cycles) holds
+        // the ALU and load instructions after it; one run per iteration pays that once.
+        // v19-v23 / v24-v28: {N3, T, N0, N1, N2} of the even / odd row (the odd row's
+        // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
+        // and step addresses; x9-x12, x18, x30: high halves of the index pairs. q counts
+        // -rows + 2 per iteration up to 0; the step of rows y, y + 1 is dte[(y - rows) >> LB].
+        for (int b = 0; b < nb; ++b) {
+          step_for(by0 + b + 1);
+          for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
         }
-#undef SB_BLOCK_ROW
+        for (int j = 0; j < 4; ++j) dtab[4 * nb + j] = vdupq_n_u32(0);
+  #define SB_PAIR_LOOP \
+    "stp x19, x23, [%[d]]\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "2:\n\t" \
+    "add v26.4s, v21.4s, v16.4s\n\t" \
+    "add v27.4s, v22.4s, v17.4s\n\t" \
+    "add v28.4s, v23.4s, v18.4s\n\t" \
+    "add v24.4s, v19.4s, v29.4s\n\t" \
+    "tbl v0.16b, {v20.16b, v21.16b}, %[i0].16b\n\t" \
+    "tbl v1.16b, {v20.16b, v21.16b, v22.16b}, %[i1].16b\n\t" \
+    "tbl v2.16b, {v20.16b, v21.16b, v22.16b, v23.16b}, %[i2].16b\n\t" \
+    "tbl v3.16b, {v19.16b, v20.16b}, %[i3].16b\n\t" \
+    "tbl v4.16b, {v25.16b, v26.16b}, %[i0].16b\n\t" \
+    "tbl v5.16b, {v25.16b, v26.16b, v27.16b}, %[i1].16b\n\t" \
+    "tbl v6.16b, {v25.16b, v26.16b, v27.16b, v28.16b}, %[i2].16b\n\t" \
+    "tbl v7.16b, {v24.16b, v25.16b}, %[i3].16b\n\t" \
+    "fmov x0, d0\n\t" \
+    "mov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "mov x3, v1.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "mov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "mov x7, v3.d[1]\n\t" \
+    "add v21.4s, v26.4s, v16.4s\n\t" \
+    "add v22.4s, v27.4s, v17.4s\n\t" \
+    "add v23.4s, v28.4s, v18.4s\n\t" \
+    "add v19.4s, v24.4s, v29.4s\n\t" \
+    "fmov x19, d4\n\t" \
+    "mov x20, v4.d[1]\n\t" \
+    "fmov x21, d5\n\t" \
+    "mov x22, v5.d[1]\n\t" \
+    "fmov x23, d6\n\t" \
+    "mov x24, v6.d[1]\n\t" \
+    "fmov x25, d7\n\t" \
+    "mov x26, v7.d[1]\n\t" \
+    "add x10, %[cm], x1, lsr #32\n\t" \
+    "ldrb w1, [%[cm], w1, uxtw]\n\t" \
+    "add x9, %[cm], x0, lsr #32\n\t" \
+    "ldrb w0, [%[cm], w0, uxtw]\n\t" \
+    "add x11, %[cm], x2, lsr #32\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x30, %[cm], x5, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "add x18, %[cm], x4, lsr #32\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "add x12, %[cm], x3, lsr #32\n\t" \
+    "ldrb w4, [%[cm], w4, uxtw]\n\t" \
+    "adds %[q], %[q], #2\n\t" \
+    "ldrb w2, [%[cm], w2, uxtw]\n\t" \
+    "orr x1, x1, x10, lsl #8\n\t" \
+    "ldrb w3, [%[cm], w3, uxtw]\n\t" \
+    "add x10, %[cm], x7, lsr #32\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "orr x0, x0, x9, lsl #8\n\t" \
+    "ldrb w30, [x30]\n\t" \
+    "add x9, %[cm], x6, lsr #32\n\t" \
+    "ldrb w7, [%[cm], w7, uxtw]\n\t" \
+    "ldrb w6, [%[cm], w6, uxtw]\n\t" \
+    "orr x4, x4, x18, lsl #8\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "add x18, %[cm], x23, lsr #32\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x0, x0, x1, lsl #16\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "orr x7, x7, x10, lsl #8\n\t" \
+    "ldr q20, [x8, %[goff]]\n\t" \
+    "orr x6, x6, x9, lsl #8\n\t" \
+    "ldrb w5, [%[cm], w5, uxtw]\n\t" \
+    "add x9, %[cm], x19, lsr #32\n\t" \
+    "ldrb w19, [%[cm], w19, uxtw]\n\t" \
+    "add x10, %[cm], x20, lsr #32\n\t" \
+    "ldrb w20, [%[cm], w20, uxtw]\n\t" \
+    "orr x3, x3, x12, lsl #8\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "orr x2, x2, x11, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "add x12, %[cm], x22, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "add x11, %[cm], x21, lsr #32\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "orr x5, x5, x30, lsl #8\n\t" \
+    "ldrb w23, [%[cm], w23, uxtw]\n\t" \
+    "orr x19, x19, x9, lsl #8\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "add x9, %[cm], x25, lsr #32\n\t" \
+    "ldrb w22, [%[cm], w22, uxtw]\n\t" \
+    "add x30, %[cm], x24, lsr #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "orr x20, x20, x10, lsl #8\n\t" \
+    "ldrb w24, [%[cm], w24, uxtw]\n\t" \
+    "add x10, %[cm], x26, lsr #32\n\t" \
+    "ldrb w25, [%[cm], w25, uxtw]\n\t" \
+    "orr x6, x6, x7, lsl #16\n\t" \
+    "ldrb w26, [%[cm], w26, uxtw]\n\t" \
+    "orr x4, x4, x5, lsl #16\n\t" \
+    "ldrb w30, [x30]\n\t" \
+    "orr x2, x2, x3, lsl #16\n\t" \
+    "ldrb w21, [%[cm], w21, uxtw]\n\t" \
+    "orr x22, x22, x12, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x23, x23, x18, lsl #8\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x4, x4, x6, lsl #32\n\t" \
+    "ldr q25, [x8, %[goff]]\n\t" \
+    "orr x24, x24, x30, lsl #8\n\t" \
+    "orr x21, x21, x11, lsl #8\n\t" \
+    "asr x8, %[q], %[lb]\n\t" \
+    "orr x25, x25, x9, lsl #8\n\t" \
+    "orr x26, x26, x10, lsl #8\n\t" \
+    "orr x0, x0, x2, lsl #32\n\t" \
+    "orr x23, x23, x24, lsl #16\n\t" \
+    "orr x19, x19, x20, lsl #16\n\t" \
+    "add x8, %[dte], x8, lsl #6\n\t" \
+    "orr x21, x21, x22, lsl #16\n\t" \
+    "orr x25, x25, x26, lsl #16\n\t" \
+    "stp x0, x4, [%[d]]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "orr x19, x19, x21, lsl #32\n\t" \
+    "ldr q29, [x8, #48]\n\t" \
+    "orr x23, x23, x25, lsl #32\n\t" \
+    "ldr q18, [x8, #32]\n\t" \
+    "ldp q16, q17, [x8]\n\t" \
+    "b.ne 1b\n\t"
+        const int64_t goff = 16 * g, wstride = width;
+        const uint8_t* const* rp = lin;
+        int64_t q = -int64_t(nb) * B;
+        asm volatile(
+            "mov v21.16b, %[n0].16b\n\t"
+            "mov v22.16b, %[n1].16b\n\t"
+            "mov v23.16b, %[n2].16b\n\t"
+            "mov v19.16b, %[n3].16b\n\t"
+            "ldr x8, [%[rp]]\n\t"
+            "ldr q20, [x8, %[goff]]\n\t"
+            "ldr x8, [%[rp], #8]\n\t"
+            "ldr q25, [x8, %[goff]]\n\t"
+            "add %[rp], %[rp], #16\n\t"
+            "asr x8, %[q], %[lb]\n\t"
+            "add x8, %[dte], x8, lsl #6\n\t"
+            "ldp q16, q17, [x8]\n\t"
+            "ldr q18, [x8, #32]\n\t"
+            "ldr q29, [x8, #48]\n\t"
+            "b 2f\n\t"
+            "1:\n\t" SB_PAIR_LOOP
+            "stp x19, x23, [%[d]]\n\t"
+            "add %[d], %[d], %[w]\n\t"
+            : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+            : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+              [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+              [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
+            : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+              "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+              "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+              "memory");
+#undef SB_PAIR_LOOP
         continue;
       }
+      step_for(by0 + 1);
+      indices(next_run());
       auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
         if (band_end) step_for(next_grid_row);
         uint64_t p[8];
