@@ -71,9 +71,19 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, co
                      const uint8x16_t* period) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
-    const int a = tw - c0 < n ? tw - c0 : n;
-    std::memcpy(dst, row + c0, size_t(a));
-    if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
+    const int a = tw - c0 < n ? tw - c0 : n, b = a < n ? (c0 < n - a ? c0 : n - a) : 0;
+#if defined(__aarch64__)
+    // 16-byte copies when their reads stay inside the texture (a library call per row costs
+    // more than the row at the small mips).
+    if (row + c0 + ((a + 15) & ~15) <= tex_end && row + ((b + 15) & ~15) <= tex_end) {
+      for (int x = 0; x < a; x += 16) vst1q_u8(dst + x, vld1q_u8(row + c0 + x));
+      for (int x = 0; x < b; x += 16) vst1q_u8(dst + a + x, vld1q_u8(row + x));
+    } else
+#endif
+    {
+      std::memcpy(dst, row + c0, size_t(a));
+      if (b) std::memcpy(dst + a, row, size_t(b));
+    }
     d = tw;
   } else {
     d = tw;
