@@ -65,9 +65,14 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
   }
 }
 
+#if defined(__aarch64__)
+#define SB_TILE_INLINE inline __attribute__((always_inline))  // a call costs more than a row at mips 2-3
+#else
+#define SB_TILE_INLINE inline
+#endif
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
-inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
+SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
                      const uint8x16_t* period) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
@@ -76,8 +81,16 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, co
     // 16-byte copies when their reads stay inside the texture (a library call per row costs
     // more than the row at the small mips).
     if (row + c0 + ((a + 15) & ~15) <= tex_end && row + ((b + 15) & ~15) <= tex_end) {
-      for (int x = 0; x < a; x += 16) vst1q_u8(dst + x, vld1q_u8(row + c0 + x));
-      for (int x = 0; x < b; x += 16) vst1q_u8(dst + a + x, vld1q_u8(row + x));
+      for (int x = 0; x < a; x += 16) {
+        uint8x16_t v = vld1q_u8(row + c0 + x);
+        asm("" : "+w"(v));  // (else GCC turns the loop back into a memcpy call)
+        vst1q_u8(dst + x, v);
+      }
+      for (int x = 0; x < b; x += 16) {
+        uint8x16_t v = vld1q_u8(row + x);
+        asm("" : "+w"(v));
+        vst1q_u8(dst + a + x, v);
+      }
     } else
 #endif
     {
@@ -229,9 +242,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
 #if defined(__aarch64__)
-    for (int r = 0, t = first; r < nb * B + 2; ++r) {
-      lin[r] = run[t];
-      if (++t == count) t = 0;
+    for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
+      const int n = count - t < total - r ? count - t : total - r;
+      int i = 0;
+      for (; i + 2 <= n; i += 2) std::memcpy(lin + r + i, run + t + i, 2 * sizeof lin[0]);
+      if (i < n) lin[r + i] = run[t + i];
+      r += n;
     }
 #endif
     uint8_t* const strip = out + by0 * B * width;
@@ -299,9 +315,49 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // and step addresses; x9-x12, x18, x30: high halves of the index pairs. q counts
         // -rows + 2 per iteration up to 0; the step of rows y, y + 1 is dte[(y - rows) >> LB].
-        for (int b = 0; b < nb; ++b) {
-          step_for(by0 + b + 1);
-          for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+        if (direct) {
+          // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
+          // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
+          // the difference of the two rows' weighed values).
+          const int16x8_t W0 = vreinterpretq_s16_u16(BX1[0]), W0h = vreinterpretq_s16_u16(BX1[1]);
+          const int16x8_t W1 = vreinterpretq_s16_u16(FX1[0]), W1h = vreinterpretq_s16_u16(FX1[1]);
+          const int16x4_t w0[4] = {vget_low_s16(W0), vget_high_s16(W0), vget_low_s16(W0h), vget_high_s16(W0h)};
+          const int16x4_t w1[4] = {vget_low_s16(W1), vget_high_s16(W1), vget_low_s16(W1h), vget_high_s16(W1h)};
+          const uint16_t* r0 = grid + by0 * grid_width + b0;
+          uint32x4_t* dt = dtab;
+          for (int b = 0; b < nb; ++b, r0 += grid_width, dt += 4) {
+            const uint16_t* const r1 = r0 + grid_width;
+            if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
+              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(r1), vld1q_u16(r0)));
+              const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(r1 + 1), vld1q_u16(r0 + 1)));
+              const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
+              const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
+              dt[0] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(lo), 2 * kMip));
+              dt[1] = vreinterpretq_u32_s32(vshll_high_n_s16(lo, 2 * kMip));
+              dt[2] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(hi), 2 * kMip));
+              dt[3] = vreinterpretq_u32_s32(vshll_high_n_s16(hi, 2 * kMip));
+            } else if constexpr (LB == 2) {  // quarter j: block j
+              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vld1_u16(r1), vld1_u16(r0)));
+              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vld1_u16(r1 + 1), vld1_u16(r0 + 1)));
+              dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+              dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
+              dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
+              dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
+            } else {  // quarter j: block j >> (LB - 2)
+              const int16_t e[3] = {int16_t(r1[0] - r0[0]), int16_t(r1[1] - r0[1]),
+                                    int16_t(G == 2 ? r1[2] - r0[2] : 0)};
+#pragma GCC unroll 4
+              for (int j = 0; j < 4; ++j) {
+                const int bl = j >> (LB - 2);
+                dt[j] = vreinterpretq_u32_s32(vmlal_n_s16(vmull_n_s16(w0[j], e[bl]), w1[j], e[bl + 1]));
+              }
+            }
+          }
+        } else {
+          for (int b = 0; b < nb; ++b) {
+            step_for(by0 + b + 1);
+            for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+          }
         }
         for (int j = 0; j < 4; ++j) dtab[4 * nb + j] = vdupq_n_u32(0);
   #define SB_PAIR_LOOP \
