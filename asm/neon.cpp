@@ -245,7 +245,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
       const int n = count - t < total - r ? count - t : total - r;
       int i = 0;
-      for (; i + 2 <= n; i += 2) std::memcpy(lin + r + i, run + t + i, 2 * sizeof lin[0]);
+      for (; i + 2 <= n; i += 2) {
+        uint64x2_t v;
+        std::memcpy(&v, run + t + i, sizeof v);
+        asm("" : "+w"(v));  // (else GCC makes this loop a memcpy call)
+        std::memcpy(lin + r + i, &v, sizeof v);
+      }
       if (i < n) lin[r + i] = run[t + i];
       r += n;
     }
@@ -325,6 +330,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const int16x4_t w1[4] = {vget_low_s16(W1), vget_high_s16(W1), vget_low_s16(W1h), vget_high_s16(W1h)};
           const uint16_t* r0 = grid + by0 * grid_width + b0;
           uint32x4_t* dt = dtab;
+#pragma GCC unroll 4
           for (int b = 0; b < nb; ++b, r0 += grid_width, dt += 4) {
             const uint16_t* const r1 = r0 + grid_width;
             if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
