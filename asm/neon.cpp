@@ -383,25 +383,25 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "tbl v6.16b, {v25.16b, v26.16b, v27.16b, v28.16b}, %[i2].16b\n\t" \
     "tbl v7.16b, {v24.16b, v25.16b}, %[i3].16b\n\t" \
     "fmov x0, d0\n\t" \
-    "mov x1, v0.d[1]\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
     "fmov x2, d1\n\t" \
-    "mov x3, v1.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "fmov x4, d2\n\t" \
-    "mov x5, v2.d[1]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
     "fmov x6, d3\n\t" \
-    "mov x7, v3.d[1]\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
     "add v21.4s, v26.4s, v16.4s\n\t" \
     "add v22.4s, v27.4s, v17.4s\n\t" \
     "add v23.4s, v28.4s, v18.4s\n\t" \
     "add v19.4s, v24.4s, v29.4s\n\t" \
     "fmov x19, d4\n\t" \
-    "mov x20, v4.d[1]\n\t" \
+    "fmov x20, v4.d[1]\n\t" \
     "fmov x21, d5\n\t" \
-    "mov x22, v5.d[1]\n\t" \
+    "fmov x22, v5.d[1]\n\t" \
     "fmov x23, d6\n\t" \
-    "mov x24, v6.d[1]\n\t" \
+    "fmov x24, v6.d[1]\n\t" \
     "fmov x25, d7\n\t" \
-    "mov x26, v7.d[1]\n\t" \
+    "fmov x26, v7.d[1]\n\t" \
     "add x10, %[cm], x1, lsr #32\n\t" \
     "ldrb w1, [%[cm], w1, uxtw]\n\t" \
     "add x9, %[cm], x0, lsr #32\n\t" \
