@@ -121,7 +121,16 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
       if (++c == tw) c = 0;
     }
   }
-  for (int x = d; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+  int x = d;
+#if defined(__aarch64__)
+  if (d >= 32)  // 32 bytes a step (a step's loads never read its own stores)
+    for (; x + 16 < n; x += 32) {
+      const uint8x16_t v0 = vld1q_u8(dst + x - d), v1 = vld1q_u8(dst + x + 16 - d);
+      vst1q_u8(dst + x, v0);
+      vst1q_u8(dst + x + 16, v1);
+    }
+#endif
+  for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
