@@ -154,6 +154,40 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
   }
 }
 
+#if defined(__aarch64__)
+// Per-lane weights (see surface_block_groups), lanes k = 0..15 of a group.
+template <int kMip>
+struct BlockWeights {
+  uint16_t w[4][16];
+  constexpr BlockWeights() : w{} {
+    constexpr int B = 16 >> kMip;
+    for (int k = 0; k < 16; ++k) {
+      w[0][k] = uint16_t((B - k % B) << (4 + kMip));
+      w[1][k] = uint16_t((k % B) << (4 + kMip));
+      w[2][k] = uint16_t((B - k % B) << (2 * kMip));
+      w[3][k] = uint16_t((k % B) << (2 * kMip));
+    }
+  }
+};
+template <int kMip>
+constexpr BlockWeights<kMip> kBlockWeights{};
+
+constexpr uint8_t kIota32[32] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15,
+                                 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31};
+// Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
+constexpr uint8_t kIdx[4][16] = {{0, 255, 255, 255, 1, 255, 255, 255, 2, 255, 255, 255, 3, 255, 255, 255},
+                                 {4, 255, 255, 255, 5, 255, 255, 255, 6, 255, 255, 255, 7, 255, 255, 255},
+                                 {8, 255, 255, 255, 9, 255, 255, 255, 10, 255, 255, 255, 11, 255, 255, 255},
+                                 {12, 255, 255, 255, 13, 255, 255, 255, 14, 255, 255, 255, 15, 255, 255, 255}};
+// The assembly's table lookups: lanes 4j..4j+3 of (texel, row, 0, 0) from the texel vector T
+// and the numerators N0..N3 held as {N3, T, N0, N1, N2} in consecutive registers (row: a
+// lane's byte 2). Quarter j reads {T, N0}, {T, N0, N1}, {T, N0, N1, N2}, {N3, T}.
+constexpr uint8_t kTix[4][16] = {{0, 18, 255, 255, 1, 22, 255, 255, 2, 26, 255, 255, 3, 30, 255, 255},
+                                 {4, 34, 255, 255, 5, 38, 255, 255, 6, 42, 255, 255, 7, 46, 255, 255},
+                                 {8, 50, 255, 255, 9, 54, 255, 255, 10, 58, 255, 255, 11, 62, 255, 255},
+                                 {28, 2, 255, 255, 29, 6, 255, 255, 30, 10, 255, 255, 31, 14, 255, 255}};
+#endif
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -169,6 +203,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
   // Narrow textures (tw < 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
+#if defined(__aarch64__)
+  period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw >= 16)
+  if (tw < 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
+    const uint16x8_t m = vdupq_n_u16(uint16_t((65536 + tw - 1) / tw)), twv = vdupq_n_u16(uint16_t(tw));
+    for (int h = 0; h < 2; ++h) {
+      const uint8x16_t x8 = vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0)));
+      uint16x8_t x[2] = {vmovl_u8(vget_low_u8(x8)), vmovl_high_u8(x8)};
+      for (int i = 0; i < 2; ++i) {
+        const uint16x8_t q = vuzp2q_u16(vreinterpretq_u16_u32(vmull_u16(vget_low_u16(x[i]), vget_low_u16(m))),
+                                        vreinterpretq_u16_u32(vmull_high_u16(x[i], m)));
+        x[i] = vmlsq_u16(x[i], q, twv);
+      }
+      period[h] = vuzp1q_u8(vreinterpretq_u8_u16(x[0]), vreinterpretq_u8_u16(x[1]));
+    }
+  }
+#else
   {
     uint8_t k8[32];
     for (int k = 0, c = c0; k < 32; ++k) {
@@ -178,6 +228,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     period[0] = vld1q_u8(k8);
     period[1] = vld1q_u8(k8 + 16);
   }
+#endif
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
@@ -197,6 +248,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 
   // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
   // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
+#if defined(__aarch64__)
+  const auto& w = kBlockWeights<kMip>.w;  // (a table: setup counts at the small mips)
+#else
   uint16_t w[4][16];
   for (int k = 0; k < 16; ++k) {
     w[0][k] = uint16_t((B - k % B) << (4 + kMip));
@@ -204,32 +258,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
-  const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
-  const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
+#endif
 #if defined(__aarch64__)
-  // Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
-  uint8x16_t IDX[4];
-  for (int j = 0; j < 4; ++j) {
-    uint8_t b[16];
-    for (int l = 0; l < 4; ++l) {
-      b[4 * l] = uint8_t(4 * j + l);
-      b[4 * l + 1] = b[4 * l + 2] = b[4 * l + 3] = 0xff;
-    }
-    IDX[j] = vld1q_u8(b);
-  }
-  // The assembly's table lookups: lanes 4j..4j+3 of (texel, row, 0, 0) from the texel vector T
-  // and the numerators N0..N3 held as {N3, T, N0, N1, N2} in consecutive registers (row: a
-  // lane's byte 2). Quarter j reads {T, N0}, {T, N0, N1}, {T, N0, N1, N2}, {N3, T}.
-  uint8x16_t TIX[4];
-  for (int j = 0; j < 4; ++j) {
-    uint8_t b[16];
-    for (int l = 0; l < 4; ++l) {
-      b[4 * l] = uint8_t(j < 3 ? 4 * j + l : 16 + 12 + l);
-      b[4 * l + 1] = uint8_t(j < 3 ? 16 * (j + 1) + 4 * l + 2 : 4 * l + 2);
-      b[4 * l + 2] = b[4 * l + 3] = 0xff;
-    }
-    TIX[j] = vld1q_u8(b);
-  }
+  // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
+  auto ld = [](const uint16_t* p) {
+    uint16x8_t v = vld1q_u16(p);
+    asm("" : "+w"(v));
+    return v;
+  };
+#else
+  auto ld = [](const uint16_t* p) { return vld1q_u16(p); };
+#endif
+  const uint16x8_t BX0[2] = {ld(w[0]), ld(w[0] + 8)}, FX0[2] = {ld(w[1]), ld(w[1] + 8)};
+  const uint16x8_t BX1[2] = {ld(w[2]), ld(w[2] + 8)}, FX1[2] = {ld(w[3]), ld(w[3] + 8)};
+#if defined(__aarch64__)
+  const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
+  const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kTix[2]), vld1q_u8(kTix[3])};
   const uint8_t* lin[kStripRows + 2];     // the strip's texel runs in row order, two rows beyond
   uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
 #endif
