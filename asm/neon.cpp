@@ -564,6 +564,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             "ldr q18, [x8, #32]\n\t"
             "ldr q29, [x8, #48]\n\t"
             "b 2f\n\t"
+            ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
             "1:\n\t" SB_PAIR_LOOP
             "stp x19, x23, [%[d]]\n\t"
             "add %[d], %[d], %[w]\n\t"
