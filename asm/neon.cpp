@@ -381,30 +381,45 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const int16x8_t W1 = vreinterpretq_s16_u16(FX1[0]), W1h = vreinterpretq_s16_u16(FX1[1]);
           const int16x4_t w0[4] = {vget_low_s16(W0), vget_high_s16(W0), vget_low_s16(W0h), vget_high_s16(W0h)};
           const int16x4_t w1[4] = {vget_low_s16(W1), vget_high_s16(W1), vget_low_s16(W1h), vget_high_s16(W1h)};
-          const uint16_t* r0 = grid + by0 * grid_width + b0;
+          const uint16_t* r = grid + by0 * grid_width + b0;  // the band's upper grid row
           uint32x4_t* dt = dtab;
+          if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
+            uint16x8_t p0 = vld1q_u16(r), p1 = vld1q_u16(r + 1);  // (each row loaded once)
 #pragma GCC unroll 4
-          for (int b = 0; b < nb; ++b, r0 += grid_width, dt += 4) {
-            const uint16_t* const r1 = r0 + grid_width;
-            if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
-              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(r1), vld1q_u16(r0)));
-              const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(r1 + 1), vld1q_u16(r0 + 1)));
+            for (int b = 0; b < nb; ++b, dt += 4) {
+              r += grid_width;
+              const uint16x8_t q0 = vld1q_u16(r), q1 = vld1q_u16(r + 1);
+              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(q0, p0));
+              const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
+              p0 = q0;
+              p1 = q1;
               const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
               const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
               dt[0] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(lo), 2 * kMip));
               dt[1] = vreinterpretq_u32_s32(vshll_high_n_s16(lo, 2 * kMip));
               dt[2] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(hi), 2 * kMip));
               dt[3] = vreinterpretq_u32_s32(vshll_high_n_s16(hi, 2 * kMip));
-            } else if constexpr (LB == 2) {  // quarter j: block j
-              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vld1_u16(r1), vld1_u16(r0)));
-              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vld1_u16(r1 + 1), vld1_u16(r0 + 1)));
+            }
+          } else if constexpr (LB == 2) {  // quarter j: block j
+            uint16x4_t p0 = vld1_u16(r), p1 = vld1_u16(r + 1);
+#pragma GCC unroll 4
+            for (int b = 0; b < nb; ++b, dt += 4) {
+              r += grid_width;
+              const uint16x4_t q0 = vld1_u16(r), q1 = vld1_u16(r + 1);
+              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(q0, p0));
+              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(q1, p1));
+              p0 = q0;
+              p1 = q1;
               dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
               dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
               dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
               dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
-            } else {  // quarter j: block j >> (LB - 2)
-              const int16_t e[3] = {int16_t(r1[0] - r0[0]), int16_t(r1[1] - r0[1]),
-                                    int16_t(G == 2 ? r1[2] - r0[2] : 0)};
+            }
+          } else {  // quarter j: block j >> (LB - 2)
+#pragma GCC unroll 4
+            for (int b = 0; b < nb; ++b, r += grid_width, dt += 4) {
+              const uint16_t* const r1 = r + grid_width;
+              const int16_t e[3] = {int16_t(r1[0] - r[0]), int16_t(r1[1] - r[1]), int16_t(G == 2 ? r1[2] - r[2] : 0)};
 #pragma GCC unroll 4
               for (int j = 0; j < 4; ++j) {
                 const int bl = j >> (LB - 2);
