@@ -415,15 +415,30 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
               dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
             }
-          } else {  // quarter j: block j >> (LB - 2)
+          } else {  // quarter j: block j >> (LB - 2); e: lanes (e[0], e[1]), e1: (e[1], e[2])
+            auto ld2 = [](const uint16_t* p) {  // lanes 0, 1: p[0], p[1]
+              uint32_t x;
+              std::memcpy(&x, p, sizeof x);
+              return vreinterpret_u16_u32(vdup_n_u32(x));
+            };
+            uint16x4_t p0 = ld2(r), p1 = LB == 3 ? ld2(r + 1) : p0;
 #pragma GCC unroll 4
-            for (int b = 0; b < nb; ++b, r += grid_width, dt += 4) {
-              const uint16_t* const r1 = r + grid_width;
-              const int16_t e[3] = {int16_t(r1[0] - r[0]), int16_t(r1[1] - r[1]), int16_t(G == 2 ? r1[2] - r[2] : 0)};
+            for (int b = 0; b < nb; ++b, dt += 4) {
+              r += grid_width;
+              const uint16x4_t q0 = ld2(r), q1 = LB == 3 ? ld2(r + 1) : q0;
+              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(q0, p0));
+              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(q1, p1));
+              p0 = q0;
+              p1 = q1;
+              if constexpr (LB == 3) {
+                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
+                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
+                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
+              } else {
 #pragma GCC unroll 4
-              for (int j = 0; j < 4; ++j) {
-                const int bl = j >> (LB - 2);
-                dt[j] = vreinterpretq_u32_s32(vmlal_n_s16(vmull_n_s16(w0[j], e[bl]), w1[j], e[bl + 1]));
+                for (int j = 0; j < 4; ++j)
+                  dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
               }
             }
           }
