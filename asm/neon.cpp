@@ -381,66 +381,68 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const int16x8_t W1 = vreinterpretq_s16_u16(FX1[0]), W1h = vreinterpretq_s16_u16(FX1[1]);
           const int16x4_t w0[4] = {vget_low_s16(W0), vget_high_s16(W0), vget_low_s16(W0h), vget_high_s16(W0h)};
           const int16x4_t w1[4] = {vget_low_s16(W1), vget_high_s16(W1), vget_low_s16(W1h), vget_high_s16(W1h)};
-          const uint16_t* r = grid + by0 * grid_width + b0;  // the band's upper grid row
-          uint32x4_t* dt = dtab;
-          if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
-            uint16x8_t p0 = vld1q_u16(r), p1 = vld1q_u16(r + 1);  // (each row loaded once)
-#pragma GCC unroll 4
-            for (int b = 0; b < nb; ++b, dt += 4) {
-              r += grid_width;
-              const uint16x8_t q0 = vld1q_u16(r), q1 = vld1q_u16(r + 1);
-              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(q0, p0));
+          // Band b from grid rows b (p: entries 0.., p1: entries 1..) and b + 1 (q, q1). Two bands
+          // a step with the rows' roles swapped (no register copies).
+          auto band = [&](uint16x8_t p, uint16x8_t p1, uint16x8_t q, uint16x8_t q1, uint32x4_t* dt)
+              __attribute__((always_inline)) {
+            if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
+              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(q, p));
               const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
-              p0 = q0;
-              p1 = q1;
               const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
               const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
               dt[0] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(lo), 2 * kMip));
               dt[1] = vreinterpretq_u32_s32(vshll_high_n_s16(lo, 2 * kMip));
               dt[2] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(hi), 2 * kMip));
               dt[3] = vreinterpretq_u32_s32(vshll_high_n_s16(hi, 2 * kMip));
-            }
-          } else if constexpr (LB == 2) {  // quarter j: block j
-            uint16x4_t p0 = vld1_u16(r), p1 = vld1_u16(r + 1);
-#pragma GCC unroll 4
-            for (int b = 0; b < nb; ++b, dt += 4) {
-              r += grid_width;
-              const uint16x4_t q0 = vld1_u16(r), q1 = vld1_u16(r + 1);
-              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(q0, p0));
-              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(q1, p1));
-              p0 = q0;
-              p1 = q1;
-              dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
-              dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
-              dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
-              dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
-            }
-          } else {  // quarter j: block j >> (LB - 2); e: lanes (e[0], e[1]), e1: (e[1], e[2])
-            auto ld2 = [](const uint16_t* p) {  // lanes 0, 1: p[0], p[1]
-              uint32_t x;
-              std::memcpy(&x, p, sizeof x);
-              return vreinterpret_u16_u32(vdup_n_u32(x));
-            };
-            uint16x4_t p0 = ld2(r), p1 = LB == 3 ? ld2(r + 1) : p0;
-#pragma GCC unroll 4
-            for (int b = 0; b < nb; ++b, dt += 4) {
-              r += grid_width;
-              const uint16x4_t q0 = ld2(r), q1 = LB == 3 ? ld2(r + 1) : q0;
-              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(q0, p0));
-              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(q1, p1));
-              p0 = q0;
-              p1 = q1;
-              if constexpr (LB == 3) {
+            } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
+              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
+              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
+              if constexpr (LB == 2) {  // quarter j: block j
+                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
+                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
+                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
+              } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
                 dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
                 dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
                 dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
                 dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
-              } else {
+              } else {  // one block: e[1] is e's lane 1
 #pragma GCC unroll 4
                 for (int j = 0; j < 4; ++j)
                   dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
               }
             }
+          };
+          auto ldg = [](const uint16_t* p) {  // the group's entries p[0..G] a band reads
+            if constexpr (LB == 1) {
+              return vld1q_u16(p);
+            } else if constexpr (LB == 2) {
+              return vcombine_u16(vld1_u16(p), vdup_n_u16(0));
+            } else {
+              uint32_t x;
+              std::memcpy(&x, p, sizeof x);
+              return vreinterpretq_u16_u32(vdupq_n_u32(x));
+            }
+          };
+          const uint16_t* r = grid + by0 * grid_width + b0;  // the next band's upper grid row
+          uint16x8_t p = ldg(r), p1 = LB <= 3 ? ldg(r + 1) : p;
+          uint32x4_t* dt = dtab;
+          int b = 0;
+#pragma GCC unroll 2
+          for (; b + 2 <= nb; b += 2, dt += 8) {
+            r += grid_width;
+            const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
+            band(p, p1, q, q1, dt);
+            r += grid_width;
+            p = ldg(r);
+            p1 = LB <= 3 ? ldg(r + 1) : p;
+            band(q, q1, p, p1, dt + 4);
+          }
+          if (b < nb) {
+            r += grid_width;
+            const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
+            band(p, p1, q, q1, dt);
           }
         } else {
           for (int b = 0; b < nb; ++b) {
