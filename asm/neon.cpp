@@ -181,7 +181,9 @@ constexpr uint8_t kIdx[4][16] = {{0, 255, 255, 255, 1, 255, 255, 255, 2, 255, 25
                                  {12, 255, 255, 255, 13, 255, 255, 255, 14, 255, 255, 255, 15, 255, 255, 255}};
 // The assembly's table lookups: lanes 4j..4j+3 of (texel, row, 0, 0) from the texel vector T
 // and the numerators N0..N3 held as {N3, T, N0, N1, N2} in consecutive registers (row: a
-// lane's byte 2). Quarter j reads {T, N0}, {T, N0, N1}, {T, N0, N1, N2}, {N3, T}.
+// lane's byte 2). Quarters 0, 1, 3 read {T, N0}, {T, N0, N1}, {N3, T}; quarter 2 is N2 >> 8
+// with the texels put in by kIdx[2] (a four-register lookup costs Cortex-A57/A72 9 uops, the
+// pair 4; Cortex-A53 one instruction more). Row 2 here is unused.
 constexpr uint8_t kTix[4][16] = {{0, 18, 255, 255, 1, 22, 255, 255, 2, 26, 255, 255, 3, 30, 255, 255},
                                  {4, 34, 255, 255, 5, 38, 255, 255, 6, 42, 255, 255, 7, 46, 255, 255},
                                  {8, 50, 255, 255, 9, 54, 255, 255, 10, 58, 255, 255, 11, 62, 255, 255},
@@ -273,7 +275,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint16x8_t BX1[2] = {ld(w[2]), ld(w[2] + 8)}, FX1[2] = {ld(w[3]), ld(w[3] + 8)};
 #if defined(__aarch64__)
   const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
-  const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kTix[2]), vld1q_u8(kTix[3])};
+  const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
   const uint8_t* lin[kStripRows + 2];     // the strip's texel runs in row order, two rows beyond
   uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
 #endif
@@ -364,8 +366,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       };
       if (m >= 16) {
         // Full groups: the whole strip in assembly, two rows per iteration. Each iteration
-        // first forms both rows' indices (table lookups, steps, 64-bit moves into x0-x7 and
-        // x19-x26) in one run of NEON instructions, then does their scalar work (colormap loads,
+        // first forms both rows' indices (table lookups or shift and lookup, steps, 64-bit moves
+        // into x0-x7 and x19-x26) in one run of NEON instructions, then does their scalar work (colormap loads,
         // packing, stores) with the next iteration's texel rows and step loaded in between: an
         // in-order core (Cortex-A53) retires in order, so a NEON instruction (6 cycles) holds
         // the ALU and load instructions after it; one run per iteration pays that once.
@@ -455,17 +457,19 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
     "2:\n\t" \
+    "add v28.4s, v23.4s, v18.4s\n\t" \
+    "ushr v2.4s, v23.4s, #8\n\t" \
     "add v26.4s, v21.4s, v16.4s\n\t" \
     "add v27.4s, v22.4s, v17.4s\n\t" \
-    "add v28.4s, v23.4s, v18.4s\n\t" \
     "add v24.4s, v19.4s, v29.4s\n\t" \
     "tbl v0.16b, {v20.16b, v21.16b}, %[i0].16b\n\t" \
+    "ushr v6.4s, v28.4s, #8\n\t" \
     "tbl v1.16b, {v20.16b, v21.16b, v22.16b}, %[i1].16b\n\t" \
-    "tbl v2.16b, {v20.16b, v21.16b, v22.16b, v23.16b}, %[i2].16b\n\t" \
+    "tbx v2.16b, {v20.16b}, %[i2].16b\n\t" \
     "tbl v3.16b, {v19.16b, v20.16b}, %[i3].16b\n\t" \
     "tbl v4.16b, {v25.16b, v26.16b}, %[i0].16b\n\t" \
     "tbl v5.16b, {v25.16b, v26.16b, v27.16b}, %[i1].16b\n\t" \
-    "tbl v6.16b, {v25.16b, v26.16b, v27.16b, v28.16b}, %[i2].16b\n\t" \
+    "tbx v6.16b, {v25.16b}, %[i2].16b\n\t" \
     "tbl v7.16b, {v24.16b, v25.16b}, %[i3].16b\n\t" \
     "fmov x0, d0\n\t" \
     "fmov x1, v0.d[1]\n\t" \
