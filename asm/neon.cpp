@@ -73,7 +73,7 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
 SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
-                     const uint8x16_t* period) {
+                             const uint8x16_t* period, [[maybe_unused]] const uint8_t* texels = nullptr) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
     const int a = tw - c0 < n ? tw - c0 : n, b = a < n ? (c0 < n - a ? c0 : n - a) : 0;
@@ -116,6 +116,15 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
       for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
       return;
     }
+#if defined(__aarch64__)
+    if (texels && tex_end - 16 >= texels) {  // the texture's last 16 bytes, indices moved up
+      const uint8x16_t v = vld1q_u8(tex_end - 16), o = vdupq_n_u8(uint8_t(row - (tex_end - 16)));
+      vst1q_u8(dst, vqtbl1q_u8(v, vaddq_u8(period[0], o)));
+      vst1q_u8(dst + 16, vqtbl1q_u8(v, vaddq_u8(period[1], o)));
+      for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+      return;
+    }
+#endif
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
@@ -237,7 +246,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
                                                      buf + t * stride);
   int strip_bands = bh;
   if (!all_rows) {
@@ -291,7 +300,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       int t = (t0 + by0 * B) % th;
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
                                 buf + r * stride);
         if (++t == th) t = 0;
       }
