@@ -590,38 +590,203 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldr q18, [x8, #32]\n\t" \
     "ldp q16, q17, [x8]\n\t" \
     "b.ne 1b\n\t"
+  #define SB_PAIR_LOOP_N \
+    "stp x19, x23, [%[d]]\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "2:\n\t" \
+    "add v28.4s, v23.4s, v18.4s\n\t" \
+    "ushr v2.4s, v23.4s, #8\n\t" \
+    "add v26.4s, v21.4s, v16.4s\n\t" \
+    "add v27.4s, v22.4s, v17.4s\n\t" \
+    "add v24.4s, v19.4s, v29.4s\n\t" \
+    "tbl v0.16b, {v20.16b, v21.16b}, %[i0].16b\n\t" \
+    "ushr v6.4s, v28.4s, #8\n\t" \
+    "tbl v1.16b, {v20.16b, v21.16b, v22.16b}, %[i1].16b\n\t" \
+    "tbx v2.16b, {v20.16b}, %[i2].16b\n\t" \
+    "tbl v3.16b, {v19.16b, v20.16b}, %[i3].16b\n\t" \
+    "tbl v4.16b, {v25.16b, v26.16b}, %[i0].16b\n\t" \
+    "tbl v5.16b, {v25.16b, v26.16b, v27.16b}, %[i1].16b\n\t" \
+    "tbx v6.16b, {v25.16b}, %[i2].16b\n\t" \
+    "tbl v7.16b, {v24.16b, v25.16b}, %[i3].16b\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "add v21.4s, v26.4s, v16.4s\n\t" \
+    "add v22.4s, v27.4s, v17.4s\n\t" \
+    "add v23.4s, v28.4s, v18.4s\n\t" \
+    "add v19.4s, v24.4s, v29.4s\n\t" \
+    "fmov x19, d4\n\t" \
+    "fmov x20, v4.d[1]\n\t" \
+    "fmov x21, d5\n\t" \
+    "fmov x22, v5.d[1]\n\t" \
+    "fmov x23, d6\n\t" \
+    "fmov x24, v6.d[1]\n\t" \
+    "fmov x25, d7\n\t" \
+    "fmov x26, v7.d[1]\n\t" \
+    "add x11, %[cm], x2, lsr #32\n\t" \
+    "ldrb w2, [%[cm], w2, uxtw]\n\t" \
+    "add x9, %[cm], x0, lsr #32\n\t" \
+    "ldrb w0, [%[cm], w0, uxtw]\n\t" \
+    "add x10, %[cm], x1, lsr #32\n\t" \
+    "ldrb w1, [%[cm], w1, uxtw]\n\t" \
+    "add x12, %[cm], x3, lsr #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "add x18, %[cm], x4, lsr #32\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "subs %[q], %[q], #1\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "ldrb w4, [%[cm], w4, uxtw]\n\t" \
+    "orr x2, x2, x11, lsl #8\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "add x11, %[cm], x7, lsr #32\n\t" \
+    "ldrb w7, [%[cm], w7, uxtw]\n\t" \
+    "orr x1, x1, x10, lsl #8\n\t" \
+    "ldrb w3, [%[cm], w3, uxtw]\n\t" \
+    "orr x0, x0, x9, lsl #8\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "add x10, %[cm], x6, lsr #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "add x9, %[cm], x5, lsr #32\n\t" \
+    "ldrb w6, [%[cm], w6, uxtw]\n\t" \
+    "orr x3, x3, x12, lsl #8\n\t" \
+    "ldrb w5, [%[cm], w5, uxtw]\n\t" \
+    "add x12, %[cm], x22, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x4, x4, x18, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x7, x7, x11, lsl #8\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x11, %[cm], x21, lsr #32\n\t" \
+    "ldrb w21, [%[cm], w21, uxtw]\n\t" \
+    "orr x6, x6, x10, lsl #8\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "add x10, %[cm], x20, lsr #32\n\t" \
+    "ldrb w20, [%[cm], w20, uxtw]\n\t" \
+    "orr x5, x5, x9, lsl #8\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "add x9, %[cm], x19, lsr #32\n\t" \
+    "ldrb w19, [%[cm], w19, uxtw]\n\t" \
+    "add x18, %[cm], x23, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x0, x0, x1, lsl #16\n\t" \
+    "ldrb w22, [%[cm], w22, uxtw]\n\t" \
+    "orr x21, x21, x11, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "add x11, %[cm], x26, lsr #32\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "orr x20, x20, x10, lsl #8\n\t" \
+    "ldrb w26, [%[cm], w26, uxtw]\n\t" \
+    "add x10, %[cm], x25, lsr #32\n\t" \
+    "ldrb w25, [%[cm], w25, uxtw]\n\t" \
+    "orr x19, x19, x9, lsl #8\n\t" \
+    "ldr q20, [x8, %[goff]]\n\t" \
+    "add x9, %[cm], x24, lsr #32\n\t" \
+    "ldrb w23, [%[cm], w23, uxtw]\n\t" \
+    "orr x2, x2, x3, lsl #16\n\t" \
+    "ldrb w24, [%[cm], w24, uxtw]\n\t" \
+    "orr x4, x4, x5, lsl #16\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x6, x6, x7, lsl #16\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x0, x0, x2, lsl #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "orr x19, x19, x20, lsl #16\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "orr x25, x25, x10, lsl #8\n\t" \
+    "orr x23, x23, x18, lsl #8\n\t" \
+    "orr x24, x24, x9, lsl #8\n\t" \
+    "orr x22, x22, x12, lsl #8\n\t" \
+    "orr x4, x4, x6, lsl #32\n\t" \
+    "orr x26, x26, x11, lsl #8\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "ldr q25, [x8, %[goff]]\n\t" \
+    "orr x21, x21, x22, lsl #16\n\t" \
+    "orr x23, x23, x24, lsl #16\n\t" \
+    "orr x25, x25, x26, lsl #16\n\t" \
+    "stp x0, x4, [%[d]]\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "orr x19, x19, x21, lsl #32\n\t" \
+    "orr x23, x23, x25, lsl #32\n\t" \
+    "b.ne 1b\n\t"
         const int64_t goff = 16 * g, wstride = width;
         const uint8_t* const* rp = lin;
-        int64_t q = -int64_t(nb) * B;
-        asm volatile(
-            "mov v21.16b, %[n0].16b\n\t"
-            "mov v22.16b, %[n1].16b\n\t"
-            "mov v23.16b, %[n2].16b\n\t"
-            "mov v19.16b, %[n3].16b\n\t"
-            "ldr x8, [%[rp]]\n\t"
-            "ldr q20, [x8, %[goff]]\n\t"
-            "ldr x8, [%[rp], #8]\n\t"
-            "ldr q25, [x8, %[goff]]\n\t"
-            "add %[rp], %[rp], #16\n\t"
-            "asr x8, %[q], %[lb]\n\t"
-            "add x8, %[dte], x8, lsl #6\n\t"
-            "ldp q16, q17, [x8]\n\t"
-            "ldr q18, [x8, #32]\n\t"
-            "ldr q29, [x8, #48]\n\t"
-            "b 2f\n\t"
-            ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
-            "1:\n\t" SB_PAIR_LOOP
-            "stp x19, x23, [%[d]]\n\t"
-            "add %[d], %[d], %[w]\n\t"
-            : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
-            : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
-              [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
-              [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
-            : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
-              "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
-              "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
-              "memory");
+        if constexpr (LB >= 3) {
+          // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
+          // the bands (x30: its address), not in every iteration. q: iterations left in the band.
+          int64_t q = -int64_t(nb) * 64;
+          asm volatile(
+              "mov v21.16b, %[n0].16b\n\t"
+              "mov v22.16b, %[n1].16b\n\t"
+              "mov v23.16b, %[n2].16b\n\t"
+              "mov v19.16b, %[n3].16b\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q25, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add x30, %[dte], %[q]\n\t"
+              "ldp q16, q17, [x30]\n\t"
+              "ldr q18, [x30, #32]\n\t"
+              "ldr q29, [x30, #48]\n\t"
+              "mov %[q], %[hp]\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"
+              "1:\n\t" SB_PAIR_LOOP_N
+              "add x30, x30, #64\n\t"
+              "ldp q16, q17, [x30]\n\t"
+              "ldr q18, [x30, #32]\n\t"
+              "ldr q29, [x30, #48]\n\t"
+              "mov %[q], %[hp]\n\t"
+              "cmp x30, %[dte]\n\t"
+              "b.ne 1b\n\t"
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+                [n2] "w"(num[2]), [n3] "w"(num[3]), [hp] "i"(B / 2)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+        } else {
+          int64_t q = -int64_t(nb) * B;
+          asm volatile(
+              "mov v21.16b, %[n0].16b\n\t"
+              "mov v22.16b, %[n1].16b\n\t"
+              "mov v23.16b, %[n2].16b\n\t"
+              "mov v19.16b, %[n3].16b\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q25, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "asr x8, %[q], %[lb]\n\t"
+              "add x8, %[dte], x8, lsl #6\n\t"
+              "ldp q16, q17, [x8]\n\t"
+              "ldr q18, [x8, #32]\n\t"
+              "ldr q29, [x8, #48]\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
+              "1:\n\t" SB_PAIR_LOOP
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+                [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+        }
 #undef SB_PAIR_LOOP
+#undef SB_PAIR_LOOP_N
         continue;
       }
       step_for(by0 + 1);
