@@ -43,8 +43,9 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // Indices texel | row << 8 (32-bit lanes) leave the vector two at a time; the colormap bytes
 // are read by sixteen independent scalar loads, packed into words, and stored. The row loop
 // of full groups is assembly on both ARM targets (the compilers' schedules and register
-// allocation cost 1.5-2x there): row y's scalar work first, then row y + 1's NEON work, so an
-// in-order core never waits on a NEON result. The last, partial group of a row is C++.
+// allocation cost 1.5-2x there); on ARMv7 row y's scalar work first, then row y + 1's NEON
+// work, so an in-order core never waits on a NEON result; on AArch64 a whole strip per call,
+// two rows per iteration (see there). The last, partial group of a row is C++.
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -375,15 +376,16 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       };
       if (m >= 16) {
         // Full groups: the whole strip in assembly, two rows per iteration. Each iteration
-        // first forms both rows' indices (table lookups or shift and lookup, steps, 64-bit moves
-        // into x0-x7 and x19-x26) in one run of NEON instructions, then does their scalar work (colormap loads,
-        // packing, stores) with the next iteration's texel rows and step loaded in between: an
-        // in-order core (Cortex-A53) retires in order, so a NEON instruction (6 cycles) holds
-        // the ALU and load instructions after it; one run per iteration pays that once.
+        // first forms both rows' indices (table lookups or shift and lookup, steps, 64-bit
+        // moves into x0-x7 and x19-x26) in one run of NEON instructions, then does their scalar
+        // work (colormap loads, packing, stores) with the next iteration's texel rows (and
+        // step) loaded in between: an in-order core (Cortex-A53) retires in order, so a NEON
+        // instruction (6 cycles) holds the ALU and load instructions after it; one run per
+        // iteration pays that once. The second row's store comes first in the next iteration.
         // v19-v23 / v24-v28: {N3, T, N0, N1, N2} of the even / odd row (the odd row's
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
-        // and step addresses; x9-x12, x18, x30: high halves of the index pairs. q counts
-        // -rows + 2 per iteration up to 0; the step of rows y, y + 1 is dte[(y - rows) >> LB].
+        // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
+        // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
         if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
@@ -754,7 +756,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
-        } else {
+        } else {  // q counts -rows + 2 per iteration up to 0; rows y, y + 1 step by dte[(y - rows) >> LB]
           int64_t q = -int64_t(nb) * B;
           asm volatile(
               "mov v21.16b, %[n0].16b\n\t"
