@@ -43,8 +43,9 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // Indices texel | row << 8 (32-bit lanes) leave the vector two at a time; the colormap bytes
 // are read by sixteen independent scalar loads, packed into words, and stored. The row loop
 // of full groups is assembly on both ARM targets (the compilers' schedules and register
-// allocation cost 1.5-2x there): row y's scalar work first, then row y + 1's NEON work, so an
-// in-order core never waits on a NEON result. The last, partial group of a row is C++.
+// allocation cost 1.5-2x there); on ARMv7 row y's scalar work first, then row y + 1's NEON
+// work, so an in-order core never waits on a NEON result; on AArch64 a whole strip per call,
+// two rows per iteration (see there). The last, partial group of a row is C++.
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -65,15 +66,38 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
   }
 }
 
+#if defined(__aarch64__)
+#define SB_TILE_INLINE inline __attribute__((always_inline))  // a call costs more than a row at mips 2-3
+#else
+#define SB_TILE_INLINE inline
+#endif
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
-inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
-                     const uint8x16_t* period) {
+SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
+                             const uint8x16_t* period, [[maybe_unused]] const uint8_t* texels = nullptr) {
   int d;  // a period of the run, >= 16
   if (tw >= 16) {
-    const int a = tw - c0 < n ? tw - c0 : n;
-    std::memcpy(dst, row + c0, size_t(a));
-    if (a < n) std::memcpy(dst + a, row, size_t(c0 < n - a ? c0 : n - a));
+    const int a = tw - c0 < n ? tw - c0 : n, b = a < n ? (c0 < n - a ? c0 : n - a) : 0;
+#if defined(__aarch64__)
+    // 16-byte copies when their reads stay inside the texture (a library call per row costs
+    // more than the row at the small mips).
+    if (row + c0 + ((a + 15) & ~15) <= tex_end && row + ((b + 15) & ~15) <= tex_end) {
+      for (int x = 0; x < a; x += 16) {
+        uint8x16_t v = vld1q_u8(row + c0 + x);
+        asm("" : "+w"(v));  // (else GCC turns the loop back into a memcpy call)
+        vst1q_u8(dst + x, v);
+      }
+      for (int x = 0; x < b; x += 16) {
+        uint8x16_t v = vld1q_u8(row + x);
+        asm("" : "+w"(v));
+        vst1q_u8(dst + a + x, v);
+      }
+    } else
+#endif
+    {
+      std::memcpy(dst, row + c0, size_t(a));
+      if (b) std::memcpy(dst + a, row, size_t(b));
+    }
     d = tw;
   } else {
     d = tw;
@@ -93,17 +117,39 @@ inline void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, co
       for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
       return;
     }
+#if defined(__aarch64__)
+    if (texels && tex_end - 16 >= texels) {  // the texture's last 16 bytes, indices moved up
+      const uint8x16_t v = vld1q_u8(tex_end - 16), o = vdupq_n_u8(uint8_t(row - (tex_end - 16)));
+      vst1q_u8(dst, vqtbl1q_u8(v, vaddq_u8(period[0], o)));
+      vst1q_u8(dst + 16, vqtbl1q_u8(v, vaddq_u8(period[1], o)));
+      for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+      return;
+    }
+#endif
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
     }
   }
-  for (int x = d; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+  int x = d;
+#if defined(__aarch64__)
+  if (d >= 32)  // 32 bytes a step (a step's loads never read its own stores)
+    for (; x + 16 < n; x += 32) {
+      const uint8x16_t v0 = vld1q_u8(dst + x - d), v1 = vld1q_u8(dst + x + 16 - d);
+      vst1q_u8(dst + x, v0);
+      vst1q_u8(dst + x + 16, v1);
+    }
+#endif
+  for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
 constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
+
+#if defined(__aarch64__)
+constexpr int kStripRows = 512;  // rows of a strip at most (aarch64: the assembly's row and step tables)
+#endif
 
 // Lanes k of the group's weighted grid row: g[k >> LB] (B - fx) + g[(k >> LB) + 1] fx with
 // weights pre-shifted (bx = (B - fx) << s, fx = fx << s), quarter j = lanes 4j .. 4j + 3.
@@ -359,6 +405,42 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
 }
 #endif
 
+#if defined(__aarch64__)
+// Per-lane weights (see surface_block_groups), lanes k = 0..15 of a group.
+template <int kMip>
+struct BlockWeights {
+  uint16_t w[4][16];
+  constexpr BlockWeights() : w{} {
+    constexpr int B = 16 >> kMip;
+    for (int k = 0; k < 16; ++k) {
+      w[0][k] = uint16_t((B - k % B) << (4 + kMip));
+      w[1][k] = uint16_t((k % B) << (4 + kMip));
+      w[2][k] = uint16_t((B - k % B) << (2 * kMip));
+      w[3][k] = uint16_t((k % B) << (2 * kMip));
+    }
+  }
+};
+template <int kMip>
+constexpr BlockWeights<kMip> kBlockWeights{};
+
+constexpr uint8_t kIota32[32] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15,
+                                 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31};
+// Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
+constexpr uint8_t kIdx[4][16] = {{0, 255, 255, 255, 1, 255, 255, 255, 2, 255, 255, 255, 3, 255, 255, 255},
+                                 {4, 255, 255, 255, 5, 255, 255, 255, 6, 255, 255, 255, 7, 255, 255, 255},
+                                 {8, 255, 255, 255, 9, 255, 255, 255, 10, 255, 255, 255, 11, 255, 255, 255},
+                                 {12, 255, 255, 255, 13, 255, 255, 255, 14, 255, 255, 255, 15, 255, 255, 255}};
+// The assembly's table lookups: lanes 4j..4j+3 of (texel, row, 0, 0) from the texel vector T
+// and the numerators N0..N3 held as {N3, T, N0, N1, N2} in consecutive registers (row: a
+// lane's byte 2). Quarters 0, 1, 3 read {T, N0}, {T, N0, N1}, {N3, T}; quarter 2 is N2 >> 8
+// with the texels put in by kIdx[2] (a four-register lookup costs Cortex-A57/A72 9 uops, the
+// pair 4; Cortex-A53 one instruction more). Row 2 here is unused.
+constexpr uint8_t kTix[4][16] = {{0, 18, 255, 255, 1, 22, 255, 255, 2, 26, 255, 255, 3, 30, 255, 255},
+                                 {4, 34, 255, 255, 5, 38, 255, 255, 6, 42, 255, 255, 7, 46, 255, 255},
+                                 {8, 50, 255, 255, 9, 54, 255, 255, 10, 58, 255, 255, 11, 62, 255, 255},
+                                 {28, 2, 255, 255, 29, 6, 255, 255, 30, 10, 255, 255, 31, 14, 255, 255}};
+#endif
+
 template <int kMip>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -374,6 +456,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
   // Narrow textures (tw < 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
+#if defined(__aarch64__)
+  period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw >= 16)
+  if (tw < 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
+    const uint16x8_t m = vdupq_n_u16(uint16_t((65536 + tw - 1) / tw)), twv = vdupq_n_u16(uint16_t(tw));
+    for (int h = 0; h < 2; ++h) {
+      const uint8x16_t x8 = vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0)));
+      uint16x8_t x[2] = {vmovl_u8(vget_low_u8(x8)), vmovl_high_u8(x8)};
+      for (int i = 0; i < 2; ++i) {
+        const uint16x8_t q = vuzp2q_u16(vreinterpretq_u16_u32(vmull_u16(vget_low_u16(x[i]), vget_low_u16(m))),
+                                        vreinterpretq_u16_u32(vmull_high_u16(x[i], m)));
+        x[i] = vmlsq_u16(x[i], q, twv);
+      }
+      period[h] = vuzp1q_u8(vreinterpretq_u8_u16(x[0]), vreinterpretq_u8_u16(x[1]));
+    }
+  }
+#else
   {
     uint8_t k8[32];
     for (int k = 0, c = c0; k < 32; ++k) {
@@ -383,22 +481,29 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     period[0] = vld1q_u8(k8);
     period[1] = vld1q_u8(k8 + 16);
   }
+#endif
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
                                                      buf + t * stride);
   int strip_bands = bh;
   if (!all_rows) {
     const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
     strip_bands = fit < bh ? fit : bh;
   }
+#if defined(__aarch64__)
+  if (strip_bands > kStripRows / B) strip_bands = kStripRows / B;  // the assembly's tables
+#endif
 
   // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
   // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
+#if defined(__aarch64__)
+  const auto& w = kBlockWeights<kMip>.w;  // (a table: setup counts at the small mips)
+#else
   uint16_t w[4][16];
   for (int k = 0; k < 16; ++k) {
     w[0][k] = uint16_t((B - k % B) << (4 + kMip));
@@ -406,19 +511,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
-  const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
-  const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
+#endif
 #if defined(__aarch64__)
-  // Lanes 4j..4j+3: num >> 8 is (fraction, row, 0, 0) bytewise; its byte 0 becomes the texel.
-  uint8x16_t IDX[4];
-  for (int j = 0; j < 4; ++j) {
-    uint8_t b[16];
-    for (int l = 0; l < 4; ++l) {
-      b[4 * l] = uint8_t(4 * j + l);
-      b[4 * l + 1] = b[4 * l + 2] = b[4 * l + 3] = 0xff;
-    }
-    IDX[j] = vld1q_u8(b);
-  }
+  // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
+  auto ld = [](const uint16_t* p) {
+    uint16x8_t v = vld1q_u16(p);
+    asm("" : "+w"(v));
+    return v;
+  };
+#else
+  auto ld = [](const uint16_t* p) { return vld1q_u16(p); };
+#endif
+  const uint16x8_t BX0[2] = {ld(w[0]), ld(w[0] + 8)}, FX0[2] = {ld(w[1]), ld(w[1] + 8)};
+  const uint16x8_t BX1[2] = {ld(w[2]), ld(w[2] + 8)}, FX1[2] = {ld(w[3]), ld(w[3] + 8)};
+#if defined(__aarch64__)
+  const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
+  const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
+  const uint8_t* lin[kStripRows + 2];     // the strip's texel runs in row order, two rows beyond
+  uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 #if !defined(__aarch64__)
@@ -441,11 +551,25 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       int t = (t0 + by0 * B) % th;
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period),
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
                                 buf + r * stride);
         if (++t == th) t = 0;
       }
     }
+#if defined(__aarch64__)
+    for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
+      const int n = count - t < total - r ? count - t : total - r;
+      int i = 0;
+      for (; i + 2 <= n; i += 2) {
+        uint64x2_t v;
+        std::memcpy(&v, run + t + i, sizeof v);
+        asm("" : "+w"(v));  // (else GCC makes this loop a memcpy call)
+        std::memcpy(lin + r + i, &v, sizeof v);
+      }
+      if (i < n) lin[r + i] = run[t + i];
+      r += n;
+    }
+#endif
     uint8_t* const strip = out + by0 * B * width;
 #if !defined(__aarch64__)
     {  // the strip's rows in order, four past its end (read cyclically from run[first])
@@ -728,119 +852,425 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           num[j] = vaddq_u32(num[j], delta[j]);
         }
       };
-      step_for(by0 + 1);
-      indices(next_run());
       if (m >= 16) {
-        // Each row: the scalar work of its pairs first (ALU and load/store only: the
-        // colormap loads, packing, one stp), then the NEON work of the next row (ushr, tbx,
-        // step, and the 64-bit moves into the pairs). An in-order core (Cortex-A53) never
-        // waits on a NEON result inside a row, nor has a short instruction held behind a long
-        // NEON one. x0-x7: pairs; x9-x16: high indices; x17: texel run; v16-v19: the step;
-        // v20-v23: IDX; v27: texels; v28-v31: index vectors. A band's last row steps with the
-        // next band's delta (dn).
-#define SB_BLOCK_ROW \
-  "orr x9, xzr, x0, lsr #32\n\t" \
-  "orr x10, xzr, x1, lsr #32\n\t" \
-  "orr x11, xzr, x2, lsr #32\n\t" \
-  "orr x12, xzr, x3, lsr #32\n\t" \
-  "orr x13, xzr, x4, lsr #32\n\t" \
-  "ldr x17, [%[rp]], #8\n\t" \
-  "orr x14, xzr, x5, lsr #32\n\t" \
-  "ldrb w0, [%[cm], w0, uxtw]\n\t" \
-  "orr x15, xzr, x6, lsr #32\n\t" \
-  "ldrb w9, [%[cm], x9]\n\t" \
-  "orr x16, xzr, x7, lsr #32\n\t" \
-  "ldrb w1, [%[cm], w1, uxtw]\n\t" \
-  "cmp %[rp], %[re]\n\t" \
-  "ldrb w10, [%[cm], x10]\n\t" \
-  "csel %[rp], %[rb], %[rp], eq\n\t" \
-  "ldrb w2, [%[cm], w2, uxtw]\n\t" \
-  "add x17, x17, %[goff]\n\t" \
-  "ldrb w11, [%[cm], x11]\n\t" \
-  "orr x0, x0, x9, lsl #8\n\t" \
-  "ldrb w3, [%[cm], w3, uxtw]\n\t" \
-  "orr x1, x1, x10, lsl #8\n\t" \
-  "ldrb w12, [%[cm], x12]\n\t" \
-  "ldr q27, [x17]\n\t" \
-  "orr x2, x2, x11, lsl #8\n\t" \
-  "ldrb w4, [%[cm], w4, uxtw]\n\t" \
-  "orr x0, x0, x1, lsl #16\n\t" \
-  "ldrb w13, [%[cm], x13]\n\t" \
-  "orr x3, x3, x12, lsl #8\n\t" \
-  "ldrb w5, [%[cm], w5, uxtw]\n\t" \
-  "ldrb w14, [%[cm], x14]\n\t" \
-  "orr x2, x2, x3, lsl #16\n\t" \
-  "ldrb w6, [%[cm], w6, uxtw]\n\t" \
-  "orr x4, x4, x13, lsl #8\n\t" \
-  "ldrb w15, [%[cm], x15]\n\t" \
-  "orr x5, x5, x14, lsl #8\n\t" \
-  "ldrb w7, [%[cm], w7, uxtw]\n\t" \
-  "orr x0, x0, x2, lsl #32\n\t" \
-  "ldrb w16, [%[cm], x16]\n\t" \
-  "orr x4, x4, x5, lsl #16\n\t" \
-  "orr x6, x6, x15, lsl #8\n\t" \
-  "orr x7, x7, x16, lsl #8\n\t" \
-  "orr x6, x6, x7, lsl #16\n\t" \
-  "orr x4, x4, x6, lsl #32\n\t" \
-  "stp x0, x4, [%[d]]\n\t" \
-  "add %[d], %[d], %[w]\n\t" \
-  "ushr v28.4s, %[n0].4s, #8\n\t"                     \
-  "ushr v29.4s, %[n1].4s, #8\n\t"                     \
-  "ushr v30.4s, %[n2].4s, #8\n\t"                     \
-  "ushr v31.4s, %[n3].4s, #8\n\t"                     \
-  "add %[n0].4s, %[n0].4s, v16.4s\n\t"                \
-  "add %[n1].4s, %[n1].4s, v17.4s\n\t"                \
-  "tbx v28.16b, {v27.16b}, v20.16b\n\t"               \
-  "tbx v29.16b, {v27.16b}, v21.16b\n\t"               \
-  "add %[n2].4s, %[n2].4s, v18.4s\n\t"                \
-  "add %[n3].4s, %[n3].4s, v19.4s\n\t"                \
-  "tbx v30.16b, {v27.16b}, v22.16b\n\t"               \
-  "tbx v31.16b, {v27.16b}, v23.16b\n\t"               \
-  "fmov x0, d28\n\t"                                  \
-  "mov x1, v28.d[1]\n\t"                              \
-  "fmov x2, d29\n\t"                                  \
-  "mov x3, v29.d[1]\n\t"                              \
-  "fmov x4, d30\n\t"                                  \
-  "mov x5, v30.d[1]\n\t"                              \
-  "fmov x6, d31\n\t"                                  \
-  "mov x7, v31.d[1]\n\t"
-        const int64_t goff = 16 * g, wstride = width;
-        for (int band = 0; band < nb; ++band) {
-          uint32x4_t cur[4];
-          for (int j = 0; j < 4; ++j) cur[j] = delta[j];
-          if (band + 1 < nb) step_for(by0 + band + 2);  // delta = the next band's step
-          const uint8_t* const* rp = run + k;
-          int64_t rows = B - 1;
-          asm volatile(
-              "ldp x0, x1, [%[P]]\n\t"
-              "ldp x2, x3, [%[P], #16]\n\t"
-              "ldp x4, x5, [%[P], #32]\n\t"
-              "ldp x6, x7, [%[P], #48]\n\t"
-              "ldp q20, q21, [%[ix]]\n\t"
-              "ldp q22, q23, [%[ix], #32]\n\t"
-              "ldp q16, q17, [%[dl]]\n\t"
-              "ldp q18, q19, [%[dl], #32]\n\t"
-              "1:\n\t" SB_BLOCK_ROW
-              "subs %[rows], %[rows], #1\n\t"
-              "b.ne 1b\n\t"
-              "ldp q16, q17, [%[dn]]\n\t"
-              "ldp q18, q19, [%[dn], #32]\n\t" SB_BLOCK_ROW
-              "stp x0, x1, [%[P]]\n\t"
-              "stp x2, x3, [%[P], #16]\n\t"
-              "stp x4, x5, [%[P], #32]\n\t"
-              "stp x6, x7, [%[P], #48]\n\t"
-              : [n0] "+w"(num[0]), [n1] "+w"(num[1]), [n2] "+w"(num[2]), [n3] "+w"(num[3]), [rp] "+r"(rp),
-                [d] "+r"(d), [rows] "+r"(rows)
-              : [P] "r"(P), [ix] "r"(IDX), [dl] "r"(cur), [dn] "r"(band + 1 < nb ? delta : cur),
-                [rb] "r"(run), [re] "r"(run + count), [goff] "r"(goff), [cm] "r"(colormap), [w] "r"(wstride)
-              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x9", "x10", "x11", "x12", "x13", "x14", "x15",
-                "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v27", "v28", "v29", "v30",
-                "v31", "cc", "memory");
-          k = int(rp - run);
+        // Full groups: the whole strip in assembly, two rows per iteration. Each iteration
+        // first forms both rows' indices (table lookups or shift and lookup, steps, 64-bit
+        // moves into x0-x7 and x19-x26) in one run of NEON instructions, then does their scalar
+        // work (colormap loads, packing, stores) with the next iteration's texel rows (and
+        // step) loaded in between: an in-order core (Cortex-A53) retires in order, so a NEON
+        // instruction (6 cycles) holds the ALU and load instructions after it; one run per
+        // iteration pays that once. The second row's store comes first in the next iteration.
+        // v19-v23 / v24-v28: {N3, T, N0, N1, N2} of the even / odd row (the odd row's
+        // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
+        // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
+        // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
+        if (direct) {
+          // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
+          // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
+          // the difference of the two rows' weighed values).
+          const int16x8_t W0 = vreinterpretq_s16_u16(BX1[0]), W0h = vreinterpretq_s16_u16(BX1[1]);
+          const int16x8_t W1 = vreinterpretq_s16_u16(FX1[0]), W1h = vreinterpretq_s16_u16(FX1[1]);
+          const int16x4_t w0[4] = {vget_low_s16(W0), vget_high_s16(W0), vget_low_s16(W0h), vget_high_s16(W0h)};
+          const int16x4_t w1[4] = {vget_low_s16(W1), vget_high_s16(W1), vget_low_s16(W1h), vget_high_s16(W1h)};
+          // Band b from grid rows b (p: entries 0.., p1: entries 1..) and b + 1 (q, q1). Two bands
+          // a step with the rows' roles swapped (no register copies).
+          auto band = [&](uint16x8_t p, uint16x8_t p1, uint16x8_t q, uint16x8_t q1, uint32x4_t* dt)
+              __attribute__((always_inline)) {
+            if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
+              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(q, p));
+              const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
+              const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
+              const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
+              dt[0] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(lo), 2 * kMip));
+              dt[1] = vreinterpretq_u32_s32(vshll_high_n_s16(lo, 2 * kMip));
+              dt[2] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(hi), 2 * kMip));
+              dt[3] = vreinterpretq_u32_s32(vshll_high_n_s16(hi, 2 * kMip));
+            } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
+              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
+              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
+              if constexpr (LB == 2) {  // quarter j: block j
+                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
+                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
+                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
+              } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
+                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
+                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
+                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
+              } else {  // one block: e[1] is e's lane 1
+#pragma GCC unroll 4
+                for (int j = 0; j < 4; ++j)
+                  dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
+              }
+            }
+          };
+          auto ldg = [](const uint16_t* p) {  // the group's entries p[0..G] a band reads
+            if constexpr (LB == 1) {
+              return vld1q_u16(p);
+            } else if constexpr (LB == 2) {
+              return vcombine_u16(vld1_u16(p), vdup_n_u16(0));
+            } else {
+              uint32_t x;
+              std::memcpy(&x, p, sizeof x);
+              return vreinterpretq_u16_u32(vdupq_n_u32(x));
+            }
+          };
+          const uint16_t* r = grid + by0 * grid_width + b0;  // the next band's upper grid row
+          uint16x8_t p = ldg(r), p1 = LB <= 3 ? ldg(r + 1) : p;
+          uint32x4_t* dt = dtab;
+          int b = 0;
+#pragma GCC unroll 2
+          for (; b + 2 <= nb; b += 2, dt += 8) {
+            r += grid_width;
+            const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
+            band(p, p1, q, q1, dt);
+            r += grid_width;
+            p = ldg(r);
+            p1 = LB <= 3 ? ldg(r + 1) : p;
+            band(q, q1, p, p1, dt + 4);
+          }
+          if (b < nb) {
+            r += grid_width;
+            const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
+            band(p, p1, q, q1, dt);
+          }
+        } else {
+          for (int b = 0; b < nb; ++b) {
+            step_for(by0 + b + 1);
+            for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+          }
         }
-#undef SB_BLOCK_ROW
+        for (int j = 0; j < 4; ++j) dtab[4 * nb + j] = vdupq_n_u32(0);
+  #define SB_PAIR_LOOP \
+    "stp x19, x23, [%[d]]\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "2:\n\t" \
+    "add v28.4s, v23.4s, v18.4s\n\t" \
+    "ushr v2.4s, v23.4s, #8\n\t" \
+    "add v26.4s, v21.4s, v16.4s\n\t" \
+    "add v27.4s, v22.4s, v17.4s\n\t" \
+    "add v24.4s, v19.4s, v29.4s\n\t" \
+    "tbl v0.16b, {v20.16b, v21.16b}, %[i0].16b\n\t" \
+    "ushr v6.4s, v28.4s, #8\n\t" \
+    "tbl v1.16b, {v20.16b, v21.16b, v22.16b}, %[i1].16b\n\t" \
+    "tbx v2.16b, {v20.16b}, %[i2].16b\n\t" \
+    "tbl v3.16b, {v19.16b, v20.16b}, %[i3].16b\n\t" \
+    "tbl v4.16b, {v25.16b, v26.16b}, %[i0].16b\n\t" \
+    "tbl v5.16b, {v25.16b, v26.16b, v27.16b}, %[i1].16b\n\t" \
+    "tbx v6.16b, {v25.16b}, %[i2].16b\n\t" \
+    "tbl v7.16b, {v24.16b, v25.16b}, %[i3].16b\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "add v21.4s, v26.4s, v16.4s\n\t" \
+    "add v22.4s, v27.4s, v17.4s\n\t" \
+    "add v23.4s, v28.4s, v18.4s\n\t" \
+    "add v19.4s, v24.4s, v29.4s\n\t" \
+    "fmov x19, d4\n\t" \
+    "fmov x20, v4.d[1]\n\t" \
+    "fmov x21, d5\n\t" \
+    "fmov x22, v5.d[1]\n\t" \
+    "fmov x23, d6\n\t" \
+    "fmov x24, v6.d[1]\n\t" \
+    "fmov x25, d7\n\t" \
+    "fmov x26, v7.d[1]\n\t" \
+    "add x10, %[cm], x1, lsr #32\n\t" \
+    "ldrb w1, [%[cm], w1, uxtw]\n\t" \
+    "add x9, %[cm], x0, lsr #32\n\t" \
+    "ldrb w0, [%[cm], w0, uxtw]\n\t" \
+    "add x11, %[cm], x2, lsr #32\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x30, %[cm], x5, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "add x18, %[cm], x4, lsr #32\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "add x12, %[cm], x3, lsr #32\n\t" \
+    "ldrb w4, [%[cm], w4, uxtw]\n\t" \
+    "adds %[q], %[q], #2\n\t" \
+    "ldrb w2, [%[cm], w2, uxtw]\n\t" \
+    "orr x1, x1, x10, lsl #8\n\t" \
+    "ldrb w3, [%[cm], w3, uxtw]\n\t" \
+    "add x10, %[cm], x7, lsr #32\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "orr x0, x0, x9, lsl #8\n\t" \
+    "ldrb w30, [x30]\n\t" \
+    "add x9, %[cm], x6, lsr #32\n\t" \
+    "ldrb w7, [%[cm], w7, uxtw]\n\t" \
+    "ldrb w6, [%[cm], w6, uxtw]\n\t" \
+    "orr x4, x4, x18, lsl #8\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "add x18, %[cm], x23, lsr #32\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x0, x0, x1, lsl #16\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "orr x7, x7, x10, lsl #8\n\t" \
+    "ldr q20, [x8, %[goff]]\n\t" \
+    "orr x6, x6, x9, lsl #8\n\t" \
+    "ldrb w5, [%[cm], w5, uxtw]\n\t" \
+    "add x9, %[cm], x19, lsr #32\n\t" \
+    "ldrb w19, [%[cm], w19, uxtw]\n\t" \
+    "add x10, %[cm], x20, lsr #32\n\t" \
+    "ldrb w20, [%[cm], w20, uxtw]\n\t" \
+    "orr x3, x3, x12, lsl #8\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "orr x2, x2, x11, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "add x12, %[cm], x22, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "add x11, %[cm], x21, lsr #32\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "orr x5, x5, x30, lsl #8\n\t" \
+    "ldrb w23, [%[cm], w23, uxtw]\n\t" \
+    "orr x19, x19, x9, lsl #8\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "add x9, %[cm], x25, lsr #32\n\t" \
+    "ldrb w22, [%[cm], w22, uxtw]\n\t" \
+    "add x30, %[cm], x24, lsr #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "orr x20, x20, x10, lsl #8\n\t" \
+    "ldrb w24, [%[cm], w24, uxtw]\n\t" \
+    "add x10, %[cm], x26, lsr #32\n\t" \
+    "ldrb w25, [%[cm], w25, uxtw]\n\t" \
+    "orr x6, x6, x7, lsl #16\n\t" \
+    "ldrb w26, [%[cm], w26, uxtw]\n\t" \
+    "orr x4, x4, x5, lsl #16\n\t" \
+    "ldrb w30, [x30]\n\t" \
+    "orr x2, x2, x3, lsl #16\n\t" \
+    "ldrb w21, [%[cm], w21, uxtw]\n\t" \
+    "orr x22, x22, x12, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x23, x23, x18, lsl #8\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x4, x4, x6, lsl #32\n\t" \
+    "ldr q25, [x8, %[goff]]\n\t" \
+    "orr x24, x24, x30, lsl #8\n\t" \
+    "orr x21, x21, x11, lsl #8\n\t" \
+    "asr x8, %[q], %[lb]\n\t" \
+    "orr x25, x25, x9, lsl #8\n\t" \
+    "orr x26, x26, x10, lsl #8\n\t" \
+    "orr x0, x0, x2, lsl #32\n\t" \
+    "orr x23, x23, x24, lsl #16\n\t" \
+    "orr x19, x19, x20, lsl #16\n\t" \
+    "add x8, %[dte], x8, lsl #6\n\t" \
+    "orr x21, x21, x22, lsl #16\n\t" \
+    "orr x25, x25, x26, lsl #16\n\t" \
+    "stp x0, x4, [%[d]]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "orr x19, x19, x21, lsl #32\n\t" \
+    "ldr q29, [x8, #48]\n\t" \
+    "orr x23, x23, x25, lsl #32\n\t" \
+    "ldr q18, [x8, #32]\n\t" \
+    "ldp q16, q17, [x8]\n\t" \
+    "b.ne 1b\n\t"
+  #define SB_PAIR_LOOP_N \
+    "stp x19, x23, [%[d]]\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "2:\n\t" \
+    "add v28.4s, v23.4s, v18.4s\n\t" \
+    "ushr v2.4s, v23.4s, #8\n\t" \
+    "add v26.4s, v21.4s, v16.4s\n\t" \
+    "add v27.4s, v22.4s, v17.4s\n\t" \
+    "add v24.4s, v19.4s, v29.4s\n\t" \
+    "tbl v0.16b, {v20.16b, v21.16b}, %[i0].16b\n\t" \
+    "ushr v6.4s, v28.4s, #8\n\t" \
+    "tbl v1.16b, {v20.16b, v21.16b, v22.16b}, %[i1].16b\n\t" \
+    "tbx v2.16b, {v20.16b}, %[i2].16b\n\t" \
+    "tbl v3.16b, {v19.16b, v20.16b}, %[i3].16b\n\t" \
+    "tbl v4.16b, {v25.16b, v26.16b}, %[i0].16b\n\t" \
+    "tbl v5.16b, {v25.16b, v26.16b, v27.16b}, %[i1].16b\n\t" \
+    "tbx v6.16b, {v25.16b}, %[i2].16b\n\t" \
+    "tbl v7.16b, {v24.16b, v25.16b}, %[i3].16b\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "add v21.4s, v26.4s, v16.4s\n\t" \
+    "add v22.4s, v27.4s, v17.4s\n\t" \
+    "add v23.4s, v28.4s, v18.4s\n\t" \
+    "add v19.4s, v24.4s, v29.4s\n\t" \
+    "fmov x19, d4\n\t" \
+    "fmov x20, v4.d[1]\n\t" \
+    "fmov x21, d5\n\t" \
+    "fmov x22, v5.d[1]\n\t" \
+    "fmov x23, d6\n\t" \
+    "fmov x24, v6.d[1]\n\t" \
+    "fmov x25, d7\n\t" \
+    "fmov x26, v7.d[1]\n\t" \
+    "add x11, %[cm], x2, lsr #32\n\t" \
+    "ldrb w2, [%[cm], w2, uxtw]\n\t" \
+    "add x9, %[cm], x0, lsr #32\n\t" \
+    "ldrb w0, [%[cm], w0, uxtw]\n\t" \
+    "add x10, %[cm], x1, lsr #32\n\t" \
+    "ldrb w1, [%[cm], w1, uxtw]\n\t" \
+    "add x12, %[cm], x3, lsr #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "add x18, %[cm], x4, lsr #32\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "subs %[q], %[q], #1\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "ldrb w4, [%[cm], w4, uxtw]\n\t" \
+    "orr x2, x2, x11, lsl #8\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "add x11, %[cm], x7, lsr #32\n\t" \
+    "ldrb w7, [%[cm], w7, uxtw]\n\t" \
+    "orr x1, x1, x10, lsl #8\n\t" \
+    "ldrb w3, [%[cm], w3, uxtw]\n\t" \
+    "orr x0, x0, x9, lsl #8\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "add x10, %[cm], x6, lsr #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "add x9, %[cm], x5, lsr #32\n\t" \
+    "ldrb w6, [%[cm], w6, uxtw]\n\t" \
+    "orr x3, x3, x12, lsl #8\n\t" \
+    "ldrb w5, [%[cm], w5, uxtw]\n\t" \
+    "add x12, %[cm], x22, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x4, x4, x18, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x7, x7, x11, lsl #8\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x11, %[cm], x21, lsr #32\n\t" \
+    "ldrb w21, [%[cm], w21, uxtw]\n\t" \
+    "orr x6, x6, x10, lsl #8\n\t" \
+    "ldrb w12, [x12]\n\t" \
+    "add x10, %[cm], x20, lsr #32\n\t" \
+    "ldrb w20, [%[cm], w20, uxtw]\n\t" \
+    "orr x5, x5, x9, lsl #8\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "add x9, %[cm], x19, lsr #32\n\t" \
+    "ldrb w19, [%[cm], w19, uxtw]\n\t" \
+    "add x18, %[cm], x23, lsr #32\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x0, x0, x1, lsl #16\n\t" \
+    "ldrb w22, [%[cm], w22, uxtw]\n\t" \
+    "orr x21, x21, x11, lsl #8\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "add x11, %[cm], x26, lsr #32\n\t" \
+    "ldrb w18, [x18]\n\t" \
+    "orr x20, x20, x10, lsl #8\n\t" \
+    "ldrb w26, [%[cm], w26, uxtw]\n\t" \
+    "add x10, %[cm], x25, lsr #32\n\t" \
+    "ldrb w25, [%[cm], w25, uxtw]\n\t" \
+    "orr x19, x19, x9, lsl #8\n\t" \
+    "ldr q20, [x8, %[goff]]\n\t" \
+    "add x9, %[cm], x24, lsr #32\n\t" \
+    "ldrb w23, [%[cm], w23, uxtw]\n\t" \
+    "orr x2, x2, x3, lsl #16\n\t" \
+    "ldrb w24, [%[cm], w24, uxtw]\n\t" \
+    "orr x4, x4, x5, lsl #16\n\t" \
+    "ldrb w10, [x10]\n\t" \
+    "orr x6, x6, x7, lsl #16\n\t" \
+    "ldrb w9, [x9]\n\t" \
+    "orr x0, x0, x2, lsl #32\n\t" \
+    "ldrb w11, [x11]\n\t" \
+    "orr x19, x19, x20, lsl #16\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "orr x25, x25, x10, lsl #8\n\t" \
+    "orr x23, x23, x18, lsl #8\n\t" \
+    "orr x24, x24, x9, lsl #8\n\t" \
+    "orr x22, x22, x12, lsl #8\n\t" \
+    "orr x4, x4, x6, lsl #32\n\t" \
+    "orr x26, x26, x11, lsl #8\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "ldr q25, [x8, %[goff]]\n\t" \
+    "orr x21, x21, x22, lsl #16\n\t" \
+    "orr x23, x23, x24, lsl #16\n\t" \
+    "orr x25, x25, x26, lsl #16\n\t" \
+    "stp x0, x4, [%[d]]\n\t" \
+    "add %[d], %[d], %[w]\n\t" \
+    "orr x19, x19, x21, lsl #32\n\t" \
+    "orr x23, x23, x25, lsl #32\n\t" \
+    "b.ne 1b\n\t"
+        const int64_t goff = 16 * g, wstride = width;
+        const uint8_t* const* rp = lin;
+        if constexpr (LB >= 3) {
+          // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
+          // the bands (x30: its address), not in every iteration. q: iterations left in the band.
+          int64_t q = -int64_t(nb) * 64;
+          asm volatile(
+              "mov v21.16b, %[n0].16b\n\t"
+              "mov v22.16b, %[n1].16b\n\t"
+              "mov v23.16b, %[n2].16b\n\t"
+              "mov v19.16b, %[n3].16b\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q25, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add x30, %[dte], %[q]\n\t"
+              "ldp q16, q17, [x30]\n\t"
+              "ldr q18, [x30, #32]\n\t"
+              "ldr q29, [x30, #48]\n\t"
+              "mov %[q], %[hp]\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"
+              "1:\n\t" SB_PAIR_LOOP_N
+              "add x30, x30, #64\n\t"
+              "ldp q16, q17, [x30]\n\t"
+              "ldr q18, [x30, #32]\n\t"
+              "ldr q29, [x30, #48]\n\t"
+              "mov %[q], %[hp]\n\t"
+              "cmp x30, %[dte]\n\t"
+              "b.ne 1b\n\t"
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+                [n2] "w"(num[2]), [n3] "w"(num[3]), [hp] "i"(B / 2)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+        } else {  // q counts -rows + 2 per iteration up to 0; rows y, y + 1 step by dte[(y - rows) >> LB]
+          int64_t q = -int64_t(nb) * B;
+          asm volatile(
+              "mov v21.16b, %[n0].16b\n\t"
+              "mov v22.16b, %[n1].16b\n\t"
+              "mov v23.16b, %[n2].16b\n\t"
+              "mov v19.16b, %[n3].16b\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q25, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "asr x8, %[q], %[lb]\n\t"
+              "add x8, %[dte], x8, lsl #6\n\t"
+              "ldp q16, q17, [x8]\n\t"
+              "ldr q18, [x8, #32]\n\t"
+              "ldr q29, [x8, #48]\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
+              "1:\n\t" SB_PAIR_LOOP
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+                [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+        }
+#undef SB_PAIR_LOOP
+#undef SB_PAIR_LOOP_N
         continue;
       }
+      step_for(by0 + 1);
+      indices(next_run());
       auto row = [&](bool band_end, int next_grid_row) __attribute__((always_inline)) {
         if (band_end) step_for(next_grid_row);
         uint64_t p[8];
