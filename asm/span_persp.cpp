@@ -723,6 +723,120 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 }
 #endif
 
+#if defined(__aarch64__)
+// aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position,
+// depth and divide first (three 2-lane divides back to back), the conversions and the full
+// runs' steps in vectors, branch-free, then the runs drawn straight. Positions as the walker
+// computes them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1,
+// sample j + 2 at P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j).
+// Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
+// the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
+// the long-span vector code's operation (see persp_fast): the same bits.
+constexpr int kShortMax = 64;
+template <bool kCurve>
+void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const double zc = p.second_order ? p.dzi : 0.0;
+  const uint32_t w = uint32_t(width);
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  const float64x2_t kZrow = vdupq_n_f64(p.zi0), kZix = vdupq_n_f64(p.dzi), kMin = vdupq_n_f64(kMinZi);
+  const float64x2_t kOne = vdupq_n_f64(1.0);
+  const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(p.uz0), vdup_n_f64(p.vz0));
+  const float64x2_t kUVx = vcombine_f64(vdup_n_f64(p.duz), vdup_n_f64(p.dvz));
+  const double P0 = p.px0, P1 = P0 + double(16), P2 = P1 + double(16);
+  auto off = [n](int j) { return double(n - 16 * j - 1 < 32 ? n - 16 * j - 1 : 32); };
+  const float64x2_t pA = vcombine_f64(vdup_n_f64(P0), vdup_n_f64(P1));
+  const float64x2_t pB = vcombine_f64(vdup_n_f64(P0 + off(0)), vdup_n_f64(P1 + off(1)));
+  const float64x2_t pC = vdupq_n_f64(P2 + off(2));
+  // 1 / max(zi, kMinZi), zi = zrow + zix * pos (fmadd, as the scalar code compiles).
+  const float64x2_t zA = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pA), kMin));
+  const float64x2_t zB = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pB), kMin));
+  const float64x2_t zC = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pC), kMin));
+  // [u, v] of sample j = to_fixed of (uvrow + uvx * pos) * z, as fcvtzs #16, sqxtn and the
+  // integer clamps (persp_fast's argument); two samples per vector: [u_j, v_j, u_k, v_k].
+  auto uv = [&](float64x2_t pos, float64x2_t z, auto lane) SB_LAMBDA_INLINE {
+    constexpr int L = decltype(lane)::value;
+    return vcvtq_n_s64_f64(vmulq_laneq_f64(vfmaq_laneq_f64(kUVrow, kUVx, pos, L), z, L), 16);
+  };
+  using L0 = std::integral_constant<int, 0>;
+  using L1 = std::integral_constant<int, 1>;
+  const int32x4_t kMax = vreinterpretq_s32_u64(vdupq_n_u64(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax)));
+  const int32x4_t kZero = vdupq_n_s32(0);
+  auto fix = [&](int64x2_t a, int64x2_t b) SB_LAMBDA_INLINE {
+    return vminq_s32(vmaxq_s32(vqmovn_high_s64(vqmovn_s64(a), b), kZero), kMax);
+  };
+  const int32x4_t S01 = fix(uv(pA, zA, L0{}), uv(pA, zA, L1{}));
+  const int32x4_t S23 = fix(uv(pB, zB, L0{}), uv(pB, zB, L1{}));
+  const int32x4_t S44 = fix(uv(pC, zC, L0{}), uv(pC, zC, L0{}));
+  // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
+  const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
+  const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
+  int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
+  if constexpr (kCurve) {
+    // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
+    // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
+    const double zck = zc * -0.0625;
+    const float64x2_t c01 = vmulq_n_f64(vaddq_f64(zA, vextq_f64(zA, zB, 1)), zck);
+    const float64x2_t c23 = vmulq_n_f64(vaddq_f64(zB, vextq_f64(zB, zC, 1)), zck);
+    auto ddf = [](int32x2_t d, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
+      return vcvtq_s64_f64(vmulq_laneq_f64(vcvtq_f64_s64(vmovl_s32(d)), c, decltype(lane)::value));
+    };
+    const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vget_low_s32(D01), c01, L0{})),
+                                          ddf(vget_high_s32(D01), c01, L1{}));
+    const int32x4_t i23 = vcombine_s32(vqmovn_s64(ddf(vget_low_s32(D23), c23, L0{})), vdup_n_s32(0));
+    // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
+    // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
+    // 120 2^25 > 2^31 > pd).
+    auto steps_dd = [](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
+      const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
+      const uint32x4_t pd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(delta), s), s);
+      const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
+      const uint32x4_t sd = vreinterpretq_u32_s32(vshrq_n_s32(dd, 31));
+      const uint32x4_t add = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), sd), sd);
+      const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
+      const uint32x4_t q = vshrq_n_u32(vmlsq_n_u32(pd, pdd, 120), 4), lin = vshrq_n_u32(pd, 4);
+      const uint32x4_t pick = vbslq_u32(accept, q, lin);
+      *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
+      *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
+    };
+    steps_dd(D01, i01, &d01, &dd01);
+    steps_dd(D23, i23, &d23, &dd23);
+  } else {
+    // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
+    auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
+      return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
+                                                           vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
+    };
+    d01 = div16(D01), d23 = div16(D23);
+  }
+  int32_t sm[12], dm[8], ddm[8];
+  double zm[6];
+  vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23), vst1q_s32(sm + 8, S44);
+  vst1q_s32(dm, d01), vst1q_s32(dm + 4, d23), vst1q_s32(ddm, dd01), vst1q_s32(ddm + 4, dd23);
+  vst1q_f64(zm, zA), vst1q_f64(zm + 2, zB), vst1q_f64(zm + 4, zC);
+  const int k = runs - 1;
+  const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
+  RunSteps lu, lv;
+  run_steps_uv(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
+  auto full = [&](int j) SB_LAMBDA_INLINE {
+    draw16<kCurve>(dest + 16 * j, texels, w, sm[2 * j], sm[2 * j + 1], RunSteps{dm[2 * j], ddm[2 * j]},
+                   RunSteps{dm[2 * j + 1], ddm[2 * j + 1]});
+  };
+  full(0);
+  if (k > 1) full(1);
+  if (k > 2) full(2);
+  dest += 16 * k;
+  if (last == 16) {
+    draw16<kCurve>(dest, texels, w, a.u, a.v, lu, lv);
+  } else {
+    draw_run(dest, last, texels, w, uint32_t(a.u), uint32_t(a.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+             uint32_t(lv.dd));
+  }
+}
+#else
+constexpr int kShortMax = 16;  // elsewhere the long-span code (its overlap wins there)
+template <bool kCurve>
+void persp_short(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+#endif
 
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
 // row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
@@ -761,6 +875,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
     return;
   }
+  if (n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
   Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
