@@ -732,6 +732,41 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 // Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
 // the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
 // the long-span vector code's operation (see persp_fast): the same bits.
+// run_steps of the last run (steps = 0 .. 15) for u and v without branches. With
+// q = double(delta) / steps (the walker's quotient; one 2-lane divide): linear = trunc(q)
+// (= delta / steps truncated: |delta| < 2^31, a non-integer quotient lies over 1 / steps
+// from an integer, far above the rounding error), ddf = -2 (q curve). Mirrored to delta >= 0
+// as in steps16_dd, with T = steps (steps - 1) / 2, pd = |delta|, num = pd - T dd': the
+// walker accepts iff num >= 0 and floor(num / steps) + (steps - 1) dd' >= 0 (the reach
+// test is implied: reach' = (steps / 2) (d0' + last_step) >= 0 and reach' = pd - (num mod
+// steps) <= pd; for num < 0, d0' < 0 or d0' = 0 and reach' = pd - num > pd), that is iff
+// T |dd| <= pd (dd' >= 0: num >= 0; dd' < 0: num >= 2 T |dd'|). Then num lies in [0, 2 pd]
+// (uint32 exact) and d0' = num / steps < 2^31. The range test on ddf is kept (steps = 2
+// accepts |dd| up to 2^31); steps < 2: linear, dd = 0. steps = 0 (a one-pixel last run):
+// the steps are never used (draw_run draws the start only), any value.
+inline void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
+  const float64x2_t q = vdivq_f64(vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))),
+                                  vdupq_n_f64(double(s)));
+  const int64x2_t lin = vcvtq_s64_f64(q);
+  const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
+  const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
+  const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+  auto one = [&](int32_t delta, int32_t linear, int64_t dd64) SB_LAMBDA_INLINE {
+    const int32_t ddi = int32_t(dd64) & int32_t(two);  // |dd64| < 1e9
+    const uint32_t sg = uint32_t(delta >> 31);
+    const uint32_t pd = (uint32_t(delta) ^ sg) - sg, pdd = (uint32_t(ddi) ^ sg) - sg;
+    const uint32_t sd = uint32_t(ddi >> 31), add = (uint32_t(ddi) ^ sd) - sd;
+    const uint32_t accept = -uint32_t(uint64_t(add) * T <= pd);
+    const uint32_t d0 = (pd - pdd * T) / s;
+    const uint32_t d = ((d0 ^ sg) - sg) & accept;
+    return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
+  };
+  *su = one(du, int32_t(vgetq_lane_s64(lin, 0)), vgetq_lane_s64(dd, 0));
+  *sv = one(dv, int32_t(vgetq_lane_s64(lin, 1)), vgetq_lane_s64(dd, 1));
+}
 constexpr int kShortMax = 64;
 template <bool kCurve>
 void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
@@ -816,7 +851,7 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const int k = runs - 1;
   const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
   RunSteps lu, lv;
-  run_steps_uv(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
+  last_steps(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
   auto full = [&](int j) SB_LAMBDA_INLINE {
     draw16<kCurve>(dest + 16 * j, texels, w, sm[2 * j], sm[2 * j + 1], RunSteps{dm[2 * j], ddm[2 * j]},
                    RunSteps{dm[2 * j + 1], ddm[2 * j + 1]});
