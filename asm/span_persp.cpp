@@ -723,6 +723,62 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 }
 #endif
 
+// run_steps of a last run (steps = 0 .. 15) for u and v without branches or integer
+// divides. With q = double(delta) / steps (the walker's quotient; one 2-lane divide on
+// aarch64): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31, and a non-integer
+// quotient lies over 1 / steps from an integer, far above the rounding error),
+// ddf = -2 (q curve), dd = trunc(ddf) when |ddf| < 1e9, else linear. Mirrored to delta >= 0
+// as in steps16_dd (pd = |delta|, dd' = dd mirrored, T = steps (steps - 1) / 2,
+// num = pd - T dd'): the walker accepts iff num >= 0 and floor(num / steps) +
+// (steps - 1) dd' >= 0 (the reach test is implied: reach' = (steps / 2) (d0' + last_step)
+// >= 0 and reach' = pd - (num mod steps) <= pd; for num < 0, d0' < 0, or d0' = 0 and
+// reach' = pd - num > pd), that is iff T |dd| <= pd (dd' >= 0: num >= 0; dd' < 0:
+// num >= 2 T |dd'|). d0' = floor(num / steps) without dividing: with pd = steps Q + r
+// (Q = |linear|) and m = (steps - 1) dd' = 2 k + b (b = 0, 1), num / steps =
+// Q - k - b / 2 + r / steps, so d0' = Q - k - (b and 2 r < steps); accepted, |m| <= pd and
+// every value fits 32 bits. steps < 2: linear, dd = 0 (T = 0, dd forced 0). steps = 0 (a
+// one-pixel last run): the steps are never used (draw_run draws the start only).
+// Where the tails use it (ARM; x86-64: run_steps_uv, out of order cores hide its branches).
+#if defined(__aarch64__) || defined(__arm__)
+constexpr bool kLastSteps = true;
+#else
+constexpr bool kLastSteps = false;
+#endif
+SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t s, uint32_t T) {
+  const uint32_t sg = uint32_t(delta >> 31);
+  const uint32_t pd = (uint32_t(delta) ^ sg) - sg, pdd = (uint32_t(ddi) ^ sg) - sg;
+  const uint32_t sd = uint32_t(ddi >> 31), add = (uint32_t(ddi) ^ sd) - sd;
+  // T |dd| <= pd as a mask (a comparison would compile to a branch): T |dd| < 2^38.
+  const uint32_t accept = uint32_t(~((int64_t(pd) - int64_t(uint64_t(add) * T)) >> 63));
+  const uint32_t Q = (uint32_t(linear) ^ sg) - sg, r = pd - s * Q;
+  const uint32_t m = (s - 1) * pdd;
+  const uint32_t d0 = Q - uint32_t(int32_t(m) >> 1) - (m & uint32_t(2 * r < s));
+  const uint32_t d = ((d0 ^ sg) - sg) & accept;
+  return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
+}
+SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
+#if defined(__aarch64__)
+  const float64x2_t q = vdivq_f64(vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))),
+                                  vdupq_n_f64(double(s)));
+  const int64x2_t lin = vcvtq_s64_f64(q);
+  const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
+  const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
+  const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
+  const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
+  const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
+#else
+  const double qu = double(du) / double(int(s)), qv = double(dv) / double(int(s));
+  const int32_t lu = int32_t(qu), lv = int32_t(qv);
+  const double fu = -2.0 * (qu * curve), fv = -2.0 * (qv * curve);
+  const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
+#endif
+  *su = last_dd(du, lu, du2 & int32_t(two), s, T);
+  *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+}
+
 #if defined(__aarch64__)
 // aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position,
 // depth and divide first (three 2-lane divides back to back), the conversions and the full
@@ -732,41 +788,6 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 // Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
 // the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
 // the long-span vector code's operation (see persp_fast): the same bits.
-// run_steps of the last run (steps = 0 .. 15) for u and v without branches. With
-// q = double(delta) / steps (the walker's quotient; one 2-lane divide): linear = trunc(q)
-// (= delta / steps truncated: |delta| < 2^31, a non-integer quotient lies over 1 / steps
-// from an integer, far above the rounding error), ddf = -2 (q curve). Mirrored to delta >= 0
-// as in steps16_dd, with T = steps (steps - 1) / 2, pd = |delta|, num = pd - T dd': the
-// walker accepts iff num >= 0 and floor(num / steps) + (steps - 1) dd' >= 0 (the reach
-// test is implied: reach' = (steps / 2) (d0' + last_step) >= 0 and reach' = pd - (num mod
-// steps) <= pd; for num < 0, d0' < 0 or d0' = 0 and reach' = pd - num > pd), that is iff
-// T |dd| <= pd (dd' >= 0: num >= 0; dd' < 0: num >= 2 T |dd'|). Then num lies in [0, 2 pd]
-// (uint32 exact) and d0' = num / steps < 2^31. The range test on ddf is kept (steps = 2
-// accepts |dd| up to 2^31); steps < 2: linear, dd = 0. steps = 0 (a one-pixel last run):
-// the steps are never used (draw_run draws the start only), any value.
-inline void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
-  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
-  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
-  const float64x2_t q = vdivq_f64(vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))),
-                                  vdupq_n_f64(double(s)));
-  const int64x2_t lin = vcvtq_s64_f64(q);
-  const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
-  const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
-  const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
-  const uint32_t two = steps > 1 ? ~0u : 0u;
-  auto one = [&](int32_t delta, int32_t linear, int64_t dd64) SB_LAMBDA_INLINE {
-    const int32_t ddi = int32_t(dd64) & int32_t(two);  // |dd64| < 1e9
-    const uint32_t sg = uint32_t(delta >> 31);
-    const uint32_t pd = (uint32_t(delta) ^ sg) - sg, pdd = (uint32_t(ddi) ^ sg) - sg;
-    const uint32_t sd = uint32_t(ddi >> 31), add = (uint32_t(ddi) ^ sd) - sd;
-    const uint32_t accept = -uint32_t(uint64_t(add) * T <= pd);
-    const uint32_t d0 = (pd - pdd * T) / s;
-    const uint32_t d = ((d0 ^ sg) - sg) & accept;
-    return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
-  };
-  *su = one(du, int32_t(vgetq_lane_s64(lin, 0)), vgetq_lane_s64(dd, 0));
-  *sv = one(dv, int32_t(vgetq_lane_s64(lin, 1)), vgetq_lane_s64(dd, 1));
-}
 constexpr int kShortMax = 64;
 template <bool kCurve>
 void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
@@ -901,7 +922,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     const Sample s0 = sample(P, z0), s1 = n > 1 ? sample(pos1, z1) : s0;
     const double curve = zc * 0.5 * (s0.z + s1.z);
     RunSteps su, sv;
-    run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
+    if constexpr (kCurve && kLastSteps) {
+      last_steps(n - 1, s0, s1, curve, &su, &sv);
+    } else {
+      run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
+    }
     if (n == 16) {
       draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
     } else {
@@ -1274,7 +1299,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
-  run_steps_uv(steps, s1, s2, curve, &lu, &lv);
+  if constexpr (kCurve && kLastSteps) {
+    last_steps(steps, s1, s2, curve, &lu, &lv);
+  } else {
+    run_steps_uv(steps, s1, s2, curve, &lu, &lv);
+  }
   if (last == 16) {
     draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
   } else {
