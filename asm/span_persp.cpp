@@ -166,6 +166,21 @@ inline int32_t cvt_sat(double x) {
 #endif
 }
 
+// armhf: to_fixed with the clamps in integers after vcvt (no vcmpe / vmrs):
+// fix(q, m) = min(max(sat32(trunc(q 65536)), 0), m) (sat32: vcvt.s32.f64, NaN -> 0).
+// NaN and x = q 65536 <= 0 give trunc <= 0 -> 0; x > m (an integer) gives trunc >= m,
+// kept >= m by the saturation -> m; else 0 < x <= m and trunc(x) fits.
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+constexpr bool kIntClamp = true;
+#else
+constexpr bool kIntClamp = false;
+#endif
+inline int32_t clamp_fixed(int32_t t, int32_t max) {
+  t &= ~(t >> 31);
+  return t < max ? t : max;
+}
+inline int32_t to_fixed_int(double v, int32_t max) { return clamp_fixed(cvt_sat(v * 65536.0), max); }
+
 // run_steps(a, b, 16, curve) without branches. a, b lie in [0, 2^31 - 2^16) (the clamps),
 // so delta = b - a fits 32 bits. The walker's test, mirrored to delta >= 0 (the
 // arithmetic is odd-symmetric in delta and dd: truncating divisions): with
@@ -911,7 +926,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   const double zc = p.second_order ? zix : 0.0;
   const uint32_t w = uint32_t(width);
   auto sample = [&](double px, double z) {
-    return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
+    if constexpr (kIntClamp) {
+      return Sample{to_fixed_int((urow + ux * px) * z, p.umax), to_fixed_int((vrow + vx * px) * z, p.vmax), z};
+    } else {
+      return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
+    }
   };
   double P = p.px0;
   int left = n;
