@@ -821,7 +821,10 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   // 1 / max(zi, kMinZi), zi = zrow + zix * pos (fmadd, as the scalar code compiles).
   const float64x2_t zA = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pA), kMin));
   const float64x2_t zB = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pB), kMin));
-  const float64x2_t zC = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pC), kMin));
+  // Sample 4 alone: a scalar divide (on Cortex-A72 a 2-lane divide costs two).
+  const float64x1_t z4 = vdiv_f64(vget_low_f64(kOne), vmaxnm_f64(vfma_f64(vget_low_f64(kZrow), vget_low_f64(kZix),
+                                                                          vget_low_f64(pC)), vget_low_f64(kMin)));
+  const float64x2_t zC = vcombine_f64(z4, z4);
   // [u, v] of sample j = to_fixed of (uvrow + uvx * pos) * z, as fcvtzs #16, sqxtn and the
   // integer clamps (persp_fast's argument); two samples per vector: [u_j, v_j, u_k, v_k].
   auto uv = [&](float64x2_t pos, float64x2_t z, auto lane) SB_LAMBDA_INLINE {
