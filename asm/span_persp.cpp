@@ -813,11 +813,17 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const float64x2_t kOne = vdupq_n_f64(1.0);
   const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(p.uz0), vdup_n_f64(p.vz0));
   const float64x2_t kUVx = vcombine_f64(vdup_n_f64(p.duz), vdup_n_f64(p.dvz));
-  const double P0 = p.px0, P1 = P0 + double(16), P2 = P1 + double(16);
-  auto off = [n](int j) { return double(n - 16 * j - 1 < 32 ? n - 16 * j - 1 : 32); };
-  const float64x2_t pA = vcombine_f64(vdup_n_f64(P0), vdup_n_f64(P1));
-  const float64x2_t pB = vcombine_f64(vdup_n_f64(P0 + off(0)), vdup_n_f64(P1 + off(1)));
-  const float64x2_t pC = vdupq_n_f64(P2 + off(2));
+  // [P_0, P_1], [P_1, P_2], [P_2, P_3] (each lane the walker's P_{j-1} + 16), the offsets
+  // min(32, n - 16 j - 1) as [j = 0, 1], [2, 3] (exact integers), the sums lane by lane.
+  const double P0 = p.px0;
+  const float64x2_t k16 = vdupq_n_f64(16.0);
+  const float64x2_t pA = vcombine_f64(vdup_n_f64(P0), vdup_n_f64(P0 + double(16)));
+  const float64x2_t p12 = vaddq_f64(pA, k16), p23 = vaddq_f64(p12, k16);
+  const int32x4_t o = vminq_s32(vsubq_s32(vdupq_n_s32(n - 1), int32x4_t{0, 16, 32, 48}), vdupq_n_s32(32));
+  const float64x2_t o01 = vcvtq_f64_s64(vmovl_s32(vget_low_s32(o)));
+  const float64x2_t o23 = vcvtq_f64_s64(vmovl_high_s32(o));
+  const float64x2_t pB = vaddq_f64(pA, o01);
+  const float64x2_t pC = vdupq_laneq_f64(vaddq_f64(p23, o23), 0);
   // 1 / max(zi, kMinZi), zi = zrow + zix * pos (fmadd, as the scalar code compiles).
   const float64x2_t zA = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pA), kMin));
   const float64x2_t zB = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pB), kMin));
