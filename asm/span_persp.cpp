@@ -294,6 +294,18 @@ class Run16 {
     v_ = uint32_t(v0), dv_ = uint32_t(sv.d), ddv_ = uint32_t(sv.dd);
 #endif
   }
+#if defined(SB_SPAN_PACKED)
+  // From the packed start v 2^32 + u and steps dv 2^32 + du, ddv 2^32 + ddu (du, ddu
+  // sign-extended), as the constructor above packs them.
+  struct Packed {};
+  SB_INLINE Run16(uint64_t a0, uint64_t d0, uint64_t dd, Packed) {
+    x_[0] = a0;
+    x_[1] = a0 + d0;
+    e_[0] = 2 * d0 + dd;
+    e_[1] = 2 * d0 + 3 * dd;
+    dd4_ = 4 * dd;
+  }
+#endif
   template <int G>
   SB_INLINE void group(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
     if constexpr (G < 8) {
@@ -888,22 +900,36 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     };
     d01 = div16(D01), d23 = div16(D23);
   }
-  int32_t sm[12], dm[8], ddm[8];
+  // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u) and steps
+  // (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64), for runs 0, 1 and 2, 3.
+  auto packs = [](int32x4_t x01, int32x4_t x23, int64x2_t* lo, int64x2_t* hi) SB_LAMBDA_INLINE {
+    const int32x4_t U = vuzp1q_s32(x01, x23), V = vuzp2q_s32(x01, x23);
+    *lo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
+    *hi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
+  };
+  int64x2_t dlo, dhi, ddlo, ddhi;
+  packs(d01, d23, &dlo, &dhi);
+  packs(dd01, dd23, &ddlo, &ddhi);
+  const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+  int32_t sm[12];
   double zm[6];
   vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23), vst1q_s32(sm + 8, S44);
-  vst1q_s32(dm, d01), vst1q_s32(dm + 4, d23), vst1q_s32(ddm, dd01), vst1q_s32(ddm + 4, dd23);
   vst1q_f64(zm, zA), vst1q_f64(zm + 2, zB), vst1q_f64(zm + 4, zC);
   const int k = runs - 1;
   const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
   RunSteps lu, lv;
   last_steps(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
-  auto full = [&](int j) SB_LAMBDA_INLINE {
-    draw16<kCurve>(dest + 16 * j, texels, w, sm[2 * j], sm[2 * j + 1], RunSteps{dm[2 * j], ddm[2 * j]},
-                   RunSteps{dm[2 * j + 1], ddm[2 * j + 1]});
+  auto full = [&](auto jc) SB_LAMBDA_INLINE {
+    constexpr int j = decltype(jc)::value, l = j & 1;
+    const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
+    const uint64_t d0 = uint64_t(vgetq_lane_s64(j < 2 ? dlo : dhi, l));
+    const uint64_t dd = uint64_t(vgetq_lane_s64(j < 2 ? ddlo : ddhi, l));
+    Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
+    run.draw(dest + 16 * j, texels, w);
   };
-  full(0);
-  if (k > 1) full(1);
-  if (k > 2) full(2);
+  full(std::integral_constant<int, 0>{});
+  if (k > 1) full(std::integral_constant<int, 1>{});
+  if (k > 2) full(std::integral_constant<int, 2>{});
   dest += 16 * k;
   if (last == 16) {
     draw16<kCurve>(dest, texels, w, a.u, a.v, lu, lv);
