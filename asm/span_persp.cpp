@@ -927,9 +927,45 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
     run.draw(dest + 16 * j, texels, w);
   };
-  full(std::integral_constant<int, 0>{});
-  if (k > 1) full(std::integral_constant<int, 1>{});
-  if (k > 2) full(std::integral_constant<int, 2>{});
+  // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
+  auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
+                  uint64_t b_dd) SB_LAMBDA_INLINE {
+    uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
+    uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+    if constexpr (kCurve) {
+      lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+    } else {
+      lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+    }
+    auto none = [](auto) SB_LAMBDA_INLINE {};
+    const uint64_t w64 = uint64_t(width);
+    auto slot = [&](auto j) SB_LAMBDA_INLINE {
+      lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
+                                           d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
+    };
+    using std::integral_constant;
+    slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
+    slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
+    slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
+    slot(integral_constant<int, 9>{});
+  };
+  auto packed = [](const RunSteps& su, const RunSteps& sv) {
+    return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
+  };
+  const uint64_t luv = (uint64_t(uint32_t(a.v)) << 32) + uint32_t(a.u);
+  const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
+  if (k == 1) {
+    full(std::integral_constant<int, 0>{});
+  } else {
+    pass(dest, vgetq_lane_u64(st01, 0), uint64_t(vgetq_lane_s64(dlo, 0)), uint64_t(vgetq_lane_s64(ddlo, 0)),
+         vgetq_lane_u64(st01, 1), uint64_t(vgetq_lane_s64(dlo, 1)), uint64_t(vgetq_lane_s64(ddlo, 1)));
+    if (k == 3 && last == 16) {
+      pass(dest + 32, vgetq_lane_u64(st23, 0), uint64_t(vgetq_lane_s64(dhi, 0)), uint64_t(vgetq_lane_s64(ddhi, 0)),
+           luv, ld, ldd);
+      return;
+    }
+    if (k > 2) full(std::integral_constant<int, 2>{});
+  }
   dest += 16 * k;
   if (last == 16) {
     draw16<kCurve>(dest, texels, w, a.u, a.v, lu, lv);
