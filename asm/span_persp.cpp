@@ -808,8 +808,9 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 
 #if defined(__aarch64__)
 // aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position,
-// depth and divide first (three 2-lane divides back to back), the conversions and the full
-// runs' steps in vectors, branch-free, then the runs drawn straight. Positions as the walker
+// depth and divide first (two 2-lane divides and one scalar, back to back), the conversions
+// and the full runs' steps in vectors, the last run's by last_steps, all branch-free, then
+// the runs drawn straight (pairs of full runs as one lin_slot pass). Positions as the walker
 // computes them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1,
 // sample j + 2 at P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j).
 // Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
