@@ -166,6 +166,21 @@ inline int32_t cvt_sat(double x) {
 #endif
 }
 
+// armhf: to_fixed with the clamps in integers after vcvt (no vcmpe / vmrs):
+// fix(q, m) = min(max(sat32(trunc(q 65536)), 0), m) (sat32: vcvt.s32.f64, NaN -> 0).
+// NaN and x = q 65536 <= 0 give trunc <= 0 -> 0; x > m (an integer) gives trunc >= m,
+// kept >= m by the saturation -> m; else 0 < x <= m and trunc(x) fits.
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+constexpr bool kIntClamp = true;
+#else
+constexpr bool kIntClamp = false;
+#endif
+inline int32_t clamp_fixed(int32_t t, int32_t max) {
+  t &= ~(t >> 31);
+  return t < max ? t : max;
+}
+inline int32_t to_fixed_int(double v, int32_t max) { return clamp_fixed(cvt_sat(v * 65536.0), max); }
+
 // run_steps(a, b, 16, curve) without branches. a, b lie in [0, 2^31 - 2^16) (the clamps),
 // so delta = b - a fits 32 bits. The walker's test, mirrored to delta >= 0 (the
 // arithmetic is odd-symmetric in delta and dd: truncating divisions): with
@@ -279,6 +294,18 @@ class Run16 {
     v_ = uint32_t(v0), dv_ = uint32_t(sv.d), ddv_ = uint32_t(sv.dd);
 #endif
   }
+#if defined(SB_SPAN_PACKED)
+  // From the packed start v 2^32 + u and steps dv 2^32 + du, ddv 2^32 + ddu (du, ddu
+  // sign-extended), as the constructor above packs them.
+  struct Packed {};
+  SB_INLINE Run16(uint64_t a0, uint64_t d0, uint64_t dd, Packed) {
+    x_[0] = a0;
+    x_[1] = a0 + d0;
+    e_[0] = 2 * d0 + dd;
+    e_[1] = 2 * d0 + 3 * dd;
+    dd4_ = 4 * dd;
+  }
+#endif
   template <int G>
   SB_INLINE void group(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
     if constexpr (G < 8) {
@@ -723,6 +750,236 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 }
 #endif
 
+// run_steps of a last run (steps = 0 .. 15) for u and v without branches or integer
+// divides. With q = double(delta) / steps (the walker's quotient; one 2-lane divide on
+// aarch64): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31, and a non-integer
+// quotient lies over 1 / steps from an integer, far above the rounding error),
+// ddf = -2 (q curve), dd = trunc(ddf) when |ddf| < 1e9, else linear. Mirrored to delta >= 0
+// as in steps16_dd (pd = |delta|, dd' = dd mirrored, T = steps (steps - 1) / 2,
+// num = pd - T dd'): the walker accepts iff num >= 0 and floor(num / steps) +
+// (steps - 1) dd' >= 0 (the reach test is implied: reach' = (steps / 2) (d0' + last_step)
+// >= 0 and reach' = pd - (num mod steps) <= pd; for num < 0, d0' < 0, or d0' = 0 and
+// reach' = pd - num > pd), that is iff T |dd| <= pd (dd' >= 0: num >= 0; dd' < 0:
+// num >= 2 T |dd'|). d0' = floor(num / steps) without dividing: with pd = steps Q + r
+// (Q = |linear|) and m = (steps - 1) dd' = 2 k + b (b = 0, 1), num / steps =
+// Q - k - b / 2 + r / steps, so d0' = Q - k - (b and 2 r < steps); accepted, |m| <= pd and
+// every value fits 32 bits. steps < 2: linear, dd = 0 (T = 0, dd forced 0). steps = 0 (a
+// one-pixel last run): the steps are never used (draw_run draws the start only).
+// Where the tails use it (ARM; x86-64: run_steps_uv, out of order cores hide its branches).
+#if defined(__aarch64__) || defined(__arm__)
+constexpr bool kLastSteps = true;
+#else
+constexpr bool kLastSteps = false;
+#endif
+SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t s, uint32_t T) {
+  const uint32_t sg = uint32_t(delta >> 31);
+  const uint32_t pd = (uint32_t(delta) ^ sg) - sg, pdd = (uint32_t(ddi) ^ sg) - sg;
+  const uint32_t sd = uint32_t(ddi >> 31), add = (uint32_t(ddi) ^ sd) - sd;
+  // T |dd| <= pd as a mask (a comparison would compile to a branch): T |dd| < 2^38.
+  const uint32_t accept = uint32_t(~((int64_t(pd) - int64_t(uint64_t(add) * T)) >> 63));
+  const uint32_t Q = (uint32_t(linear) ^ sg) - sg, r = pd - s * Q;
+  const uint32_t m = (s - 1) * pdd;
+  const uint32_t d0 = Q - uint32_t(int32_t(m) >> 1) - (m & uint32_t(2 * r < s));
+  const uint32_t d = ((d0 ^ sg) - sg) & accept;
+  return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
+}
+SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
+#if defined(__aarch64__)
+  const float64x2_t q = vdivq_f64(vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))),
+                                  vdupq_n_f64(double(s)));
+  const int64x2_t lin = vcvtq_s64_f64(q);
+  const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
+  const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
+  const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
+  const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
+  const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
+#else
+  const double qu = double(du) / double(int(s)), qv = double(dv) / double(int(s));
+  const int32_t lu = int32_t(qu), lv = int32_t(qv);
+  const double fu = -2.0 * (qu * curve), fv = -2.0 * (qv * curve);
+  const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
+#endif
+  *su = last_dd(du, lu, du2 & int32_t(two), s, T);
+  *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+}
+
+#if defined(__aarch64__)
+// aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position,
+// depth and divide first (two 2-lane divides and one scalar, back to back), the conversions
+// and the full runs' steps in vectors, the last run's by last_steps, all branch-free, then
+// the runs drawn straight (pairs of full runs as one lin_slot pass). Positions as the walker
+// computes them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1,
+// sample j + 2 at P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j).
+// Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
+// the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
+// the long-span vector code's operation (see persp_fast): the same bits.
+constexpr int kShortMax = 64;
+template <bool kCurve>
+void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const double zc = p.second_order ? p.dzi : 0.0;
+  const uint32_t w = uint32_t(width);
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  const float64x2_t kZrow = vdupq_n_f64(p.zi0), kZix = vdupq_n_f64(p.dzi), kMin = vdupq_n_f64(kMinZi);
+  const float64x2_t kOne = vdupq_n_f64(1.0);
+  const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(p.uz0), vdup_n_f64(p.vz0));
+  const float64x2_t kUVx = vcombine_f64(vdup_n_f64(p.duz), vdup_n_f64(p.dvz));
+  // [P_0, P_1], [P_1, P_2], [P_2, P_3] (each lane the walker's P_{j-1} + 16), the offsets
+  // min(32, n - 16 j - 1) as [j = 0, 1], [2, 3] (exact integers), the sums lane by lane.
+  const double P0 = p.px0;
+  const float64x2_t k16 = vdupq_n_f64(16.0);
+  const float64x2_t pA = vcombine_f64(vdup_n_f64(P0), vdup_n_f64(P0 + double(16)));
+  const float64x2_t p12 = vaddq_f64(pA, k16), p23 = vaddq_f64(p12, k16);
+  const int32x4_t o = vminq_s32(vsubq_s32(vdupq_n_s32(n - 1), int32x4_t{0, 16, 32, 48}), vdupq_n_s32(32));
+  const float64x2_t o01 = vcvtq_f64_s64(vmovl_s32(vget_low_s32(o)));
+  const float64x2_t o23 = vcvtq_f64_s64(vmovl_high_s32(o));
+  const float64x2_t pB = vaddq_f64(pA, o01);
+  const float64x2_t pC = vdupq_laneq_f64(vaddq_f64(p23, o23), 0);
+  // 1 / max(zi, kMinZi), zi = zrow + zix * pos (fmadd, as the scalar code compiles).
+  const float64x2_t zA = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pA), kMin));
+  const float64x2_t zB = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pB), kMin));
+  // Sample 4 alone: a scalar divide (on Cortex-A72 a 2-lane divide costs two).
+  const float64x1_t z4 = vdiv_f64(vget_low_f64(kOne), vmaxnm_f64(vfma_f64(vget_low_f64(kZrow), vget_low_f64(kZix),
+                                                                          vget_low_f64(pC)), vget_low_f64(kMin)));
+  const float64x2_t zC = vcombine_f64(z4, z4);
+  // [u, v] of sample j = to_fixed of (uvrow + uvx * pos) * z, as fcvtzs #16, sqxtn and the
+  // integer clamps (persp_fast's argument); two samples per vector: [u_j, v_j, u_k, v_k].
+  auto uv = [&](float64x2_t pos, float64x2_t z, auto lane) SB_LAMBDA_INLINE {
+    constexpr int L = decltype(lane)::value;
+    return vcvtq_n_s64_f64(vmulq_laneq_f64(vfmaq_laneq_f64(kUVrow, kUVx, pos, L), z, L), 16);
+  };
+  using L0 = std::integral_constant<int, 0>;
+  using L1 = std::integral_constant<int, 1>;
+  const int32x4_t kMax = vreinterpretq_s32_u64(vdupq_n_u64(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax)));
+  const int32x4_t kZero = vdupq_n_s32(0);
+  auto fix = [&](int64x2_t a, int64x2_t b) SB_LAMBDA_INLINE {
+    return vminq_s32(vmaxq_s32(vqmovn_high_s64(vqmovn_s64(a), b), kZero), kMax);
+  };
+  const int32x4_t S01 = fix(uv(pA, zA, L0{}), uv(pA, zA, L1{}));
+  const int32x4_t S23 = fix(uv(pB, zB, L0{}), uv(pB, zB, L1{}));
+  const int32x4_t S44 = fix(uv(pC, zC, L0{}), uv(pC, zC, L0{}));
+  // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
+  const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
+  const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
+  int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
+  if constexpr (kCurve) {
+    // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
+    // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
+    const double zck = zc * -0.0625;
+    const float64x2_t c01 = vmulq_n_f64(vaddq_f64(zA, vextq_f64(zA, zB, 1)), zck);
+    const float64x2_t c23 = vmulq_n_f64(vaddq_f64(zB, vextq_f64(zB, zC, 1)), zck);
+    auto ddf = [](int32x2_t d, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
+      return vcvtq_s64_f64(vmulq_laneq_f64(vcvtq_f64_s64(vmovl_s32(d)), c, decltype(lane)::value));
+    };
+    const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vget_low_s32(D01), c01, L0{})),
+                                          ddf(vget_high_s32(D01), c01, L1{}));
+    const int32x4_t i23 = vcombine_s32(vqmovn_s64(ddf(vget_low_s32(D23), c23, L0{})), vdup_n_s32(0));
+    // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
+    // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
+    // 120 2^25 > 2^31 > pd).
+    auto steps_dd = [](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
+      const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
+      const uint32x4_t pd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(delta), s), s);
+      const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
+      const uint32x4_t sd = vreinterpretq_u32_s32(vshrq_n_s32(dd, 31));
+      const uint32x4_t add = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), sd), sd);
+      const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
+      const uint32x4_t q = vshrq_n_u32(vmlsq_n_u32(pd, pdd, 120), 4), lin = vshrq_n_u32(pd, 4);
+      const uint32x4_t pick = vbslq_u32(accept, q, lin);
+      *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
+      *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
+    };
+    steps_dd(D01, i01, &d01, &dd01);
+    steps_dd(D23, i23, &d23, &dd23);
+  } else {
+    // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
+    auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
+      return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
+                                                           vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
+    };
+    d01 = div16(D01), d23 = div16(D23);
+  }
+  // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u) and steps
+  // (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64), for runs 0, 1 and 2, 3.
+  auto packs = [](int32x4_t x01, int32x4_t x23, int64x2_t* lo, int64x2_t* hi) SB_LAMBDA_INLINE {
+    const int32x4_t U = vuzp1q_s32(x01, x23), V = vuzp2q_s32(x01, x23);
+    *lo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
+    *hi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
+  };
+  int64x2_t dlo, dhi, ddlo, ddhi;
+  packs(d01, d23, &dlo, &dhi);
+  packs(dd01, dd23, &ddlo, &ddhi);
+  const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+  int32_t sm[12];
+  double zm[6];
+  vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23), vst1q_s32(sm + 8, S44);
+  vst1q_f64(zm, zA), vst1q_f64(zm + 2, zB), vst1q_f64(zm + 4, zC);
+  const int k = runs - 1;
+  const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
+  RunSteps lu, lv;
+  last_steps(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
+  auto full = [&](auto jc) SB_LAMBDA_INLINE {
+    constexpr int j = decltype(jc)::value, l = j & 1;
+    const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
+    const uint64_t d0 = uint64_t(vgetq_lane_s64(j < 2 ? dlo : dhi, l));
+    const uint64_t dd = uint64_t(vgetq_lane_s64(j < 2 ? ddlo : ddhi, l));
+    Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
+    run.draw(dest + 16 * j, texels, w);
+  };
+  // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
+  auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
+                  uint64_t b_dd) SB_LAMBDA_INLINE {
+    uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
+    uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+    if constexpr (kCurve) {
+      lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+    } else {
+      lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+    }
+    auto none = [](auto) SB_LAMBDA_INLINE {};
+    const uint64_t w64 = uint64_t(width);
+    auto slot = [&](auto j) SB_LAMBDA_INLINE {
+      lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
+                                           d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
+    };
+    using std::integral_constant;
+    slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
+    slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
+    slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
+    slot(integral_constant<int, 9>{});
+  };
+  auto packed = [](const RunSteps& su, const RunSteps& sv) {
+    return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
+  };
+  const uint64_t luv = (uint64_t(uint32_t(a.v)) << 32) + uint32_t(a.u);
+  const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
+  if (k == 1) {
+    full(std::integral_constant<int, 0>{});
+  } else {
+    pass(dest, vgetq_lane_u64(st01, 0), uint64_t(vgetq_lane_s64(dlo, 0)), uint64_t(vgetq_lane_s64(ddlo, 0)),
+         vgetq_lane_u64(st01, 1), uint64_t(vgetq_lane_s64(dlo, 1)), uint64_t(vgetq_lane_s64(ddlo, 1)));
+    if (k == 3 && last == 16) {
+      pass(dest + 32, vgetq_lane_u64(st23, 0), uint64_t(vgetq_lane_s64(dhi, 0)), uint64_t(vgetq_lane_s64(ddhi, 0)),
+           luv, ld, ldd);
+      return;
+    }
+    if (k > 2) full(std::integral_constant<int, 2>{});
+  }
+  dest += 16 * k;
+  if (last == 16) {
+    draw16<kCurve>(dest, texels, w, a.u, a.v, lu, lv);
+  } else {
+    draw_run(dest, last, texels, w, uint32_t(a.u), uint32_t(a.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+             uint32_t(lv.dd));
+  }
+}
+#else
+constexpr int kShortMax = 16;  // elsewhere the long-span code (its overlap wins there)
+template <bool kCurve>
+void persp_short(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+#endif
 
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
 // row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
@@ -741,7 +998,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   const double zc = p.second_order ? zix : 0.0;
   const uint32_t w = uint32_t(width);
   auto sample = [&](double px, double z) {
-    return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
+    if constexpr (kIntClamp) {
+      return Sample{to_fixed_int((urow + ux * px) * z, p.umax), to_fixed_int((vrow + vx * px) * z, p.vmax), z};
+    } else {
+      return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
+    }
   };
   double P = p.px0;
   int left = n;
@@ -752,7 +1013,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     const Sample s0 = sample(P, z0), s1 = n > 1 ? sample(pos1, z1) : s0;
     const double curve = zc * 0.5 * (s0.z + s1.z);
     RunSteps su, sv;
-    run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
+    if constexpr (kCurve && kLastSteps) {
+      last_steps(n - 1, s0, s1, curve, &su, &sv);
+    } else {
+      run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
+    }
     if (n == 16) {
       draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
     } else {
@@ -761,6 +1026,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
     return;
   }
+  if (n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
   Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
@@ -1124,7 +1390,11 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
-  run_steps_uv(steps, s1, s2, curve, &lu, &lv);
+  if constexpr (kCurve && kLastSteps) {
+    last_steps(steps, s1, s2, curve, &lu, &lv);
+  } else {
+    run_steps_uv(steps, s1, s2, curve, &lu, &lv);
+  }
   if (last == 16) {
     draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
   } else {

@@ -57,10 +57,13 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // the setup (to_fixed of the next samples, the next runs' steps) branch-free and
 // interleaved with the drawing, one dependent step per pixel group; the divides for the samples two runs ahead issued in pairs (one vector divide on
 // aarch64) so their latency runs under the drawing; full runs' divisions by the constant 16,
-// the last run's by constants too (no 64-bit divide instruction or armhf library call).
-// aarch64 (linear spans over 48 pixels, second-order ones over 80): each pass of 32 pixels
-// one pipeline of eight 4-pixel groups in inline asm, ordered for in-order cores, with the
-// samples' double arithmetic in 2-lane vectors and to_fixed as saturating integer clamps.
+// the last run's by constants too (no 64-bit divide instruction or armhf library call; on
+// ARM second-order last runs branch-free, from the quotient of the one divide).
+// aarch64, spans of 17 .. 64 pixels: every sample's divide first, then the conversions and
+// steps in 2-lane vectors, then the runs. Longer spans (linear over 48 pixels, second-order
+// over 80): each pass of 32 pixels one pipeline of eight 4-pixel groups in inline asm,
+// ordered for in-order cores, with the samples' double arithmetic in 2-lane vectors and
+// to_fixed as saturating integer clamps.
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& span);
 
