@@ -864,6 +864,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
+        constexpr int kDs = LB == 1 ? 2 : 4;  // dtab entries a band (mip 3: 16-bit lanes)
         if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
@@ -881,10 +882,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
               const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
               const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
-              dt[0] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(lo), 2 * kMip));
-              dt[1] = vreinterpretq_u32_s32(vshll_high_n_s16(lo, 2 * kMip));
-              dt[2] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(hi), 2 * kMip));
-              dt[3] = vreinterpretq_u32_s32(vshll_high_n_s16(hi, 2 * kMip));
+              vst1q_s16(reinterpret_cast<int16_t*>(dt), lo);  // (widened << 2 mip by the assembly)
+              vst1q_s16(reinterpret_cast<int16_t*>(dt) + 8, hi);
             } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
               const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
               const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
@@ -921,14 +920,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           uint32x4_t* dt = dtab;
           int b = 0;
 #pragma GCC unroll 2
-          for (; b + 2 <= nb; b += 2, dt += 8) {
+          for (; b + 2 <= nb; b += 2, dt += 2 * kDs) {
             r += grid_width;
             const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
             band(p, p1, q, q1, dt);
             r += grid_width;
             p = ldg(r);
             p1 = LB <= 3 ? ldg(r + 1) : p;
-            band(q, q1, p, p1, dt + 4);
+            band(q, q1, p, p1, dt + kDs);
           }
           if (b < nb) {
             r += grid_width;
@@ -938,14 +937,23 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         } else {
           for (int b = 0; b < nb; ++b) {
             step_for(by0 + b + 1);
-            for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+            if constexpr (LB == 1) {  // 16-bit (the values fit: see band)
+              const int16x8_t lo = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[0]), 2 * kMip),
+                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[1]), 2 * kMip));
+              const int16x8_t hi = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[2]), 2 * kMip),
+                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[3]), 2 * kMip));
+              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b), lo);
+              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b) + 8, hi);
+            } else {
+              for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+            }
           }
         }
-        for (int j = 0; j < 4; ++j) dtab[4 * nb + j] = vdupq_n_u32(0);
-  #define SB_PAIR_LOOP \
+        for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
+  #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4) \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
-    "2:\n\t" \
+    "2:\n\t" T0 \
     "add v28.4s, v23.4s, v18.4s\n\t" \
     "ushr v2.4s, v23.4s, #8\n\t" \
     "add v26.4s, v21.4s, v16.4s\n\t" \
@@ -963,7 +971,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "fmov x0, d0\n\t" \
     "fmov x1, v0.d[1]\n\t" \
     "fmov x2, d1\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" TOP \
     "fmov x4, d2\n\t" \
     "fmov x5, v2.d[1]\n\t" \
     "fmov x6, d3\n\t" \
@@ -971,7 +979,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "add v21.4s, v26.4s, v16.4s\n\t" \
     "add v22.4s, v27.4s, v17.4s\n\t" \
     "add v23.4s, v28.4s, v18.4s\n\t" \
-    "add v19.4s, v24.4s, v29.4s\n\t" \
+    "add v19.4s, v24.4s, v29.4s\n\t" MID \
     "fmov x19, d4\n\t" \
     "fmov x20, v4.d[1]\n\t" \
     "fmov x21, d5\n\t" \
@@ -1052,23 +1060,23 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldr q25, [x8, %[goff]]\n\t" \
     "orr x24, x24, x30, lsl #8\n\t" \
     "orr x21, x21, x11, lsl #8\n\t" \
-    "asr x8, %[q], %[lb]\n\t" \
+    A \
     "orr x25, x25, x9, lsl #8\n\t" \
     "orr x26, x26, x10, lsl #8\n\t" \
     "orr x0, x0, x2, lsl #32\n\t" \
     "orr x23, x23, x24, lsl #16\n\t" \
     "orr x19, x19, x20, lsl #16\n\t" \
-    "add x8, %[dte], x8, lsl #6\n\t" \
+    E1 \
     "orr x21, x21, x22, lsl #16\n\t" \
     "orr x25, x25, x26, lsl #16\n\t" \
     "stp x0, x4, [%[d]]\n\t" \
     "add %[rp], %[rp], #16\n\t" \
     "add %[d], %[d], %[w]\n\t" \
     "orr x19, x19, x21, lsl #32\n\t" \
-    "ldr q29, [x8, #48]\n\t" \
+    E2 \
     "orr x23, x23, x25, lsl #32\n\t" \
-    "ldr q18, [x8, #32]\n\t" \
-    "ldp q16, q17, [x8]\n\t" \
+    E3 \
+    E4 \
     "b.ne 1b\n\t"
   #define SB_PAIR_LOOP_N \
     "stp x19, x23, [%[d]]\n\t" \
@@ -1234,7 +1242,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
-        } else {  // q counts -rows + 2 per iteration up to 0; rows y, y + 1 step by dte[(y - rows) >> LB]
+        } else if constexpr (LB == 2) {  // q counts -rows + 2 per iteration up to 0; rows y, y + 1 step by dte[(y - rows) >> LB]
           int64_t q = -int64_t(nb) * B;
           asm volatile(
               "mov v21.16b, %[n0].16b\n\t"
@@ -1253,13 +1261,49 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "ldr q29, [x8, #48]\n\t"
               "b 2f\n\t"
               ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
-              "1:\n\t" SB_PAIR_LOOP
+              "1:\n\t" SB_PAIR_LOOP("", "", "", "asr x8, %[q], %[lb]\n\t", "add x8, %[dte], x8, lsl #6\n\t",
+                                   "ldr q29, [x8, #48]\n\t", "ldr q18, [x8, #32]\n\t", "ldp q16, q17, [x8]\n\t")
               "stp x19, x23, [%[d]]\n\t"
               "add %[d], %[d], %[w]\n\t"
               : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
               : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
                 [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
                 [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+        } else {  // mip 3 (a band an iteration): 16-bit steps (32 bytes a band) widened in the loop;
+                  // iteration y / 2 loads band y / 2 + 1's (q = y - rows, even: band offset 16 q)
+          int64_t q = -int64_t(nb) * B;
+          asm volatile(
+              "mov v21.16b, %[n0].16b\n\t"
+              "mov v22.16b, %[n1].16b\n\t"
+              "mov v23.16b, %[n2].16b\n\t"
+              "mov v19.16b, %[n3].16b\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q25, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add x8, %[dte], %[q], lsl #4\n\t"
+              "ldp q0, q1, [x8]\n\t"
+              "sshll v16.4s, v0.4h, #6\n\t"
+              "sshll2 v17.4s, v0.8h, #6\n\t"
+              "sshll v18.4s, v1.4h, #6\n\t"
+              "sshll2 v29.4s, v1.8h, #6\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
+              "1:\n\t" SB_PAIR_LOOP("add x9, %[dte], %[q], lsl #4\n\t", "ldp q0, q1, [x9, #32]\n\t",
+                                   "sshll v18.4s, v1.4h, #6\n\tsshll v16.4s, v0.4h, #6\n\t"
+                                   "sshll2 v17.4s, v0.8h, #6\n\tsshll2 v29.4s, v1.8h, #6\n\t",
+                                   "", "", "", "", "")
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 2 * nb), [i0] "w"(TIX[0]),
+                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+                [n2] "w"(num[2]), [n3] "w"(num[3])
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
