@@ -76,7 +76,7 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
 SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
                              const uint8x16_t* period, [[maybe_unused]] const uint8_t* texels = nullptr) {
   int d;  // a period of the run, >= 16
-  if (tw >= 16) {
+  if (tw > 16) {
     const int a = tw - c0 < n ? tw - c0 : n, b = a < n ? (c0 < n - a ? c0 : n - a) : 0;
 #if defined(__aarch64__)
     // 16-byte copies when their reads stay inside the texture (a library call per row costs
@@ -105,16 +105,28 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
     if (row + 16 <= tex_end) {  // the first 32 bytes by two table lookups of the row
       const uint8x16_t v = vld1q_u8(row);
 #if defined(__aarch64__)
-      vst1q_u8(dst, vqtbl1q_u8(v, period[0]));
-      vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
+      const uint8x16_t p0 = vqtbl1q_u8(v, period[0]);
 #else
       uint8x8x2_t t;
       t.val[0] = vget_low_u8(v);
       t.val[1] = vget_high_u8(v);
-      for (int h = 0; h < 2; ++h)
-        vst1q_u8(dst + 16 * h, vcombine_u8(vtbl2_u8(t, vget_low_u8(period[h])), vtbl2_u8(t, vget_high_u8(period[h]))));
+      const uint8x16_t p0 = vcombine_u8(vtbl2_u8(t, vget_low_u8(period[0])), vtbl2_u8(t, vget_high_u8(period[0])));
 #endif
+      vst1q_u8(dst, p0);
+#if defined(__aarch64__)
+      vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
+#else
+      vst1q_u8(dst + 16, vcombine_u8(vtbl2_u8(t, vget_low_u8(period[1])), vtbl2_u8(t, vget_high_u8(period[1]))));
+#endif
+#if defined(__aarch64__)
+      if (tw == 16) {  // (the same every 16 bytes)
+        for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, p0);
+        return;
+      }
       for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+#else
+      for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, tw == 16 ? p0 : vld1q_u8(dst + x - d));  // (p0: every 16)
+#endif
       return;
     }
 #if defined(__aarch64__)
@@ -454,11 +466,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
-  // Narrow textures (tw < 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
+  // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
 #if defined(__aarch64__)
-  period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw >= 16)
-  if (tw < 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
+  period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw > 16)
+  if (tw <= 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
     const uint16x8_t m = vdupq_n_u16(uint16_t((65536 + tw - 1) / tw)), twv = vdupq_n_u16(uint16_t(tw));
     for (int h = 0; h < 2; ++h) {
       const uint8x16_t x8 = vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0)));
