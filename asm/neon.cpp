@@ -462,7 +462,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
   const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
-  const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
+  const uint8_t* run[kMaxRuns + 3];     // texel run of each row (cyclic, see below; 3 read past)
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
@@ -539,7 +539,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #if defined(__aarch64__)
   const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
   const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
-  const uint8_t* lin[kStripRows + 2];     // the strip's texel runs in row order, two rows beyond
+  const uint8_t* lin[kStripRows + 2 + 3];  // the strip's texel runs in row order, two rows beyond
   uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
@@ -571,14 +571,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #if defined(__aarch64__)
     for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
       const int n = count - t < total - r ? count - t : total - r;
-      int i = 0;
-      for (; i + 2 <= n; i += 2) {
-        uint64x2_t v;
-        std::memcpy(&v, run + t + i, sizeof v);
-        asm("" : "+w"(v));  // (else GCC makes this loop a memcpy call)
-        std::memcpy(lin + r + i, &v, sizeof v);
+      for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
+        uint64x2_t v0, v1;
+        std::memcpy(&v0, run + t + i, sizeof v0);
+        std::memcpy(&v1, run + t + i + 2, sizeof v1);
+        asm("" : "+w"(v0), "+w"(v1));  // (else GCC makes this loop a memcpy call)
+        std::memcpy(lin + r + i, &v0, sizeof v0);
+        std::memcpy(lin + r + i + 2, &v1, sizeof v1);
       }
-      if (i < n) lin[r + i] = run[t + i];
       r += n;
     }
 #endif
