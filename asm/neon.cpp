@@ -876,7 +876,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
-        constexpr int kDs = LB == 1 ? 2 : 4;  // dtab entries a band (mip 3: 16-bit lanes)
+        constexpr int kDs = LB == 1 ? 2 : LB == 2 ? 1 : 4;  // dtab entries a band (mips 2-3: 16-bit lanes)
         if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
@@ -899,11 +899,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
               const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
               const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-              if constexpr (LB == 2) {  // quarter j: block j
-                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
-                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
-                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
-                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
+              if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
+                vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
               } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
                 dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
                 dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
@@ -948,6 +945,18 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         } else {
           for (int b = 0; b < nb; ++b) {
+            if constexpr (LB == 2) {  // e, e1 as above, from the zero-padded rows
+              uint16_t a[5];
+              std::memcpy(a, row_of(by0 + b), sizeof a);
+              const uint16_t* const c = row_of(by0 + b + 1);
+              int16_t ee[8];
+              for (int j = 0; j < 4; ++j) {
+                ee[j] = int16_t(c[j] - a[j]);
+                ee[4 + j] = int16_t(c[j + 1] - a[j + 1]);
+              }
+              std::memcpy(dtab + b, ee, sizeof ee);
+              continue;
+            }
             step_for(by0 + b + 1);
             if constexpr (LB == 1) {  // 16-bit (the values fit: see band)
               const int16x8_t lo = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[0]), 2 * kMip),
@@ -962,7 +971,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         }
         for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
-  #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4) \
+  #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4, BR) \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
     "2:\n\t" T0 \
@@ -1089,7 +1098,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "orr x23, x23, x25, lsl #32\n\t" \
     E3 \
     E4 \
-    "b.ne 1b\n\t"
+    BR
   #define SB_PAIR_LOOP_N \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
@@ -1254,7 +1263,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
-        } else if constexpr (LB == 2) {  // q counts -rows + 2 per iteration up to 0; rows y, y + 1 step by dte[(y - rows) >> LB]
+        } else if constexpr (LB == 2) {
+          // Mip 2: a band (two pairs of rows) an iteration, q counting -rows + 4 up to 0. The
+          // band's step from its e, e1 (16 bytes at dte + 4 q): lanes of quarter j
+          // (4 - fx) e[j] + fx e1[j], << 4 (wt: the weights, low half 4 - fx, high half fx).
+          // The second pair computes the next band's (after its last use of the step).
+#define SB_WEIGH_STEP \
+  "smull v16.4s, %[wt].4h, v0.h[0]\n\t" \
+  "smull v17.4s, %[wt].4h, v0.h[1]\n\t" \
+  "smull v18.4s, %[wt].4h, v0.h[2]\n\t" \
+  "smull v29.4s, %[wt].4h, v0.h[3]\n\t" \
+  "smlal2 v16.4s, %[wt].8h, v0.h[4]\n\t" \
+  "smlal2 v17.4s, %[wt].8h, v0.h[5]\n\t" \
+  "smlal2 v18.4s, %[wt].8h, v0.h[6]\n\t" \
+  "smlal2 v29.4s, %[wt].8h, v0.h[7]\n\t"
+          const int16x8_t wt = vcombine_s16(vget_low_s16(vreinterpretq_s16_u16(BX1[0])),
+                                            vget_low_s16(vreinterpretq_s16_u16(FX1[0])));
           int64_t q = -int64_t(nb) * B;
           asm volatile(
               "mov v21.16b, %[n0].16b\n\t"
@@ -1266,25 +1290,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "ldr x8, [%[rp], #8]\n\t"
               "ldr q25, [x8, %[goff]]\n\t"
               "add %[rp], %[rp], #16\n\t"
-              "asr x8, %[q], %[lb]\n\t"
-              "add x8, %[dte], x8, lsl #6\n\t"
-              "ldp q16, q17, [x8]\n\t"
-              "ldr q18, [x8, #32]\n\t"
-              "ldr q29, [x8, #48]\n\t"
+              "add x8, %[dte], %[q], lsl #2\n\t"
+              "ldr q0, [x8]\n\t" SB_WEIGH_STEP
               "b 2f\n\t"
-              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
-              "1:\n\t" SB_PAIR_LOOP("", "", "", "asr x8, %[q], %[lb]\n\t", "add x8, %[dte], x8, lsl #6\n\t",
-                                   "ldr q29, [x8, #48]\n\t", "ldr q18, [x8, #32]\n\t", "ldp q16, q17, [x8]\n\t")
+              ".p2align 10\n\t"  // (the loop, 1004 bytes, then never straddles a page)
+              "1:\n\t" SB_PAIR_LOOP("", "", "", "", "", "", "", "", "")
+              SB_PAIR_LOOP("", "add x9, %[dte], %[q], lsl #2\n\tldr q0, [x9, #8]\n\t", SB_WEIGH_STEP, "", "", "", "", "",
+                           "b.ne 1b\n\t")
               "stp x19, x23, [%[d]]\n\t"
               "add %[d], %[d], %[w]\n\t"
               : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
-              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + nb), [i0] "w"(TIX[0]),
                 [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
-                [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
+                [n2] "w"(num[2]), [n3] "w"(num[3]), [wt] "w"(wt)
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
+#undef SB_WEIGH_STEP
         } else {  // mip 3 (a band an iteration): 16-bit steps (32 bytes a band) widened in the loop;
                   // iteration y / 2 loads band y / 2 + 1's (q = y - rows, even: band offset 16 q)
           int64_t q = -int64_t(nb) * B;
@@ -1309,7 +1332,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "1:\n\t" SB_PAIR_LOOP("add x9, %[dte], %[q], lsl #4\n\t", "ldp q0, q1, [x9, #32]\n\t",
                                    "sshll v18.4s, v1.4h, #6\n\tsshll v16.4s, v0.4h, #6\n\t"
                                    "sshll2 v17.4s, v0.8h, #6\n\tsshll2 v29.4s, v1.8h, #6\n\t",
-                                   "", "", "", "", "")
+                                   "", "", "", "", "", "b.ne 1b\n\t")
               "stp x19, x23, [%[d]]\n\t"
               "add %[d], %[d], %[w]\n\t"
               : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
