@@ -1267,7 +1267,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           // Mip 2: a band (two pairs of rows) an iteration, q counting -rows + 4 up to 0. The
           // band's step from its e, e1 (16 bytes at dte + 4 q): lanes of quarter j
           // (4 - fx) e[j] + fx e1[j], << 4 (wt: the weights, low half 4 - fx, high half fx).
-          // The second pair computes the next band's (after its last use of the step).
+          // The second pair computes the next band's (after its last use of the step). (The
+          // branch between the pairs ends a translation block of the qemu block profiler
+          // there, not inside the second pair's NEON run: its pieces are then one pair each.)
 #define SB_WEIGH_STEP \
   "smull v16.4s, %[wt].4h, v0.h[0]\n\t" \
   "smull v17.4s, %[wt].4h, v0.h[1]\n\t" \
@@ -1294,7 +1296,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "ldr q0, [x8]\n\t" SB_WEIGH_STEP
               "b 2f\n\t"
               ".p2align 10\n\t"  // (the loop, 1004 bytes, then never straddles a page)
-              "1:\n\t" SB_PAIR_LOOP("", "", "", "", "", "", "", "", "")
+              "1:\n\t" SB_PAIR_LOOP("", "", "", "", "", "", "", "", "b 3f\n3:\n\t")
               SB_PAIR_LOOP("", "add x9, %[dte], %[q], lsl #2\n\tldr q0, [x9, #8]\n\t", SB_WEIGH_STEP, "", "", "", "", "",
                            "b.ne 1b\n\t")
               "stp x19, x23, [%[d]]\n\t"
