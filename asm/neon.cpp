@@ -66,11 +66,7 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
   }
 }
 
-#if defined(__aarch64__)
 #define SB_TILE_INLINE inline __attribute__((always_inline))  // a call costs more than a row at mips 2-3
-#else
-#define SB_TILE_INLINE inline
-#endif
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
 SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
