@@ -219,6 +219,20 @@ __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_
   }
 }
 
+// Mip 2: 16 bytes a band, e = the grid rows' differences v_0..3, e1 = v_1..4: the strip's
+// assembly weighs them (quarter j: w0 e[j] + w1 e1[j], w0 and w1 the same for every quarter).
+inline void band_e2(const uint16_t* g, int gw, int n, uint32x4_t* D) {
+  uint16x4_t p = vld1_u16(g), p1 = vld1_u16(g + 1);
+  uint16_t* o = reinterpret_cast<uint16_t*>(D);
+  for (int b = 0; b < n; ++b, o += 8) {
+    g += gw;
+    const uint16x4_t q = vld1_u16(g), q1 = vld1_u16(g + 1);
+    vst1q_u16(o, vcombine_u16(vsub_u16(q, p), vsub_u16(q1, p1)));
+    p = q;
+    p1 = q1;
+  }
+}
+
 // band_deltas' bands one at a time (the rest after its two-band passes).
 template <int LB>
 __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const uint16_t* bxp,
@@ -519,6 +533,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
+  alignas(16) uint16_t w2[8];  // mip 2: the row-step weights w0 (B - fx), w1 (fx) of a quarter
+  for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
 #endif
 #if defined(__aarch64__)
   // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
@@ -738,7 +754,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         first_numerators<LB>(r0, w[0], w[1], blk);
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
+        if constexpr (LB == 2)
+          band_e2(r0, grid_width, nb, blk + 4);
+        else
+          band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
@@ -759,11 +778,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint32x4_t* dp = blk;
         // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
         // 512-byte block (no page crossing).
-#define SB_STRIP7(ROW, TEST) \
+#define SB_STRIP7(ROW, TEST, PD, BD0, BD) \
   "sub %[d], %[d], %[st]\n\t" \
   "ldr r0, [%[sa], #-4]\n\t" \
   "vld1.32 {d8-d11}, [%[dp]:128]!\n\t" \
   "vld1.32 {d12-d15}, [%[dp]:128]!\n\t" \
+  PD \
   "vld1.8 {d0-d1}, [r0]\n\t" \
   "vshrn.i32 d4, q4, #16\n\t" \
   "vshrn.i32 d5, q5, #16\n\t" \
@@ -771,8 +791,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vshrn.i32 d7, q7, #16\n\t" \
   "vmovl.u8 q1, d1\n\t" \
   "vmovl.u8 q0, d0\n\t" \
-  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
-  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  BD0 \
   "vsli.16 q0, q2, #8\n\t" \
   "vsli.16 q1, q3, #8\n\t" \
   "vmovl.u16 q12, d0\n\t" \
@@ -784,34 +803,53 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "1:\n\t" ROW ROW TEST \
   "ldr r0, [%[sa]]\n\t" \
   "cbz r0, 3f\n\t" \
-  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
-  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  BD \
   "b 1b\n\t" \
   "3:\n\t"
-#define SB_STRIP7_OPS \
+#define SB_STRIP7_OPS_(...) \
   : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
-  : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1) \
+  : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1) __VA_ARGS__ \
   : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", \
   "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
   "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
   "cc", "memory"
         // Every pass ends a band when B = 2; else a band ends where srcs is 4 B-aligned.
 #define SB_BAND_TEST "tst %[sa], %[bm]\n\tbne 1b\n\t"
+        // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
+        // free between rows): quarter j is w0 e[j] + w1 e1[j].
+#define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+#define SB_DELTA2 \
+  "vld1.16 {d0-d1}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d2-d3}, [%[wp]:128]\n\t" \
+  "vmull.s16 q8, d2, d0[0]\n\t" \
+  "vmull.s16 q9, d2, d0[1]\n\t" \
+  "vmull.s16 q10, d2, d0[2]\n\t" \
+  "vmull.s16 q11, d2, d0[3]\n\t" \
+  "vmlal.s16 q8, d3, d1[0]\n\t" \
+  "vmlal.s16 q9, d3, d1[1]\n\t" \
+  "vmlal.s16 q10, d3, d1[2]\n\t" \
+  "vmlal.s16 q11, d3, d1[3]\n\t"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7A, "") SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7A, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+          else if constexpr (LB == 2)
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
           else
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST) SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7, "") SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+          else if constexpr (LB == 2)
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
           else
-            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST) SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
+#undef SB_LD_DELTA
+#undef SB_DELTA2
 #undef SB_BAND_TEST
 #undef SB_STRIP7
-#undef SB_STRIP7_OPS
+#undef SB_STRIP7_OPS_
 #undef SB_ROW7A
 #undef SB_ROW7
         continue;
