@@ -151,6 +151,19 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
+#if !defined(__aarch64__)
+// kMod[t][x] = x mod t (t <= 16, x < 48): the narrow textures' periods.
+struct ModTable {
+  uint8_t m[17][48];
+  constexpr ModTable() : m{} {
+    for (int t = 1; t <= 16; ++t)
+      for (int x = 0; x < 48; ++x) m[t][x] = uint8_t(x % t);
+  }
+};
+constexpr ModTable kModTable{};
+constexpr const uint8_t (&kMod)[17][48] = kModTable.m;
+#endif
+
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
 constexpr int kMaxRuns = 2064;  // run pointers: >= kTileBytes / (smallest stride, 32)
@@ -494,14 +507,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
   }
 #else
-  {
-    uint8_t k8[32];
-    for (int k = 0, c = c0; k < 32; ++k) {
-      k8[k] = uint8_t(c);
-      if (++c == tw) c = 0;
-    }
-    period[0] = vld1q_u8(k8);
-    period[1] = vld1q_u8(k8 + 16);
+  if (tw <= 16) {
+    period[0] = vld1q_u8(kMod[tw] + c0);
+    period[1] = vld1q_u8(kMod[tw] + c0 + 16);
+  } else {
+    period[0] = period[1] = vdupq_n_u8(0);  // (unused)
   }
 #endif
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
