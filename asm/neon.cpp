@@ -125,15 +125,23 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
 #endif
       return;
     }
-#if defined(__aarch64__)
     if (texels && tex_end - 16 >= texels) {  // the texture's last 16 bytes, indices moved up
       const uint8x16_t v = vld1q_u8(tex_end - 16), o = vdupq_n_u8(uint8_t(row - (tex_end - 16)));
+#if defined(__aarch64__)
       vst1q_u8(dst, vqtbl1q_u8(v, vaddq_u8(period[0], o)));
       vst1q_u8(dst + 16, vqtbl1q_u8(v, vaddq_u8(period[1], o)));
+#else
+      uint8x8x2_t t;
+      t.val[0] = vget_low_u8(v);
+      t.val[1] = vget_high_u8(v);
+      for (int h = 0; h < 2; ++h) {
+        const uint8x16_t i = vaddq_u8(period[h], o);
+        vst1q_u8(dst + 16 * h, vcombine_u8(vtbl2_u8(t, vget_low_u8(i)), vtbl2_u8(t, vget_high_u8(i))));
+      }
+#endif
       for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
       return;
     }
-#endif
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
