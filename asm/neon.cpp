@@ -66,17 +66,13 @@ inline uint16x8_t spread(const uint16_t* g, int half) {
   }
 }
 
-#if defined(__aarch64__)
 #define SB_TILE_INLINE inline __attribute__((always_inline))  // a call costs more than a row at mips 2-3
-#else
-#define SB_TILE_INLINE inline
-#endif
 // dst[x] = row[(c0 + x) mod tw] for x < n (a multiple of 16); writes up to n + 15 (and at
 // least 32 bytes must be writable).
 SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, int n, const uint8_t* tex_end,
                              const uint8x16_t* period, [[maybe_unused]] const uint8_t* texels = nullptr) {
   int d;  // a period of the run, >= 16
-  if (tw >= 16) {
+  if (tw > 16) {
     const int a = tw - c0 < n ? tw - c0 : n, b = a < n ? (c0 < n - a ? c0 : n - a) : 0;
 #if defined(__aarch64__)
     // 16-byte copies when their reads stay inside the texture (a library call per row costs
@@ -105,27 +101,47 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
     if (row + 16 <= tex_end) {  // the first 32 bytes by two table lookups of the row
       const uint8x16_t v = vld1q_u8(row);
 #if defined(__aarch64__)
-      vst1q_u8(dst, vqtbl1q_u8(v, period[0]));
-      vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
+      const uint8x16_t p0 = vqtbl1q_u8(v, period[0]);
 #else
       uint8x8x2_t t;
       t.val[0] = vget_low_u8(v);
       t.val[1] = vget_high_u8(v);
-      for (int h = 0; h < 2; ++h)
-        vst1q_u8(dst + 16 * h, vcombine_u8(vtbl2_u8(t, vget_low_u8(period[h])), vtbl2_u8(t, vget_high_u8(period[h]))));
+      const uint8x16_t p0 = vcombine_u8(vtbl2_u8(t, vget_low_u8(period[0])), vtbl2_u8(t, vget_high_u8(period[0])));
 #endif
+      vst1q_u8(dst, p0);
+#if defined(__aarch64__)
+      vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
+#else
+      vst1q_u8(dst + 16, vcombine_u8(vtbl2_u8(t, vget_low_u8(period[1])), vtbl2_u8(t, vget_high_u8(period[1]))));
+#endif
+#if defined(__aarch64__)
+      if (tw == 16) {  // (the same every 16 bytes)
+        for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, p0);
+        return;
+      }
       for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+#else
+      for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, tw == 16 ? p0 : vld1q_u8(dst + x - d));  // (p0: every 16)
+#endif
       return;
     }
-#if defined(__aarch64__)
     if (texels && tex_end - 16 >= texels) {  // the texture's last 16 bytes, indices moved up
       const uint8x16_t v = vld1q_u8(tex_end - 16), o = vdupq_n_u8(uint8_t(row - (tex_end - 16)));
+#if defined(__aarch64__)
       vst1q_u8(dst, vqtbl1q_u8(v, vaddq_u8(period[0], o)));
       vst1q_u8(dst + 16, vqtbl1q_u8(v, vaddq_u8(period[1], o)));
+#else
+      uint8x8x2_t t;
+      t.val[0] = vget_low_u8(v);
+      t.val[1] = vget_high_u8(v);
+      for (int h = 0; h < 2; ++h) {
+        const uint8x16_t i = vaddq_u8(period[h], o);
+        vst1q_u8(dst + 16 * h, vcombine_u8(vtbl2_u8(t, vget_low_u8(i)), vtbl2_u8(t, vget_high_u8(i))));
+      }
+#endif
       for (int x = 32; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
       return;
     }
-#endif
     for (int k = 0, c = c0; k < d; ++k) {
       dst[k] = row[c];
       if (++c == tw) c = 0;
@@ -142,6 +158,19 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
 #endif
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
+
+#if !defined(__aarch64__)
+// kMod[t][x] = x mod t (t <= 16, x < 48): the narrow textures' periods.
+struct ModTable {
+  uint8_t m[17][48];
+  constexpr ModTable() : m{} {
+    for (int t = 1; t <= 16; ++t)
+      for (int x = 0; x < 48; ++x) m[t][x] = uint8_t(x % t);
+  }
+};
+constexpr ModTable kModTable{};
+constexpr const uint8_t (&kMod)[17][48] = kModTable.m;
+#endif
 
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
@@ -208,6 +237,20 @@ __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_
         : [bx] "r"(bx), [fx] "r"(fx), [j0] "i"(0), [j1] "i"(4 >> LB), [j2] "i"(8 >> LB), [j3] "i"(12 >> LB)
         : "d0", "d1", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24",
           "d25", "d26", "d27", "memory");
+  }
+}
+
+// Mip 2: 16 bytes a band, e = the grid rows' differences v_0..3, e1 = v_1..4: the strip's
+// assembly weighs them (quarter j: w0 e[j] + w1 e1[j], w0 and w1 the same for every quarter).
+inline void band_e2(const uint16_t* g, int gw, int n, uint32x4_t* D) {
+  uint16x4_t p = vld1_u16(g), p1 = vld1_u16(g + 1);
+  uint16_t* o = reinterpret_cast<uint16_t*>(D);
+  for (int b = 0; b < n; ++b, o += 8) {
+    g += gw;
+    const uint16x4_t q = vld1_u16(g), q1 = vld1_u16(g + 1);
+    vst1q_u16(o, vcombine_u16(vsub_u16(q, p), vsub_u16(q1, p1)));
+    p = q;
+    p1 = q1;
   }
 }
 
@@ -450,15 +493,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
   const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
-  const uint8_t* run[kMaxRuns];         // texel run of each row (cyclic, see below)
+  const uint8_t* run[kMaxRuns + 3];     // texel run of each row (cyclic, see below; 3 read past)
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
   auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
-  // Narrow textures (tw < 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
+  // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
 #if defined(__aarch64__)
-  period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw >= 16)
-  if (tw < 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
+  period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw > 16)
+  if (tw <= 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
     const uint16x8_t m = vdupq_n_u16(uint16_t((65536 + tw - 1) / tw)), twv = vdupq_n_u16(uint16_t(tw));
     for (int h = 0; h < 2; ++h) {
       const uint8x16_t x8 = vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0)));
@@ -472,14 +515,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
   }
 #else
-  {
-    uint8_t k8[32];
-    for (int k = 0, c = c0; k < 32; ++k) {
-      k8[k] = uint8_t(c);
-      if (++c == tw) c = 0;
-    }
-    period[0] = vld1q_u8(k8);
-    period[1] = vld1q_u8(k8 + 16);
+  if (tw <= 16) {
+    period[0] = vld1q_u8(kMod[tw] + c0);
+    period[1] = vld1q_u8(kMod[tw] + c0 + 16);
+  } else {
+    period[0] = period[1] = vdupq_n_u8(0);  // (unused)
   }
 #endif
   // Rows repeat every th: when the texture is shorter than the surface and all its rows fit,
@@ -511,6 +551,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
+  alignas(16) uint16_t w2[8];  // mip 2: the row-step weights w0 (B - fx), w1 (fx) of a quarter
+  for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
 #endif
 #if defined(__aarch64__)
   // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
@@ -527,7 +569,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #if defined(__aarch64__)
   const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
   const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
-  const uint8_t* lin[kStripRows + 2];     // the strip's texel runs in row order, two rows beyond
+  const uint8_t* lin[kStripRows + 2 + 3];  // the strip's texel runs in row order, two rows beyond
   uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
@@ -559,14 +601,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #if defined(__aarch64__)
     for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
       const int n = count - t < total - r ? count - t : total - r;
-      int i = 0;
-      for (; i + 2 <= n; i += 2) {
-        uint64x2_t v;
-        std::memcpy(&v, run + t + i, sizeof v);
-        asm("" : "+w"(v));  // (else GCC makes this loop a memcpy call)
-        std::memcpy(lin + r + i, &v, sizeof v);
+      for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
+        uint64x2_t v0, v1;
+        std::memcpy(&v0, run + t + i, sizeof v0);
+        std::memcpy(&v1, run + t + i + 2, sizeof v1);
+        asm("" : "+w"(v0), "+w"(v1));  // (else GCC makes this loop a memcpy call)
+        std::memcpy(lin + r + i, &v0, sizeof v0);
+        std::memcpy(lin + r + i + 2, &v1, sizeof v1);
       }
-      if (i < n) lin[r + i] = run[t + i];
       r += n;
     }
 #endif
@@ -730,7 +772,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         first_numerators<LB>(r0, w[0], w[1], blk);
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
+        if constexpr (LB == 2)
+          band_e2(r0, grid_width, nb, blk + 4);
+        else
+          band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
@@ -751,11 +796,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint32x4_t* dp = blk;
         // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
         // 512-byte block (no page crossing).
-#define SB_STRIP7(ROW, TEST) \
+#define SB_STRIP7(ROW, TEST, PD, BD0, BD) \
   "sub %[d], %[d], %[st]\n\t" \
   "ldr r0, [%[sa], #-4]\n\t" \
   "vld1.32 {d8-d11}, [%[dp]:128]!\n\t" \
   "vld1.32 {d12-d15}, [%[dp]:128]!\n\t" \
+  PD \
   "vld1.8 {d0-d1}, [r0]\n\t" \
   "vshrn.i32 d4, q4, #16\n\t" \
   "vshrn.i32 d5, q5, #16\n\t" \
@@ -763,8 +809,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vshrn.i32 d7, q7, #16\n\t" \
   "vmovl.u8 q1, d1\n\t" \
   "vmovl.u8 q0, d0\n\t" \
-  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
-  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  BD0 \
   "vsli.16 q0, q2, #8\n\t" \
   "vsli.16 q1, q3, #8\n\t" \
   "vmovl.u16 q12, d0\n\t" \
@@ -776,34 +821,53 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "1:\n\t" ROW ROW TEST \
   "ldr r0, [%[sa]]\n\t" \
   "cbz r0, 3f\n\t" \
-  "vld1.32 {d16-d19}, [%[dp]:128]!\n\t" \
-  "vld1.32 {d20-d23}, [%[dp]:128]!\n\t" \
+  BD \
   "b 1b\n\t" \
   "3:\n\t"
-#define SB_STRIP7_OPS \
+#define SB_STRIP7_OPS_(...) \
   : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
-  : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1) \
+  : [cm] "r"(colormap), [st] "r"(width), [bm] "I"(4 * B - 1) __VA_ARGS__ \
   : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", \
   "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
   "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
   "cc", "memory"
         // Every pass ends a band when B = 2; else a band ends where srcs is 4 B-aligned.
 #define SB_BAND_TEST "tst %[sa], %[bm]\n\tbne 1b\n\t"
+        // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
+        // free between rows): quarter j is w0 e[j] + w1 e1[j].
+#define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+#define SB_DELTA2 \
+  "vld1.16 {d0-d1}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d2-d3}, [%[wp]:128]\n\t" \
+  "vmull.s16 q8, d2, d0[0]\n\t" \
+  "vmull.s16 q9, d2, d0[1]\n\t" \
+  "vmull.s16 q10, d2, d0[2]\n\t" \
+  "vmull.s16 q11, d2, d0[3]\n\t" \
+  "vmlal.s16 q8, d3, d1[0]\n\t" \
+  "vmlal.s16 q9, d3, d1[1]\n\t" \
+  "vmlal.s16 q10, d3, d1[2]\n\t" \
+  "vmlal.s16 q11, d3, d1[3]\n\t"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7A, "") SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7A, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+          else if constexpr (LB == 2)
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
           else
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST) SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7, "") SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+          else if constexpr (LB == 2)
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
           else
-            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST) SB_STRIP7_OPS);
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
+#undef SB_LD_DELTA
+#undef SB_DELTA2
 #undef SB_BAND_TEST
 #undef SB_STRIP7
-#undef SB_STRIP7_OPS
+#undef SB_STRIP7_OPS_
 #undef SB_ROW7A
 #undef SB_ROW7
         continue;
@@ -864,6 +928,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
+        constexpr int kDs = LB == 1 ? 2 : LB == 2 ? 1 : 4;  // dtab entries a band (mips 2-3: 16-bit lanes)
         if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
@@ -881,18 +946,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
               const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
               const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
-              dt[0] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(lo), 2 * kMip));
-              dt[1] = vreinterpretq_u32_s32(vshll_high_n_s16(lo, 2 * kMip));
-              dt[2] = vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(hi), 2 * kMip));
-              dt[3] = vreinterpretq_u32_s32(vshll_high_n_s16(hi, 2 * kMip));
+              vst1q_s16(reinterpret_cast<int16_t*>(dt), lo);  // (widened << 2 mip by the assembly)
+              vst1q_s16(reinterpret_cast<int16_t*>(dt) + 8, hi);
             } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
               const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
               const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-              if constexpr (LB == 2) {  // quarter j: block j
-                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
-                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 1), w1[1], e1, 1));
-                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 2), w1[2], e1, 2));
-                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 3), w1[3], e1, 3));
+              if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
+                vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
               } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
                 dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
                 dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
@@ -921,14 +981,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           uint32x4_t* dt = dtab;
           int b = 0;
 #pragma GCC unroll 2
-          for (; b + 2 <= nb; b += 2, dt += 8) {
+          for (; b + 2 <= nb; b += 2, dt += 2 * kDs) {
             r += grid_width;
             const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
             band(p, p1, q, q1, dt);
             r += grid_width;
             p = ldg(r);
             p1 = LB <= 3 ? ldg(r + 1) : p;
-            band(q, q1, p, p1, dt + 4);
+            band(q, q1, p, p1, dt + kDs);
           }
           if (b < nb) {
             r += grid_width;
@@ -937,15 +997,36 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         } else {
           for (int b = 0; b < nb; ++b) {
+            if constexpr (LB == 2) {  // e, e1 as above, from the zero-padded rows
+              uint16_t a[5];
+              std::memcpy(a, row_of(by0 + b), sizeof a);
+              const uint16_t* const c = row_of(by0 + b + 1);
+              int16_t ee[8];
+              for (int j = 0; j < 4; ++j) {
+                ee[j] = int16_t(c[j] - a[j]);
+                ee[4 + j] = int16_t(c[j + 1] - a[j + 1]);
+              }
+              std::memcpy(dtab + b, ee, sizeof ee);
+              continue;
+            }
             step_for(by0 + b + 1);
-            for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+            if constexpr (LB == 1) {  // 16-bit (the values fit: see band)
+              const int16x8_t lo = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[0]), 2 * kMip),
+                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[1]), 2 * kMip));
+              const int16x8_t hi = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[2]), 2 * kMip),
+                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[3]), 2 * kMip));
+              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b), lo);
+              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b) + 8, hi);
+            } else {
+              for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
+            }
           }
         }
-        for (int j = 0; j < 4; ++j) dtab[4 * nb + j] = vdupq_n_u32(0);
-  #define SB_PAIR_LOOP \
+        for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
+  #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4, BR) \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
-    "2:\n\t" \
+    "2:\n\t" T0 \
     "add v28.4s, v23.4s, v18.4s\n\t" \
     "ushr v2.4s, v23.4s, #8\n\t" \
     "add v26.4s, v21.4s, v16.4s\n\t" \
@@ -963,7 +1044,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "fmov x0, d0\n\t" \
     "fmov x1, v0.d[1]\n\t" \
     "fmov x2, d1\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" TOP \
     "fmov x4, d2\n\t" \
     "fmov x5, v2.d[1]\n\t" \
     "fmov x6, d3\n\t" \
@@ -971,7 +1052,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "add v21.4s, v26.4s, v16.4s\n\t" \
     "add v22.4s, v27.4s, v17.4s\n\t" \
     "add v23.4s, v28.4s, v18.4s\n\t" \
-    "add v19.4s, v24.4s, v29.4s\n\t" \
+    "add v19.4s, v24.4s, v29.4s\n\t" MID \
     "fmov x19, d4\n\t" \
     "fmov x20, v4.d[1]\n\t" \
     "fmov x21, d5\n\t" \
@@ -1052,24 +1133,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldr q25, [x8, %[goff]]\n\t" \
     "orr x24, x24, x30, lsl #8\n\t" \
     "orr x21, x21, x11, lsl #8\n\t" \
-    "asr x8, %[q], %[lb]\n\t" \
+    A \
     "orr x25, x25, x9, lsl #8\n\t" \
     "orr x26, x26, x10, lsl #8\n\t" \
     "orr x0, x0, x2, lsl #32\n\t" \
     "orr x23, x23, x24, lsl #16\n\t" \
     "orr x19, x19, x20, lsl #16\n\t" \
-    "add x8, %[dte], x8, lsl #6\n\t" \
+    E1 \
     "orr x21, x21, x22, lsl #16\n\t" \
     "orr x25, x25, x26, lsl #16\n\t" \
     "stp x0, x4, [%[d]]\n\t" \
     "add %[rp], %[rp], #16\n\t" \
     "add %[d], %[d], %[w]\n\t" \
     "orr x19, x19, x21, lsl #32\n\t" \
-    "ldr q29, [x8, #48]\n\t" \
+    E2 \
     "orr x23, x23, x25, lsl #32\n\t" \
-    "ldr q18, [x8, #32]\n\t" \
-    "ldp q16, q17, [x8]\n\t" \
-    "b.ne 1b\n\t"
+    E3 \
+    E4 \
+    BR
   #define SB_PAIR_LOOP_N \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
@@ -1234,7 +1315,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
-        } else {  // q counts -rows + 2 per iteration up to 0; rows y, y + 1 step by dte[(y - rows) >> LB]
+        } else if constexpr (LB == 2) {
+          // Mip 2: a band (two pairs of rows) an iteration, q counting -rows + 4 up to 0. The
+          // band's step from its e, e1 (16 bytes at dte + 4 q): lanes of quarter j
+          // (4 - fx) e[j] + fx e1[j], << 4 (wt: the weights, low half 4 - fx, high half fx).
+          // The second pair computes the next band's (after its last use of the step). (The
+          // branch between the pairs ends a translation block of the qemu block profiler
+          // there, not inside the second pair's NEON run: its pieces are then one pair each.)
+#define SB_WEIGH_STEP \
+  "smull v16.4s, %[wt].4h, v0.h[0]\n\t" \
+  "smull v17.4s, %[wt].4h, v0.h[1]\n\t" \
+  "smull v18.4s, %[wt].4h, v0.h[2]\n\t" \
+  "smull v29.4s, %[wt].4h, v0.h[3]\n\t" \
+  "smlal2 v16.4s, %[wt].8h, v0.h[4]\n\t" \
+  "smlal2 v17.4s, %[wt].8h, v0.h[5]\n\t" \
+  "smlal2 v18.4s, %[wt].8h, v0.h[6]\n\t" \
+  "smlal2 v29.4s, %[wt].8h, v0.h[7]\n\t"
+          const int16x8_t wt = vcombine_s16(vget_low_s16(vreinterpretq_s16_u16(BX1[0])),
+                                            vget_low_s16(vreinterpretq_s16_u16(FX1[0])));
           int64_t q = -int64_t(nb) * B;
           asm volatile(
               "mov v21.16b, %[n0].16b\n\t"
@@ -1246,20 +1344,55 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "ldr x8, [%[rp], #8]\n\t"
               "ldr q25, [x8, %[goff]]\n\t"
               "add %[rp], %[rp], #16\n\t"
-              "asr x8, %[q], %[lb]\n\t"
-              "add x8, %[dte], x8, lsl #6\n\t"
-              "ldp q16, q17, [x8]\n\t"
-              "ldr q18, [x8, #32]\n\t"
-              "ldr q29, [x8, #48]\n\t"
+              "add x8, %[dte], %[q], lsl #2\n\t"
+              "ldr q0, [x8]\n\t" SB_WEIGH_STEP
               "b 2f\n\t"
-              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
-              "1:\n\t" SB_PAIR_LOOP
+              ".p2align 10\n\t"  // (the loop, 1004 bytes, then never straddles a page)
+              "1:\n\t" SB_PAIR_LOOP("", "", "", "", "", "", "", "", "b 3f\n3:\n\t")
+              SB_PAIR_LOOP("", "add x9, %[dte], %[q], lsl #2\n\tldr q0, [x9, #8]\n\t", SB_WEIGH_STEP, "", "", "", "", "",
+                           "b.ne 1b\n\t")
               "stp x19, x23, [%[d]]\n\t"
               "add %[d], %[d], %[w]\n\t"
               : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
-              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 4 * nb), [i0] "w"(TIX[0]),
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + nb), [i0] "w"(TIX[0]),
                 [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
-                [n2] "w"(num[2]), [n3] "w"(num[3]), [lb] "i"(LB)
+                [n2] "w"(num[2]), [n3] "w"(num[3]), [wt] "w"(wt)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
+                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+#undef SB_WEIGH_STEP
+        } else {  // mip 3 (a band an iteration): 16-bit steps (32 bytes a band) widened in the loop;
+                  // iteration y / 2 loads band y / 2 + 1's (q = y - rows, even: band offset 16 q)
+          int64_t q = -int64_t(nb) * B;
+          asm volatile(
+              "mov v21.16b, %[n0].16b\n\t"
+              "mov v22.16b, %[n1].16b\n\t"
+              "mov v23.16b, %[n2].16b\n\t"
+              "mov v19.16b, %[n3].16b\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q25, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add x8, %[dte], %[q], lsl #4\n\t"
+              "ldp q0, q1, [x8]\n\t"
+              "sshll v16.4s, v0.4h, #6\n\t"
+              "sshll2 v17.4s, v0.8h, #6\n\t"
+              "sshll v18.4s, v1.4h, #6\n\t"
+              "sshll2 v29.4s, v1.8h, #6\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
+              "1:\n\t" SB_PAIR_LOOP("add x9, %[dte], %[q], lsl #4\n\t", "ldp q0, q1, [x9, #32]\n\t",
+                                   "sshll v18.4s, v1.4h, #6\n\tsshll v16.4s, v0.4h, #6\n\t"
+                                   "sshll2 v17.4s, v0.8h, #6\n\tsshll2 v29.4s, v1.8h, #6\n\t",
+                                   "", "", "", "", "", "b.ne 1b\n\t")
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 2 * nb), [i0] "w"(TIX[0]),
+                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
+                [n2] "w"(num[2]), [n3] "w"(num[3])
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
