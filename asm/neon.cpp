@@ -647,7 +647,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // row << 8 | texel by vshrn and vsli, widened into q12-q15 once row y's are read).
         // The delta changes (the next 64 bytes at dp) at each band's first row: srcs[y] lies at
         // a multiple of 4 B bytes exactly then; a null srcs[y] ends the strip.
-#define SB_ROW7 \
+// The first part of a row, the same for both output forms.
+#define SB_ROW7_HEAD \
   "ldr r0, [%[sa]], #4\n\t" \
   "vmov r1, r2, d24\n\t" \
   "add %[d], %[d], %[st]\n\t" \
@@ -672,7 +673,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vshrn.i32 d5, q5, #16\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
   "vshrn.i32 d6, q6, #16\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t"
+#define SB_ROW7 \
+  SB_ROW7_HEAD \
   "vshrn.i32 d7, q7, #16\n\t" \
   "str r1, [%[d], #0]\n\t" \
   "vmovl.u8 q1, d1\n\t" \
@@ -710,31 +713,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 
         // Word-aligned output (the usual case): the same with strd (r8 holds a third word).
 #define SB_ROW7A \
-  "ldr r0, [%[sa]], #4\n\t" \
-  "vmov r1, r2, d24\n\t" \
-  "add %[d], %[d], %[st]\n\t" \
-  "vmov r3, ip, d25\n\t" \
-  "ldrb r1, [%[cm], r1]\n\t" \
-  "vadd.i32 q4, q4, q8\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vadd.i32 q5, q5, q9\n\t" \
-  "ldrb r3, [%[cm], r3]\n\t" \
-  "vld1.8 {d0-d1}, [r0]\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vadd.i32 q6, q6, q10\n\t" \
-  "orr r1, r1, r2, lsl #8\n\t" \
-  "vadd.i32 q7, q7, q11\n\t" \
-  "orr r3, r3, ip, lsl #8\n\t" \
-  "vmov r0, r2, d26\n\t" \
-  "orr r1, r1, r3, lsl #16\n\t" \
-  "vmov ip, lr, d27\n\t" \
-  "ldrb r0, [%[cm], r0]\n\t" \
-  "vshrn.i32 d4, q4, #16\n\t" \
-  "ldrb r2, [%[cm], r2]\n\t" \
-  "vshrn.i32 d5, q5, #16\n\t" \
-  "ldrb ip, [%[cm], ip]\n\t" \
-  "vshrn.i32 d6, q6, #16\n\t" \
-  "ldrb lr, [%[cm], lr]\n\t" \
+  SB_ROW7_HEAD \
   "vmovl.u8 q1, d1\n\t" \
   "orr r0, r0, r2, lsl #8\n\t" \
   "vshrn.i32 d7, q7, #16\n\t" \
@@ -870,6 +849,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_STRIP7_OPS_
 #undef SB_ROW7A
 #undef SB_ROW7
+#undef SB_ROW7_HEAD
         continue;
       }
 #endif
