@@ -55,6 +55,25 @@ inline int wrap_near(int i, int n) {
 // temporary of the row before, which costs nothing on hardware but reads as a chain from one
 // row to the next to llvm-mca (it times each block as a loop of itself).
 //
+// Bytes 4..7 of pack8 / pack8m: indices q[4 .. 7] from memory (operands m4 .. m7).
+#define SB_PACK8_HIGH \
+  "movzwl %[m4], %k[a]\n\t" \
+  "movzwl %[m5], %k[b]\n\t" \
+  "movzbl (%[cm],%[a]), %k[a]\n\t" \
+  "movzbl (%[cm],%[b]), %k[b]\n\t" \
+  "shl $32, %[a]\n\t" \
+  "shl $40, %[b]\n\t" \
+  "or %[a], %[v]\n\t" \
+  "or %[b], %[v]\n\t" \
+  "movzwl %[m6], %k[a]\n\t" \
+  "movzwl %[m7], %k[b]\n\t" \
+  "movzbl (%[cm],%[a]), %k[a]\n\t" \
+  "movzbl (%[cm],%[b]), %k[b]\n\t" \
+  "shl $48, %[a]\n\t" \
+  "shl $56, %[b]\n\t" \
+  "or %[a], %[v]\n\t" \
+  "or %[b], %[v]"
+
 // colormap[q[0]] | colormap[q[1]] << 8 | ... | colormap[q[7]] << 56, with q[0 .. 3] given in qa
 // (four 16-bit fields) and q[4 .. 7] read from memory: the load ports and the ALUs share the
 // work. In asm (scalar only: the same for the SSE2 and the AVX2 instance) because GCC would
@@ -79,22 +98,7 @@ inline uint64_t pack8(const uint8_t* cm, uint64_t qa, const uint16_t* q) {
       "shl $24, %k[b]\n\t"
       "or %k[a], %k[v]\n\t"
       "or %k[b], %k[v]\n\t"
-      "movzwl %[m4], %k[a]\n\t"
-      "movzwl %[m5], %k[b]\n\t"
-      "movzbl (%[cm],%[a]), %k[a]\n\t"
-      "movzbl (%[cm],%[b]), %k[b]\n\t"
-      "shl $32, %[a]\n\t"
-      "shl $40, %[b]\n\t"
-      "or %[a], %[v]\n\t"
-      "or %[b], %[v]\n\t"
-      "movzwl %[m6], %k[a]\n\t"
-      "movzwl %[m7], %k[b]\n\t"
-      "movzbl (%[cm],%[a]), %k[a]\n\t"
-      "movzbl (%[cm],%[b]), %k[b]\n\t"
-      "shl $48, %[a]\n\t"
-      "shl $56, %[b]\n\t"
-      "or %[a], %[v]\n\t"
-      "or %[b], %[v]"
+      SB_PACK8_HIGH
       : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b), [qa] "+r"(qa)
       : [cm] "r"(cmr), [m4] "m"(q[4]), [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
   return v;
@@ -120,26 +124,13 @@ inline uint64_t pack8m(const uint8_t* cm, const uint16_t* q) {
       "shl $24, %k[b]\n\t"
       "or %k[a], %k[v]\n\t"
       "or %k[b], %k[v]\n\t"
-      "movzwl %[m4], %k[a]\n\t"
-      "movzwl %[m5], %k[b]\n\t"
-      "movzbl (%[cm],%[a]), %k[a]\n\t"
-      "movzbl (%[cm],%[b]), %k[b]\n\t"
-      "shl $32, %[a]\n\t"
-      "shl $40, %[b]\n\t"
-      "or %[a], %[v]\n\t"
-      "or %[b], %[v]\n\t"
-      "movzwl %[m6], %k[a]\n\t"
-      "movzwl %[m7], %k[b]\n\t"
-      "movzbl (%[cm],%[a]), %k[a]\n\t"
-      "movzbl (%[cm],%[b]), %k[b]\n\t"
-      "shl $48, %[a]\n\t"
-      "shl $56, %[b]\n\t"
-      "or %[a], %[v]\n\t"
-      "or %[b], %[v]"
+      SB_PACK8_HIGH
       : [v] "=&r"(v), [a] "=&r"(a), [b] "=&r"(b)
       : [cm] "r"(cmr), [p0] "m"(*reinterpret_cast<const uint16_t(*)[2]>(q + 0)), [m2] "m"(q[2]), [m3] "m"(q[3]), [m4] "m"(q[4]), [m5] "m"(q[5]), [m6] "m"(q[6]), [m7] "m"(q[7]));
   return v;
 }
+
+#undef SB_PACK8_HIGH
 
 constexpr int kTileBytes = 16 * (kMaxBlockColumns * 16 + 32);  // B runs of the widest surface
 
