@@ -806,12 +806,17 @@ SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t 
   const uint32_t d = ((d0 ^ sg) - sg) & accept;
   return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
 }
-SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+#if defined(__aarch64__)
+// du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as [du, dv].
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, int32x2_t duv, double curve, RunSteps* su,
+                          RunSteps* sv) {
+#else
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSteps* su, RunSteps* sv) {
+#endif
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
   const uint32_t two = steps > 1 ? ~0u : 0u;
-  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
 #if defined(__aarch64__)
-  const float64x2_t q = div_steps(vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))), s);
+  const float64x2_t q = div_steps(vcvtq_f64_s64(vmovl_s32(duv)), s);
   const int64x2_t lin = vcvtq_s64_f64(q);
   const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
   const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
@@ -826,6 +831,14 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 #endif
   *su = last_dd(du, lu, du2 & int32_t(two), s, T);
   *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+}
+SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
+#if defined(__aarch64__)
+  last_steps(steps, du, dv, vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)), curve, su, sv);
+#else
+  last_steps(steps, du, dv, curve, su, sv);
+#endif
 }
 
 #if defined(__aarch64__)
@@ -941,7 +954,11 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const int k = runs - 1;
   const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
   RunSteps lu, lv;
-  last_steps(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
+  // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as a
+  // vector and as integers (no moves between the register files).
+  int32_t dm[8];
+  vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
+  last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * (a.z + b.z), &lu, &lv);
   auto full = [&](auto jc) SB_LAMBDA_INLINE {
     constexpr int j = decltype(jc)::value, l = j & 1;
     const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
