@@ -751,9 +751,10 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 #endif
 
 // run_steps of a last run (steps = 0 .. 15) for u and v without branches or integer
-// divides. With q = double(delta) / steps (the walker's quotient; one 2-lane divide on
-// aarch64): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31, and a non-integer
-// quotient lies over 1 / steps from an integer, far above the rounding error),
+// divides. With q = double(delta) / steps (the walker's quotient; on aarch64 by div_steps,
+// no divide instruction): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31,
+// and a non-integer quotient lies over 1 / steps from an integer, far above the rounding
+// error),
 // ddf = -2 (q curve), dd = trunc(ddf) when |ddf| < 1e9, else linear. Mirrored to delta >= 0
 // as in steps16_dd (pd = |delta|, dd' = dd mirrored, T = steps (steps - 1) / 2,
 // num = pd - T dd'): the walker accepts iff num >= 0 and floor(num / steps) +
