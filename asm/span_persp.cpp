@@ -751,9 +751,10 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 #endif
 
 // run_steps of a last run (steps = 0 .. 15) for u and v without branches or integer
-// divides. With q = double(delta) / steps (the walker's quotient; one 2-lane divide on
-// aarch64): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31, and a non-integer
-// quotient lies over 1 / steps from an integer, far above the rounding error),
+// divides. With q = double(delta) / steps (the walker's quotient; on aarch64 by div_steps,
+// no divide instruction): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31,
+// and a non-integer quotient lies over 1 / steps from an integer, far above the rounding
+// error),
 // ddf = -2 (q curve), dd = trunc(ddf) when |ddf| < 1e9, else linear. Mirrored to delta >= 0
 // as in steps16_dd (pd = |delta|, dd' = dd mirrored, T = steps (steps - 1) / 2,
 // num = pd - T dd'): the walker accepts iff num >= 0 and floor(num / steps) +
@@ -771,6 +772,29 @@ constexpr bool kLastSteps = true;
 #else
 constexpr bool kLastSteps = false;
 #endif
+#if defined(__aarch64__)
+// [a, b] / s correctly rounded without a divide, for integers |a|, |b| < 2^31 and
+// 1 <= s <= 16: y = RN(1/s) (a table), q0 = RN(a y), e = a - s q0 (fmsub), q = RN(q0 + e y)
+// (fmadd). Proof, x = a / s: |s y - 1| <= u = 2^-53 and |q0 - a y| <= u |a y|, so
+// |q0 - x| <= 2.1 u |x| < 2.1 ulp(x). e is exact: a and s q0 are multiples of
+// ulp(q0) <= 2^-21 (|q0| <= 2^31), and |e| <= s |x - q0| < 34 ulp(x) <= 68 ulp(q0). Then
+// q0 + e y = x + (x - q0)(s y - 1) = x + eta, |eta| < 2.1 ulp(x) 2^-53, rounded once.
+// A midpoint m = M 2^F between doubles near x (M odd, 2^F >= ulp(x) / 4) is never x (x
+// dyadic has <= 31 significant bits) and |x - m| = |a 2^-F - s M| 2^F / s >= 2^F / 16 >
+// |eta| (a nonzero integer times 2^F / s): no midpoint between x and x + eta, so
+// RN(x + eta) = RN(x). s a power of two: y exact, e = 0, q = q0. a = 0: +0, as a / s.
+// (AsmSpanPersp.StepQuotientWithoutDivide checks the same operations on boundaries and
+// random inputs.)
+constexpr double kRecipSteps[17] = {0.0,      1.0 / 1,  1.0 / 2,  1.0 / 3,  1.0 / 4,  1.0 / 5,
+                                    1.0 / 6,  1.0 / 7,  1.0 / 8,  1.0 / 9,  1.0 / 10, 1.0 / 11,
+                                    1.0 / 12, 1.0 / 13, 1.0 / 14, 1.0 / 15, 1.0 / 16};
+SB_INLINE float64x2_t div_steps(float64x2_t a, uint32_t s) {
+  const float64x2_t y = vld1q_dup_f64(&kRecipSteps[s]);
+  const float64x2_t q0 = vmulq_f64(a, y);
+  const float64x2_t e = vfmsq_f64(a, q0, vdupq_n_f64(double(s)));
+  return vfmaq_f64(q0, e, y);
+}
+#endif
 SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t s, uint32_t T) {
   const uint32_t sg = uint32_t(delta >> 31);
   const uint32_t pd = (uint32_t(delta) ^ sg) - sg, pdd = (uint32_t(ddi) ^ sg) - sg;
@@ -783,13 +807,17 @@ SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t 
   const uint32_t d = ((d0 ^ sg) - sg) & accept;
   return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
 }
-SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+#if defined(__aarch64__)
+// du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as [du, dv].
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, int32x2_t duv, double curve, RunSteps* su,
+                          RunSteps* sv) {
+#else
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSteps* su, RunSteps* sv) {
+#endif
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
   const uint32_t two = steps > 1 ? ~0u : 0u;
-  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
 #if defined(__aarch64__)
-  const float64x2_t q = vdivq_f64(vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))),
-                                  vdupq_n_f64(double(s)));
+  const float64x2_t q = div_steps(vcvtq_f64_s64(vmovl_s32(duv)), s);
   const int64x2_t lin = vcvtq_s64_f64(q);
   const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
   const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
@@ -804,6 +832,14 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 #endif
   *su = last_dd(du, lu, du2 & int32_t(two), s, T);
   *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+}
+SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
+#if defined(__aarch64__)
+  last_steps(steps, du, dv, vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)), curve, su, sv);
+#else
+  last_steps(steps, du, dv, curve, su, sv);
+#endif
 }
 
 #if defined(__aarch64__)
@@ -919,7 +955,11 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const int k = runs - 1;
   const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
   RunSteps lu, lv;
-  last_steps(last - 1, a, b, zc * 0.5 * (a.z + b.z), &lu, &lv);
+  // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as a
+  // vector and as integers (no moves between the register files).
+  int32_t dm[8];
+  vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
+  last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * (a.z + b.z), &lu, &lv);
   auto full = [&](auto jc) SB_LAMBDA_INLINE {
     constexpr int j = decltype(jc)::value, l = j & 1;
     const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);

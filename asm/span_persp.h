@@ -58,7 +58,8 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // interleaved with the drawing, one dependent step per pixel group; the divides for the samples two runs ahead issued in pairs (one vector divide on
 // aarch64) so their latency runs under the drawing; full runs' divisions by the constant 16,
 // the last run's by constants too (no 64-bit divide instruction or armhf library call; on
-// ARM second-order last runs branch-free, from the quotient of the one divide).
+// ARM second-order last runs branch-free, from the quotient of one divide; on aarch64 that
+// quotient correctly rounded from a table of 1 / steps and two fused multiply-adds).
 // aarch64, spans of 17 .. 64 pixels: every sample's divide first, then the conversions and
 // steps in 2-lane vectors, then the runs. Longer spans (linear over 48 pixels, second-order
 // over 80): each pass of 32 pixels one pipeline of eight 4-pixel groups in inline asm,

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
@@ -118,6 +119,46 @@ TEST(AsmSpanPersp, MatchesTheRunWalkerOnShortSpans) {
     spans_drawn += int(spans.size());
   }
   std::printf("[ asm      ] span_persp: %d short spans identical to the run walker\n", spans_drawn);
+}
+
+// asm/span_persp.cpp's div_steps (the last run's step quotient on aarch64): a / s as
+// RN(1/s), q0 = a RN(1/s), e = fma(-q0, s, a), fma(e, RN(1/s), q0), bit for bit a / s for
+// integers |a| < 2^31 and s = 1 .. 16: the same operations, on the ends of the range, the
+// small quotients, and random integers of every magnitude.
+TEST(AsmSpanPersp, StepQuotientWithoutDivide) {
+  auto bits = [](double x) {
+    uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  std::mt19937 rng(11);
+  long checked = 0, wrong = 0;
+  for (int s = 1; s <= 16; ++s) {
+    const double y = 1.0 / s, sd = double(s);
+    auto check = [&](int64_t ai) {
+      const volatile double av = double(ai);
+      const double a = av;
+      const double q0 = a * y;
+      const double e = std::fma(-q0, sd, a);
+      const double q = std::fma(e, y, q0);
+      wrong += bits(q) != bits(a / sd);
+      ++checked;
+    };
+    for (int64_t a = -70000; a <= 70000; ++a) check(a);
+    for (int64_t k = 0; k < 70000; ++k) check(INT32_MAX - k), check(-INT32_MAX + k);
+    for (int i = 0; i < 200000; ++i) {
+      const int sh = int(rng() % 32);
+      check(int64_t(int32_t(rng()) >> sh));
+    }
+    for (int k = 0; k < 31; ++k) {  // around multiples of s times powers of two
+      for (int64_t d = -3; d <= 3; ++d) {
+        const int64_t a = int64_t(s) << k;
+        if (a + d < INT32_MAX) check(a + d), check(-(a + d));
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld step quotients without a divide, %ld wrong\n", checked, wrong);
 }
 
 TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
