@@ -858,44 +858,99 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const double zc = p.second_order ? p.dzi : 0.0;
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
-  const float64x2_t kZrow = vdupq_n_f64(p.zi0), kZix = vdupq_n_f64(p.dzi), kMin = vdupq_n_f64(kMinZi);
-  const float64x2_t kOne = vdupq_n_f64(1.0);
-  const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(p.uz0), vdup_n_f64(p.vz0));
-  const float64x2_t kUVx = vcombine_f64(vdup_n_f64(p.duz), vdup_n_f64(p.dvz));
-  // [P_0, P_1], [P_1, P_2], [P_2, P_3] (each lane the walker's P_{j-1} + 16), the offsets
-  // min(32, n - 16 j - 1) as [j = 0, 1], [2, 3] (exact integers), the sums lane by lane.
-  const double P0 = p.px0;
-  const float64x2_t k16 = vdupq_n_f64(16.0);
-  const float64x2_t pA = vcombine_f64(vdup_n_f64(P0), vdup_n_f64(P0 + double(16)));
-  const float64x2_t p12 = vaddq_f64(pA, k16), p23 = vaddq_f64(p12, k16);
-  const int32x4_t o = vminq_s32(vsubq_s32(vdupq_n_s32(n - 1), int32x4_t{0, 16, 32, 48}), vdupq_n_s32(32));
-  const float64x2_t o01 = vcvtq_f64_s64(vmovl_s32(vget_low_s32(o)));
-  const float64x2_t o23 = vcvtq_f64_s64(vmovl_high_s32(o));
-  const float64x2_t pB = vaddq_f64(pA, o01);
-  const float64x2_t pC = vdupq_laneq_f64(vaddq_f64(p23, o23), 0);
-  // 1 / max(zi, kMinZi), zi = zrow + zix * pos (fmadd, as the scalar code compiles).
-  const float64x2_t zA = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pA), kMin));
-  const float64x2_t zB = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pB), kMin));
-  // Sample 4 alone: a scalar divide (on Cortex-A72 a 2-lane divide costs two).
-  const float64x1_t z4 = vdiv_f64(vget_low_f64(kOne), vmaxnm_f64(vfma_f64(vget_low_f64(kZrow), vget_low_f64(kZix),
-                                                                          vget_low_f64(pC)), vget_low_f64(kMin)));
-  const float64x2_t zC = vcombine_f64(z4, z4);
-  // [u, v] of sample j = to_fixed of (uvrow + uvx * pos) * z, as fcvtzs #16, sqxtn and the
-  // integer clamps (persp_fast's argument); two samples per vector: [u_j, v_j, u_k, v_k].
-  auto uv = [&](float64x2_t pos, float64x2_t z, auto lane) SB_LAMBDA_INLINE {
-    constexpr int L = decltype(lane)::value;
-    return vcvtq_n_s64_f64(vmulq_laneq_f64(vfmaq_laneq_f64(kUVrow, kUVx, pos, L), z, L), 16);
-  };
+  // Hand-ordered (each operation as the vector code's lane operation, the same bits):
+  // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
+  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the [u, v]
+  // products uvrow + uvx pos (no divide needed) before the divides 1 / max(zi, kMinZi)
+  // (two 2-lane and one scalar, back to back, nothing else on the divide pipe's turn),
+  // then the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max] (persp_fast's
+  // argument). Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice).
+  register float64x2_t zA __asm__("v26");
+  register float64x2_t zB __asm__("v27");
+  register float64x2_t zC __asm__("v4");
+  register int32x4_t S01 __asm__("v5");
+  register int32x4_t S23 __asm__("v6");
+  register int32x4_t S44 __asm__("v7");
+  uint64_t t0, t5, t6, t7;
+  const float64x2_t kMin = vdupq_n_f64(kMinZi);
+  __asm__(
+      "ldr d0, [%[p], #48]\n\t"
+      "fmov d1, #16.0\n\t"
+      "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+      "sub %w[t5], %w[n], #1\n\t"
+      "sub %w[t6], %w[n], #17\n\t"
+      "ld1r {v26.2d}, [%[p]]\n\t"
+      "mov %w[t7], #32\n\t"
+      "cmp %w[t5], #32\n\t"
+      "add %[t0], %[p], #16\n\t"
+      "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+      "fadd d2, d0, d1\n\t"
+      "cmp %w[t6], #32\n\t"
+      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+      "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+      "sub %w[t7], %w[n], #33\n\t"
+      "scvtf d4, %w[t5]\n\t"
+      "mov v0.d[1], v2.d[0]\n\t"
+      "ld1r {v27.2d}, [%[p]]\n\t"
+      "scvtf d5, %w[t6]\n\t"
+      "fadd d3, d2, d1\n\t"
+      "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+      "scvtf d6, %w[t7]\n\t"
+      "fmla v26.2d, v17.2d, v0.2d\n\t"
+      "mov v4.d[1], v5.d[0]\n\t"
+      "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+      "fadd d3, d3, d6\n\t"
+      "fadd v7.2d, v0.2d, v4.2d\n\t"
+      "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+      "fmadd d28, d17, d3, d16\n\t"
+      "fmov v1.2d, #1.0\n\t"
+      "fmla v27.2d, v17.2d, v7.2d\n\t"
+      "fmaxnm v26.2d, v26.2d, %[kmin].2d\n\t"
+      "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+      "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+      "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+      "fmaxnm d28, d28, %d[kmin]\n\t"
+      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+      "add %[t0], %[p], #56\n\t"
+      "fdiv v26.2d, v1.2d, v26.2d\n\t"
+      "fmaxnm v27.2d, v27.2d, %[kmin].2d\n\t"
+      "fdiv v27.2d, v1.2d, v27.2d\n\t"
+      "fdiv d28, d1, d28\n\t"
+      "ld1r {v31.2d}, [%[t0]]\n\t"
+      "movi v2.4s, #0\n\t"
+      "fmul v18.2d, v18.2d, v26.d[0]\n\t"
+      "fmul v20.2d, v20.2d, v26.d[1]\n\t"
+      "fmul v22.2d, v22.2d, v27.d[0]\n\t"
+      "fmul v24.2d, v24.2d, v27.d[1]\n\t"
+      "fmul v29.2d, v29.2d, v28.d[0]\n\t"
+      "fcvtzs v18.2d, v18.2d, #16\n\t"
+      "fcvtzs v20.2d, v20.2d, #16\n\t"
+      "fcvtzs v22.2d, v22.2d, #16\n\t"
+      "fcvtzs v24.2d, v24.2d, #16\n\t"
+      "fcvtzs v29.2d, v29.2d, #16\n\t"
+      "sqxtn v5.2s, v18.2d\n\t"
+      "sqxtn v6.2s, v22.2d\n\t"
+      "sqxtn v7.2s, v29.2d\n\t"
+      "dup v4.2d, v28.d[0]\n\t"
+      "sqxtn2 v5.4s, v20.2d\n\t"
+      "sqxtn2 v6.4s, v24.2d\n\t"
+      "sqxtn2 v7.4s, v29.2d\n\t"
+      "smax v5.4s, v5.4s, v2.4s\n\t"
+      "smax v6.4s, v6.4s, v2.4s\n\t"
+      "smax v7.4s, v7.4s, v2.4s\n\t"
+      "smin v5.4s, v5.4s, v31.4s\n\t"
+      "smin v6.4s, v6.4s, v31.4s\n\t"
+      "smin v7.4s, v7.4s, v31.4s"
+      : "=&w"(zA), "=&w"(zB), "=&w"(zC), "=&w"(S01), "=&w"(S23), "=&w"(S44), [t0] "=&r"(t0), [t5] "=&r"(t5),
+        [t6] "=&r"(t6), [t7] "=&r"(t7)
+      : [p] "r"(&p), [n] "r"(n), [kmin] "w"(kMin), "m"(p)
+      : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
+        "v28", "v29", "v30", "v31");
   using L0 = std::integral_constant<int, 0>;
   using L1 = std::integral_constant<int, 1>;
-  const int32x4_t kMax = vreinterpretq_s32_u64(vdupq_n_u64(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax)));
   const int32x4_t kZero = vdupq_n_s32(0);
-  auto fix = [&](int64x2_t a, int64x2_t b) SB_LAMBDA_INLINE {
-    return vminq_s32(vmaxq_s32(vqmovn_high_s64(vqmovn_s64(a), b), kZero), kMax);
-  };
-  const int32x4_t S01 = fix(uv(pA, zA, L0{}), uv(pA, zA, L1{}));
-  const int32x4_t S23 = fix(uv(pB, zB, L0{}), uv(pB, zB, L1{}));
-  const int32x4_t S44 = fix(uv(pC, zC, L0{}), uv(pC, zC, L0{}));
   // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
   const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
   const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
