@@ -948,6 +948,9 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       : [p] "r"(&p), [n] "r"(n), [kmin] "w"(kMin), "m"(p)
       : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
         "v28", "v29", "v30", "v31");
+  // Sums of neighbouring samples' z: [z_0 + z_1, z_1 + z_2], [z_2 + z_3, z_3 + z_4] (the
+  // curve factors' and the last run's z_k + z_{k+1}).
+  const float64x2_t zs01 = vaddq_f64(zA, vextq_f64(zA, zB, 1)), zs23 = vaddq_f64(zB, vextq_f64(zB, zC, 1));
   using L0 = std::integral_constant<int, 0>;
   using L1 = std::integral_constant<int, 1>;
   const int32x4_t kZero = vdupq_n_s32(0);
@@ -959,8 +962,8 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
     // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
     const double zck = zc * -0.0625;
-    const float64x2_t c01 = vmulq_n_f64(vaddq_f64(zA, vextq_f64(zA, zB, 1)), zck);
-    const float64x2_t c23 = vmulq_n_f64(vaddq_f64(zB, vextq_f64(zB, zC, 1)), zck);
+    const float64x2_t c01 = vmulq_n_f64(zs01, zck);
+    const float64x2_t c23 = vmulq_n_f64(zs23, zck);
     auto ddf = [](int32x2_t d, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
       return vcvtq_s64_f64(vmulq_laneq_f64(vcvtq_f64_s64(vmovl_s32(d)), c, decltype(lane)::value));
     };
@@ -1003,18 +1006,18 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   packs(d01, d23, &dlo, &dhi);
   packs(dd01, dd23, &ddlo, &ddhi);
   const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
-  int32_t sm[12];
-  double zm[6];
-  vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23), vst1q_s32(sm + 8, S44);
-  vst1q_f64(zm, zA), vst1q_f64(zm + 2, zB), vst1q_f64(zm + 4, zC);
+  int32_t sm[8];
+  double zm[4];
+  vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23);
+  vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
   const int k = runs - 1;
-  const Sample a{sm[2 * k], sm[2 * k + 1], zm[k]}, b{sm[2 * k + 2], sm[2 * k + 3], zm[k + 1]};
+  const int32_t au = sm[2 * k], av = sm[2 * k + 1];
   RunSteps lu, lv;
   // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as a
   // vector and as integers (no moves between the register files).
   int32_t dm[8];
   vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
-  last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * (a.z + b.z), &lu, &lv);
+  last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * zm[k], &lu, &lv);
   auto full = [&](auto jc) SB_LAMBDA_INLINE {
     constexpr int j = decltype(jc)::value, l = j & 1;
     const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
@@ -1048,7 +1051,7 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   auto packed = [](const RunSteps& su, const RunSteps& sv) {
     return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
   };
-  const uint64_t luv = (uint64_t(uint32_t(a.v)) << 32) + uint32_t(a.u);
+  const uint64_t luv = (uint64_t(uint32_t(av)) << 32) + uint32_t(au);
   const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
   if (k == 1) {
     full(std::integral_constant<int, 0>{});
@@ -1064,9 +1067,9 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   }
   dest += 16 * k;
   if (last == 16) {
-    draw16<kCurve>(dest, texels, w, a.u, a.v, lu, lv);
+    draw16<kCurve>(dest, texels, w, au, av, lu, lv);
   } else {
-    draw_run(dest, last, texels, w, uint32_t(a.u), uint32_t(a.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+    draw_run(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
              uint32_t(lv.dd));
   }
 }
