@@ -830,8 +830,79 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
   const double fu = -2.0 * (qu * curve), fv = -2.0 * (qv * curve);
   const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
 #endif
+#if defined(__aarch64__)
+  // last_dd for u and v in one asm block, the two chains interleaved (the compiler runs
+  // them one after the other; on an in-order core each step waits for the previous one).
+  // Per lane, as last_dd: sg, pd, add, Q, pdd; acc = pd - add T (umsubl, 64-bit), rej = acc
+  // >> 63 (~accept); r = pd - s Q, m = (s - 1) pdd, c = 2 r < s; d0 = Q - (m >> 1) - (m & c);
+  // d = ((d0 ^ sg) - sg) & accept | linear & rej, dd = ddi & accept.
+  int32_t xu = du, xv = dv, lu_ = lu, lv_ = lv, ddu = du2 & int32_t(two), ddv = dv2 & int32_t(two);
+  const uint32_t sm1 = s - 1;
+  uint64_t ga, gb, a1, b1, a2, b2, a3, b3, a4, b4;
+  __asm__(
+      "asr %w[ga], %w[xu], #31\n\t"
+      "asr %w[gb], %w[xv], #31\n\t"
+      "asr %w[a1], %w[ddu], #31\n\t"
+      "asr %w[b1], %w[ddv], #31\n\t"
+      "eor %w[a2], %w[xu], %w[ga]\n\t"
+      "eor %w[b2], %w[xv], %w[gb]\n\t"
+      "eor %w[a3], %w[ddu], %w[a1]\n\t"
+      "eor %w[b3], %w[ddv], %w[b1]\n\t"
+      "eor %w[a4], %w[lu], %w[ga]\n\t"
+      "eor %w[b4], %w[lv], %w[gb]\n\t"
+      "sub %w[a2], %w[a2], %w[ga]\n\t"
+      "sub %w[b2], %w[b2], %w[gb]\n\t"
+      "sub %w[a3], %w[a3], %w[a1]\n\t"
+      "sub %w[b3], %w[b3], %w[b1]\n\t"
+      "eor %w[a1], %w[ddu], %w[ga]\n\t"
+      "eor %w[b1], %w[ddv], %w[gb]\n\t"
+      "sub %w[a4], %w[a4], %w[ga]\n\t"
+      "sub %w[b4], %w[b4], %w[gb]\n\t"
+      "sub %w[a1], %w[a1], %w[ga]\n\t"
+      "sub %w[b1], %w[b1], %w[gb]\n\t"
+      "umsubl %[a3], %w[a3], %w[T], %[a2]\n\t"
+      "umsubl %[b3], %w[b3], %w[T], %[b2]\n\t"
+      "msub %w[xu], %w[s], %w[a4], %w[a2]\n\t"
+      "msub %w[xv], %w[s], %w[b4], %w[b2]\n\t"
+      "mul %w[a1], %w[sm1], %w[a1]\n\t"
+      "mul %w[b1], %w[sm1], %w[b1]\n\t"
+      "lsl %w[xu], %w[xu], #1\n\t"
+      "lsl %w[xv], %w[xv], #1\n\t"
+      "asr %[a3], %[a3], #63\n\t"
+      "asr %[b3], %[b3], #63\n\t"
+      "cmp %w[s], %w[xu]\n\t"
+      "cset %w[xu], hi\n\t"
+      "cmp %w[s], %w[xv]\n\t"
+      "cset %w[xv], hi\n\t"
+      "sub %w[a4], %w[a4], %w[a1], asr #1\n\t"
+      "sub %w[b4], %w[b4], %w[b1], asr #1\n\t"
+      "and %w[xu], %w[xu], %w[a1]\n\t"
+      "and %w[xv], %w[xv], %w[b1]\n\t"
+      "sub %w[a4], %w[a4], %w[xu]\n\t"
+      "sub %w[b4], %w[b4], %w[xv]\n\t"
+      "eor %w[a4], %w[a4], %w[ga]\n\t"
+      "eor %w[b4], %w[b4], %w[gb]\n\t"
+      "sub %w[a4], %w[a4], %w[ga]\n\t"
+      "sub %w[b4], %w[b4], %w[gb]\n\t"
+      "bic %w[a4], %w[a4], %w[a3]\n\t"
+      "bic %w[b4], %w[b4], %w[b3]\n\t"
+      "and %w[lu], %w[lu], %w[a3]\n\t"
+      "and %w[lv], %w[lv], %w[b3]\n\t"
+      "orr %w[lu], %w[a4], %w[lu]\n\t"
+      "orr %w[lv], %w[b4], %w[lv]\n\t"
+      "bic %w[ddu], %w[ddu], %w[a3]\n\t"
+      "bic %w[ddv], %w[ddv], %w[b3]"
+      : [xu] "+&r"(xu), [xv] "+&r"(xv), [lu] "+&r"(lu_), [lv] "+&r"(lv_), [ddu] "+&r"(ddu), [ddv] "+&r"(ddv),
+        [ga] "=&r"(ga), [gb] "=&r"(gb), [a1] "=&r"(a1), [b1] "=&r"(b1), [a2] "=&r"(a2), [b2] "=&r"(b2),
+        [a3] "=&r"(a3), [b3] "=&r"(b3), [a4] "=&r"(a4), [b4] "=&r"(b4)
+      : [s] "r"(s), [T] "r"(T), [sm1] "r"(sm1)
+      : "cc");
+  *su = RunSteps{lu_, ddu};
+  *sv = RunSteps{lv_, ddv};
+#else
   *su = last_dd(du, lu, du2 & int32_t(two), s, T);
   *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+#endif
 }
 SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
   const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
