@@ -936,12 +936,12 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   // (two 2-lane and one scalar, back to back, nothing else on the divide pipe's turn),
   // then the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max] (persp_fast's
   // argument). Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice).
-  register float64x2_t zA __asm__("v26");
-  register float64x2_t zB __asm__("v27");
-  register float64x2_t zC __asm__("v4");
-  register int32x4_t S01 __asm__("v5");
-  register int32x4_t S23 __asm__("v6");
-  register int32x4_t S44 __asm__("v7");
+  register float64x2_t rzA __asm__("v26");
+  register float64x2_t rzB __asm__("v27");
+  register float64x2_t rzC __asm__("v4");
+  register int32x4_t rS01 __asm__("v5");
+  register int32x4_t rS23 __asm__("v6");
+  register int32x4_t rS44 __asm__("v7");
   uint64_t t0, t5, t6, t7;
   const float64x2_t kMin = vdupq_n_f64(kMinZi);
   __asm__(
@@ -1014,134 +1014,147 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       "smin v5.4s, v5.4s, v31.4s\n\t"
       "smin v6.4s, v6.4s, v31.4s\n\t"
       "smin v7.4s, v7.4s, v31.4s"
-      : "=&w"(zA), "=&w"(zB), "=&w"(zC), "=&w"(S01), "=&w"(S23), "=&w"(S44), [t0] "=&r"(t0), [t5] "=&r"(t5),
+      : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
         [t6] "=&r"(t6), [t7] "=&r"(t7)
       : [p] "r"(&p), [n] "r"(n), [kmin] "w"(kMin), "m"(p)
       : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
         "v28", "v29", "v30", "v31");
+  const float64x2_t zA = rzA, zB = rzB, zC = rzC;
+  const int32x4_t S01 = rS01, S23 = rS23, S44 = rS44;
   // Sums of neighbouring samples' z: [z_0 + z_1, z_1 + z_2], [z_2 + z_3, z_3 + z_4] (the
   // curve factors' and the last run's z_k + z_{k+1}).
   const float64x2_t zs01 = vaddq_f64(zA, vextq_f64(zA, zB, 1)), zs23 = vaddq_f64(zB, vextq_f64(zB, zC, 1));
   using L0 = std::integral_constant<int, 0>;
   using L1 = std::integral_constant<int, 1>;
   const int32x4_t kZero = vdupq_n_s32(0);
-  // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
-  const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
-  const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
-  int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
-  if constexpr (kCurve) {
-    // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
-    // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
-    const double zck = zc * -0.0625;
-    const float64x2_t c01 = vmulq_n_f64(zs01, zck);
-    const float64x2_t c23 = vmulq_n_f64(zs23, zck);
-    auto ddf = [](int32x2_t d, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
-      return vcvtq_s64_f64(vmulq_laneq_f64(vcvtq_f64_s64(vmovl_s32(d)), c, decltype(lane)::value));
-    };
-    const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vget_low_s32(D01), c01, L0{})),
-                                          ddf(vget_high_s32(D01), c01, L1{}));
-    const int32x4_t i23 = vcombine_s32(vqmovn_s64(ddf(vget_low_s32(D23), c23, L0{})), vdup_n_s32(0));
-    // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
-    // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
-    // 120 2^25 > 2^31 > pd).
-    auto steps_dd = [](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
-      const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
-      const uint32x4_t pd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(delta), s), s);
-      const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
-      const uint32x4_t sd = vreinterpretq_u32_s32(vshrq_n_s32(dd, 31));
-      const uint32x4_t add = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), sd), sd);
-      const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
-      const uint32x4_t q = vshrq_n_u32(vmlsq_n_u32(pd, pdd, 120), 4), lin = vshrq_n_u32(pd, 4);
-      const uint32x4_t pick = vbslq_u32(accept, q, lin);
-      *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
-      *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
-    };
-    steps_dd(D01, i01, &d01, &dd01);
-    steps_dd(D23, i23, &d23, &dd23);
-  } else {
-    // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
-    auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
-      return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
-                                                           vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
-    };
-    d01 = div16(D01), d23 = div16(D23);
-  }
-  // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u) and steps
-  // (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64), for runs 0, 1 and 2, 3.
-  auto packs = [](int32x4_t x01, int32x4_t x23, int64x2_t* lo, int64x2_t* hi) SB_LAMBDA_INLINE {
-    const int32x4_t U = vuzp1q_s32(x01, x23), V = vuzp2q_s32(x01, x23);
-    *lo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
-    *hi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
-  };
-  int64x2_t dlo, dhi, ddlo, ddhi;
-  packs(d01, d23, &dlo, &dhi);
-  packs(dd01, dd23, &ddlo, &ddhi);
-  const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
-  int32_t sm[8];
-  double zm[4];
-  vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23);
-  vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
-  const int k = runs - 1;
-  const int32_t au = sm[2 * k], av = sm[2 * k + 1];
-  RunSteps lu, lv;
-  // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as a
-  // vector and as integers (no moves between the register files).
-  int32_t dm[8];
-  vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
-  last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * zm[k], &lu, &lv);
-  auto full = [&](auto jc) SB_LAMBDA_INLINE {
-    constexpr int j = decltype(jc)::value, l = j & 1;
-    const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
-    const uint64_t d0 = uint64_t(vgetq_lane_s64(j < 2 ? dlo : dhi, l));
-    const uint64_t dd = uint64_t(vgetq_lane_s64(j < 2 ? ddlo : ddhi, l));
-    Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
-    run.draw(dest + 16 * j, texels, w);
-  };
-  // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
-  auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
-                  uint64_t b_dd) SB_LAMBDA_INLINE {
-    uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
-    uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+  // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
+  // picked without an index.
+  auto rest = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
+    const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
+    const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
+    int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
     if constexpr (kCurve) {
-      lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+      // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
+      // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
+      const double zck = zc * -0.0625;
+      const float64x2_t c01 = vmulq_n_f64(zs01, zck);
+      const float64x2_t c23 = vmulq_n_f64(zs23, zck);
+      auto ddf = [](int32x2_t d, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
+        return vcvtq_s64_f64(vmulq_laneq_f64(vcvtq_f64_s64(vmovl_s32(d)), c, decltype(lane)::value));
+      };
+      const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vget_low_s32(D01), c01, L0{})),
+                                            ddf(vget_high_s32(D01), c01, L1{}));
+      const int32x4_t i23 = vcombine_s32(vqmovn_s64(ddf(vget_low_s32(D23), c23, L0{})), vdup_n_s32(0));
+      // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
+      // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
+      // 120 2^25 > 2^31 > pd).
+      auto steps_dd = [](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
+        const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
+        const uint32x4_t pd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(delta), s), s);
+        const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
+        const uint32x4_t sd = vreinterpretq_u32_s32(vshrq_n_s32(dd, 31));
+        const uint32x4_t add = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), sd), sd);
+        const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
+        const uint32x4_t q = vshrq_n_u32(vmlsq_n_u32(pd, pdd, 120), 4), lin = vshrq_n_u32(pd, 4);
+        const uint32x4_t pick = vbslq_u32(accept, q, lin);
+        *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
+        *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
+      };
+      steps_dd(D01, i01, &d01, &dd01);
+      steps_dd(D23, i23, &d23, &dd23);
     } else {
-      lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+      // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
+      auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
+        return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
+                                                             vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
+      };
+      d01 = div16(D01), d23 = div16(D23);
     }
-    auto none = [](auto) SB_LAMBDA_INLINE {};
-    const uint64_t w64 = uint64_t(width);
-    auto slot = [&](auto j) SB_LAMBDA_INLINE {
-      lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
-                                           d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
+    // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u) and steps
+    // (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64), for runs 0, 1 and 2, 3.
+    auto packs = [](int32x4_t x01, int32x4_t x23, int64x2_t* lo, int64x2_t* hi) SB_LAMBDA_INLINE {
+      const int32x4_t U = vuzp1q_s32(x01, x23), V = vuzp2q_s32(x01, x23);
+      *lo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
+      *hi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
     };
-    using std::integral_constant;
-    slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
-    slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
-    slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
-    slot(integral_constant<int, 9>{});
-  };
-  auto packed = [](const RunSteps& su, const RunSteps& sv) {
-    return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
-  };
-  const uint64_t luv = (uint64_t(uint32_t(av)) << 32) + uint32_t(au);
-  const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
-  if (k == 1) {
-    full(std::integral_constant<int, 0>{});
-  } else {
-    pass(dest, vgetq_lane_u64(st01, 0), uint64_t(vgetq_lane_s64(dlo, 0)), uint64_t(vgetq_lane_s64(ddlo, 0)),
-         vgetq_lane_u64(st01, 1), uint64_t(vgetq_lane_s64(dlo, 1)), uint64_t(vgetq_lane_s64(ddlo, 1)));
-    if (k == 3 && last == 16) {
-      pass(dest + 32, vgetq_lane_u64(st23, 0), uint64_t(vgetq_lane_s64(dhi, 0)), uint64_t(vgetq_lane_s64(ddhi, 0)),
-           luv, ld, ldd);
-      return;
+    int64x2_t dlo, dhi, ddlo, ddhi;
+    packs(d01, d23, &dlo, &dhi);
+    packs(dd01, dd23, &ddlo, &ddhi);
+    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+    int32_t sm[8];
+    double zm[4];
+    vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23);
+    vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
+    const int32_t au = sm[2 * k], av = sm[2 * k + 1];
+    RunSteps lu, lv;
+    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as a
+    // vector and as integers (no moves between the register files).
+    int32_t dm[8];
+    vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
+    last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * zm[k], &lu, &lv);
+    auto full = [&](auto jc) SB_LAMBDA_INLINE {
+      constexpr int j = decltype(jc)::value, l = j & 1;
+      const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
+      const uint64_t d0 = uint64_t(vgetq_lane_s64(j < 2 ? dlo : dhi, l));
+      const uint64_t dd = uint64_t(vgetq_lane_s64(j < 2 ? ddlo : ddhi, l));
+      Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
+      run.draw(dest + 16 * j, texels, w);
+    };
+    // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
+                    uint64_t b_dd) SB_LAMBDA_INLINE {
+      uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
+      uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+      if constexpr (kCurve) {
+        lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+      } else {
+        lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+      }
+      auto none = [](auto) SB_LAMBDA_INLINE {};
+      const uint64_t w64 = uint64_t(width);
+      auto slot = [&](auto j) SB_LAMBDA_INLINE {
+        lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
+                                             d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
+      };
+      using std::integral_constant;
+      slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
+      slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
+      slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
+      slot(integral_constant<int, 9>{});
+    };
+    auto packed = [](const RunSteps& su, const RunSteps& sv) {
+      return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
+    };
+    const uint64_t luv = (uint64_t(uint32_t(av)) << 32) + uint32_t(au);
+    const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
+    if (k == 1) {
+      full(std::integral_constant<int, 0>{});
+    } else {
+      pass(dest, vgetq_lane_u64(st01, 0), uint64_t(vgetq_lane_s64(dlo, 0)), uint64_t(vgetq_lane_s64(ddlo, 0)),
+           vgetq_lane_u64(st01, 1), uint64_t(vgetq_lane_s64(dlo, 1)), uint64_t(vgetq_lane_s64(ddlo, 1)));
+      if (k == 3 && last == 16) {
+        pass(dest + 32, vgetq_lane_u64(st23, 0), uint64_t(vgetq_lane_s64(dhi, 0)), uint64_t(vgetq_lane_s64(ddhi, 0)),
+             luv, ld, ldd);
+        return;
+      }
+      if (k > 2) full(std::integral_constant<int, 2>{});
     }
-    if (k > 2) full(std::integral_constant<int, 2>{});
-  }
-  dest += 16 * k;
-  if (last == 16) {
-    draw16<kCurve>(dest, texels, w, au, av, lu, lv);
+    dest += 16 * k;
+    if (last == 16) {
+      draw16<kCurve>(dest, texels, w, au, av, lu, lv);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+               uint32_t(lv.dd));
+    }
+  };
+  if (runs == 2) {
+    rest(std::integral_constant<int, 1>{});
+  } else if (runs == 3) {
+    rest(std::integral_constant<int, 2>{});
   } else {
-    draw_run(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
-             uint32_t(lv.dd));
+    rest(std::integral_constant<int, 3>{});
   }
 }
 #else
