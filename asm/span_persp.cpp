@@ -943,13 +943,12 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   register int32x4_t rS23 __asm__("v6");
   register int32x4_t rS44 __asm__("v7");
   uint64_t t0, t5, t6, t7;
-  const float64x2_t kMin = vdupq_n_f64(kMinZi);
-  __asm__(
+  __asm__ volatile(
+      "fmov d1, #16.0\n\t"
       "ldr d0, [%[p], #48]\n\t"
       "sub %w[t5], %w[n], #1\n\t"
       "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
       "sub %w[t6], %w[n], #17\n\t"
-      "fmov d1, #16.0\n\t"
       "mov %w[t7], #32\n\t"
       "cmp %w[t5], #32\n\t"
       "add %[t0], %[p], #16\n\t"
@@ -957,6 +956,7 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       "csel %w[t5], %w[t5], %w[t7], lt\n\t"
       "cmp %w[t6], #32\n\t"
       "ld1r {v26.2d}, [%[p]]\n\t"
+      "ld1r {v31.2d}, [%[km]]\n\t"
       "csel %w[t6], %w[t6], %w[t7], lt\n\t"
       "scvtf d4, %w[t5]\n\t"
       "sub %w[t7], %w[n], #33\n\t"
@@ -978,13 +978,13 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       "fmadd d28, d17, d3, d16\n\t"
       "fmov v1.2d, #1.0\n\t"
       "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
-      "fmaxnm v26.2d, v26.2d, %[kmin].2d\n\t"
+      "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
       "fmla v22.2d, v23.2d, v7.d[0]\n\t"
       "fmla v24.2d, v25.2d, v7.d[1]\n\t"
       "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
       "fdiv v26.2d, v1.2d, v26.2d\n\t"
-      "fmaxnm v27.2d, v27.2d, %[kmin].2d\n\t"
-      "fmaxnm d28, d28, %d[kmin]\n\t"
+      "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+      "fmaxnm d28, d28, d31\n\t"
       "add %[t0], %[p], #56\n\t"
       "fdiv v27.2d, v1.2d, v27.2d\n\t"
       "fmla v29.2d, v30.2d, v3.d[0]\n\t"
@@ -1016,7 +1016,7 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       "smin v7.4s, v7.4s, v31.4s"
       : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
         [t6] "=&r"(t6), [t7] "=&r"(t7)
-      : [p] "r"(&p), [n] "r"(n), [kmin] "w"(kMin), "m"(p)
+      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p)
       : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
         "v28", "v29", "v30", "v31");
   const float64x2_t zA = rzA, zB = rzB, zC = rzC;
