@@ -929,13 +929,16 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const double zc = p.second_order ? p.dzi : 0.0;
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
-  // Hand-ordered (each operation as the vector code's lane operation, the same bits):
+  // One asm block, each operation the vector code's lane operation (the same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
   // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the [u, v]
-  // products uvrow + uvx pos (no divide needed) before the divides 1 / max(zi, kMinZi)
-  // (two 2-lane and one scalar, back to back, nothing else on the divide pipe's turn),
-  // then the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max] (persp_fast's
-  // argument). Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice).
+  // products uvrow + uvx pos before the divides 1 / max(zi, kMinZi) (two 2-lane and one
+  // scalar, back to back), then the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max]
+  // (persp_fast's argument). Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44
+  // (sample 4 twice). Ordered for the in-order A53 (a consumer after its producer's latency;
+  // its model also completes in order, so the first divide's inputs come first); the
+  // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
+  // latency 3, an element insert 8).
   register float64x2_t rzA __asm__("v26");
   register float64x2_t rzB __asm__("v27");
   register float64x2_t rzC __asm__("v4");
@@ -1016,7 +1019,7 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       "smin v7.4s, v7.4s, v31.4s"
       : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
         [t6] "=&r"(t6), [t7] "=&r"(t7)
-      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p)
+      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
       : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
         "v28", "v29", "v30", "v31");
   const float64x2_t zA = rzA, zB = rzB, zC = rzC;
@@ -1028,7 +1031,9 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   using L1 = std::integral_constant<int, 1>;
   const int32x4_t kZero = vdupq_n_s32(0);
   // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
-  // picked without an index.
+  // picked without an index. The branch also ends the code block holding the asm block
+  // soon after it (under 128 micro-ops: the A72 model's reorder buffer then holds the next
+  // span's positions while the divides run).
   auto rest = [&](auto kc) SB_LAMBDA_INLINE {
     constexpr int k = decltype(kc)::value;
     // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
