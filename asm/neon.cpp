@@ -109,6 +109,7 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
       const uint8x16_t p0 = vcombine_u8(vtbl2_u8(t, vget_low_u8(period[0])), vtbl2_u8(t, vget_high_u8(period[0])));
 #endif
       vst1q_u8(dst, p0);
+      if (n <= 16) return;
 #if defined(__aarch64__)
       vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
 #else
@@ -496,7 +497,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8_t* run[kMaxRuns + 3];     // texel run of each row (cyclic, see below; 3 read past)
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
-  auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  // Widths dividing 16: every 16 bytes of a run are its first 16, which every group reads (gs:
+  // a group's offset step in a run); only they are laid out, none when the row is they.
+  const bool p16 = tw <= 16 && (tw & (tw - 1)) == 0;
+  const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16;
+  auto in_place = [&](int t) {
+    return p16 ? c0 == 0 && tw == 16 : c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end;
+  };
   // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
 #if defined(__aarch64__)
@@ -528,7 +535,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows)
     for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
+      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
                                                      buf + t * stride);
   int strip_bands = bh;
   if (!all_rows) {
@@ -593,7 +600,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       int t = (t0 + by0 * B) % th;
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
                                 buf + r * stride);
         if (++t == th) t = 0;
       }
@@ -759,8 +766,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
         const uint8_t** const srcs = sbuf + 16;
-        {
-          const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
+        if (g == 0 || gs) {  // (the same for every group when gs = 0)
+          const uint32x4_t off = vdupq_n_u32(uint32_t(gs * g));
           const uint32_t* r = reinterpret_cast<const uint32_t*>(strip_rows);
           const uint32_t* const r_end = r + rows;
           uint32_t* o = reinterpret_cast<uint32_t*>(srcs - 1);
@@ -886,7 +893,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       // (below); the last partial group of a row runs this C++ version.
       uint64_t P[8];
       auto indices = [&](const uint8_t* src) {  // P = the indices of the row at src
-        const uint8x16_t t = vld1q_u8(src + 16 * g);
+        const uint8x16_t t = vld1q_u8(src + gs * g);
 #pragma GCC unroll 4
         for (int j = 0; j < 4; ++j) {
           const uint64x2_t v =
@@ -1254,7 +1261,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "orr x19, x19, x21, lsl #32\n\t" \
     "orr x23, x23, x25, lsl #32\n\t" \
     "b.ne 1b\n\t"
-        const int64_t goff = 16 * g, wstride = width;
+        const int64_t goff = gs * g, wstride = width;
         const uint8_t* const* rp = lin;
         if constexpr (LB >= 3) {
           // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
@@ -1406,7 +1413,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       alignas(16) uint32_t ib[2][16];
       int cur = 0;
       auto indices = [&](const uint8_t* src) {
-        const uint8x16_t t = vld1q_u8(src + 16 * g);
+        const uint8x16_t t = vld1q_u8(src + gs * g);
         const uint16x8_t lo = vmovl_u8(vget_low_u8(t)), hi = vmovl_u8(vget_high_u8(t));
         const uint32x4_t t32[4] = {vmovl_u16(vget_low_u16(lo)), vmovl_u16(vget_high_u16(lo)),
                                    vmovl_u16(vget_low_u16(hi)), vmovl_u16(vget_high_u16(hi))};
