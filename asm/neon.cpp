@@ -241,20 +241,6 @@ __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_
   }
 }
 
-// Mip 2: 16 bytes a band, e = the grid rows' differences v_0..3, e1 = v_1..4: the strip's
-// assembly weighs them (quarter j: w0 e[j] + w1 e1[j], w0 and w1 the same for every quarter).
-inline void band_e2(const uint16_t* g, int gw, int n, uint32x4_t* D) {
-  uint16x4_t p = vld1_u16(g), p1 = vld1_u16(g + 1);
-  uint16_t* o = reinterpret_cast<uint16_t*>(D);
-  for (int b = 0; b < n; ++b, o += 8) {
-    g += gw;
-    const uint16x4_t q = vld1_u16(g), q1 = vld1_u16(g + 1);
-    vst1q_u16(o, vcombine_u16(vsub_u16(q, p), vsub_u16(q1, p1)));
-    p = q;
-    p1 = q1;
-  }
-}
-
 // band_deltas' bands one at a time (the rest after its two-band passes).
 template <int LB>
 __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const uint16_t* bxp,
@@ -533,10 +519,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
-  if (all_rows)
-    for (int t = 0; t < th; ++t)
+  if (all_rows) {
+    int t = 0;
+    for (; t < th; ++t)
       run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
                                                      buf + t * stride);
+  }
   int strip_bands = bh;
   if (!all_rows) {
     const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
@@ -558,7 +546,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
-  alignas(16) uint16_t w2[8];  // mip 2: the row-step weights w0 (B - fx), w1 (fx) of a quarter
+  // mip 2: the row-step weights w0 (B - fx), w1 (fx) of a quarter, then the group's first
+  // band in etab (bytes 16-19)
+  alignas(16) uint16_t w2[12];
   for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
 #endif
 #if defined(__aarch64__)
@@ -588,6 +578,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8_t* strip_rows[kStripBands * B + 4];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
   alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
+  // Mip 2: row b (at b width bytes) the grid's band b differences e, entries 0..4 F of the F
+  // full groups; group g weighs entries 4g..4g + 4 of it (16 bytes read at 8g: inside the row).
+  constexpr int kEBytes = LB == 2 ? 4096 : 16;
+  alignas(16) uint8_t etab[kEBytes];
+  if (LB == 2 && strip_bands > kEBytes / width) strip_bands = kEBytes / width;  // (width <= 1024)
 #endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
@@ -632,6 +627,37 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         for (; i < m; ++i) strip_rows[y + i] = run[k + i];
         y += m;
         k = 0;
+      }
+    }
+    if (LB == 2 && width >= 16) {  // etab (see there): a column of eight entries (F = 1: four) at a time
+      const int ne = 4 * (width >> 4) + 1;
+      for (int i = 0;; i += 8) {  // the last column ends at entry 4 F
+        const int j = ne < 8 ? i : i + 8 < ne ? i : ne - 8;
+        const uint16_t* r = grid + by0 * grid_width + j;
+        uint8_t* o = etab + 2 * j;
+        if (ne < 8) {
+          uint16x4_t p = vld1_u16(r);
+          for (int b = 0; b < nb; ++b, o += width) {
+            r += grid_width;
+            const uint16x4_t q = vld1_u16(r);
+            vst1_u16(reinterpret_cast<uint16_t*>(o), vsub_u16(q, p));
+            p = q;
+          }
+          if (i == 1) break;
+          i = 1 - 8;
+          continue;
+        }
+        uint16x8_t p = vld1q_u16(r);
+        const uint8_t* const o_end = o + nb * width;
+        for (; o + width < o_end; o += 2 * width) {  // two bands a step (no register moves)
+          const uint16x8_t q = vld1q_u16(r + grid_width);
+          r += 2 * grid_width;
+          vst1q_u16(reinterpret_cast<uint16_t*>(o), vsubq_u16(q, p));
+          p = vld1q_u16(r);
+          vst1q_u16(reinterpret_cast<uint16_t*>(o + width), vsubq_u16(p, q));
+        }
+        if (o != o_end) vst1q_u16(reinterpret_cast<uint16_t*>(o), vsubq_u16(vld1q_u16(r + grid_width), p));
+        if (j != i) break;
       }
     }
 #endif
@@ -758,10 +784,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         first_numerators<LB>(r0, w[0], w[1], blk);
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        if constexpr (LB == 2)
-          band_e2(r0, grid_width, nb, blk + 4);
-        else
+        if constexpr (LB == 2) {
+          const uint8_t* const ep = etab + 8 * g;
+          std::memcpy(w2 + 8, &ep, sizeof ep);
+        } else {
           band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
+        }
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
@@ -822,35 +850,38 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
         // free between rows): quarter j is w0 e[j] + w1 e1[j].
 #define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+        // (mip 2: dp moves from the numerators to the group's etab band, then a row of etab a band)
+#define SB_EP2 "ldr %[dp], [%[wp], #16]\n\t"
 #define SB_DELTA2 \
-  "vld1.16 {d0-d1}, [%[dp]:128]!\n\t" \
+  "vld1.8 {d0-d1}, [%[dp]], %[st]\n\t" \
   "vld1.16 {d2-d3}, [%[wp]:128]\n\t" \
   "vmull.s16 q8, d2, d0[0]\n\t" \
   "vmull.s16 q9, d2, d0[1]\n\t" \
   "vmull.s16 q10, d2, d0[2]\n\t" \
   "vmull.s16 q11, d2, d0[3]\n\t" \
-  "vmlal.s16 q8, d3, d1[0]\n\t" \
-  "vmlal.s16 q9, d3, d1[1]\n\t" \
-  "vmlal.s16 q10, d3, d1[2]\n\t" \
-  "vmlal.s16 q11, d3, d1[3]\n\t"
+  "vmlal.s16 q8, d3, d0[1]\n\t" \
+  "vmlal.s16 q9, d3, d0[2]\n\t" \
+  "vmlal.s16 q10, d3, d0[3]\n\t" \
+  "vmlal.s16 q11, d3, d1[0]\n\t"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
             asm volatile(SB_STRIP7(SB_ROW7A, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
           else
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
             asm volatile(SB_STRIP7(SB_ROW7, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
-            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
           else
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
 #undef SB_LD_DELTA
 #undef SB_DELTA2
+#undef SB_EP2
 #undef SB_BAND_TEST
 #undef SB_STRIP7
 #undef SB_STRIP7_OPS_
