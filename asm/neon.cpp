@@ -160,6 +160,30 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
+// Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside:
+// run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.
+// Returns the rows done.
+__attribute__((noinline)) int tile_rows16(const uint8_t* texels, int tw, int th, const uint8_t* tex_end,
+                                          uint8x16_t period, uint8_t* buf, const uint8_t** run) {
+#if !defined(__aarch64__)
+  const uint8x8_t i0 = vget_low_u8(period), i1 = vget_high_u8(period);
+#endif
+  int t = 0;
+  for (const uint8_t* row = texels; t < th && row + 16 <= tex_end; ++t, row += tw) {
+    const uint8x16_t v = vld1q_u8(row);
+#if defined(__aarch64__)
+    vst1q_u8(buf + 16 * t, vqtbl1q_u8(v, period));
+#else
+    uint8x8x2_t tb;
+    tb.val[0] = vget_low_u8(v);
+    tb.val[1] = vget_high_u8(v);
+    vst1q_u8(buf + 16 * t, vcombine_u8(vtbl2_u8(tb, i0), vtbl2_u8(tb, i1)));
+#endif
+    run[t] = buf + 16 * t;
+  }
+  return t;
+}
+
 #if !defined(__aarch64__)
 // kMod[t][x] = x mod t (t <= 16, x < 48): the narrow textures' periods.
 struct ModTable {
@@ -520,7 +544,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows) {
-    int t = 0;
+    // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
+    int t = p16 && !in_place(0) ? tile_rows16(texels, tw, th, tex_end, period[0], buf, run) : 0;
     for (; t < th; ++t)
       run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
                                                      buf + t * stride);
@@ -577,11 +602,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows[kStripBands * B + 4];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
-  alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
-  // Mip 2: row b (at b width bytes) the grid's band b differences e, entries 0..4 F of the F
-  // full groups; group g weighs entries 4g..4g + 4 of it (16 bytes read at 8g: inside the row).
-  constexpr int kEBytes = LB == 2 ? 4096 : 16;
-  alignas(16) uint8_t etab[kEBytes];
+  // Mip 2: blk holds the numerators, then etab: row b (at b width bytes) the grid's band b
+  // differences e, entries 0..4 F of the F full groups; group g weighs entries 4g..4g + 4 of
+  // it (16 bytes read at 8g: inside the row). (A bigger frame leaves GCC no registers for the
+  // strip's assembly.)
+  constexpr int kEBytes = 4096;
+  alignas(16) uint32x4_t blk[LB == 2 ? 4 + kEBytes / 16 : 8 + 4 * kStripBands];
+  uint8_t* const etab = reinterpret_cast<uint8_t*>(blk + 4);
   if (LB == 2 && strip_bands > kEBytes / width) strip_bands = kEBytes / width;  // (width <= 1024)
 #endif
 
