@@ -163,7 +163,7 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
 // Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside:
 // run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.
 // Returns the rows done.
-__attribute__((noinline)) int tile_rows16(const uint8_t* texels, int tw, int th, const uint8_t* tex_end,
+SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, const uint8_t* tex_end,
                                           uint8x16_t period, uint8_t* buf, const uint8_t** run) {
 #if !defined(__aarch64__)
   const uint8x8_t i0 = vget_low_u8(period), i1 = vget_high_u8(period);
@@ -502,7 +502,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
   const int bw = width / B, bh = height / B;
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
-  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  // (no divide for power-of-two sizes: Cortex-A9 has none, a library call)
+  auto wrap2 = [](int i, int n) { return (n & (n - 1)) == 0 ? i & (n - 1) : wrap(i, n); };
+  const int c0 = wrap2(soff, tw), t0 = wrap2(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
   const uint8_t* run[kMaxRuns + 3];     // texel run of each row (cyclic, see below; 3 read past)
   const uint8_t* const tex_end = texels + tw * th;
@@ -571,10 +573,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
-  // mip 2: the row-step weights w0 (B - fx), w1 (fx) of a quarter, then the group's first
-  // band in etab (bytes 16-19)
-  alignas(16) uint16_t w2[12];
-  for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
 #endif
 #if defined(__aarch64__)
   // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
@@ -602,24 +600,32 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows[kStripBands * B + 4];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
-  // Mip 2: blk holds the numerators, then etab: row b (at b width bytes) the grid's band b
+  // Mip 2: blk holds the numerators, the row-step weights w0 (B - fx), w1 (fx) of a quarter,
+  // the group's first band in etab, then etab: row b (at b width bytes) the grid's band b
   // differences e, entries 0..4 F of the F full groups; group g weighs entries 4g..4g + 4 of
   // it (16 bytes read at 8g: inside the row). (A bigger frame leaves GCC no registers for the
   // strip's assembly.)
   constexpr int kEBytes = 4096;
-  alignas(16) uint32x4_t blk[LB == 2 ? 4 + kEBytes / 16 : 8 + 4 * kStripBands];
-  uint8_t* const etab = reinterpret_cast<uint8_t*>(blk + 4);
-  if (LB == 2 && strip_bands > kEBytes / width) strip_bands = kEBytes / width;  // (width <= 1024)
+  alignas(16) uint32x4_t blk[LB == 2 ? 6 + kEBytes / 16 : 8 + 4 * kStripBands];
+  uint8_t* const etab = reinterpret_cast<uint8_t*>(blk + 6);
+  if constexpr (LB == 2) {
+    uint16_t w2[8];
+    for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
+    std::memcpy(blk + 4, w2, sizeof w2);
+  }
+  if (LB == 2 && strip_bands * width > kEBytes) strip_bands = kEBytes / width;  // (width <= 1024)
 #endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
     int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
     if (all_rows) {
-      first = (t0 + by0 * B) % th;
+      first = t0 + by0 * B;
+      if (first >= th) first = wrap2(first, th);
     } else {
       count = nb * B;
-      int t = (t0 + by0 * B) % th;
+      int t = t0 + by0 * B;
+      if (t >= th) t = wrap2(t, th);
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
                              : (tile_row(buf + r * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
@@ -813,7 +819,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
         if constexpr (LB == 2) {
           const uint8_t* const ep = etab + 8 * g;
-          std::memcpy(w2 + 8, &ep, sizeof ep);
+          std::memcpy(blk + 5, &ep, sizeof ep);
         } else {
           band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
         }
@@ -877,11 +883,16 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
         // free between rows): quarter j is w0 e[j] + w1 e1[j].
 #define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-        // (mip 2: dp moves from the numerators to the group's etab band, then a row of etab a band)
-#define SB_EP2 "ldr %[dp], [%[wp], #16]\n\t"
+        // (mip 2: after the numerators dp reads the weights, pushed on the stack for the loop as
+        // no register is left, and the group's first band in etab; then a row of etab a band)
+#define SB_EP2 \
+  "vld1.16 {d2-d3}, [%[dp]:128]\n\t" \
+  "ldr %[dp], [%[dp], #16]\n\t" \
+  "sub sp, sp, #16\n\t" \
+  "vst1.16 {d2-d3}, [sp]\n\t"
 #define SB_DELTA2 \
   "vld1.8 {d0-d1}, [%[dp]], %[st]\n\t" \
-  "vld1.16 {d2-d3}, [%[wp]:128]\n\t" \
+  "vld1.16 {d2-d3}, [sp]\n\t" \
   "vmull.s16 q8, d2, d0[0]\n\t" \
   "vmull.s16 q9, d2, d0[1]\n\t" \
   "vmull.s16 q10, d2, d0[2]\n\t" \
@@ -895,14 +906,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           if constexpr (kPassIsBand)
             asm volatile(SB_STRIP7(SB_ROW7A, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
             asm volatile(SB_STRIP7(SB_ROW7, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
-            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
