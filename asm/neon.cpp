@@ -512,10 +512,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // Widths dividing 16: every 16 bytes of a run are its first 16, which every group reads (gs:
   // a group's offset step in a run); only they are laid out, none when the row is they.
   const bool p16 = tw <= 16 && (tw & (tw - 1)) == 0;
-  const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16;
-  auto in_place = [&](int t) {
-    return p16 ? c0 == 0 && tw == 16 : c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end;
-  };
+  const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16, wlim = p16 ? 16 : width;
+  auto in_place = [&](int t) { return c0 + wlim <= tw && texels + t * tw + c0 + tile_n <= tex_end; };
   // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
 #if defined(__aarch64__)
@@ -546,11 +544,19 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows) {
-    // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
-    int t = p16 && !in_place(0) ? tile_rows16(texels, tw, th, tex_end, period[0], buf, run) : 0;
-    for (; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
-                                                     buf + t * stride);
+    if (p16) {  // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
+      int t = in_place(0) ? 0 : tile_rows16(texels, tw, th, tex_end, period[0], buf, run);
+      for (; t < th; ++t)
+        run[t] = in_place(t) ? texels + t * tw + c0
+                             : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
+                                buf + t * stride);
+    } else {
+      for (int t = 0; t < th; ++t)
+        run[t] = c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end
+                     ? texels + t * tw + c0
+                     : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
+                        buf + t * stride);
+    }
   }
   int strip_bands = bh;
   if (!all_rows) {
