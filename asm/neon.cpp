@@ -163,25 +163,28 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
 // Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside:
 // run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.
 // Returns the rows done.
-SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, const uint8_t* tex_end,
-                                          uint8x16_t period, uint8_t* buf, const uint8_t** run) {
+SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t period, uint8_t* buf,
+                               const uint8_t** run) {
+  int n = th + 1 - (16 >> __builtin_ctz(unsigned(tw)));  // rows t: t tw + 16 <= th tw
+  if (n < 0) n = 0;
 #if !defined(__aarch64__)
   const uint8x8_t i0 = vget_low_u8(period), i1 = vget_high_u8(period);
 #endif
-  int t = 0;
-  for (const uint8_t* row = texels; t < th && row + 16 <= tex_end; ++t, row += tw) {
+  const uint8_t* row = texels;
+  uint8_t* o = buf;
+  for (const uint8_t** r = run; r != run + n; ++r, row += tw, o += 16) {
     const uint8x16_t v = vld1q_u8(row);
 #if defined(__aarch64__)
-    vst1q_u8(buf + 16 * t, vqtbl1q_u8(v, period));
+    vst1q_u8(o, vqtbl1q_u8(v, period));
 #else
     uint8x8x2_t tb;
     tb.val[0] = vget_low_u8(v);
     tb.val[1] = vget_high_u8(v);
-    vst1q_u8(buf + 16 * t, vcombine_u8(vtbl2_u8(tb, i0), vtbl2_u8(tb, i1)));
+    vst1q_u8(o, vcombine_u8(vtbl2_u8(tb, i0), vtbl2_u8(tb, i1)));
 #endif
-    run[t] = buf + 16 * t;
+    *r = o;
   }
-  return t;
+  return n;
 }
 
 #if !defined(__aarch64__)
@@ -545,7 +548,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows) {
     if (p16) {  // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
-      int t = in_place(0) ? 0 : tile_rows16(texels, tw, th, tex_end, period[0], buf, run);
+      int t = in_place(0) ? 0 : tile_rows16(texels, tw, th, period[0], buf, run);
       for (; t < th; ++t)
         run[t] = in_place(t) ? texels + t * tw + c0
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
