@@ -285,14 +285,14 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
-    if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
+    if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1 (32 bytes a band)
       const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
       const int16x8_t c = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw + 1), vld1q_u16(g + 1)));
-      const int16x8x2_t z = vzipq_s16(vshlq_n_s16(a, 1), vaddq_s16(a, c));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 0), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[0]), 6)));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 1), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[0]), 6)));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 2), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[1]), 6)));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 3), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[1]), 6)));
+      int16x8x2_t z;
+      z.val[0] = vaddq_s16(a, a);
+      z.val[1] = vaddq_s16(a, c);
+      vst2q_s16(reinterpret_cast<int16_t*>(D), z);
+      D -= 2;  // (the loop adds 4)
     } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
       const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
       const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
@@ -324,7 +324,8 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
 template <int LB>
 __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const uint16_t* bxp,
                                            const uint16_t* fxp, uint32x4_t* D) {
-  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: v_j << 7, (v_j + v_j+1) << 6, stored interleaved (vst2)
+  if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1, stored interleaved (vst2;
+                            // 32 bytes a band, widened << 6 by the strip's assembly)
     if (n >= 2) {
       const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
       int k = n >> 1;
@@ -340,20 +341,12 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
           "vsub.i16 q15, q10, q9\n\t"
           "vsub.i16 q11, q12, q11\n\t"
           "vsub.i16 q12, q13, q12\n\t"
-          "vadd.i16 q11, q11, q14\n\t"
-          "vadd.i16 q12, q12, q15\n\t"
-          "vshll.s16 q0, d28, #7\n\t"
-          "vshll.s16 q1, d22, #6\n\t"
-          "vshll.s16 q2, d29, #7\n\t"
-          "vshll.s16 q3, d23, #6\n\t"
-          "vshll.s16 q8, d30, #7\n\t"
-          "vshll.s16 q9, d24, #6\n\t"
-          "vshll.s16 q10, d31, #7\n\t"
-          "vshll.s16 q11, d25, #6\n\t"
-          "vst2.32 {d0-d3}, [%[D]:128]!\n\t"
-          "vst2.32 {d4-d7}, [%[D]:128]!\n\t"
-          "vst2.32 {d16-d19}, [%[D]:128]!\n\t"
-          "vst2.32 {d20-d23}, [%[D]:128]!\n\t"
+          "vadd.i16 q0, q14, q14\n\t"
+          "vadd.i16 q1, q11, q14\n\t"
+          "vadd.i16 q2, q15, q15\n\t"
+          "vadd.i16 q3, q12, q15\n\t"
+          "vst2.16 {d0-d3}, [%[D]:128]!\n\t"
+          "vst2.16 {d4-d7}, [%[D]:128]!\n\t"
           "subs %[k], %[k], #1\n\t"
           "bne 1b\n\t"
           : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
@@ -892,6 +885,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
         // free between rows): quarter j is w0 e[j] + w1 e1[j].
 #define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+        // (mip 3: 16-bit lanes, 32 bytes a band, widened; in the loop loaded after the pass's
+        // rows (SB_LD3), the strip's last pass reading past its bands)
+#define SB_LD3 "vld1.16 {d0-d3}, [%[dp]:128]!\n\t"
+#define SB_WIDEN3 \
+  "vshll.s16 q8, d0, #6\n\t" \
+  "vshll.s16 q9, d1, #6\n\t" \
+  "vshll.s16 q10, d2, #6\n\t" \
+  "vshll.s16 q11, d3, #6\n\t"
         // (mip 2: after the numerators dp reads the weights, pushed on the stack for the loop as
         // no register is left, and the group's first band in etab; then a row of etab a band)
 #define SB_EP2 \
@@ -913,20 +914,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7A, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP7(SB_ROW7, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
 #undef SB_LD_DELTA
+#undef SB_LD3
+#undef SB_WIDEN3
 #undef SB_DELTA2
 #undef SB_EP2
 #undef SB_BAND_TEST
