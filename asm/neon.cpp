@@ -109,6 +109,7 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
       const uint8x16_t p0 = vcombine_u8(vtbl2_u8(t, vget_low_u8(period[0])), vtbl2_u8(t, vget_high_u8(period[0])));
 #endif
       vst1q_u8(dst, p0);
+      if (n <= 16) return;
 #if defined(__aarch64__)
       vst1q_u8(dst + 16, vqtbl1q_u8(v, period[1]));
 #else
@@ -157,6 +158,33 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
     }
 #endif
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
+}
+
+// Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside:
+// run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.
+// Returns the rows done.
+SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t period, uint8_t* buf,
+                               const uint8_t** run) {
+  int n = th + 1 - (16 >> __builtin_ctz(unsigned(tw)));  // rows t: t tw + 16 <= th tw
+  if (n < 0) n = 0;
+#if !defined(__aarch64__)
+  const uint8x8_t i0 = vget_low_u8(period), i1 = vget_high_u8(period);
+#endif
+  const uint8_t* row = texels;
+  uint8_t* o = buf;
+  for (const uint8_t** r = run; r != run + n; ++r, row += tw, o += 16) {
+    const uint8x16_t v = vld1q_u8(row);
+#if defined(__aarch64__)
+    vst1q_u8(o, vqtbl1q_u8(v, period));
+#else
+    uint8x8x2_t tb;
+    tb.val[0] = vget_low_u8(v);
+    tb.val[1] = vget_high_u8(v);
+    vst1q_u8(o, vcombine_u8(vtbl2_u8(tb, i0), vtbl2_u8(tb, i1)));
+#endif
+    *r = o;
+  }
+  return n;
 }
 
 #if !defined(__aarch64__)
@@ -240,20 +268,6 @@ __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_
   }
 }
 
-// Mip 2: 16 bytes a band, e = the grid rows' differences v_0..3, e1 = v_1..4: the strip's
-// assembly weighs them (quarter j: w0 e[j] + w1 e1[j], w0 and w1 the same for every quarter).
-inline void band_e2(const uint16_t* g, int gw, int n, uint32x4_t* D) {
-  uint16x4_t p = vld1_u16(g), p1 = vld1_u16(g + 1);
-  uint16_t* o = reinterpret_cast<uint16_t*>(D);
-  for (int b = 0; b < n; ++b, o += 8) {
-    g += gw;
-    const uint16x4_t q = vld1_u16(g), q1 = vld1_u16(g + 1);
-    vst1q_u16(o, vcombine_u16(vsub_u16(q, p), vsub_u16(q1, p1)));
-    p = q;
-    p1 = q1;
-  }
-}
-
 // band_deltas' bands one at a time (the rest after its two-band passes).
 template <int LB>
 __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n, const uint16_t* bxp,
@@ -271,14 +285,14 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
-    if constexpr (LB == 1) {  // lanes 2j, 2j + 1: (2 v_j, v_j + v_j+1) << 6
+    if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1 (32 bytes a band)
       const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
       const int16x8_t c = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw + 1), vld1q_u16(g + 1)));
-      const int16x8x2_t z = vzipq_s16(vshlq_n_s16(a, 1), vaddq_s16(a, c));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 0), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[0]), 6)));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 1), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[0]), 6)));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 2), vreinterpretq_u32_s32(vshll_n_s16(vget_low_s16(z.val[1]), 6)));
-      vst1q_u32(reinterpret_cast<uint32_t*>(D + 3), vreinterpretq_u32_s32(vshll_n_s16(vget_high_s16(z.val[1]), 6)));
+      int16x8x2_t z;
+      z.val[0] = vaddq_s16(a, a);
+      z.val[1] = vaddq_s16(a, c);
+      vst2q_s16(reinterpret_cast<int16_t*>(D), z);
+      D -= 2;  // (the loop adds 4)
     } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
       const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
       const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
@@ -310,7 +324,8 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
 template <int LB>
 __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const uint16_t* bxp,
                                            const uint16_t* fxp, uint32x4_t* D) {
-  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: v_j << 7, (v_j + v_j+1) << 6, stored interleaved (vst2)
+  if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1, stored interleaved (vst2;
+                            // 32 bytes a band, widened << 6 by the strip's assembly)
     if (n >= 2) {
       const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
       int k = n >> 1;
@@ -326,20 +341,12 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
           "vsub.i16 q15, q10, q9\n\t"
           "vsub.i16 q11, q12, q11\n\t"
           "vsub.i16 q12, q13, q12\n\t"
-          "vadd.i16 q11, q11, q14\n\t"
-          "vadd.i16 q12, q12, q15\n\t"
-          "vshll.s16 q0, d28, #7\n\t"
-          "vshll.s16 q1, d22, #6\n\t"
-          "vshll.s16 q2, d29, #7\n\t"
-          "vshll.s16 q3, d23, #6\n\t"
-          "vshll.s16 q8, d30, #7\n\t"
-          "vshll.s16 q9, d24, #6\n\t"
-          "vshll.s16 q10, d31, #7\n\t"
-          "vshll.s16 q11, d25, #6\n\t"
-          "vst2.32 {d0-d3}, [%[D]:128]!\n\t"
-          "vst2.32 {d4-d7}, [%[D]:128]!\n\t"
-          "vst2.32 {d16-d19}, [%[D]:128]!\n\t"
-          "vst2.32 {d20-d23}, [%[D]:128]!\n\t"
+          "vadd.i16 q0, q14, q14\n\t"
+          "vadd.i16 q1, q11, q14\n\t"
+          "vadd.i16 q2, q15, q15\n\t"
+          "vadd.i16 q3, q12, q15\n\t"
+          "vst2.16 {d0-d3}, [%[D]:128]!\n\t"
+          "vst2.16 {d4-d7}, [%[D]:128]!\n\t"
           "subs %[k], %[k], #1\n\t"
           "bne 1b\n\t"
           : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
@@ -491,12 +498,18 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   constexpr int B = 16 >> kMip, LB = 4 - kMip, G = 16 / B;
   const int bw = width / B, bh = height / B;
   const int n16 = (width + 15) & ~15, stride = n16 + 16, groups = n16 / 16;
-  const int c0 = wrap(soff, tw), t0 = wrap(toff, th);
+  // (no divide for power-of-two sizes: Cortex-A9 has none, a library call)
+  auto wrap2 = [](int i, int n) { return (n & (n - 1)) == 0 ? i & (n - 1) : wrap(i, n); };
+  const int c0 = wrap2(soff, tw), t0 = wrap2(toff, th);
   alignas(16) uint8_t buf[kTileBytes];  // 64 KiB of stack
   const uint8_t* run[kMaxRuns + 3];     // texel run of each row (cyclic, see below; 3 read past)
   const uint8_t* const tex_end = texels + tw * th;
   // Texture row t's run: in place when it needs no wrap (and 16-lane reads stay inside).
-  auto in_place = [&](int t) { return c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end; };
+  // Widths dividing 16: every 16 bytes of a run are its first 16, which every group reads (gs:
+  // a group's offset step in a run); only they are laid out, none when the row is they.
+  const bool p16 = tw <= 16 && (tw & (tw - 1)) == 0;
+  const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16, wlim = p16 ? 16 : width;
+  auto in_place = [&](int t) { return c0 + wlim <= tw && texels + t * tw + c0 + tile_n <= tex_end; };
   // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
 #if defined(__aarch64__)
@@ -526,10 +539,21 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
-  if (all_rows)
-    for (int t = 0; t < th; ++t)
-      run[t] = in_place(t) ? texels + t * tw + c0 : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
-                                                     buf + t * stride);
+  if (all_rows) {
+    if (p16) {  // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
+      int t = in_place(0) ? 0 : tile_rows16(texels, tw, th, period[0], buf, run);
+      for (; t < th; ++t)
+        run[t] = in_place(t) ? texels + t * tw + c0
+                             : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
+                                buf + t * stride);
+    } else {
+      for (int t = 0; t < th; ++t)
+        run[t] = c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end
+                     ? texels + t * tw + c0
+                     : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
+                        buf + t * stride);
+    }
+  }
   int strip_bands = bh;
   if (!all_rows) {
     const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
@@ -551,8 +575,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     w[2][k] = uint16_t((B - k % B) << (2 * kMip));
     w[3][k] = uint16_t((k % B) << (2 * kMip));
   }
-  alignas(16) uint16_t w2[8];  // mip 2: the row-step weights w0 (B - fx), w1 (fx) of a quarter
-  for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
 #endif
 #if defined(__aarch64__)
   // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
@@ -580,20 +602,35 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows[kStripBands * B + 4];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
-  alignas(16) uint32x4_t blk[8 + 4 * kStripBands];
+  // Mip 2: blk holds the numerators, the row-step weights w0 (B - fx), w1 (fx) of a quarter,
+  // the group's first band in etab, then etab: row b (at b width bytes) the grid's band b
+  // differences e, entries 0..4 F of the F full groups; group g weighs entries 4g..4g + 4 of
+  // it (16 bytes read at 8g: inside the row). (A bigger frame leaves GCC no registers for the
+  // strip's assembly.)
+  constexpr int kEBytes = 4096;
+  alignas(16) uint32x4_t blk[LB == 2 ? 6 + kEBytes / 16 : 8 + 4 * kStripBands];
+  uint8_t* const etab = reinterpret_cast<uint8_t*>(blk + 6);
+  if constexpr (LB == 2) {
+    uint16_t w2[8];
+    for (int k = 0; k < 4; ++k) w2[k] = w[2][k], w2[4 + k] = w[3][k];
+    std::memcpy(blk + 4, w2, sizeof w2);
+  }
+  if (LB == 2 && strip_bands * width > kEBytes) strip_bands = kEBytes / width;  // (width <= 1024)
 #endif
 
   for (int by0 = 0; by0 < bh; by0 += strip_bands) {
     const int nb = bh - by0 < strip_bands ? bh - by0 : strip_bands;
     int first = 0, count = th;  // run[first] is the strip's first row; run[] wraps at count
     if (all_rows) {
-      first = (t0 + by0 * B) % th;
+      first = t0 + by0 * B;
+      if (first >= th) first = wrap2(first, th);
     } else {
       count = nb * B;
-      int t = (t0 + by0 * B) % th;
+      int t = t0 + by0 * B;
+      if (t >= th) t = wrap2(t, th);
       for (int r = 0; r < count; ++r) {
         run[r] = in_place(t) ? texels + t * tw + c0
-                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
+                             : (tile_row(buf + r * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
                                 buf + r * stride);
         if (++t == th) t = 0;
       }
@@ -625,6 +662,37 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         for (; i < m; ++i) strip_rows[y + i] = run[k + i];
         y += m;
         k = 0;
+      }
+    }
+    if (LB == 2 && width >= 16) {  // etab (see there): a column of eight entries (F = 1: four) at a time
+      const int ne = 4 * (width >> 4) + 1;
+      for (int i = 0;; i += 8) {  // the last column ends at entry 4 F
+        const int j = ne < 8 ? i : i + 8 < ne ? i : ne - 8;
+        const uint16_t* r = grid + by0 * grid_width + j;
+        uint8_t* o = etab + 2 * j;
+        if (ne < 8) {
+          uint16x4_t p = vld1_u16(r);
+          for (int b = 0; b < nb; ++b, o += width) {
+            r += grid_width;
+            const uint16x4_t q = vld1_u16(r);
+            vst1_u16(reinterpret_cast<uint16_t*>(o), vsub_u16(q, p));
+            p = q;
+          }
+          if (i == 1) break;
+          i = 1 - 8;
+          continue;
+        }
+        uint16x8_t p = vld1q_u16(r);
+        const uint8_t* const o_end = o + nb * width;
+        for (; o + width < o_end; o += 2 * width) {  // two bands a step (no register moves)
+          const uint16x8_t q = vld1q_u16(r + grid_width);
+          r += 2 * grid_width;
+          vst1q_u16(reinterpret_cast<uint16_t*>(o), vsubq_u16(q, p));
+          p = vld1q_u16(r);
+          vst1q_u16(reinterpret_cast<uint16_t*>(o + width), vsubq_u16(p, q));
+        }
+        if (o != o_end) vst1q_u16(reinterpret_cast<uint16_t*>(o), vsubq_u16(vld1q_u16(r + grid_width), p));
+        if (j != i) break;
       }
     }
 #endif
@@ -751,16 +819,18 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
         first_numerators<LB>(r0, w[0], w[1], blk);
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        if constexpr (LB == 2)
-          band_e2(r0, grid_width, nb, blk + 4);
-        else
+        if constexpr (LB == 2) {
+          const uint8_t* const ep = etab + 8 * g;
+          std::memcpy(blk + 5, &ep, sizeof ep);
+        } else {
           band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
+        }
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
         const uint8_t** const srcs = sbuf + 16;
-        {
-          const uint32x4_t off = vdupq_n_u32(uint32_t(16 * g));
+        if (g == 0 || gs) {  // (the same for every group when gs = 0)
+          const uint32x4_t off = vdupq_n_u32(uint32_t(gs * g));
           const uint32_t* r = reinterpret_cast<const uint32_t*>(strip_rows);
           const uint32_t* const r_end = r + rows;
           uint32_t* o = reinterpret_cast<uint32_t*>(srcs - 1);
@@ -815,35 +885,53 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
         // free between rows): quarter j is w0 e[j] + w1 e1[j].
 #define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
+        // (mip 3: 16-bit lanes, 32 bytes a band, widened; in the loop loaded after the pass's
+        // rows (SB_LD3), the strip's last pass reading past its bands)
+#define SB_LD3 "vld1.16 {d0-d3}, [%[dp]:128]!\n\t"
+#define SB_WIDEN3 \
+  "vshll.s16 q8, d0, #6\n\t" \
+  "vshll.s16 q9, d1, #6\n\t" \
+  "vshll.s16 q10, d2, #6\n\t" \
+  "vshll.s16 q11, d3, #6\n\t"
+        // (mip 2: after the numerators dp reads the weights, pushed on the stack for the loop as
+        // no register is left, and the group's first band in etab; then a row of etab a band)
+#define SB_EP2 \
+  "vld1.16 {d2-d3}, [%[dp]:128]\n\t" \
+  "ldr %[dp], [%[dp], #16]\n\t" \
+  "sub sp, sp, #16\n\t" \
+  "vst1.16 {d2-d3}, [sp]\n\t"
 #define SB_DELTA2 \
-  "vld1.16 {d0-d1}, [%[dp]:128]!\n\t" \
-  "vld1.16 {d2-d3}, [%[wp]:128]\n\t" \
+  "vld1.8 {d0-d1}, [%[dp]], %[st]\n\t" \
+  "vld1.16 {d2-d3}, [sp]\n\t" \
   "vmull.s16 q8, d2, d0[0]\n\t" \
   "vmull.s16 q9, d2, d0[1]\n\t" \
   "vmull.s16 q10, d2, d0[2]\n\t" \
   "vmull.s16 q11, d2, d0[3]\n\t" \
-  "vmlal.s16 q8, d3, d1[0]\n\t" \
-  "vmlal.s16 q9, d3, d1[1]\n\t" \
-  "vmlal.s16 q10, d3, d1[2]\n\t" \
-  "vmlal.s16 q11, d3, d1[3]\n\t"
+  "vmlal.s16 q8, d3, d0[1]\n\t" \
+  "vmlal.s16 q9, d3, d0[2]\n\t" \
+  "vmlal.s16 q10, d3, d0[3]\n\t" \
+  "vmlal.s16 q11, d3, d1[0]\n\t"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7A, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
+            asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7, "", "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP7(SB_ROW7, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
           else if constexpr (LB == 2)
-            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_DELTA2, "", SB_DELTA2) SB_STRIP7_OPS_(, [wp] "r"(w2)));
+            asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
 #undef SB_LD_DELTA
+#undef SB_LD3
+#undef SB_WIDEN3
 #undef SB_DELTA2
+#undef SB_EP2
 #undef SB_BAND_TEST
 #undef SB_STRIP7
 #undef SB_STRIP7_OPS_
@@ -886,7 +974,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       // (below); the last partial group of a row runs this C++ version.
       uint64_t P[8];
       auto indices = [&](const uint8_t* src) {  // P = the indices of the row at src
-        const uint8x16_t t = vld1q_u8(src + 16 * g);
+        const uint8x16_t t = vld1q_u8(src + gs * g);
 #pragma GCC unroll 4
         for (int j = 0; j < 4; ++j) {
           const uint64x2_t v =
@@ -1254,7 +1342,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "orr x19, x19, x21, lsl #32\n\t" \
     "orr x23, x23, x25, lsl #32\n\t" \
     "b.ne 1b\n\t"
-        const int64_t goff = 16 * g, wstride = width;
+        const int64_t goff = gs * g, wstride = width;
         const uint8_t* const* rp = lin;
         if constexpr (LB >= 3) {
           // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
@@ -1406,7 +1494,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       alignas(16) uint32_t ib[2][16];
       int cur = 0;
       auto indices = [&](const uint8_t* src) {
-        const uint8x16_t t = vld1q_u8(src + 16 * g);
+        const uint8x16_t t = vld1q_u8(src + gs * g);
         const uint16x8_t lo = vmovl_u8(vget_low_u8(t)), hi = vmovl_u8(vget_high_u8(t));
         const uint32x4_t t32[4] = {vmovl_u16(vget_low_u16(lo)), vmovl_u16(vget_high_u16(lo)),
                                    vmovl_u16(vget_low_u16(hi)), vmovl_u16(vget_high_u16(hi))};
