@@ -1057,10 +1057,10 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       // 120 2^25 > 2^31 > pd).
       auto steps_dd = [](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
         const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
-        const uint32x4_t pd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(delta), s), s);
+        // |x| as (x ^ s) - s (s = x >> 31) is abs (wrapping: INT_MIN stays 0x80000000).
+        const uint32x4_t pd = vreinterpretq_u32_s32(vabsq_s32(delta));
         const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
-        const uint32x4_t sd = vreinterpretq_u32_s32(vshrq_n_s32(dd, 31));
-        const uint32x4_t add = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), sd), sd);
+        const uint32x4_t add = vreinterpretq_u32_s32(vabsq_s32(dd));
         const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
         const uint32x4_t q = vshrq_n_u32(vmlsq_n_u32(pd, pdd, 120), 4), lin = vshrq_n_u32(pd, 4);
         const uint32x4_t pick = vbslq_u32(accept, q, lin);
