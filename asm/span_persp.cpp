@@ -808,8 +808,8 @@ SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t 
   return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
 }
 #if defined(__aarch64__)
-// du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as [du, dv].
-SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, int32x2_t duv, double curve, RunSteps* su,
+// du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as doubles [du, dv].
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, float64x2_t duv, double curve, RunSteps* su,
                           RunSteps* sv) {
 #else
 SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSteps* su, RunSteps* sv) {
@@ -817,7 +817,7 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
   const uint32_t two = steps > 1 ? ~0u : 0u;
 #if defined(__aarch64__)
-  const float64x2_t q = div_steps(vcvtq_f64_s64(vmovl_s32(duv)), s);
+  const float64x2_t q = div_steps(duv, s);
   const int64x2_t lin = vcvtq_s64_f64(q);
   const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
   const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
@@ -907,7 +907,8 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
 SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
   const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
 #if defined(__aarch64__)
-  last_steps(steps, du, dv, vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)), curve, su, sv);
+  last_steps(steps, du, dv, vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))), curve,
+             su, sv);
 #else
   last_steps(steps, du, dv, curve, su, sv);
 #endif
@@ -1094,11 +1095,17 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
     const int32_t au = sm[2 * k], av = sm[2 * k + 1];
     RunSteps lu, lv;
-    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as a
-    // vector and as integers (no moves between the register files).
+    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as
+    // integers, and as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x
+    // (saddw, |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus
+    // 2^52 + 2^51 it is x exactly (x = 0: +0, as scvtf).
     int32_t dm[8];
     vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
-    last_steps(last - 1, dm[2 * k], dm[2 * k + 1], vld1_s32(dm + 2 * k), zc * 0.5 * zm[k], &lu, &lv);
+    const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
+    const int64x2_t biased = k == 1 ? vaddw_high_s32(kBias, D01)
+                                    : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23));
+    const float64x2_t fd = vsubq_f64(vreinterpretq_f64_s64(biased), vreinterpretq_f64_s64(kBias));
+    last_steps(last - 1, dm[2 * k], dm[2 * k + 1], fd, zc * 0.5 * zm[k], &lu, &lv);
     auto full = [&](auto jc) SB_LAMBDA_INLINE {
       constexpr int j = decltype(jc)::value, l = j & 1;
       const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
