@@ -1041,18 +1041,26 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
     const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
     int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
+    // Deltas as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x (saddw,
+    // |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus 2^52 + 2^51
+    // it is x exactly (x = 0: +0, as scvtf).
+    const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
+    auto unbias = [&](int64x2_t b) SB_LAMBDA_INLINE {
+      return vsubq_f64(vreinterpretq_f64_s64(b), vreinterpretq_f64_s64(kBias));
+    };
     if constexpr (kCurve) {
       // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
       // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
       const double zck = zc * -0.0625;
       const float64x2_t c01 = vmulq_n_f64(zs01, zck);
       const float64x2_t c23 = vmulq_n_f64(zs23, zck);
-      auto ddf = [](int32x2_t d, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
-        return vcvtq_s64_f64(vmulq_laneq_f64(vcvtq_f64_s64(vmovl_s32(d)), c, decltype(lane)::value));
+      auto ddf = [&](int64x2_t b, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
+        return vcvtq_s64_f64(vmulq_laneq_f64(unbias(b), c, decltype(lane)::value));
       };
-      const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vget_low_s32(D01), c01, L0{})),
-                                            ddf(vget_high_s32(D01), c01, L1{}));
-      const int32x4_t i23 = vcombine_s32(vqmovn_s64(ddf(vget_low_s32(D23), c23, L0{})), vdup_n_s32(0));
+      const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vaddw_s32(kBias, vget_low_s32(D01)), c01, L0{})),
+                                            ddf(vaddw_high_s32(kBias, D01), c01, L1{}));
+      const int32x4_t i23 =
+          vcombine_s32(vqmovn_s64(ddf(vaddw_s32(kBias, vget_low_s32(D23)), c23, L0{})), vdup_n_s32(0));
       // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
       // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
       // 120 2^25 > 2^31 > pd).
@@ -1096,15 +1104,11 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     const int32_t au = sm[2 * k], av = sm[2 * k + 1];
     RunSteps lu, lv;
     // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as
-    // integers, and as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x
-    // (saddw, |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus
-    // 2^52 + 2^51 it is x exactly (x = 0: +0, as scvtf).
+    // integers, and as doubles (unbias).
     int32_t dm[8];
     vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
-    const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
-    const int64x2_t biased = k == 1 ? vaddw_high_s32(kBias, D01)
-                                    : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23));
-    const float64x2_t fd = vsubq_f64(vreinterpretq_f64_s64(biased), vreinterpretq_f64_s64(kBias));
+    const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
+                                         : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     last_steps(last - 1, dm[2 * k], dm[2 * k + 1], fd, zc * 0.5 * zm[k], &lu, &lv);
     auto full = [&](auto jc) SB_LAMBDA_INLINE {
       constexpr int j = decltype(jc)::value, l = j & 1;
