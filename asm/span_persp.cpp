@@ -820,7 +820,8 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
   const float64x2_t q = div_steps(duv, s);
   const int64x2_t lin = vcvtq_s64_f64(q);
   const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
-  const uint64x2_t ok = vandq_u64(vcgtq_f64(ddf, vdupq_n_f64(-1e9)), vcltq_f64(ddf, vdupq_n_f64(1e9)));
+  // -1e9 < ddf < 1e9 as |ddf| < 1e9 (facgt; false for NaN, as both compares).
+  const uint64x2_t ok = vcaltq_f64(ddf, vdupq_n_f64(1e9));
   const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
   const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
   const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
