@@ -1072,8 +1072,8 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
         const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
         const uint32x4_t add = vreinterpretq_u32_s32(vabsq_s32(dd));
         const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
-        const uint32x4_t q = vshrq_n_u32(vmlsq_n_u32(pd, pdd, 120), 4), lin = vshrq_n_u32(pd, 4);
-        const uint32x4_t pick = vbslq_u32(accept, q, lin);
+        // (pd - 120 pdd) >> 4 or pd >> 4: picked, then shifted (the same logical shift).
+        const uint32x4_t pick = vshrq_n_u32(vbslq_u32(accept, vmlsq_n_u32(pd, pdd, 120), pd), 4);
         *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
         *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
       };
