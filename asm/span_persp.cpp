@@ -834,9 +834,9 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
 #if defined(__aarch64__)
   // last_dd for u and v in one asm block, the two chains interleaved (the compiler runs
   // them one after the other; on an in-order core each step waits for the previous one).
-  // Per lane, as last_dd: sg, pd, add, Q, pdd; acc = pd - add T (umsubl, 64-bit), rej = acc
-  // >> 63 (~accept); r = pd - s Q, m = (s - 1) pdd, c = 2 r < s; d0 = Q - (m >> 1) - (m & c);
-  // d = ((d0 ^ sg) - sg) & accept | linear & rej, dd = ddi & accept.
+  // Per lane, as last_dd: sg, pd, add, Q, pdd; acc = pd - add T (umsubl, 64-bit), rejected
+  // iff acc < 0 (~accept); r = pd - s Q, m = (s - 1) pdd, c = 2 r < s; d0 = Q - (m >> 1) -
+  // (m & c); d = rejected ? linear : (d0 ^ sg) - sg, dd = rejected ? 0 : ddi (csel).
   int32_t xu = du, xv = dv, lu_ = lu, lv_ = lv, ddu = du2 & int32_t(two), ddv = dv2 & int32_t(two);
   const uint32_t sm1 = s - 1;
   uint64_t ga, gb, a1, b1, a2, b2, a3, b3, a4, b4;
@@ -867,8 +867,6 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
       "msub %w[xv], %w[s], %w[b4], %w[b2]\n\t"
       "mul %w[a1], %w[sm1], %w[a1]\n\t"
       "mul %w[b1], %w[sm1], %w[b1]\n\t"
-      "asr %[a3], %[a3], #63\n\t"
-      "asr %[b3], %[b3], #63\n\t"
       "cmp %w[s], %w[xu], lsl #1\n\t"
       "cset %w[xu], hi\n\t"
       "cmp %w[s], %w[xv], lsl #1\n\t"
@@ -881,16 +879,14 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
       "sub %w[b4], %w[b4], %w[xv]\n\t"
       "eor %w[a4], %w[a4], %w[ga]\n\t"
       "eor %w[b4], %w[b4], %w[gb]\n\t"
+      "cmp %[a3], #0\n\t"
       "sub %w[a4], %w[a4], %w[ga]\n\t"
+      "csel %w[ddu], wzr, %w[ddu], lt\n\t"
       "sub %w[b4], %w[b4], %w[gb]\n\t"
-      "bic %w[a4], %w[a4], %w[a3]\n\t"
-      "bic %w[b4], %w[b4], %w[b3]\n\t"
-      "and %w[lu], %w[lu], %w[a3]\n\t"
-      "and %w[lv], %w[lv], %w[b3]\n\t"
-      "orr %w[lu], %w[a4], %w[lu]\n\t"
-      "orr %w[lv], %w[b4], %w[lv]\n\t"
-      "bic %w[ddu], %w[ddu], %w[a3]\n\t"
-      "bic %w[ddv], %w[ddv], %w[b3]"
+      "csel %w[lu], %w[lu], %w[a4], lt\n\t"
+      "cmp %[b3], #0\n\t"
+      "csel %w[ddv], wzr, %w[ddv], lt\n\t"
+      "csel %w[lv], %w[lv], %w[b4], lt"
       : [xu] "+&r"(xu), [xv] "+&r"(xv), [lu] "+&r"(lu_), [lv] "+&r"(lv_), [ddu] "+&r"(ddu), [ddv] "+&r"(ddv),
         [ga] "=&r"(ga), [gb] "=&r"(gb), [a1] "=&r"(a1), [b1] "=&r"(b1), [a2] "=&r"(a2), [b2] "=&r"(b2),
         [a3] "=&r"(a3), [b3] "=&r"(b3), [a4] "=&r"(a4), [b4] "=&r"(b4)
@@ -924,6 +920,7 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 // the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
 // the long-span vector code's operation (see persp_fast): the same bits.
 constexpr int kShortMax = 64;
+alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
 template <bool kCurve>
 void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zc = p.second_order ? p.dzi : 0.0;
@@ -1044,6 +1041,9 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     // |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus 2^52 + 2^51
     // it is x exactly (x = 0: +0, as scvtf).
     const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
+    // [120 x 4], [2^25 x 4] by one ldp (the load pipe; movi takes FP-pipe slots).
+    uint32x4_t k120, k2p25;
+    __asm__("ldp %q[k], %q[m], [%[c]]" : [k] "=w"(k120), [m] "=w"(k2p25) : [c] "r"(kShortConsts), "m"(kShortConsts));
     auto unbias = [&](int64x2_t b) SB_LAMBDA_INLINE {
       return vsubq_f64(vreinterpretq_f64_s64(b), vreinterpretq_f64_s64(kBias));
     };
@@ -1063,15 +1063,15 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
       // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
       // 120 2^25 > 2^31 > pd).
-      auto steps_dd = [](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
+      auto steps_dd = [&](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
         const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
         // |x| as (x ^ s) - s (s = x >> 31) is abs (wrapping: INT_MIN stays 0x80000000).
         const uint32x4_t pd = vreinterpretq_u32_s32(vabsq_s32(delta));
         const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
         const uint32x4_t add = vreinterpretq_u32_s32(vabsq_s32(dd));
-        const uint32x4_t accept = vcleq_u32(vmulq_n_u32(vminq_u32(add, vdupq_n_u32(1u << 25)), 120), pd);
+        const uint32x4_t accept = vcleq_u32(vmulq_u32(vminq_u32(add, k2p25), k120), pd);
         // (pd - 120 pdd) >> 4 or pd >> 4: picked, then shifted (the same logical shift).
-        const uint32x4_t pick = vshrq_n_u32(vbslq_u32(accept, vmlsq_n_u32(pd, pdd, 120), pd), 4);
+        const uint32x4_t pick = vshrq_n_u32(vbslq_u32(accept, vmlsq_laneq_u32(pd, pdd, k120, 0), pd), 4);
         *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
         *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
       };
