@@ -1102,13 +1102,12 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
     const int32_t au = sm[2 * k], av = sm[2 * k + 1];
     RunSteps lu, lv;
-    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair), loaded as
-    // integers, and as doubles (unbias).
-    int32_t dm[8];
-    vst1q_s32(dm, D01), vst1q_s32(dm + 4, D23);
+    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair) as doubles
+    // (unbias) and as integers: one 64-bit lane move (dv 2^32 + du), split in the integer unit.
     const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
-    last_steps(last - 1, dm[2 * k], dm[2 * k + 1], fd, zc * 0.5 * zm[k], &lu, &lv);
+    const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
+    last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zm[k], &lu, &lv);
     auto full = [&](auto jc) SB_LAMBDA_INLINE {
       constexpr int j = decltype(jc)::value, l = j & 1;
       const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
