@@ -37,18 +37,17 @@ struct RunSteps {
   int32_t d, dd;
 };
 
-// span_draw.cpp's run_steps. Steps is int (any run) or std::integral_constant<int, 16>
-// (a full run): then every division below is by a constant and compiles to shifts and
-// multiplies, with the same results (integer division truncates toward zero either way;
-// double / 16 is exact, as is double * 0.0625).
-template <class Steps>
-inline RunSteps run_steps(int32_t a, int32_t b, Steps steps_, double curve) {
+// span_draw.cpp's run_steps, the quotient double(b - a) / steps given by quotient() (called
+// only when curve != 0 and steps >= 2). Steps is int (any run) or std::integral_constant<int, S>
+// (then every integer division below is by a constant and compiles to shifts and multiplies,
+// with the same results: integer division truncates toward zero either way).
+template <class Steps, class Quotient>
+inline RunSteps run_steps_with(int32_t a, int32_t b, Steps steps_, double curve, Quotient quotient) {
   const int steps = steps_;
-  if (steps <= 0) return {0, 0};
   const int64_t delta = int64_t(b) - int64_t(a);
   const int32_t linear = int32_t(delta / steps);  // truncation: never overshoots b
   if (curve == 0.0 || steps < 2) return {linear, 0};
-  const double c = double(delta) / steps * curve;
+  const double c = quotient() * curve;
   const double ddf = -2.0 * c;
   if (!(ddf > -1e9 && ddf < 1e9)) return {linear, 0};
   const int64_t dd = int64_t(ddf);
@@ -60,6 +59,20 @@ inline RunSteps run_steps(int32_t a, int32_t b, Steps steps_, double curve) {
                                    : (d0 <= 0 && last_step <= 0 && reach <= 0 && reach >= delta);
   if (!monotone || d0 > INT32_MAX || d0 < INT32_MIN) return {linear, 0};
   return {int32_t(d0), int32_t(dd)};
+}
+
+// span_draw.cpp's run_steps (double / 16 is exact, as is double * 0.0625).
+template <class Steps>
+inline RunSteps run_steps(int32_t a, int32_t b, Steps steps_, double curve) {
+  const int steps = steps_;
+  if (steps <= 0) return {0, 0};
+  return run_steps_with(a, b, steps_, curve, [&] { return double(int64_t(b) - int64_t(a)) / steps; });
+}
+
+// run_steps with the quotient already computed (q = double(b - a) / steps; steps >= 1).
+template <class Steps>
+inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, double q) {
+  return run_steps_with(a, b, steps_, curve, [q] { return q; });
 }
 
 // One run: surface_span's loop, inlined, with u and v in one 64-bit register: uv = v 2^32 + u,
@@ -423,26 +436,6 @@ struct Sample {
 // run_steps for u and v over a run's `steps` (0 .. 16) pixels, each integer division by a
 // constant (multiplies and shifts: no 64-bit divide instruction or, on armhf, library call)
 // and the two double quotients delta / steps in one vector divide (aarch64, x86-64).
-template <class Steps>
-inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, double q) {
-  // run_steps with double(b - a) / steps given as q.
-  const int steps = steps_;
-  const int64_t delta = int64_t(b) - int64_t(a);
-  const int32_t linear = int32_t(delta / steps);
-  if (curve == 0.0 || steps < 2) return {linear, 0};
-  const double c = q * curve;
-  const double ddf = -2.0 * c;
-  if (!(ddf > -1e9 && ddf < 1e9)) return {linear, 0};
-  const int64_t dd = int64_t(ddf);
-  const int64_t bend = dd * steps * (steps - 1) / 2;
-  const int64_t d0 = (delta - bend) / steps;
-  const int64_t last_step = d0 + dd * (steps - 1);
-  const int64_t reach = d0 * steps + bend;
-  const bool monotone = delta >= 0 ? (d0 >= 0 && last_step >= 0 && reach >= 0 && reach <= delta)
-                                   : (d0 <= 0 && last_step <= 0 && reach <= 0 && reach >= delta);
-  if (!monotone || d0 > INT32_MAX || d0 < INT32_MIN) return {linear, 0};
-  return {int32_t(d0), int32_t(dd)};
-}
 template <int S>
 inline void run_steps_uv(const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
   const std::integral_constant<int, S> steps;
