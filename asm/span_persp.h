@@ -45,12 +45,13 @@ struct PerspSpan {
 using SurfaceSpanPerspFn = void (*)(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                                     const PerspSpan& span);
 
-// Reference (asm/span_persp.cpp): the engine's run walker, calling surface_span_scalar per
-// run, its run steps dividing by the run's step count like the engine does.
+// Reference (asm/span_persp.cpp): the engine's run walker (asm/span_walk.h), calling
+// surface_span_scalar per run, its run steps dividing by the run's step count like the
+// engine does.
 void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                                const PerspSpan& span);
 
-// Tuned, portable C++ (asm/span_persp.cpp), in every non-scalar table. Per 16-pixel run
+// Tuned, portable C++ (asm/span_persp_fast.cpp), in every non-scalar table. Per 16-pixel run
 // only the linear inner loop's work plus the run's setup: two runs per loop pass, each run
 // fully unrolled and software-pipelined two pixels at a time (u and v packed in one 64-bit
 // register on 64-bit targets; texels gathered into words for one store per 8 / 4 on ARM);

@@ -29,7 +29,7 @@ using SurfaceSpanFn = void (*)(uint8_t* dest, int n, const uint8_t* texels, int 
 void surface_span_scalar(uint8_t* dest, int n, const uint8_t* texels, int width, int height, int32_t u, int32_t v,
                          int32_t du, int32_t dv, int32_t ddu, int32_t ddv);
 
-// Tuned, portable C++ (asm/span_persp.cpp, beside the whole-span drawer whose runs it
+// Tuned, portable C++ (asm/span_persp_fast.cpp, beside the whole-span drawer whose runs it
 // shares): each 16 pixels one straight-line, software-pipelined block (u and v packed in one
 // 64-bit register on 64-bit targets, texels gathered into words on ARM); the rest two
 // pixels per step. In the NEON table: on every modelled ARM core it beats the lane-based

@@ -289,9 +289,9 @@ def frames(quake_dir, f1, f2, res):
         for f in (f1, f2):
             of = f"/tmp/sb_count_cg_{os.getpid()}_{f}.out"
             tot.append(callgrind_total(base + ["+flythrough", str(f), "+quit"], env, of))
-            # The span drawer: surface_span* and everything compiled from asm/span_persp.cpp
-            # (its helpers are static functions, some with inlined intrinsics' lines).
-            span.append(self_cost(of, r"surface_span|asm/span_persp\.cpp:|simd::\(anonymous namespace\)::(persp_|draw_run|run_steps|lin_|div_steps|last_)"))
+            # The span drawer: surface_span* and everything compiled from asm/span_persp*.cpp and
+            # its headers (its helpers are static functions, some with inlined intrinsics' lines).
+            span.append(self_cost(of, r"surface_span|asm/span_(persp\w*\.(cpp|h)|walk\.h):|simd::\(anonymous namespace\)::(persp_|draw_run|run_steps|lin_|div_steps|last_)"))
             os.unlink(of)
         px = (f2 - f1) * w * h
         rows.append((mode, (tot[1] - tot[0]) / px, (span[1] - span[0]) / px, (tot[1] - tot[0]) / (f2 - f1)))
@@ -415,7 +415,7 @@ def main():
                "Both runs fly the same camera path (100 frames sample it twice as densely), so the difference is the "
                "mean cost of a frame along the path. Starbow's headless program presents nothing (no palette "
                "expansion or blit); Chocolate Quake's figure includes 18.7% presentation. "
-               "Span kernel: surface_span* and every function compiled from asm/span_persp.cpp, with the engine's "
+               "Span kernel: surface_span* and every function compiled from asm/span_persp*.cpp, with the engine's "
                "default second-order steps (Chocolate Quake's span drawer steps linearly).", "",
                "| kernels | instr/pixel/frame | span kernel instr/pixel | instr/frame | Chocolate Quake (320x240) |",
                "|---|---|---|---|---|"]

@@ -13,7 +13,7 @@
 // the next run is issued before the current run is drawn. Between the exact ends the step is
 // either linear (Quake's way) or, when second_order is set (the default), linear plus a
 // parabola that follows the perspective curve (one more add per coordinate per pixel; see
-// run_steps in span_draw.cpp). Either way a run never leaves the range between its two
+// run_steps in asm/span_walk.h). Either way a run never leaves the range between its two
 // (clamped) exact ends.
 // Every drawer writes only the pixels of the spans it is given, then (when fb.zbuffer /
 // fb.coverage are set) the 16-bit 1/z and the coverage count of those pixels.

@@ -121,7 +121,7 @@ TEST(AsmSpanPersp, MatchesTheRunWalkerOnShortSpans) {
   std::printf("[ asm      ] span_persp: %d short spans identical to the run walker\n", spans_drawn);
 }
 
-// asm/span_persp.cpp's div_steps (the last run's step quotient on aarch64): a / s as
+// asm/span_persp_arm.h's div_steps (the last run's step quotient on aarch64): a / s as
 // RN(1/s), q0 = a RN(1/s), e = fma(-q0, s, a), fma(e, RN(1/s), q0), bit for bit a / s for
 // integers |a| < 2^31 and s = 1 .. 16: the same operations, on the ends of the range, the
 // small quotients, and random integers of every magnitude.

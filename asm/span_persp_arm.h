@@ -1,0 +1,637 @@
+// asm/span_persp_arm.h: the whole-span drawer's ARM paths (asm/span_persp.h): the aarch64
+// two-run pass pipeline (lin_slot), the last run's branch-free steps (ARM) and the aarch64
+// short-span path (persp_short). Internal: included by asm/span_persp_fast.cpp only, after
+// asm/span_persp_run.h (anonymous namespace, as when this was part of that file).
+#pragma once
+#include "asm/span_persp_run.h"
+
+namespace sb::simd {
+namespace {
+#if defined(__aarch64__) && defined(__GNUC__)
+// aarch64, persp_fast's long spans: the two runs of a loop pass (32 pixels) as one software
+// pipeline of eight groups of four pixels, written in asm so that each slot keeps its order:
+// the shifts and steps of group j (latency 2), the caller's stage (double / vector work,
+// latency 6), then the multiply-adds of group j beside the loads of group j - 1 (latency 4)
+// and the gather and store of groups j - 2, j - 3: in-order issue (llvm-mca's Cortex-A53
+// model also completes in order) seldom waits. u, v packed as in draw_run (v 2^32 + u).
+//   linear: pixel 4 g + i of a run on chain i, stepped by e = 4 duv: chain i holds
+//           uv_0 + (4 g + i) duv (mod 2^64), draw_run's value.
+//   second order: two chains (fewer registers), c0 = uv_k, c1 = uv_{k+1}, stepped two pixels
+//           at a time by e0, e1 (uv_{k+2} - uv_k), each e by dd4 = 4 dduv, as Run16 does.
+// Keeps a value computed where it is written: an empty asm the compiler cannot move
+// (volatile) that takes the value, so its computation is neither sunk below it nor, for an
+// accumulator copy (x = constant), merged into the later instruction that overwrites it.
+template <class T>
+SB_INLINE void pin(T& x) {
+  if constexpr (std::is_integral_v<T>) {
+    __asm__ volatile("" : "+r"(x));
+  } else {
+    __asm__ volatile("" : "+w"(x));
+  }
+}
+// The linear steps of a full run from packed samples a, b (v 2^32 + u, 0 <= u, v < 2^31):
+// (b - a) / 16 for u and v (truncating), packed as dv 2^32 + du (du sign-extended).
+// x / 16 truncated = (x + (x < 0 ? 15 : 0)) >> 4 (arithmetic shift: a floor).
+SB_INLINE uint64_t steps16_packed(uint64_t a, uint64_t b) {
+  uint64_t du, dv, t, u;
+  __asm__(
+      "sub %w[du], %w[b], %w[a]\n\t"
+      "lsr %[t], %[a], #32\n\t"
+      "lsr %[dv], %[b], #32\n\t"
+      "asr %w[u], %w[du], #31\n\t"
+      "sub %w[dv], %w[dv], %w[t]\n\t"
+      "add %w[du], %w[du], %w[u], lsr #28\n\t"
+      "asr %w[t], %w[dv], #31\n\t"
+      "sbfx %[du], %[du], #4, #28\n\t"
+      "add %w[dv], %w[dv], %w[t], lsr #28\n\t"
+      "asr %w[dv], %w[dv], #4\n\t"
+      "add %[du], %[du], %[dv], lsl #32"
+      : [du] "=&r"(du), [dv] "=&r"(dv), [t] "=&r"(t), [u] "=&r"(u)
+      : [a] "r"(a), [b] "r"(b));
+  return du;
+}
+// The chain setup, linear: run start uv0 (v 2^32 + u), packed step duv.
+SB_INLINE void lin_start(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, uint64_t& e, uint64_t uv0,
+                         uint64_t duv) {
+  const uint64_t dd = duv + duv;
+  c0 = uv0;
+  c1 = uv0 + duv;
+  c2 = uv0 + dd;
+  c3 = c1 + dd;
+  e = dd + dd;
+}
+// The same with second-order steps dduv (uv_k = uv_0 + k duv + k (k - 1) / 2 dduv): c0 =
+// uv_0, c1 = uv_1, e0 = uv_2 - uv_0 = 2 duv + dduv, e1 = uv_3 - uv_1 = 2 duv + 3 dduv.
+SB_INLINE void lin_start2(uint64_t& c0, uint64_t& c1, uint64_t& e0, uint64_t& e1, uint64_t& dd4, uint64_t uv0,
+                          uint64_t duv, uint64_t dduv) {
+  c0 = uv0;
+  c1 = uv0 + duv;
+  e0 = 2 * duv + dduv;
+  e1 = e0 + 2 * dduv;
+  dd4 = 4 * dduv;
+}
+// Slot J (0 .. 9) of a pass: the shifts and steps of group J; the gather of group
+// J - 2's bytes into two pairs and of group J - 3's pairs into a word; stage(2 J); the
+// multiply-adds of group J beside the loads of group J - 1 (the multiply-adds write over
+// their shifted v, the loads over their address: fewer registers); the store of group J - 3
+// (slot 9 also gathers and stores group 7); stage(2 J + 1); then slot 3 starts the chains
+// of the second run (b_uv, b_d: start and packed step, set by the stage), slot 7 those of the
+// next pass's first (a_uv, a_d). The state as scalars (references): it stays in registers.
+template <int J, bool kCurve, class Stage>
+SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, uint64_t& e, uint64_t& e1,
+                        uint64_t& dd4, uint64_t& pa0,
+                        uint64_t& pa1, uint64_t& pa2, uint64_t& pa3, uint64_t& b0, uint64_t& b1, uint64_t& b2,
+                        uint64_t& b3, uint64_t& g0, uint64_t& g1, uint8_t* __restrict dest,
+                        const uint8_t* __restrict texels, uint64_t w, const uint64_t& b_uv, const uint64_t& b_d,
+                        const uint64_t& b_dd, const uint64_t& a_uv, const uint64_t& a_d, const uint64_t& a_dd,
+                        Stage& stage) {
+  uint64_t h0, h1, h2, h3, l0, l1, l2, l3, x = 0;
+  if constexpr (J < 8 && kCurve) {
+    // Second order, two chains (fewer registers): c0 = uv_k, c1 = uv_{k+1} (k = 4 g), each
+    // stepped two pixels by e0, e1 (uv_{k+2} - uv_k), each e by dd = 4 dduv.
+    uint64_t t0, t1;
+    __asm__ volatile(
+        "lsr %[h0], %[c0], #48\n\t"
+        "lsr %w[l0], %w[c0], #16\n\t"
+        "add %[t0], %[c0], %[e0]\n\t"
+        "add %[t1], %[c1], %[e1]\n\t"
+        "lsr %[h1], %[c1], #48\n\t"
+        "lsr %w[l1], %w[c1], #16\n\t"
+        "add %[e0], %[e0], %[dd]\n\t"
+        "add %[e1], %[e1], %[dd]\n\t"
+        "lsr %[h2], %[t0], #48\n\t"
+        "lsr %w[l2], %w[t0], #16\n\t"
+        "lsr %[h3], %[t1], #48\n\t"
+        "lsr %w[l3], %w[t1], #16\n\t"
+        "add %[c0], %[t0], %[e0]\n\t"
+        "add %[c1], %[t1], %[e1]\n\t"
+        "add %[e0], %[e0], %[dd]\n\t"
+        "add %[e1], %[e1], %[dd]"
+        : [h0] "=&r"(h0), [h1] "=&r"(h1), [h2] "=&r"(h2), [h3] "=&r"(h3), [l0] "=&r"(l0), [l1] "=&r"(l1),
+          [l2] "=&r"(l2), [l3] "=&r"(l3), [t0] "=&r"(t0), [t1] "=&r"(t1), [c0] "+r"(c0), [c1] "+r"(c1),
+          [e0] "+r"(e), [e1] "+r"(e1)
+        : [dd] "r"(dd4));
+  } else if constexpr (J < 8) {
+    __asm__ volatile(
+        "lsr %[h0], %[c0], #48\n\t"
+        "lsr %w[l0], %w[c0], #16\n\t"
+        "lsr %[h1], %[c1], #48\n\t"
+        "lsr %w[l1], %w[c1], #16\n\t"
+        "lsr %[h2], %[c2], #48\n\t"
+        "lsr %w[l2], %w[c2], #16\n\t"
+        "lsr %[h3], %[c3], #48\n\t"
+        "lsr %w[l3], %w[c3], #16\n\t"
+        "add %[c0], %[c0], %[e]\n\t"
+        "add %[c1], %[c1], %[e]\n\t"
+        "add %[c2], %[c2], %[e]\n\t"
+        "add %[c3], %[c3], %[e]"
+        : [h0] "=&r"(h0), [h1] "=&r"(h1), [h2] "=&r"(h2), [h3] "=&r"(h3), [l0] "=&r"(l0), [l1] "=&r"(l1),
+          [l2] "=&r"(l2), [l3] "=&r"(l3), [c0] "+r"(c0), [c1] "+r"(c1), [c2] "+r"(c2), [c3] "+r"(c3)
+        : [e] "r"(e));
+  }
+  if constexpr (J >= 3) {
+    uint64_t n0, n1;
+    __asm__ volatile(
+        "orr %[x], %[g0], %[g1], lsl #16\n\t"
+        "orr %[n0], %[b0], %[b1], lsl #8\n\t"
+        "orr %[n1], %[b2], %[b3], lsl #8"
+        : [x] "=&r"(x), [n0] "=&r"(n0), [n1] "=&r"(n1)
+        : [g0] "r"(g0), [g1] "r"(g1), [b0] "r"(b0), [b1] "r"(b1), [b2] "r"(b2), [b3] "r"(b3));
+    g0 = n0, g1 = n1;
+  } else if constexpr (J == 2) {
+    __asm__ volatile(
+        "orr %[g0], %[b0], %[b1], lsl #8\n\t"
+        "orr %[g1], %[b2], %[b3], lsl #8"
+        : [g0] "=&r"(g0), [g1] "=&r"(g1)
+        : [b0] "r"(b0), [b1] "r"(b1), [b2] "r"(b2), [b3] "r"(b3));
+  }
+  stage(std::integral_constant<int, 2 * J>{});
+  if constexpr (J == 0) {
+    __asm__ volatile(
+        "madd %w[h0], %w[h0], %w[w], %w[l0]\n\t"
+        "madd %w[h1], %w[h1], %w[w], %w[l1]\n\t"
+        "madd %w[h2], %w[h2], %w[w], %w[l2]\n\t"
+        "madd %w[h3], %w[h3], %w[w], %w[l3]"
+        : [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [h3] "+r"(h3)
+        : [l0] "r"(l0), [l1] "r"(l1), [l2] "r"(l2), [l3] "r"(l3), [w] "r"(w));
+  } else if constexpr (J < 8) {
+    __asm__ volatile(
+        "madd %w[h0], %w[h0], %w[w], %w[l0]\n\t"
+        "ldrb %w[p0], [%[tx], %w[p0], uxtw]\n\t"
+        "madd %w[h1], %w[h1], %w[w], %w[l1]\n\t"
+        "ldrb %w[p1], [%[tx], %w[p1], uxtw]\n\t"
+        "madd %w[h2], %w[h2], %w[w], %w[l2]\n\t"
+        "ldrb %w[p2], [%[tx], %w[p2], uxtw]\n\t"
+        "madd %w[h3], %w[h3], %w[w], %w[l3]\n\t"
+        "ldrb %w[p3], [%[tx], %w[p3], uxtw]"
+        : [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [h3] "+r"(h3), [p0] "+r"(pa0), [p1] "+r"(pa1),
+          [p2] "+r"(pa2), [p3] "+r"(pa3)
+        : [l0] "r"(l0), [l1] "r"(l1), [l2] "r"(l2), [l3] "r"(l3), [w] "r"(w), [tx] "r"(texels));
+  } else if constexpr (J == 8) {
+    __asm__ volatile(
+        "ldrb %w[p0], [%[tx], %w[p0], uxtw]\n\t"
+        "ldrb %w[p1], [%[tx], %w[p1], uxtw]\n\t"
+        "ldrb %w[p2], [%[tx], %w[p2], uxtw]\n\t"
+        "ldrb %w[p3], [%[tx], %w[p3], uxtw]"
+        : [p0] "+r"(pa0), [p1] "+r"(pa1), [p2] "+r"(pa2), [p3] "+r"(pa3)
+        : [tx] "r"(texels));
+  }
+  if constexpr (J >= 3) {
+    __asm__ volatile("str %w[x], %[m]" : [m] "=m"(*reinterpret_cast<uint32_t*>(dest + 4 * (J - 3))) : [x] "r"(x));
+  }
+  if constexpr (J == 9) {
+    __asm__ volatile(
+        "orr %[x], %[g0], %[g1], lsl #16\n\t"
+        "str %w[x], %[m]"
+        : [x] "=&r"(x), [m] "=m"(*reinterpret_cast<uint32_t*>(dest + 28))
+        : [g0] "r"(g0), [g1] "r"(g1));
+  }
+  stage(std::integral_constant<int, 2 * J + 1>{});
+  if constexpr (J == 3) {
+    if constexpr (kCurve) {
+      lin_start2(c0, c1, e, e1, dd4, b_uv, b_d, b_dd);
+    } else {
+      lin_start(c0, c1, c2, c3, e, b_uv, b_d);
+    }
+  }
+  if constexpr (J == 7) {
+    if constexpr (kCurve) {
+      lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+    } else {
+      lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+    }
+  }
+  if constexpr (J >= 1 && J <= 8) b0 = pa0, b1 = pa1, b2 = pa2, b3 = pa3;
+  if constexpr (J < 8) pa0 = h0, pa1 = h1, pa2 = h2, pa3 = h3;
+}
+#endif
+
+// run_steps of a last run (steps = 0 .. 15) for u and v without branches or integer
+// divides. With q = double(delta) / steps (the walker's quotient; on aarch64 by div_steps,
+// no divide instruction): linear = trunc(q) (= delta / steps truncated: |delta| < 2^31,
+// and a non-integer quotient lies over 1 / steps from an integer, far above the rounding
+// error),
+// ddf = -2 (q curve), dd = trunc(ddf) when |ddf| < 1e9, else linear. Mirrored to delta >= 0
+// as in steps16_dd (pd = |delta|, dd' = dd mirrored, T = steps (steps - 1) / 2,
+// num = pd - T dd'): the walker accepts iff num >= 0 and floor(num / steps) +
+// (steps - 1) dd' >= 0 (the reach test is implied: reach' = (steps / 2) (d0' + last_step)
+// >= 0 and reach' = pd - (num mod steps) <= pd; for num < 0, d0' < 0, or d0' = 0 and
+// reach' = pd - num > pd), that is iff T |dd| <= pd (dd' >= 0: num >= 0; dd' < 0:
+// num >= 2 T |dd'|). d0' = floor(num / steps) without dividing: with pd = steps Q + r
+// (Q = |linear|) and m = (steps - 1) dd' = 2 k + b (b = 0, 1), num / steps =
+// Q - k - b / 2 + r / steps, so d0' = Q - k - (b and 2 r < steps); accepted, |m| <= pd and
+// every value fits 32 bits. steps < 2: linear, dd = 0 (T = 0, dd forced 0). steps = 0 (a
+// one-pixel last run): the steps are never used (draw_run draws the start only).
+// Where the tails use it (ARM; x86-64: run_steps_uv, out of order cores hide its branches).
+#if defined(__aarch64__) || defined(__arm__)
+constexpr bool kLastSteps = true;
+#else
+constexpr bool kLastSteps = false;
+#endif
+#if defined(__aarch64__)
+// [a, b] / s correctly rounded without a divide, for integers |a|, |b| < 2^31 and
+// 1 <= s <= 16: y = RN(1/s) (a table), q0 = RN(a y), e = a - s q0 (fmsub), q = RN(q0 + e y)
+// (fmadd). Proof, x = a / s: |s y - 1| <= u = 2^-53 and |q0 - a y| <= u |a y|, so
+// |q0 - x| <= 2.1 u |x| < 2.1 ulp(x). e is exact: a and s q0 are multiples of
+// ulp(q0) <= 2^-21 (|q0| <= 2^31), and |e| <= s |x - q0| < 34 ulp(x) <= 68 ulp(q0). Then
+// q0 + e y = x + (x - q0)(s y - 1) = x + eta, |eta| < 2.1 ulp(x) 2^-53, rounded once.
+// A midpoint m = M 2^F between doubles near x (M odd, 2^F >= ulp(x) / 4) is never x (x
+// dyadic has <= 31 significant bits) and |x - m| = |a 2^-F - s M| 2^F / s >= 2^F / 16 >
+// |eta| (a nonzero integer times 2^F / s): no midpoint between x and x + eta, so
+// RN(x + eta) = RN(x). s a power of two: y exact, e = 0, q = q0. a = 0: +0, as a / s.
+// (AsmSpanPersp.StepQuotientWithoutDivide checks the same operations on boundaries and
+// random inputs.)
+constexpr double kRecipSteps[17] = {0.0,      1.0 / 1,  1.0 / 2,  1.0 / 3,  1.0 / 4,  1.0 / 5,
+                                    1.0 / 6,  1.0 / 7,  1.0 / 8,  1.0 / 9,  1.0 / 10, 1.0 / 11,
+                                    1.0 / 12, 1.0 / 13, 1.0 / 14, 1.0 / 15, 1.0 / 16};
+SB_INLINE float64x2_t div_steps(float64x2_t a, uint32_t s) {
+  const float64x2_t y = vld1q_dup_f64(&kRecipSteps[s]);
+  const float64x2_t q0 = vmulq_f64(a, y);
+  const float64x2_t e = vfmsq_f64(a, q0, vdupq_n_f64(double(s)));
+  return vfmaq_f64(q0, e, y);
+}
+#endif
+SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t s, uint32_t T) {
+  const uint32_t sg = uint32_t(delta >> 31);
+  const uint32_t pd = (uint32_t(delta) ^ sg) - sg, pdd = (uint32_t(ddi) ^ sg) - sg;
+  const uint32_t sd = uint32_t(ddi >> 31), add = (uint32_t(ddi) ^ sd) - sd;
+  // T |dd| <= pd as a mask (a comparison would compile to a branch): T |dd| < 2^38.
+  const uint32_t accept = uint32_t(~((int64_t(pd) - int64_t(uint64_t(add) * T)) >> 63));
+  const uint32_t Q = (uint32_t(linear) ^ sg) - sg, r = pd - s * Q;
+  const uint32_t m = (s - 1) * pdd;
+  const uint32_t d0 = Q - uint32_t(int32_t(m) >> 1) - (m & uint32_t(2 * r < s));
+  const uint32_t d = ((d0 ^ sg) - sg) & accept;
+  return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
+}
+#if defined(__aarch64__)
+// du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as doubles [du, dv].
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, float64x2_t duv, double curve, RunSteps* su,
+                          RunSteps* sv) {
+#else
+SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSteps* su, RunSteps* sv) {
+#endif
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+#if defined(__aarch64__)
+  const float64x2_t q = div_steps(duv, s);
+  const int64x2_t lin = vcvtq_s64_f64(q);
+  const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
+  // -1e9 < ddf < 1e9 as |ddf| < 1e9 (facgt; false for NaN, as both compares).
+  const uint64x2_t ok = vcaltq_f64(ddf, vdupq_n_f64(1e9));
+  const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
+  const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
+  const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
+#else
+  const double qu = double(du) / double(int(s)), qv = double(dv) / double(int(s));
+  const int32_t lu = int32_t(qu), lv = int32_t(qv);
+  const double fu = -2.0 * (qu * curve), fv = -2.0 * (qv * curve);
+  const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
+#endif
+#if defined(__aarch64__)
+  // last_dd for u and v in one asm block, the two chains interleaved (the compiler runs
+  // them one after the other; on an in-order core each step waits for the previous one).
+  // Per lane, as last_dd: sg, pd, add, Q, pdd; acc = pd - add T (umsubl, 64-bit), rejected
+  // iff acc < 0 (~accept); r = pd - s Q, m = (s - 1) pdd, c = 2 r < s; d0 = Q - (m >> 1) -
+  // (m & c); d = rejected ? linear : (d0 ^ sg) - sg, dd = rejected ? 0 : ddi (csel).
+  int32_t xu = du, xv = dv, lu_ = lu, lv_ = lv, ddu = du2 & int32_t(two), ddv = dv2 & int32_t(two);
+  const uint32_t sm1 = s - 1;
+  uint64_t ga, gb, a1, b1, a2, b2, a3, b3, a4, b4;
+  __asm__(
+      "asr %w[ga], %w[xu], #31\n\t"
+      "asr %w[gb], %w[xv], #31\n\t"
+      "asr %w[a1], %w[ddu], #31\n\t"
+      "asr %w[b1], %w[ddv], #31\n\t"
+      "eor %w[a2], %w[xu], %w[ga]\n\t"
+      "eor %w[b2], %w[xv], %w[gb]\n\t"
+      "eor %w[a3], %w[ddu], %w[a1]\n\t"
+      "eor %w[b3], %w[ddv], %w[b1]\n\t"
+      "eor %w[a4], %w[lu], %w[ga]\n\t"
+      "eor %w[b4], %w[lv], %w[gb]\n\t"
+      "sub %w[a2], %w[a2], %w[ga]\n\t"
+      "sub %w[b2], %w[b2], %w[gb]\n\t"
+      "sub %w[a3], %w[a3], %w[a1]\n\t"
+      "sub %w[b3], %w[b3], %w[b1]\n\t"
+      "eor %w[a1], %w[ddu], %w[ga]\n\t"
+      "eor %w[b1], %w[ddv], %w[gb]\n\t"
+      "sub %w[a4], %w[a4], %w[ga]\n\t"
+      "sub %w[b4], %w[b4], %w[gb]\n\t"
+      "sub %w[a1], %w[a1], %w[ga]\n\t"
+      "sub %w[b1], %w[b1], %w[gb]\n\t"
+      "umsubl %[a3], %w[a3], %w[T], %[a2]\n\t"
+      "umsubl %[b3], %w[b3], %w[T], %[b2]\n\t"
+      "msub %w[xu], %w[s], %w[a4], %w[a2]\n\t"
+      "msub %w[xv], %w[s], %w[b4], %w[b2]\n\t"
+      "mul %w[a1], %w[sm1], %w[a1]\n\t"
+      "mul %w[b1], %w[sm1], %w[b1]\n\t"
+      "cmp %w[s], %w[xu], lsl #1\n\t"
+      "cset %w[xu], hi\n\t"
+      "cmp %w[s], %w[xv], lsl #1\n\t"
+      "cset %w[xv], hi\n\t"
+      "sub %w[a4], %w[a4], %w[a1], asr #1\n\t"
+      "sub %w[b4], %w[b4], %w[b1], asr #1\n\t"
+      "and %w[xu], %w[xu], %w[a1]\n\t"
+      "and %w[xv], %w[xv], %w[b1]\n\t"
+      "sub %w[a4], %w[a4], %w[xu]\n\t"
+      "sub %w[b4], %w[b4], %w[xv]\n\t"
+      "eor %w[a4], %w[a4], %w[ga]\n\t"
+      "eor %w[b4], %w[b4], %w[gb]\n\t"
+      "cmp %[a3], #0\n\t"
+      "sub %w[a4], %w[a4], %w[ga]\n\t"
+      "csel %w[ddu], wzr, %w[ddu], lt\n\t"
+      "sub %w[b4], %w[b4], %w[gb]\n\t"
+      "csel %w[lu], %w[lu], %w[a4], lt\n\t"
+      "cmp %[b3], #0\n\t"
+      "csel %w[ddv], wzr, %w[ddv], lt\n\t"
+      "csel %w[lv], %w[lv], %w[b4], lt"
+      : [xu] "+&r"(xu), [xv] "+&r"(xv), [lu] "+&r"(lu_), [lv] "+&r"(lv_), [ddu] "+&r"(ddu), [ddv] "+&r"(ddv),
+        [ga] "=&r"(ga), [gb] "=&r"(gb), [a1] "=&r"(a1), [b1] "=&r"(b1), [a2] "=&r"(a2), [b2] "=&r"(b2),
+        [a3] "=&r"(a3), [b3] "=&r"(b3), [a4] "=&r"(a4), [b4] "=&r"(b4)
+      : [s] "r"(s), [T] "r"(T), [sm1] "r"(sm1)
+      : "cc");
+  *su = RunSteps{lu_, ddu};
+  *sv = RunSteps{lv_, ddv};
+#else
+  *su = last_dd(du, lu, du2 & int32_t(two), s, T);
+  *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+#endif
+}
+SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
+#if defined(__aarch64__)
+  last_steps(steps, du, dv, vcvtq_f64_s64(vmovl_s32(vcreate_s32(uint64_t(uint32_t(dv)) << 32 | uint32_t(du)))), curve,
+             su, sv);
+#else
+  last_steps(steps, du, dv, curve, su, sv);
+#endif
+}
+
+#if defined(__aarch64__)
+// aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position,
+// depth and divide first (two 2-lane divides and one scalar, back to back), the conversions
+// and the full runs' steps in vectors, the last run's by last_steps, all branch-free, then
+// the runs drawn straight (pairs of full runs as one lin_slot pass). Positions as the walker
+// computes them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1,
+// sample j + 2 at P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j).
+// Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
+// the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
+// the long-span vector code's operation (see persp_fast): the same bits.
+constexpr int kShortMax = 64;
+alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
+template <bool kCurve>
+void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const double zc = p.second_order ? p.dzi : 0.0;
+  const uint32_t w = uint32_t(width);
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  // One asm block, each operation the vector code's lane operation (the same bits):
+  // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
+  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the [u, v]
+  // products uvrow + uvx pos before the divides 1 / max(zi, kMinZi) (two 2-lane and one
+  // scalar, back to back), then the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max]
+  // (persp_fast's argument). Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44
+  // (sample 4 twice). Ordered for the in-order A53 (a consumer after its producer's latency;
+  // its model also completes in order, so the first divide's inputs come first); the
+  // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
+  // latency 3, an element insert 8).
+  register float64x2_t rzA __asm__("v26");
+  register float64x2_t rzB __asm__("v27");
+  register float64x2_t rzC __asm__("v4");
+  register int32x4_t rS01 __asm__("v5");
+  register int32x4_t rS23 __asm__("v6");
+  register int32x4_t rS44 __asm__("v7");
+  uint64_t t0, t5, t6, t7;
+  __asm__ volatile(
+      "fmov d1, #16.0\n\t"
+      "ldr d0, [%[p], #48]\n\t"
+      "sub %w[t5], %w[n], #1\n\t"
+      "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+      "sub %w[t6], %w[n], #17\n\t"
+      "mov %w[t7], #32\n\t"
+      "cmp %w[t5], #32\n\t"
+      "add %[t0], %[p], #16\n\t"
+      "fadd d2, d0, d1\n\t"
+      "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+      "cmp %w[t6], #32\n\t"
+      "ld1r {v26.2d}, [%[p]]\n\t"
+      "ld1r {v31.2d}, [%[km]]\n\t"
+      "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+      "scvtf d4, %w[t5]\n\t"
+      "sub %w[t7], %w[n], #33\n\t"
+      "scvtf d5, %w[t6]\n\t"
+      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+      "trn1 v0.2d, v0.2d, v2.2d\n\t"
+      "fadd d3, d2, d1\n\t"
+      "scvtf d6, %w[t7]\n\t"
+      "ld1r {v27.2d}, [%[p]]\n\t"
+      "trn1 v4.2d, v4.2d, v5.2d\n\t"
+      "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+      "fmla v26.2d, v17.2d, v0.2d\n\t"
+      "fadd v7.2d, v0.2d, v4.2d\n\t"
+      "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+      "fadd d3, d3, d6\n\t"
+      "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+      "fmla v27.2d, v17.2d, v7.2d\n\t"
+      "fmadd d28, d17, d3, d16\n\t"
+      "fmov v1.2d, #1.0\n\t"
+      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+      "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+      "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+      "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+      "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+      "fdiv v26.2d, v1.2d, v26.2d\n\t"
+      "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+      "fmaxnm d28, d28, d31\n\t"
+      "add %[t0], %[p], #56\n\t"
+      "fdiv v27.2d, v1.2d, v27.2d\n\t"
+      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+      "fdiv d28, d1, d28\n\t"
+      "ld1r {v31.2d}, [%[t0]]\n\t"
+      "movi v2.4s, #0\n\t"
+      "fmul v18.2d, v18.2d, v26.d[0]\n\t"
+      "fmul v20.2d, v20.2d, v26.d[1]\n\t"
+      "fmul v22.2d, v22.2d, v27.d[0]\n\t"
+      "fmul v24.2d, v24.2d, v27.d[1]\n\t"
+      "fmul v29.2d, v29.2d, v28.d[0]\n\t"
+      "fcvtzs v18.2d, v18.2d, #16\n\t"
+      "fcvtzs v20.2d, v20.2d, #16\n\t"
+      "fcvtzs v22.2d, v22.2d, #16\n\t"
+      "fcvtzs v24.2d, v24.2d, #16\n\t"
+      "fcvtzs v29.2d, v29.2d, #16\n\t"
+      "sqxtn v5.2s, v18.2d\n\t"
+      "sqxtn v6.2s, v22.2d\n\t"
+      "sqxtn v7.2s, v29.2d\n\t"
+      "dup v4.2d, v28.d[0]\n\t"
+      "sqxtn2 v5.4s, v20.2d\n\t"
+      "sqxtn2 v6.4s, v24.2d\n\t"
+      "sqxtn2 v7.4s, v29.2d\n\t"
+      "smax v5.4s, v5.4s, v2.4s\n\t"
+      "smax v6.4s, v6.4s, v2.4s\n\t"
+      "smax v7.4s, v7.4s, v2.4s\n\t"
+      "smin v5.4s, v5.4s, v31.4s\n\t"
+      "smin v6.4s, v6.4s, v31.4s\n\t"
+      "smin v7.4s, v7.4s, v31.4s"
+      : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
+        [t6] "=&r"(t6), [t7] "=&r"(t7)
+      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
+      : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
+        "v28", "v29", "v30", "v31");
+  const float64x2_t zA = rzA, zB = rzB, zC = rzC;
+  const int32x4_t S01 = rS01, S23 = rS23, S44 = rS44;
+  // Sums of neighbouring samples' z: [z_0 + z_1, z_1 + z_2], [z_2 + z_3, z_3 + z_4] (the
+  // curve factors' and the last run's z_k + z_{k+1}).
+  const float64x2_t zs01 = vaddq_f64(zA, vextq_f64(zA, zB, 1)), zs23 = vaddq_f64(zB, vextq_f64(zB, zC, 1));
+  using L0 = std::integral_constant<int, 0>;
+  using L1 = std::integral_constant<int, 1>;
+  const int32x4_t kZero = vdupq_n_s32(0);
+  // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
+  // picked without an index. The branch also ends the code block holding the asm block
+  // soon after it (under 128 micro-ops: the A72 model's reorder buffer then holds the next
+  // span's positions while the divides run).
+  auto rest = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
+    const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
+    const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
+    int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
+    // Deltas as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x (saddw,
+    // |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus 2^52 + 2^51
+    // it is x exactly (x = 0: +0, as scvtf).
+    const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
+    // [120 x 4], [2^25 x 4] by one ldp (the load pipe; movi takes FP-pipe slots).
+    uint32x4_t k120, k2p25;
+    __asm__("ldp %q[k], %q[m], [%[c]]" : [k] "=w"(k120), [m] "=w"(k2p25) : [c] "r"(kShortConsts), "m"(kShortConsts));
+    auto unbias = [&](int64x2_t b) SB_LAMBDA_INLINE {
+      return vsubq_f64(vreinterpretq_f64_s64(b), vreinterpretq_f64_s64(kBias));
+    };
+    if constexpr (kCurve) {
+      // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
+      // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
+      const double zck = zc * -0.0625;
+      const float64x2_t c01 = vmulq_n_f64(zs01, zck);
+      const float64x2_t c23 = vmulq_n_f64(zs23, zck);
+      auto ddf = [&](int64x2_t b, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
+        return vcvtq_s64_f64(vmulq_laneq_f64(unbias(b), c, decltype(lane)::value));
+      };
+      const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vaddw_s32(kBias, vget_low_s32(D01)), c01, L0{})),
+                                            ddf(vaddw_high_s32(kBias, D01), c01, L1{}));
+      const int32x4_t i23 =
+          vcombine_s32(vqmovn_s64(ddf(vaddw_s32(kBias, vget_low_s32(D23)), c23, L0{})), vdup_n_s32(0));
+      // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
+      // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
+      // 120 2^25 > 2^31 > pd).
+      auto steps_dd = [&](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
+        const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
+        // |x| as (x ^ s) - s (s = x >> 31) is abs (wrapping: INT_MIN stays 0x80000000).
+        const uint32x4_t pd = vreinterpretq_u32_s32(vabsq_s32(delta));
+        const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
+        const uint32x4_t add = vreinterpretq_u32_s32(vabsq_s32(dd));
+        const uint32x4_t accept = vcleq_u32(vmulq_u32(vminq_u32(add, k2p25), k120), pd);
+        // (pd - 120 pdd) >> 4 or pd >> 4: picked, then shifted (the same logical shift).
+        const uint32x4_t pick = vshrq_n_u32(vbslq_u32(accept, vmlsq_laneq_u32(pd, pdd, k120, 0), pd), 4);
+        *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
+        *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
+      };
+      steps_dd(D01, i01, &d01, &dd01);
+      steps_dd(D23, i23, &d23, &dd23);
+    } else {
+      // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
+      auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
+        return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
+                                                             vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
+      };
+      d01 = div16(D01), d23 = div16(D23);
+    }
+    // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u) and steps
+    // (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64), for runs 0, 1 and 2, 3.
+    auto packs = [](int32x4_t x01, int32x4_t x23, int64x2_t* lo, int64x2_t* hi) SB_LAMBDA_INLINE {
+      const int32x4_t U = vuzp1q_s32(x01, x23), V = vuzp2q_s32(x01, x23);
+      *lo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
+      *hi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
+    };
+    int64x2_t dlo, dhi, ddlo, ddhi;
+    packs(d01, d23, &dlo, &dhi);
+    packs(dd01, dd23, &ddlo, &ddhi);
+    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+    int32_t sm[8];
+    double zm[4];
+    vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23);
+    vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
+    const int32_t au = sm[2 * k], av = sm[2 * k + 1];
+    RunSteps lu, lv;
+    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair) as doubles
+    // (unbias) and as integers: one 64-bit lane move (dv 2^32 + du), split in the integer unit.
+    const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
+                                         : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
+    const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
+    last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zm[k], &lu, &lv);
+    auto full = [&](auto jc) SB_LAMBDA_INLINE {
+      constexpr int j = decltype(jc)::value, l = j & 1;
+      const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
+      const uint64_t d0 = uint64_t(vgetq_lane_s64(j < 2 ? dlo : dhi, l));
+      const uint64_t dd = uint64_t(vgetq_lane_s64(j < 2 ? ddlo : ddhi, l));
+      Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
+      run.draw(dest + 16 * j, texels, w);
+    };
+    // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
+                    uint64_t b_dd) SB_LAMBDA_INLINE {
+      uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
+      uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+      if constexpr (kCurve) {
+        lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
+      } else {
+        lin_start(c0, c1, c2, c3, e, a_uv, a_d);
+      }
+      auto none = [](auto) SB_LAMBDA_INLINE {};
+      const uint64_t w64 = uint64_t(width);
+      auto slot = [&](auto j) SB_LAMBDA_INLINE {
+        lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
+                                             d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
+      };
+      using std::integral_constant;
+      slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
+      slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
+      slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
+      slot(integral_constant<int, 9>{});
+    };
+    auto packed = [](const RunSteps& su, const RunSteps& sv) {
+      return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
+    };
+    const uint64_t luv = (uint64_t(uint32_t(av)) << 32) + uint32_t(au);
+    const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
+    if (k == 1) {
+      full(std::integral_constant<int, 0>{});
+    } else {
+      pass(dest, vgetq_lane_u64(st01, 0), uint64_t(vgetq_lane_s64(dlo, 0)), uint64_t(vgetq_lane_s64(ddlo, 0)),
+           vgetq_lane_u64(st01, 1), uint64_t(vgetq_lane_s64(dlo, 1)), uint64_t(vgetq_lane_s64(ddlo, 1)));
+      if (k == 3 && last == 16) {
+        pass(dest + 32, vgetq_lane_u64(st23, 0), uint64_t(vgetq_lane_s64(dhi, 0)), uint64_t(vgetq_lane_s64(ddhi, 0)),
+             luv, ld, ldd);
+        return;
+      }
+      if (k > 2) full(std::integral_constant<int, 2>{});
+    }
+    dest += 16 * k;
+    if (last == 16) {
+      draw16<kCurve>(dest, texels, w, au, av, lu, lv);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+               uint32_t(lv.dd));
+    }
+  };
+  if (runs == 2) {
+    rest(std::integral_constant<int, 1>{});
+  } else if (runs == 3) {
+    rest(std::integral_constant<int, 2>{});
+  } else {
+    rest(std::integral_constant<int, 3>{});
+  }
+}
+#else
+constexpr int kShortMax = 16;  // elsewhere the long-span code (its overlap wins there)
+template <bool kCurve>
+void persp_short(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+#endif
+
+}  // namespace
+}  // namespace sb::simd

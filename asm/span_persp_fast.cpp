@@ -1,0 +1,463 @@
+// asm/span_persp_fast.cpp: the tuned whole-span lit-surface drawer (asm/span_persp.h) and
+// surface_span_fast (asm/surface_span.h), which shares its runs. Helpers:
+// asm/span_persp_run.h (runs, steps, samples), asm/span_persp_arm.h (ARM passes, last
+// steps, short spans). The samples' positions are accumulated as the walker
+// (asm/span_walk.h) accumulates them.
+#include "asm/span_persp.h"
+
+#include "asm/span_persp_arm.h"
+#include "asm/span_persp_run.h"
+#include "asm/surface_span.h"
+
+namespace sb::simd {
+
+void surface_span_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int, int32_t u, int32_t v,
+                       int32_t du, int32_t dv, int32_t ddu, int32_t ddv) {
+  const uint32_t w = uint32_t(width);
+  if (n == 16) return draw16(dest, texels, w, u, v, RunSteps{du, ddu}, RunSteps{dv, ddv});  // the engine's runs
+  uint32_t uu = uint32_t(u), vv = uint32_t(v), duu = uint32_t(du), dvv = uint32_t(dv);
+  const uint32_t dduu = uint32_t(ddu), ddvv = uint32_t(ddv);
+  for (; n >= 16; n -= 16, dest += 16) {
+    draw16(dest, texels, w, int32_t(uu), int32_t(vv), RunSteps{int32_t(duu), ddu}, RunSteps{int32_t(dvv), ddv});
+    // 16 pixels on (mod 2^32): u += 16 du + 120 ddu, du += 16 ddu.
+    uu += 16 * duu + 120 * dduu;
+    vv += 16 * dvv + 120 * ddvv;
+    duu += 16 * dduu;
+    dvv += 16 * ddvv;
+  }
+  if (n > 0) draw_run(dest, n, texels, w, uu, vv, duu, dvv, dduu, ddvv);
+}
+
+namespace {
+
+// kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
+// row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
+template <bool kCurve>
+void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  if (n <= 0) return;
+  // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
+  // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
+  // walker computes it: P_0 + o_1 for j = 1, else P_{j-2} + (o_j - o_{j-2}), where
+  // P_r = P_{r-1} + 16 is run r's first pixel, accumulated. `left` = pixels from run r on.
+  // The loop draws two runs per pass; the divides for the samples two runs ahead are issued
+  // in pairs, their to_fixed and the following runs' steps are done beside the drawing, all
+  // branch-free (one block per pass).
+  const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
+  const double umaxd = double(p.umax), vmaxd = double(p.vmax);
+  const double zc = p.second_order ? zix : 0.0;
+  const uint32_t w = uint32_t(width);
+  auto sample = [&](double px, double z) {
+    if constexpr (kIntClamp) {
+      return Sample{to_fixed_int((urow + ux * px) * z, p.umax), to_fixed_int((vrow + vx * px) * z, p.vmax), z};
+    } else {
+      return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
+    }
+  };
+  double P = p.px0;
+  int left = n;
+  double z0, z1, z2, z3;
+  if (n <= 16) {  // one run, from pixel 0 to pixel n - 1 (one pixel: steps 0, no second sample)
+    const double pos1 = P + double(n - 1);
+    recip2(zrow + zix * P, zrow + zix * pos1, &z0, &z1);
+    const Sample s0 = sample(P, z0), s1 = n > 1 ? sample(pos1, z1) : s0;
+    const double curve = zc * 0.5 * (s0.z + s1.z);
+    RunSteps su, sv;
+    if constexpr (kCurve && kLastSteps) {
+      last_steps(n - 1, s0, s1, curve, &su, &sv);
+    } else {
+      run_steps_uv(n - 1, s0, s1, curve, &su, &sv);
+    }
+    if (n == 16) {
+      draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
+    } else {
+      draw_run(dest, n, texels, w, uint32_t(s0.u), uint32_t(s0.v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
+               uint32_t(sv.dd));
+    }
+    return;
+  }
+  if (n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
+  recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
+  Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  double pos2, pos3 = 0.0;
+  if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
+    pos2 = P + double(32);
+    pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
+    recip2(zrow + zix * pos2, zrow + zix * pos3, &z2, &z3);
+  } else {  // two runs: sample 2 is the last pixel, o_2 - o_0 = n - 1
+    pos2 = P + double(n - 1);
+    recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
+  }
+  RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
+  RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+  // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
+  // over 16 pixels): left > 48. Samples r + 4 and r + 5 are then at o_{r+4} - o_{r+2} =
+  // min(32, left - 33) and o_{r+5} - o_{r+3} = min(32, left - 49) past P_{r+2}, P_{r+3}.
+  // In the loop, ddf = -2 (delta / 16 * curve) with curve = zc / 2 * (z_a + z_b) is computed
+  // as delta * (zck * (z_a + z_b)), zck = zc * -1/16: the same bits. Scaling by a power of
+  // two is exact and commutes with rounding, so zck (z_a + z_b) = -curve / 8 and both ddf
+  // are -round(delta * curve) / 8, whenever no value is subnormal or infinite.
+  // Subnormal (|zc| < 2^-1018, or a product below 2^-1022): |ddf| < 1 either way, dd = 0.
+  // Overflow: curve infinite makes ddf infinite with the sign delta * -zc, and then
+  // |delta zck (z_a + z_b)| > DBL_MAX / 8 saturates to the same int32 (delta != 0); for
+  // delta = 0 the walker's NaN gives dd = 0 or INT32_MIN, both rejected or 0 by
+  // steps16_dd, which then returns {0, 0} like dd = 0 does. A product overflowing later
+  // (delta / 16 * curve, or the * -2) overflows in both forms at the same rounding point.
+  const double zck = zc * -0.0625;
+  // (urow + ux * pos) of samples 2 and 3: the first half of sample(), one pass ahead.
+  double tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+  // The runs' register state set up in the group before them (the second run's only on
+  // 64-bit targets: armhf runs out of registers).
+#if defined(SB_SPAN_PACKED)
+  constexpr bool kEarlyB = true;
+#else
+  constexpr bool kEarlyB = false;
+#endif
+  Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
+#if defined(__aarch64__) && defined(__GNUC__)
+  {
+    // aarch64: the passes drawn by lin_slot (above); the samples' double arithmetic in
+    // 2-lane vectors, each lane the scalar operation above (same bits): [u, v] of
+    // one sample per vector, positions, depths and divides as [sample 4, sample 5], the
+    // fused forms those of the scalar code (urow + ux * pos, zrow + zix * pos: fmadd).
+    // to_fixed in integers: fix(q, m) = min(max(sat32(trunc(q 2^16)), 0), m), with fcvtzs
+    // #16 (trunc(q 2^16) exactly, saturating to int64, NaN -> 0: the same as converting
+    // the product q * 65536.0, a scaling by 2^16 that is exact or overflows to a saturated
+    // value either way) and sqxtn to int32. Equal to to_fixed: NaN and x = q 2^16 <= 0
+    // give trunc <= 0 -> 0; for x > m (m an integer >= 0) trunc(x) >= m, kept >= m by the
+    // saturations -> m; else 0 < x <= m and trunc(x) fits. A sample's clamped [u, v] in
+    // one 64-bit lane is v 2^32 + u: a run's packed start.
+    // Pipeline: a pass (runs r, r + 1) finishes samples r + 2, r + 3 (converted a pass
+    // earlier), takes the steps of runs r + 1, r + 2 from them, computes the positions and
+    // divides of samples r + 4, r + 5 and converts those. Second order: the steps as the
+    // loop above takes them (ddf = delta (zck (z_a + z_b))), and only for spans of two
+    // passes or more (for one the vector setup costs more than it saves).
+    if (left > (kCurve ? 80 : 48)) {
+      const float64x2_t kZrow = vdupq_n_f64(zrow), kZix = vdupq_n_f64(zix), kMin = vdupq_n_f64(kMinZi);
+      const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
+      const float64x2_t kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
+      const float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
+      const int32x2_t kMax = vcreate_s32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
+      const int32x2_t kZero = vdup_n_s32(0);
+      auto pack = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+      // [P_{r+2}, P_{r+3}] accumulated as the walker does (P_{r+3} = P_{r+2} + 16 exactly
+      // as computed, so adding 16 twice to both lanes gives the next pass's pair, bit for
+      // bit); [left - 33, left - 49] as doubles (exact integers).
+      const double P2i = (P + double(16)) + double(16);
+      float64x2_t pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
+      float64x2_t ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
+      float64x2_t z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
+      float64x2_t pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
+      // Samples r + 2, r + 3 converted, narrowed and clamped below (not yet above), as the
+      // loop leaves them.
+      int32x2_t n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
+      int32x2_t n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
+      n2 = vmax_s32(n2, kZero), n3 = vmax_s32(n3, kZero);
+      if constexpr (kCurve) n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);  // second order: clamped above too
+      // Second order: the depths [z_r, z_{r+1}] and [z_{r+1}, z_{r+2}].
+      float64x2_t zp = vcombine_f64(vdup_n_f64(s0.z), vdup_n_f64(s1.z));
+      float64x2_t zs = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
+      // Samples r, r + 1 as [u, v] vectors (the tail reads them; few integer registers).
+      int32x2_t n0 = vcreate_s32((uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u));
+      int32x2_t n1 = vcreate_s32((uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u));
+      // lin_slot's state: the chains of the run being addressed, the last group's
+      // addresses, the bytes loaded in the last slot, the gathered byte pairs.
+      uint64_t c0, c1, c2, c3, e, pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
+      uint64_t e1 = 0, dd4 = 0;  // second order: chain 1's step, the steps' step
+      if constexpr (kCurve) {
+        lin_start2(c0, c1, e, e1, dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d),
+                   pack(sv.dd, su.dd));
+      } else {
+        lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+      }
+      const uint64_t w64 = uint64_t(width);
+      do {
+        int32x2_t n4, n5;
+        uint64_t x1p = 0, x2p = 0, x3p = 0;
+        uint64_t b_uv = 0, b_d = 0, a_uv = 0, a_d = 0, b_dd = 0, a_dd = 0;
+        float64x2_t off, pos45, zi45, z45, ts4, ts5, q4, q5, zsn;
+        int64x2_t i4, i5;
+        // Second order, runs r + 1, r + 2: deltas, their doubles, the products, dd.
+        float64x2_t sum, c;
+        int32_t du1 = 0, dv1 = 0, du2 = 0, dv2 = 0, iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
+        double fu1 = 0, fv1 = 0, fu2 = 0, fv2 = 0;
+        // Second order: the stage, the linear one's vector work (the conversion of samples
+        // r + 4, r + 5 done within the pass, so that the next pass starts on clamped samples)
+        // and the steps of runs r + 1, r + 2 as steps16_sel computes them (ddf = delta (zck
+        // (z_a + z_b)), see above).
+        auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
+          constexpr int G = decltype(g)::value;
+          auto lanes = [](int32x2_t x) { return vget_lane_u64(vreinterpret_u64_s32(x), 0); };
+          if constexpr (G == 0) {
+            x1p = lanes(n1), x2p = lanes(n2), x3p = lanes(n3);
+            sum = vaddq_f64(zs, z23);  // [z_{r+1} + z_{r+2}, z_{r+2} + z_{r+3}]
+            off = vminnmq_f64(ll, k32);
+            pin(x1p), pin(x2p), pin(x3p), pin(sum), pin(off);
+          } else if constexpr (G == 1) {
+            du1 = int32_t(x2p) - int32_t(x1p), dv1 = int32_t(x2p >> 32) - int32_t(x1p >> 32);
+            du2 = int32_t(x3p) - int32_t(x2p), dv2 = int32_t(x3p >> 32) - int32_t(x2p >> 32);
+            pin(du1), pin(dv1), pin(du2), pin(dv2);
+            fu2 = double(du2), fv2 = double(dv2);
+          } else if constexpr (G == 2) {
+            c = vmulq_n_f64(sum, zck);
+            fu1 = double(du1), fv1 = double(dv1);
+            pos45 = vaddq_f64(pp, off);
+            zi45 = kZrow;
+            pin(c), pin(fu1), pin(fv1), pin(fu2), pin(fv2), pin(pos45), pin(zi45);
+          } else if constexpr (G == 4) {
+            const double ca = vgetq_lane_f64(c, 0), cb = vgetq_lane_f64(c, 1);
+            fu1 = fu1 * ca, fv1 = fv1 * ca, fu2 = fu2 * cb, fv2 = fv2 * cb;
+            zi45 = vfmaq_f64(zi45, kZix, pos45);
+            ts4 = kUVrow, ts5 = kUVrow;
+            pin(fu1), pin(fv1), pin(fu2), pin(fv2), pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 6) {
+            iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
+            zi45 = vmaxnmq_f64(zi45, kMin);
+            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
+            pin(iu1), pin(iv1), pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 7) {
+            const RunSteps u1 = steps16_dd(du1, iu1), v1 = steps16_dd(dv1, iv1);
+            b_uv = x1p, b_d = pack(v1.d, u1.d), b_dd = pack(v1.dd, u1.dd);
+          } else if constexpr (G == 8) {
+            z45 = vdivq_f64(kOne, zi45);
+            pin(z45);
+          } else if constexpr (G == 10) {
+            pp = vaddq_f64(pp, k16);
+            ll = vsubq_f64(ll, k32);
+            q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
+            pin(pp), pin(ll), pin(q4), pin(q5);
+          } else if constexpr (G == 12) {
+            pp = vaddq_f64(pp, k16);
+            i4 = vcvtq_n_s64_f64(q4, 16), i5 = vcvtq_n_s64_f64(q5, 16);
+            x2p = lanes(n2), x3p = lanes(n3);
+            iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+            pin(pp), pin(i4), pin(i5), pin(x2p), pin(x3p), pin(iu2), pin(iv2);
+          } else if constexpr (G == 13) {
+            const int32_t du = int32_t(x3p) - int32_t(x2p), dv = int32_t(x3p >> 32) - int32_t(x2p >> 32);
+            const RunSteps u2 = steps16_dd(du, iu2), v2 = steps16_dd(dv, iv2);
+            a_uv = x2p, a_d = pack(v2.d, u2.d), a_dd = pack(v2.dd, u2.dd);
+            pin(a_d), pin(a_dd);
+          } else if constexpr (G == 14) {
+            n4 = vqmovn_s64(i4), n5 = vqmovn_s64(i5);
+            pin(n4), pin(n5);
+          } else if constexpr (G == 16) {
+            n4 = vmax_s32(n4, kZero), n5 = vmax_s32(n5, kZero);
+            pin(n4), pin(n5);
+          } else if constexpr (G == 18) {
+            n4 = vmin_s32(n4, kMax), n5 = vmin_s32(n5, kMax);
+            zsn = vextq_f64(z23, z45, 1);  // [z_{r+3}, z_{r+4}]
+            pin(n4), pin(n5), pin(zsn);
+          }
+        };
+        auto stage = [&](auto g) SB_LAMBDA_INLINE {
+          constexpr int G = decltype(g)::value;
+          auto lanes = [](int32x2_t x) { return vget_lane_u64(vreinterpret_u64_s32(x), 0); };
+
+          // Even stages (between the shifts and the loads): the vector work, two chains;
+          // odd stages: integer work.
+          if constexpr (G == 0) {
+            n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);
+            off = vminnmq_f64(ll, k32);
+            pin(n2), pin(n3), pin(off);
+          } else if constexpr (G == 2) {
+            x1p = lanes(n1), x2p = lanes(n2);
+            pos45 = vaddq_f64(pp, off);
+            zi45 = kZrow;
+            pin(x1p), pin(x2p), pin(pos45), pin(zi45);
+          } else if constexpr (G == 3) {
+            b_uv = x1p, b_d = steps16_packed(x1p, x2p);
+            pin(b_d);
+          } else if constexpr (G == 4) {
+            zi45 = vfmaq_f64(zi45, kZix, pos45);
+            ts4 = kUVrow, ts5 = kUVrow;
+            pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 6) {
+            zi45 = vmaxnmq_f64(zi45, kMin);
+            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
+            pin(zi45), pin(ts4), pin(ts5);
+          } else if constexpr (G == 8) {
+            z45 = vdivq_f64(kOne, zi45);
+            pin(z45);
+          } else if constexpr (G == 10) {
+            pp = vaddq_f64(pp, k16);
+            ll = vsubq_f64(ll, k32);
+            pin(pp), pin(ll);
+          } else if constexpr (G == 12) {
+            pp = vaddq_f64(pp, k16);
+            q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
+            x2p = lanes(n2), x3p = lanes(n3);
+            pin(pp), pin(q4), pin(q5), pin(x2p), pin(x3p);
+          } else if constexpr (G == 13) {
+            a_uv = x2p, a_d = steps16_packed(x2p, x3p);
+            pin(a_d);
+          } else if constexpr (G == 14) {
+            i4 = vcvtq_n_s64_f64(q4, 16), i5 = vcvtq_n_s64_f64(q5, 16);
+            pin(i4), pin(i5);
+          } else if constexpr (G == 16) {
+            n4 = vqmovn_s64(i4), n5 = vqmovn_s64(i5);
+            pin(n4), pin(n5);
+          } else if constexpr (G == 18) {
+            n4 = vmax_s32(n4, kZero), n5 = vmax_s32(n5, kZero);
+            pin(n4), pin(n5);
+          }
+        };
+        auto slot = [&](auto j) SB_LAMBDA_INLINE {
+          if constexpr (kCurve) {
+            lin_slot<decltype(j)::value, true>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3,
+                                               g0, g1, dest, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, stage2);
+          } else {
+            lin_slot<decltype(j)::value, false>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3,
+                                                g0, g1, dest, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, stage);
+          }
+        };
+        using std::integral_constant;
+        slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
+        slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
+        slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
+        slot(integral_constant<int, 9>{});
+        dest += 32;
+        left -= 32;
+        n0 = n2, n1 = n3, n2 = n4, n3 = n5;
+        if constexpr (kCurve) zp = z23, zs = zsn;
+        z23 = z45, pos23 = pos45;
+      } while (left > 48);
+      // The state the tail below reads (it takes no position from P); run r's steps again.
+      s0 = Sample{vget_lane_s32(n0, 0), vget_lane_s32(n0, 1), vgetq_lane_f64(zp, 0)};
+      s1 = Sample{vget_lane_s32(n1, 0), vget_lane_s32(n1, 1), vgetq_lane_f64(zp, 1)};
+      su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
+      sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+      z2 = vgetq_lane_f64(z23, 0), z3 = vgetq_lane_f64(z23, 1);
+      pos2 = vgetq_lane_f64(pos23, 0), pos3 = vgetq_lane_f64(pos23, 1);
+    }
+  }
+#endif
+  while (left > 48) {
+    const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
+    const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
+    const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
+    // Software-pipelined setup: samples 2 and 3 (their divides issued a pass earlier), the
+    // steps of runs r + 1 (needed by the second run of this pass) and r + 2 (the next pass),
+    // and the divides for samples 4 and 5, one dependent operation per pixel group. Each
+    // operation is sample()'s / steps16's, in their order.
+    double sum1, sum2, c1 = 0.0, c2 = 0.0, zi4, zi5, tu4, tv4, tu5, tv5;
+    double qu2, qv2, qu3, qv3, fu1 = 0.0, fv1 = 0.0, fu2 = 0.0, fv2 = 0.0;
+    int32_t s2u = 0, s2v = 0, s3u = 0, s3v = 0;
+    int32_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
+    RunSteps u1{}, v1{}, u2{}, v2{};
+    double z4, z5;
+    auto stage_a = [&](auto g) {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        qu2 = tu2 * z2, qv2 = tv2 * z2, qu3 = tu3 * z3, qv3 = tv3 * z3;
+        sum1 = s1.z + z2, sum2 = z2 + z3;
+        zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
+      } else if constexpr (G == 1) {
+        qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
+        if constexpr (kCurve) c1 = zck * sum1, c2 = zck * sum2;
+      } else if constexpr (G == 2) {
+        qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
+      } else if constexpr (G == 3) {
+        qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
+        recip2(zi4, zi5, &z4, &z5);
+      } else if constexpr (G == 4) {
+        s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
+      } else if constexpr (G == 5) {
+        if constexpr (kCurve) {
+          fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
+        } else {
+          u1 = {(s2u - s1.u) / 16, 0}, v1 = {(s2v - s1.v) / 16, 0};
+        }
+      } else if constexpr (G == 6) {
+        if constexpr (kCurve) fu1 = fu1 * c1, fv1 = fv1 * c1;
+      } else if constexpr (G == 7) {
+        if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
+      } else if constexpr (G == 8) {
+        if constexpr (kCurve) u1 = steps16_dd(s2u - s1.u, iu1), v1 = steps16_dd(s2v - s1.v, iv1);
+      } else if constexpr (G == 9) {
+        if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
+      }
+    };
+    auto stage_b = [&](auto g) {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
+        tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
+      } else if constexpr (G == 1) {
+        if constexpr (kCurve) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+      } else if constexpr (G == 3) {
+        if constexpr (kCurve) fu2 = fu2 * c2, fv2 = fv2 * c2;
+      } else if constexpr (G == 5) {
+        if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+      } else if constexpr (G == 8) {
+        if constexpr (kCurve) u2 = steps16_dd(s3u - s2u, iu2), v2 = steps16_dd(s3v - s2v, iv2);
+      } else if constexpr (G == 9) {
+        run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
+      }
+    };
+    {
+      run_a.draw(dest, texels, w, stage_a);
+    }
+    group_end();
+    {
+      if constexpr (!kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);
+      run_b.draw(dest + 16, texels, w, stage_b);
+    }
+    group_end();
+    dest += 32;
+    P = P2;
+    left -= 32;
+    s0 = Sample{s2u, s2v, z2};
+    s1 = Sample{s3u, s3v, z3};
+    su = u2;
+    sv = v2;
+    z2 = z4;
+    z3 = z5;
+    pos2 = pos4;
+    pos3 = pos5;
+    tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
+  }
+  if (left > 32) {  // one run more whose next run is full and not the last
+    const Sample s2 = sample(pos2, z2);
+    const double c1 = zc * 0.5 * (s1.z + s2.z);
+    const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
+    draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
+    dest += 16;
+    P += double(16);
+    left -= 16;
+    s0 = s1;
+    s1 = s2;
+    su = u1;
+    sv = v1;
+    z2 = z3;
+    pos2 = pos3;
+  }
+  // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
+  // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
+  // last run that is sample r + 1 itself, which the walker does not recompute).
+  draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
+  dest += 16;
+  const int last = left - 16, steps = last - 1;
+  const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
+  const double curve = zc * 0.5 * (s1.z + s2.z);
+  RunSteps lu, lv;
+  if constexpr (kCurve && kLastSteps) {
+    last_steps(steps, s1, s2, curve, &lu, &lv);
+  } else {
+    run_steps_uv(steps, s1, s2, curve, &lu, &lv);
+  }
+  if (last == 16) {
+    draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
+  } else {
+    draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+             uint32_t(lv.dd));
+  }
+}
+}  // namespace
+
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+                             const PerspSpan& p) {
+  // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
+  if (!p.second_order || p.dzi == 0.0) return persp_fast<false>(dest, n, texels, width, p);
+  persp_fast<true>(dest, n, texels, width, p);
+}
+
+}  // namespace sb::simd

@@ -1,0 +1,432 @@
+// asm/span_persp_run.h: the whole-span drawer's run helpers (asm/span_persp.h): the run
+// steps, the generic run loop, the straight-line 16-pixel run and the branch-free sample
+// arithmetic. Internal: included by asm/span_persp_fast.cpp only (anonymous namespace:
+// internal linkage, as when this was part of that file).
+//
+// The double arithmetic must stay operation for operation what asm/span_walk.h's walker
+// (the engine's) does: the kernel promises the engine's bytes (tests/asm/span_persp_test.cpp
+// checks it). Here the same operations in select form (clamps as max / min, the run-step
+// test as masks; each rewrite argued where it is made).
+#pragma once
+#include <cstdint>
+#include <type_traits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#if defined(__aarch64__)
+#include <arm_neon.h>
+#endif
+
+#include "asm/span_persp.h"
+#include "asm/span_walk.h"
+
+namespace sb::simd {
+namespace {
+
+using span_walk::kMinZi;
+using span_walk::run_steps_with;
+using span_walk::RunSteps;
+
+// run_steps with the quotient already computed (q = double(b - a) / steps; steps >= 1).
+template <class Steps>
+inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, double q) {
+  return run_steps_with(a, b, steps_, curve, [q] { return q; });
+}
+
+// One run: surface_span's loop, inlined, with u and v in one 64-bit register: uv = v 2^32 + u,
+// stepped by duv = dv 2^32 + du (du sign-extended), itself stepped by ddv 2^32 + ddu. The
+// contract keeps every drawn u_k in 0 .. 2^32 - 1 and v_k >= 0, so uv_k is exactly the
+// integer v_k 2^32 + u_k (the recurrences are linear: the packed sums are the sums of the
+// packed terms) and its halves are u_k and v_k: two adds per pixel instead of four.
+inline void draw_run(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
+                     uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+  auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
+  uint64_t uv = (uint64_t(v) << 32) + u, duv = pack(dv, du);
+  auto texel = [&](uint64_t x) { return texels[uint32_t(x >> 48) * w + (uint32_t(x) >> 16)]; };
+  // Two pixels per step, their address arithmetic independent, and software-pipelined for
+  // in-order cores (Cortex-A53): each step loads the texels of the NEXT pair (which exists:
+  // k + 4 <= n, so no texel beyond the n pixels is read) and stores the pair loaded one step
+  // earlier, so no store waits on the load just issued.
+  //   linear:       uv_{k+2} = uv_k + 2 duv
+  //   second order: uv_{k+2} = uv_k + 2 duv_k + dduv, duv_{k+2} = duv_k + 2 dduv
+  int k = 0;
+  if (n >= 2) {
+    uint8_t t0 = texel(uv), t1 = texel(uv + duv);
+    if ((ddu | ddv) == 0) {
+      const uint64_t step2 = 2 * duv;
+      uv += step2;
+      for (; k + 4 <= n; k += 2) {
+        const uint8_t n0 = texel(uv), n1 = texel(uv + duv);
+        dest[k] = t0;
+        dest[k + 1] = t1;
+        t0 = n0;
+        t1 = n1;
+        uv += step2;
+      }
+    } else {
+      const uint64_t dduv = pack(ddv, ddu), dduv2 = 2 * dduv;
+      uv += 2 * duv + dduv;
+      duv += dduv2;
+      for (; k + 4 <= n; k += 2) {
+        const uint64_t uv1 = uv + duv;
+        const uint8_t n0 = texel(uv), n1 = texel(uv1);
+        dest[k] = t0;
+        dest[k + 1] = t1;
+        t0 = n0;
+        t1 = n1;
+        uv = uv1 + duv + dduv;
+        duv += dduv2;
+      }
+    }
+    dest[k] = t0;  // the last loaded pair; uv is now pixel k + 2's
+    dest[k + 1] = t1;
+    k += 2;
+  }
+  if (k < n) dest[k] = texel(uv);
+}
+
+// ---------------------------------------------------------------- the pipelined loop
+//
+// A long span's full runs go through one straight-line block per run: the run's 16 pixels
+// fully unrolled, and beside them, with no branch, everything the NEXT run needs (its end
+// sample's to_fixed, its steps) plus the divide for the run after that. In-order cores
+// (Cortex-A53, A7, A9) then overlap the double-precision chains and the divide with the
+// texel loads instead of stalling on them run after run. The same operations as above, in
+// select form: the same bits.
+
+// max(x, lo) with NaN -> lo, and min(x, hi) for x not NaN, without branches.
+inline double max_or_lo(double x, double lo) {
+#if defined(__aarch64__)
+  return __builtin_fmax(x, lo);  // fmaxnm
+#elif defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_max_sd(_mm_set_sd(x), _mm_set_sd(lo)));  // NaN -> the second operand
+#else
+  return x > lo ? x : lo;
+#endif
+}
+inline double min_hi(double x, double hi) {
+#if defined(__aarch64__)
+  return __builtin_fmin(x, hi);
+#elif defined(__SSE2__)
+  return _mm_cvtsd_f64(_mm_min_sd(_mm_set_sd(x), _mm_set_sd(hi)));
+#else
+  return x > hi ? hi : x;
+#endif
+}
+
+// to_fixed without branches: clamp in double, then convert (exact for 0 and max).
+inline int32_t to_fixed_sel(double v, double max) {
+  return int32_t(min_hi(max_or_lo(v * 65536.0, 0.0), max));
+}
+
+// double -> int32 by truncation, saturating, NaN -> 0 or INT32_MIN: the instruction's own
+// (defined) behaviour. Only in-range values are ever used (see steps16_sel).
+inline int32_t cvt_sat(double x) {
+#if defined(__GNUC__) && defined(__aarch64__)
+  int32_t r;
+  __asm__("fcvtzs %w0, %d1" : "=r"(r) : "w"(x));
+  return r;
+#elif defined(__SSE2__)
+  return _mm_cvttsd_si32(_mm_set_sd(x));
+#elif defined(__GNUC__) && defined(__arm__) && defined(__ARM_FP) && (__ARM_FP & 8)
+  float r;  // vcvt: truncating, saturating, NaN -> 0
+  __asm__("vcvt.s32.f64 %0, %P1" : "=t"(r) : "w"(x));
+  return __builtin_bit_cast(int32_t, r);
+#else
+  return x > -2147483648.0 && x < 2147483647.0 ? int32_t(x) : INT32_MIN;
+#endif
+}
+
+// armhf: to_fixed with the clamps in integers after vcvt (no vcmpe / vmrs):
+// fix(q, m) = min(max(sat32(trunc(q 65536)), 0), m) (sat32: vcvt.s32.f64, NaN -> 0).
+// NaN and x = q 65536 <= 0 give trunc <= 0 -> 0; x > m (an integer) gives trunc >= m,
+// kept >= m by the saturation -> m; else 0 < x <= m and trunc(x) fits.
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+constexpr bool kIntClamp = true;
+#else
+constexpr bool kIntClamp = false;
+#endif
+inline int32_t clamp_fixed(int32_t t, int32_t max) {
+  t &= ~(t >> 31);
+  return t < max ? t : max;
+}
+inline int32_t to_fixed_int(double v, int32_t max) { return clamp_fixed(cvt_sat(v * 65536.0), max); }
+
+// run_steps(a, b, 16, curve) without branches. a, b lie in [0, 2^31 - 2^16) (the clamps),
+// so delta = b - a fits 32 bits. The walker's test, mirrored to delta >= 0 (the
+// arithmetic is odd-symmetric in delta and dd: truncating divisions): with
+// num = |delta| - 120 dd', d0' = num / 16, it accepts iff d0' >= 0, d0' + 15 dd' >= 0 and
+// 0 <= reach' = 16 d0' + 120 dd' = |delta| - (num & 15) <= |delta| (for num >= 0 the
+// division is a floor, so num = 16 d0' + (num & 15); for num < 0 the walker rejects too:
+// then 120 dd' > |delta| >= reach' fails or d0' < 0). Accepted steps have
+// |dd| <= |delta| / 120 < 2^25 and |d0| < 2^28, so the range checks on ddf (|ddf| < 1e9)
+// and d0 (int32) never decide anything that this test does not: a saturated or NaN
+// conversion of ddf is rejected here, or gives dd = 0, which yields the linear step too.
+inline RunSteps steps16_dd(int32_t delta, int32_t dd);
+inline RunSteps steps16_sel(int32_t a, int32_t b, double curve) {
+  const int32_t delta = b - a;
+  const double c = double(delta) / 16 * curve;
+  const double ddf = -2.0 * c;
+  return steps16_dd(delta, cvt_sat(ddf));
+}
+// steps16_sel's integer part, from delta and dd = cvt_sat(ddf) (an int32).
+#if UINTPTR_MAX > 0xffffffffu
+inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
+  // Masks, not conditions: the compiler turns those into branches on the signs.
+  const int64_t dd = dd32;
+  const int64_t s = int64_t(delta >> 31);  // -1 when delta < 0
+  const int64_t pd = (int64_t(delta) ^ s) - s, pdd = (dd ^ s) - s;
+  const int64_t num = pd - pdd * 120;
+  const int64_t q = num >> 4;
+  const int64_t last_step = q + pdd * 15;
+  // The reach' test is implied: reach' = 16 d0' + 120 dd' = 8 (d0' + last_step) >= 0 when
+  // num >= 0 (then d0' >= 0) and last_step >= 0, and reach' = |delta| - (num & 15) <= |delta|.
+  const int64_t reject = (num | last_step) >> 63;  // -1: linear
+  const int64_t pick = q ^ ((q ^ (pd >> 4)) & reject);  // d0' or the linear step, mirrored
+  return {int32_t((pick ^ s) - s), int32_t(dd & ~reject)};
+}
+#else
+// 32-bit targets: the same in 32-bit arithmetic. With pd = |delta| < 2^31 and pdd = dd
+// mirrored (|pdd| = |dd| <= 2^31), the test above (num >= 0 and last_step = floor(num / 16)
+// + 15 pdd >= 0) is 120 |dd| <= pd: for pdd >= 0, num >= 0 is pd >= 120 pdd and then
+// last_step >= 0; for pdd < 0, num > 0 and floor(num / 16) >= 15 |pdd| (an integer) iff
+// num >= 240 |pdd| iff pd >= 120 |pdd|. Then num = pd - 120 pdd lies in [0, 2 pd] < 2^32:
+// its uint32 value (arithmetic mod 2^32) is exact and d0' = num >> 4. Rejected: the linear
+// step (pd >> 4, mirrored) and dd = 0.
+inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
+  const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
+  const uint32_t pd = (uint32_t(delta) ^ s) - s, pdd = (uint32_t(dd) ^ s) - s;
+  const uint32_t sd = uint32_t(dd >> 31), add = (uint32_t(dd) ^ sd) - sd;  // |dd|
+  const uint32_t accept = -uint32_t(uint64_t(add) * 120 <= pd);  // all ones: second order
+  const uint32_t q = (pd - pdd * 120) >> 4, lin = pd >> 4;
+  const uint32_t pick = lin ^ ((q ^ lin) & accept);  // d0' or the linear step, mirrored
+  return {int32_t((pick ^ s) - s), int32_t(uint32_t(dd) & accept)};
+}
+#endif
+
+// One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
+// linear), even and odd pixels in two independent chains (u_{k+2} = u_k + e_k,
+// e_{k+2} = e_k + 4 dd with e_k = 2 du_k + dd: the recurrence two steps at a time, equal
+// modulo 2^32), so the adds do not form one 16-deep dependency chain. 64-bit targets: u, v
+// packed in one register (see draw_run); ARM: texels gathered into words (orr with a
+// shifted operand), one store per 8 (aarch64) or 4 (armhf).
+#if defined(__aarch64__) || defined(__x86_64__)
+#define SB_SPAN_PACKED 1
+#endif
+#if defined(__aarch64__) || defined(__arm__)
+#define SB_SPAN_WORDS 1
+#endif
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__ && defined(SB_SPAN_WORDS)
+#error "draw16 gathers texels little-endian"
+#endif
+// A full run's steps: the curved ones, or (kCurve false: curve 0) run_steps' linear step.
+template <bool kCurve>
+inline RunSteps steps16(int32_t a, int32_t b, double curve) {
+  if constexpr (kCurve) {
+    return steps16_sel(a, b, curve);
+  } else {
+    (void)curve;
+    return {(b - a) / 16, 0};  // |b - a| < 2^31 (the clamps)
+  }
+}
+
+#define SB_INLINE inline __attribute__((always_inline))
+#define SB_LAMBDA_INLINE __attribute__((always_inline))
+
+// Ends a group of the software-pipelined run below. ARM (in-order cores): an empty volatile
+// asm, which the compiler's scheduler does not move instructions across, so each group's
+// independent instructions stay together; x86-64 (out of order): nothing.
+inline void group_end() {
+#if defined(__GNUC__) && (defined(__aarch64__) || defined(__arm__))
+  __asm__ volatile("");
+#endif
+}
+
+// The run in ten groups, software-pipelined two pixels per group: group g computes the
+// texel addresses of pixels 2g, 2g + 1, loads those of pixels 2g - 2, 2g - 1 and gathers
+// (or stores) those of pixels 2g - 4, 2g - 3, so that no instruction waits for one of its
+// own group (the load-to-use and multiply latencies of in-order cores are covered).
+template <bool kCurve = true>
+class Run16 {
+ public:
+  SB_INLINE Run16(int32_t u0, int32_t v0, const RunSteps& su, const RunSteps& sv) {
+#if defined(SB_SPAN_PACKED)
+    auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
+    const T a0 = (uint64_t(uint32_t(v0)) << 32) + uint32_t(u0), d0 = pack(uint32_t(sv.d), uint32_t(su.d));
+    const T dd = pack(uint32_t(sv.dd), uint32_t(su.dd));
+    x_[0] = a0;
+    x_[1] = a0 + d0;
+    e_[0] = 2 * d0 + dd;
+    e_[1] = 2 * d0 + 3 * dd;
+    dd4_ = 4 * dd;
+#else
+    // 32-bit: one chain (u, v, du, dv, ddu, ddv: six registers; two chains would spill).
+    u_ = uint32_t(u0), du_ = uint32_t(su.d), ddu_ = uint32_t(su.dd);
+    v_ = uint32_t(v0), dv_ = uint32_t(sv.d), ddv_ = uint32_t(sv.dd);
+#endif
+  }
+#if defined(SB_SPAN_PACKED)
+  // From the packed start v 2^32 + u and steps dv 2^32 + du, ddv 2^32 + ddu (du, ddu
+  // sign-extended), as the constructor above packs them.
+  struct Packed {};
+  SB_INLINE Run16(uint64_t a0, uint64_t d0, uint64_t dd, Packed) {
+    x_[0] = a0;
+    x_[1] = a0 + d0;
+    e_[0] = 2 * d0 + dd;
+    e_[1] = 2 * d0 + 3 * dd;
+    dd4_ = 4 * dd;
+  }
+#endif
+  template <int G>
+  SB_INLINE void group(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
+    if constexpr (G < 8) {
+      address<2 * G>(w);
+      address<2 * G + 1>(w);
+    }
+    if constexpr (G >= 1 && G <= 8) {
+      t_[2 * G - 2] = texels[a_[2 * G - 2]];
+      t_[2 * G - 1] = texels[a_[2 * G - 1]];
+    }
+    if constexpr (G >= 2 && G <= 9) {
+      put<2 * G - 4>(dest);
+      put<2 * G - 3>(dest);
+    }
+    if constexpr (G == 9) finish(dest);
+  }
+  SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
+    draw(dest, texels, w, [](auto) {});
+  }
+  // The same, with stage(std::integral_constant<int, G>) placed inside group G: other work
+  // (the next runs' setup) interleaved with the pixels, one dependent step per group, so
+  // in-order cores cover its latencies with the texel loads.
+  template <class Stage>
+  SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, Stage&& stage) {
+    using std::integral_constant;
+    group<0>(dest, texels, w), stage(integral_constant<int, 0>{}), group_end();
+    group<1>(dest, texels, w), stage(integral_constant<int, 1>{}), group_end();
+    group<2>(dest, texels, w), stage(integral_constant<int, 2>{}), group_end();
+    group<3>(dest, texels, w), stage(integral_constant<int, 3>{}), group_end();
+    group<4>(dest, texels, w), stage(integral_constant<int, 4>{}), group_end();
+    group<5>(dest, texels, w), stage(integral_constant<int, 5>{}), group_end();
+    group<6>(dest, texels, w), stage(integral_constant<int, 6>{}), group_end();
+    group<7>(dest, texels, w), stage(integral_constant<int, 7>{}), group_end();
+    group<8>(dest, texels, w), stage(integral_constant<int, 8>{}), group_end();
+    group<9>(dest, texels, w), stage(integral_constant<int, 9>{});
+  }
+
+ private:
+#if defined(SB_SPAN_PACKED)
+  using T = uint64_t;
+  T x_[2], e_[2], dd4_;
+#else
+  using T = uint32_t;
+  T u_, du_, ddu_, v_, dv_, ddv_;
+#endif
+  // x86-64: 64-bit offsets (no zero-extension before addressing); ARM: 32-bit (uxtw).
+#if defined(__x86_64__)
+  using Addr = uint64_t;
+#else
+  using Addr = uint32_t;
+#endif
+  Addr a_[16];
+  uint8_t t_[16];
+#if defined(SB_SPAN_WORDS)
+  using Word = uintptr_t;
+  static constexpr int kPer = int(sizeof(Word));
+  Word out_[4] = {0, 0, 0, 0};
+#endif
+  template <int K>
+  SB_INLINE void address(uint32_t w) {
+    constexpr int c = K & 1;
+#if defined(SB_SPAN_PACKED)
+    a_[K] = Addr(uint32_t(x_[c] >> 48)) * w + (uint32_t(x_[c]) >> 16);
+    x_[c] += e_[c];
+    if constexpr (kCurve) e_[c] += dd4_;
+#else
+    (void)c;
+    a_[K] = (v_ >> 16) * w + (u_ >> 16);
+    u_ += du_;
+    v_ += dv_;
+    if constexpr (kCurve) {
+      du_ += ddu_;
+      dv_ += ddv_;
+    }
+#endif
+  }
+  template <int K>
+  SB_INLINE void put(uint8_t* __restrict dest) {
+#if defined(SB_SPAN_WORDS)
+    out_[K / kPer] |= Word(t_[K]) << (8 * (K % kPer));  // little-endian
+    if constexpr (K % kPer == kPer - 1) __builtin_memcpy(dest + (K - kPer + 1), &out_[K / kPer], sizeof(Word));
+#else
+    dest[K] = t_[K];
+#endif
+  }
+  SB_INLINE void finish(uint8_t* __restrict dest) { (void)dest; }  // put stores each word when full
+};
+
+template <bool kCurve = true>
+SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, int32_t u0, int32_t v0,
+                   const RunSteps& su, const RunSteps& sv) {
+  Run16<kCurve> run(u0, v0, su, sv);
+  run.draw(dest, texels, w);
+}
+
+// 1 / max(zi, kMinZi) for two samples (NaN -> kMinZi). aarch64: one vector divide (on
+// Cortex-A53 it costs what one scalar divide costs); elsewhere two.
+inline void recip2(double zia, double zib, double* za, double* zb) {
+#if defined(__aarch64__)
+  const float64x2_t zi = vmaxnmq_f64(vcombine_f64(vdup_n_f64(zia), vdup_n_f64(zib)), vdupq_n_f64(kMinZi));
+  const float64x2_t z = vdivq_f64(vdupq_n_f64(1.0), zi);
+  *za = vgetq_lane_f64(z, 0);
+  *zb = vgetq_lane_f64(z, 1);
+#else
+  *za = 1.0 / max_or_lo(zia, kMinZi);
+  *zb = 1.0 / max_or_lo(zib, kMinZi);
+#endif
+}
+
+struct Sample {
+  int32_t u, v;
+  double z;
+};
+
+// run_steps for u and v over a run's `steps` (0 .. 16) pixels, each integer division by a
+// constant (multiplies and shifts: no 64-bit divide instruction or, on armhf, library call)
+// and the two double quotients delta / steps in one vector divide (aarch64, x86-64).
+template <int S>
+inline void run_steps_uv(const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  const std::integral_constant<int, S> steps;
+  const int64_t du = int64_t(b.u) - int64_t(a.u), dv = int64_t(b.v) - int64_t(a.v);
+  double qu = 0.0, qv = 0.0;
+  if (curve != 0.0 && S >= 2) {
+#if defined(__aarch64__)
+    const float64x2_t q = vdivq_f64(vcombine_f64(vdup_n_f64(double(du)), vdup_n_f64(double(dv))), vdupq_n_f64(S));
+    qu = vgetq_lane_f64(q, 0);
+    qv = vgetq_lane_f64(q, 1);
+#elif defined(__SSE2__)
+    const __m128d q = _mm_div_pd(_mm_set_pd(double(dv), double(du)), _mm_set1_pd(S));
+    qu = _mm_cvtsd_f64(q);
+    qv = _mm_cvtsd_f64(_mm_unpackhi_pd(q, q));
+#else
+    qu = double(du) / S;
+    qv = double(dv) / S;
+#endif
+  }
+  *su = run_steps_q(a.u, b.u, steps, curve, qu);
+  *sv = run_steps_q(a.v, b.v, steps, curve, qv);
+}
+inline void run_steps_uv(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
+  switch (steps) {
+#define SB_CASE(S) \
+  case S: return run_steps_uv<S>(a, b, curve, su, sv);
+    SB_CASE(1) SB_CASE(2) SB_CASE(3) SB_CASE(4) SB_CASE(5) SB_CASE(6) SB_CASE(7) SB_CASE(8)
+    SB_CASE(9) SB_CASE(10) SB_CASE(11) SB_CASE(12) SB_CASE(13) SB_CASE(14) SB_CASE(15) SB_CASE(16)
+#undef SB_CASE
+    default: *su = *sv = RunSteps{0, 0};  // steps 0: one pixel
+  }
+}
+
+}  // namespace
+}  // namespace sb::simd
