@@ -22,6 +22,7 @@
 //                surface in perspective, second-order steps, divides included
 //   persp64      the same over 30 spans of 64 pixels (per-span costs weigh more)
 //   persp1920lin persp1920 with linear steps (second_order off: Quake's stepping)
+//   persp64lin   persp64 with linear steps (the like-for-like short-span figure)
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
@@ -83,7 +84,7 @@ const Kernels* find_variant(const char* name) {
 
 const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "alias32", "alias1920h",
-                              "persp1920", "persp64", "persp1920lin"};
+                              "persp1920", "persp64", "persp1920lin", "persp64lin"};
 
 long units_of(const char* c) {
   if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
@@ -170,7 +171,8 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     // A floor-like plane: 1/z falls 4x across the row, u and v cross the surface.
     std::vector<uint8_t> surf(size_t(kSurf) * kSurf), dest(kSpan);
     for (auto& t : surf) t = uint8_t(rng.next() >> 24);
-    const int len = std::strcmp(c, "persp64") == 0 ? 64 : kSpan;
+    const bool lin = std::strstr(c, "lin") != nullptr;
+    const int len = std::strncmp(c, "persp64", 7) == 0 ? 64 : kSpan;
     sb::simd::PerspSpan p{};
     p.zi0 = 0.004;
     p.dzi = -0.003 / kSpan;
@@ -180,7 +182,7 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     p.dvz = -0.0001 * kSurf / kSpan;
     p.umax = (kSurf << 16) - 1;
     p.vmax = (kSurf << 16) - 1;
-    p.second_order = std::strcmp(c, "persp1920lin") != 0;
+    p.second_order = !lin;
     for (long r = 0; r < reps; ++r)
       for (int x = 0; x < kSpan; x += len) {
         p.px0 = x + 0.5;

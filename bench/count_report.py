@@ -45,7 +45,8 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "z1920": "z_span", "palette": "expand_palette (x1)",
           "alias32": "alias_span (32-px spans, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
           "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)",
-          "persp1920lin": "surface_span_persp (1920 px, linear steps)"}
+          "persp1920lin": "surface_span_persp (1920 px, linear steps)",
+          "persp64lin": "surface_span_persp (64-px spans, linear steps)"}
 UNIT = {"palette": "src px"}
 
 
@@ -322,10 +323,13 @@ def merge_rows(path, rows):
         hits = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l) == key(r)]
         if hits:
             lines[hits[0]] = r
-        else:  # after the last row of the same kernel, else at the table's end
+        else:  # after the last row of the same kernel, else of the kernels before it, else at the end
             same = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l)[0] == key(r)[0]]
+            order = list(KERNEL.values())
+            before = order[:order.index(key(r)[0])] if key(r)[0] in order else []
+            prev = [i for i, l in enumerate(lines) if l.startswith("| ") and key(l)[0] in before]
             last = [i for i, l in enumerate(lines) if l.startswith("| ")]
-            lines.insert((same or last)[-1] + 1, r)
+            lines.insert((same or prev or last)[-1] + 1, r)
     open(path, "w").write("\n".join(lines))
 
 
