@@ -367,7 +367,7 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 
 #if defined(__aarch64__)
 // aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position,
-// depth and divide first (two 2-lane divides and one scalar, back to back), the conversions
+// depth and reciprocal first (two 2-lane and one scalar, without a divide), the conversions
 // and the full runs' steps in vectors, the last run's by last_steps, all branch-free, then
 // the runs drawn straight (pairs of full runs as one lin_slot pass). Positions as the walker
 // computes them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1,
@@ -375,6 +375,33 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 // Samples past the last one (j > runs) are computed but unused; for a one-pixel last run
 // the last sample is unused too (steps 0 whatever the samples: run_steps). Each lane is
 // the long-span vector code's operation (see persp_fast): the same bits.
+//
+// The reciprocals 1 / zi without a divide (fdiv blocks an in-order core for ~30 cycles): for
+// b = max(zi, kMinZi) in [2^-30, 2^1000) every value below is normal, so each operation
+// rounds with relative error <= u = 2^-53 and everything scales with b's exponent: take b
+// in [1, 2), 1/b in (1/2, 1]. Round to nearest (the default FPCR, as the engine runs).
+//   y0 = frecpe(b): |b y0 - 1| = e0 < 2^-8.44 (ARM's 256-entry table; the test checks both
+//        ends of every interval at every exponent).
+//   y <- y frecps(b, y), twice (frecps = RN(2 - b y), fused): with b y = 1 + e the new
+//        e' = (1 - e^2)(1 + d1)(1 + d2) - 1, |e'| <= e^2 + 2.01 u: e1 < 2^-16.8, e2 < 2^-33.5.
+//   y3 = RN(v), v = y2 + y2 RN(1 - b y2) = (1/b)(1 - e2^2 - e2 d3 (1 + e2)): |v b - 1| <
+//        2^-66, so y3 is RN(1/b) or, when a rounding midpoint lies between v and 1/b, the
+//        other neighbour of that midpoint.
+//   z = RN(y3 + y3 r3), r3 = 1 - b y3 exact (fma: b y3 is a multiple of 2^-105 within 2^-52
+//        of 1), and y3 + y3 r3 = 1/b - b eps^2 with eps = 1/b - y3.
+// Midpoints in (1/2, 1) are odd multiples of 2^-54 and never 1/b (b m = 1 needs two powers
+// of two): |1/b - m| = j 2^-106 / b with j >= 1 an integer; below 1/2 they are 2^-55 from
+// it. z = RN(1/b) unless a midpoint lies in [1/b - b eps^2, 1/b):
+//   y3 = RN(1/b): |eps| <= 2^-54 and b eps^2 <= 2^-108 b < 2^-106 / b (b < 2): none.
+//   y3 above 1/b: z moves away from the midpoint between them, the next one is 2^-53 lower.
+//   y3 below 1/b = m + j 2^-106 / b (eps = 2^-54 + j 2^-106 / b, j < 2^40 as |v b - 1| <
+//        2^-66): none iff b eps < sqrt(j) 2^-53, i.e. b / 2 + j 2^-53 < sqrt(j): true for
+//        j >= 2, and for j = 1 unless b = 2 - 2^-52, a significand of all ones.
+// So the block divides when some zi has a significand of all ones ((bits + 1) << 12 = 0)
+// or zi >= 2^1000 (its bits compared; +inf too; fmaxnm already made NaN kMinZi): one
+// branch, almost never taken. Tests: AsmSpanPersp.ReciprocalWithoutDivide (the same
+// operations on 12M inputs: the hard cases next to midpoints, the frecpe table, random) and
+// AsmSpanPersp.ShortSpansDivideWhereTheReciprocalCannot (the fallback).
 constexpr int kShortMax = 64;
 alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
 template <bool kCurve>
@@ -384,99 +411,263 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
   // One asm block, each operation the vector code's lane operation (the same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
-  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the [u, v]
-  // products uvrow + uvx pos before the divides 1 / max(zi, kMinZi) (two 2-lane and one
-  // scalar, back to back), then the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max]
-  // (persp_fast's argument). Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44
-  // (sample 4 twice). Ordered for the in-order A53 (a consumer after its producer's latency;
-  // its model also completes in order, so the first divide's inputs come first); the
+  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
+  // reciprocals 1 / max(zi, kMinZi) (above: zA, zB in 2 lanes, zC scalar, the three chains
+  // level by level, the range and all-ones test and the [u, v] products uvrow + uvx pos in
+  // their latency gaps; the divides only on the branch), then the samples: fcvtzs #16 of
+  // (uv z), sqxtn, clamps to [0, max] (persp_fast's argument). Two samples per vector: S01 =
+  // [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered for the in-order A53 (a
+  // consumer after its producer's latency; its model also completes in order, so the
+  // integer work comes first and each latency gap holds work of the same latency); the
   // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
-  // latency 3, an element insert 8).
-  register float64x2_t rzA __asm__("v26");
-  register float64x2_t rzB __asm__("v27");
-  register float64x2_t rzC __asm__("v4");
-  register int32x4_t rS01 __asm__("v5");
-  register int32x4_t rS23 __asm__("v6");
-  register int32x4_t rS44 __asm__("v7");
-  uint64_t t0, t5, t6, t7;
-  __asm__ volatile(
-      "fmov d1, #16.0\n\t"
-      "ldr d0, [%[p], #48]\n\t"
-      "sub %w[t5], %w[n], #1\n\t"
-      "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
-      "sub %w[t6], %w[n], #17\n\t"
-      "mov %w[t7], #32\n\t"
-      "cmp %w[t5], #32\n\t"
-      "add %[t0], %[p], #16\n\t"
-      "fadd d2, d0, d1\n\t"
-      "csel %w[t5], %w[t5], %w[t7], lt\n\t"
-      "cmp %w[t6], #32\n\t"
-      "ld1r {v26.2d}, [%[p]]\n\t"
-      "ld1r {v31.2d}, [%[km]]\n\t"
-      "csel %w[t6], %w[t6], %w[t7], lt\n\t"
-      "scvtf d4, %w[t5]\n\t"
-      "sub %w[t7], %w[n], #33\n\t"
-      "scvtf d5, %w[t6]\n\t"
-      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
-      "trn1 v0.2d, v0.2d, v2.2d\n\t"
-      "fadd d3, d2, d1\n\t"
-      "scvtf d6, %w[t7]\n\t"
-      "ld1r {v27.2d}, [%[p]]\n\t"
-      "trn1 v4.2d, v4.2d, v5.2d\n\t"
-      "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
-      "fmla v26.2d, v17.2d, v0.2d\n\t"
-      "fadd v7.2d, v0.2d, v4.2d\n\t"
-      "fmla v18.2d, v19.2d, v0.d[0]\n\t"
-      "fadd d3, d3, d6\n\t"
-      "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
-      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
-      "fmla v27.2d, v17.2d, v7.2d\n\t"
-      "fmadd d28, d17, d3, d16\n\t"
-      "fmov v1.2d, #1.0\n\t"
-      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
-      "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
-      "fmla v22.2d, v23.2d, v7.d[0]\n\t"
-      "fmla v24.2d, v25.2d, v7.d[1]\n\t"
-      "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
-      "fdiv v26.2d, v1.2d, v26.2d\n\t"
-      "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
-      "fmaxnm d28, d28, d31\n\t"
-      "add %[t0], %[p], #56\n\t"
-      "fdiv v27.2d, v1.2d, v27.2d\n\t"
-      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
-      "fdiv d28, d1, d28\n\t"
-      "ld1r {v31.2d}, [%[t0]]\n\t"
-      "movi v2.4s, #0\n\t"
-      "fmul v18.2d, v18.2d, v26.d[0]\n\t"
-      "fmul v20.2d, v20.2d, v26.d[1]\n\t"
-      "fmul v22.2d, v22.2d, v27.d[0]\n\t"
-      "fmul v24.2d, v24.2d, v27.d[1]\n\t"
-      "fmul v29.2d, v29.2d, v28.d[0]\n\t"
-      "fcvtzs v18.2d, v18.2d, #16\n\t"
-      "fcvtzs v20.2d, v20.2d, #16\n\t"
-      "fcvtzs v22.2d, v22.2d, #16\n\t"
-      "fcvtzs v24.2d, v24.2d, #16\n\t"
-      "fcvtzs v29.2d, v29.2d, #16\n\t"
-      "sqxtn v5.2s, v18.2d\n\t"
-      "sqxtn v6.2s, v22.2d\n\t"
-      "sqxtn v7.2s, v29.2d\n\t"
-      "dup v4.2d, v28.d[0]\n\t"
-      "sqxtn2 v5.4s, v20.2d\n\t"
-      "sqxtn2 v6.4s, v24.2d\n\t"
-      "sqxtn2 v7.4s, v29.2d\n\t"
-      "smax v5.4s, v5.4s, v2.4s\n\t"
-      "smax v6.4s, v6.4s, v2.4s\n\t"
-      "smax v7.4s, v7.4s, v2.4s\n\t"
-      "smin v5.4s, v5.4s, v31.4s\n\t"
-      "smin v6.4s, v6.4s, v31.4s\n\t"
-      "smin v7.4s, v7.4s, v31.4s"
-      : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
-        [t6] "=&r"(t6), [t7] "=&r"(t7)
-      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
-      : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
-        "v28", "v29", "v30", "v31");
-  const float64x2_t zA = rzA, zB = rzB, zC = rzC;
-  const int32x4_t S01 = rS01, S23 = rS23, S44 = rS44;
+  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
+  float64x2_t zA, zB, zC;
+  int32x4_t S01, S23, S44;
+  double zck = 0.0;  // zc * -1/16 (second order: the runs' steps below), in the block's spare slots
+  if constexpr (kCurve) {
+    register float64x2_t rzA __asm__("v2");
+    register float64x2_t rzB __asm__("v6");
+    register float64x2_t rzC __asm__("v4");
+    register int32x4_t rS01 __asm__("v5");
+    register int32x4_t rS23 __asm__("v19");
+    register int32x4_t rS44 __asm__("v7");
+    uint64_t t0, t1, t2, t5, t6, t7;
+    __asm__ volatile(
+        "ldr d0, [%[p], #48]\n\t"
+        "sub %w[t5], %w[n], #1\n\t"
+        "sub %w[t6], %w[n], #17\n\t"
+        "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+        "mov %w[t7], #32\n\t"
+        "cmp %w[t5], #32\n\t"
+        "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+        "cmp %w[t6], #32\n\t"
+        "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+        "sub %w[t7], %w[n], #33\n\t"
+        "add %[t0], %[p], #16\n\t"
+        "fmov d1, #16.0\n\t"
+        "ld1r {v26.2d}, [%[p]]\n\t"
+        "fadd d2, d0, d1\n\t"
+        "ld1r {v31.2d}, [%[km]]\n\t"
+        "scvtf d4, %w[t5]\n\t"
+        "scvtf d5, %w[t6]\n\t"
+        "scvtf d6, %w[t7]\n\t"
+        "ld1r {v27.2d}, [%[p]]\n\t"
+        "trn1 v0.2d, v0.2d, v2.2d\n\t"
+        "trn1 v4.2d, v4.2d, v5.2d\n\t"
+        "fadd d3, d2, d1\n\t"
+        "fmla v26.2d, v17.2d, v0.2d\n\t"
+        "fadd v7.2d, v0.2d, v4.2d\n\t"
+        "fadd d3, d3, d6\n\t"
+        "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+        "fmla v27.2d, v17.2d, v7.2d\n\t"
+        "fmadd d28, d17, d3, d16\n\t"
+        "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+        "fmov v1.2d, #1.0\n\t"
+        "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+        "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+        "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+        "fmaxnm d28, d28, d31\n\t"
+        "frecpe v2.2d, v26.2d\n\t"
+        "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+        "frecpe v6.2d, v27.2d\n\t"
+        "frecpe d4, d28\n\t"
+        "fmax v31.2d, v26.2d, v27.2d\n\t"
+        "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+        "fmov %[t1], d26\n\t"
+        "mov %[t2], v26.d[1]\n\t"
+        "fmov %[t7], d27\n\t"
+        "mov %[t6], v27.d[1]\n\t"
+        "fmov %[t0], d28\n\t"
+        "frecps v5.2d, v26.2d, v2.2d\n\t"
+        "frecps v16.2d, v27.2d, v6.2d\n\t"
+        "frecps d17, d28, d4\n\t"
+        "fmaxp d31, v31.2d\n\t"
+        "add %[t1], %[t1], #1\n\t"
+        "add %[t2], %[t2], #1\n\t"
+        "add %[t7], %[t7], #1\n\t"
+        "add %[t6], %[t6], #1\n\t"
+        "add %[t0], %[t0], #1\n\t"
+        "mov %[t5], #0xbfb0000000000000\n\t"
+        "fmul v2.2d, v2.2d, v5.2d\n\t"
+        "fmul v6.2d, v6.2d, v16.2d\n\t"
+        "fmul d4, d4, d17\n\t"
+        "fmax d31, d31, d28\n\t"
+        "fmov %d[zck], %[t5]\n\t"
+        "lsl %[t1], %[t1], #12\n\t"
+        "lsl %[t2], %[t2], #12\n\t"
+        "lsl %[t7], %[t7], #12\n\t"
+        "lsl %[t6], %[t6], #12\n\t"
+        "lsl %[t0], %[t0], #12\n\t"
+        "frecps v5.2d, v26.2d, v2.2d\n\t"
+        "frecps v16.2d, v27.2d, v6.2d\n\t"
+        "frecps d17, d28, d4\n\t"
+        "fmov %[t5], d31\n\t"
+        "fmul %d[zck], %d[zc], %d[zck]\n\t"
+        "clz %[t1], %[t1]\n\t"
+        "clz %[t2], %[t2]\n\t"
+        "clz %[t7], %[t7]\n\t"
+        "clz %[t6], %[t6]\n\t"
+        "clz %[t0], %[t0]\n\t"
+        "fmul v2.2d, v2.2d, v5.2d\n\t"
+        "mov v5.16b, v1.16b\n\t"
+        "fmul v6.2d, v6.2d, v16.2d\n\t"
+        "mov v16.16b, v1.16b\n\t"
+        "fmul d4, d4, d17\n\t"
+        "orr %[t1], %[t1], %[t2]\n\t"
+        "orr %[t7], %[t7], %[t6]\n\t"
+        "lsr %[t5], %[t5], #52\n\t"
+        "fmls v5.2d, v26.2d, v2.2d\n\t"
+        "fmls v16.2d, v27.2d, v6.2d\n\t"
+        "fmsub d17, d28, d4, d1\n\t"
+        "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+        "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+        "orr %[t1], %[t1], %[t7]\n\t"
+        "add %[t5], %[t5], #0x19\n\t"
+        "fmla v2.2d, v2.2d, v5.2d\n\t"
+        "fmla v6.2d, v6.2d, v16.2d\n\t"
+        "fmadd d4, d4, d17, d4\n\t"
+        "mov v5.16b, v1.16b\n\t"
+        "mov v16.16b, v1.16b\n\t"
+        "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+        "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+        "orr %[t1], %[t1], %[t0]\n\t"
+        "lsr %[t5], %[t5], #5\n\t"
+        "fmls v5.2d, v26.2d, v2.2d\n\t"
+        "fmls v16.2d, v27.2d, v6.2d\n\t"
+        "fmsub d17, d28, d4, d1\n\t"
+        "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+        "orr %[t1], %[t1], %[t5]\n\t"
+        "fmla v2.2d, v2.2d, v5.2d\n\t"
+        "fmla v6.2d, v6.2d, v16.2d\n\t"
+        "fmadd d4, d4, d17, d4\n\t"
+        "tbz %[t1], #6, 2f\n\t"
+        "fdiv v2.2d, v1.2d, v26.2d\n\t"
+        "fdiv v6.2d, v1.2d, v27.2d\n\t"
+        "fdiv d4, d1, d28\n\t"
+        "2:\n\t"
+        "add %[t0], %[p], #56\n\t"
+        "ld1r {v31.2d}, [%[t0]]\n\t"
+        "movi v3.4s, #0\n\t"
+        "fmul v18.2d, v18.2d, v2.d[0]\n\t"
+        "fmul v20.2d, v20.2d, v2.d[1]\n\t"
+        "fmul v22.2d, v22.2d, v6.d[0]\n\t"
+        "fmul v24.2d, v24.2d, v6.d[1]\n\t"
+        "fmul v29.2d, v29.2d, v4.d[0]\n\t"
+        "fcvtzs v18.2d, v18.2d, #16\n\t"
+        "fcvtzs v20.2d, v20.2d, #16\n\t"
+        "fcvtzs v22.2d, v22.2d, #16\n\t"
+        "fcvtzs v24.2d, v24.2d, #16\n\t"
+        "fcvtzs v29.2d, v29.2d, #16\n\t"
+        "sqxtn v5.2s, v18.2d\n\t"
+        "sqxtn v19.2s, v22.2d\n\t"
+        "sqxtn v7.2s, v29.2d\n\t"
+        "dup v4.2d, v4.d[0]\n\t"
+        "sqxtn2 v5.4s, v20.2d\n\t"
+        "sqxtn2 v19.4s, v24.2d\n\t"
+        "sqxtn2 v7.4s, v29.2d\n\t"
+        "smax v5.4s, v5.4s, v3.4s\n\t"
+        "smax v19.4s, v19.4s, v3.4s\n\t"
+        "smax v7.4s, v7.4s, v3.4s\n\t"
+        "smin v5.4s, v5.4s, v31.4s\n\t"
+        "smin v19.4s, v19.4s, v31.4s\n\t"
+        "smin v7.4s, v7.4s, v31.4s"
+        : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t1] "=&r"(t1),
+          [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
+        : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(kCurve ? zc : 0.0), "m"(p), "m"(kMinZi)
+        : "cc", "v0", "v1", "v3", "v16", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
+          "v28", "v29", "v30", "v31");
+
+    zA = rzA, zB = rzB, zC = rzC;
+    S01 = rS01, S23 = rS23, S44 = rS44;
+  } else {
+    // Linear steps: the divides (the reciprocals' test costs the in-order A53 more than
+    // they save here: no multiply for zck to hide).
+    register float64x2_t rzA __asm__("v26");
+    register float64x2_t rzB __asm__("v27");
+    register float64x2_t rzC __asm__("v4");
+    register int32x4_t rS01 __asm__("v5");
+    register int32x4_t rS23 __asm__("v6");
+    register int32x4_t rS44 __asm__("v7");
+    uint64_t t0, t5, t6, t7;
+    __asm__ volatile(
+        "fmov d1, #16.0\n\t"
+        "ldr d0, [%[p], #48]\n\t"
+        "sub %w[t5], %w[n], #1\n\t"
+        "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+        "sub %w[t6], %w[n], #17\n\t"
+        "mov %w[t7], #32\n\t"
+        "cmp %w[t5], #32\n\t"
+        "add %[t0], %[p], #16\n\t"
+        "fadd d2, d0, d1\n\t"
+        "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+        "cmp %w[t6], #32\n\t"
+        "ld1r {v26.2d}, [%[p]]\n\t"
+        "ld1r {v31.2d}, [%[km]]\n\t"
+        "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+        "scvtf d4, %w[t5]\n\t"
+        "sub %w[t7], %w[n], #33\n\t"
+        "scvtf d5, %w[t6]\n\t"
+        "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+        "trn1 v0.2d, v0.2d, v2.2d\n\t"
+        "fadd d3, d2, d1\n\t"
+        "scvtf d6, %w[t7]\n\t"
+        "ld1r {v27.2d}, [%[p]]\n\t"
+        "trn1 v4.2d, v4.2d, v5.2d\n\t"
+        "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+        "fmla v26.2d, v17.2d, v0.2d\n\t"
+        "fadd v7.2d, v0.2d, v4.2d\n\t"
+        "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+        "fadd d3, d3, d6\n\t"
+        "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+        "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+        "fmla v27.2d, v17.2d, v7.2d\n\t"
+        "fmadd d28, d17, d3, d16\n\t"
+        "fmov v1.2d, #1.0\n\t"
+        "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+        "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+        "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+        "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+        "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+        "fdiv v26.2d, v1.2d, v26.2d\n\t"
+        "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+        "fmaxnm d28, d28, d31\n\t"
+        "add %[t0], %[p], #56\n\t"
+        "fdiv v27.2d, v1.2d, v27.2d\n\t"
+        "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+        "fdiv d28, d1, d28\n\t"
+        "ld1r {v31.2d}, [%[t0]]\n\t"
+        "movi v2.4s, #0\n\t"
+        "fmul v18.2d, v18.2d, v26.d[0]\n\t"
+        "fmul v20.2d, v20.2d, v26.d[1]\n\t"
+        "fmul v22.2d, v22.2d, v27.d[0]\n\t"
+        "fmul v24.2d, v24.2d, v27.d[1]\n\t"
+        "fmul v29.2d, v29.2d, v28.d[0]\n\t"
+        "fcvtzs v18.2d, v18.2d, #16\n\t"
+        "fcvtzs v20.2d, v20.2d, #16\n\t"
+        "fcvtzs v22.2d, v22.2d, #16\n\t"
+        "fcvtzs v24.2d, v24.2d, #16\n\t"
+        "fcvtzs v29.2d, v29.2d, #16\n\t"
+        "sqxtn v5.2s, v18.2d\n\t"
+        "sqxtn v6.2s, v22.2d\n\t"
+        "sqxtn v7.2s, v29.2d\n\t"
+        "dup v4.2d, v28.d[0]\n\t"
+        "sqxtn2 v5.4s, v20.2d\n\t"
+        "sqxtn2 v6.4s, v24.2d\n\t"
+        "sqxtn2 v7.4s, v29.2d\n\t"
+        "smax v5.4s, v5.4s, v2.4s\n\t"
+        "smax v6.4s, v6.4s, v2.4s\n\t"
+        "smax v7.4s, v7.4s, v2.4s\n\t"
+        "smin v5.4s, v5.4s, v31.4s\n\t"
+        "smin v6.4s, v6.4s, v31.4s\n\t"
+        "smin v7.4s, v7.4s, v31.4s"
+        : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
+          [t6] "=&r"(t6), [t7] "=&r"(t7)
+        : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
+        : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
+          "v28", "v29", "v30", "v31");
+    zA = rzA, zB = rzB, zC = rzC;
+    S01 = rS01, S23 = rS23, S44 = rS44;
+  }
   // Sums of neighbouring samples' z: [z_0 + z_1, z_1 + z_2], [z_2 + z_3, z_3 + z_4] (the
   // curve factors' and the last run's z_k + z_{k+1}).
   const float64x2_t zs01 = vaddq_f64(zA, vextq_f64(zA, zB, 1)), zs23 = vaddq_f64(zB, vextq_f64(zB, zC, 1));
@@ -506,7 +697,7 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     if constexpr (kCurve) {
       // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
       // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
-      const double zck = zc * -0.0625;
+
       const float64x2_t c01 = vmulq_n_f64(zs01, zck);
       const float64x2_t c23 = vmulq_n_f64(zs23, zck);
       auto ddf = [&](int64x2_t b, float64x2_t c, auto lane) SB_LAMBDA_INLINE {

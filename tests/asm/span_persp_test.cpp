@@ -6,12 +6,17 @@
 // viewpoints (skipped without the data); and the kernel's variants on non-finite input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
+
+#if defined(__aarch64__)
+#include <arm_neon.h>
+#endif
 
 #include "asm/kernels.h"
 #include "engine/render/render_local.h"
@@ -159,6 +164,134 @@ TEST(AsmSpanPersp, StepQuotientWithoutDivide) {
   }
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld step quotients without a divide, %ld wrong\n", checked, wrong);
+}
+
+#if defined(__aarch64__)
+// asm/span_persp_arm.h's short-span reciprocal (aarch64): y0 = frecpe(b), two steps
+// y = y * frecps(b, y), two fused steps y = fma(y, fma(-b, y, 1), y), bit for bit 1 / b
+// for b in [2^-30, 2^1000) whose significand is not all ones (the kernel divides for the
+// rest; the proof is in the header). The same operations: frecpe's bound (2^-8.45) on every
+// table interval of every exponent, both ends of each interval, inputs whose reciprocal
+// lies within a few 2^-106 of a rounding midpoint (the hard cases), random significands
+// and exponents, and the engine's usual depths; the all-ones significands must be wrong
+// somewhere (else the kernel's test for them would be needless: the proof's exception).
+TEST(AsmSpanPersp, ReciprocalWithoutDivide) {
+  auto bits = [](double x) {
+    uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+  };
+  auto from = [](uint64_t b) {
+    double x;
+    std::memcpy(&x, &b, sizeof x);
+    return x;
+  };
+  auto recip = [](float64x2_t b) {
+    const float64x2_t one = vdupq_n_f64(1.0);
+    float64x2_t y = vrecpeq_f64(b);
+    y = vmulq_f64(y, vrecpsq_f64(b, y));
+    y = vmulq_f64(y, vrecpsq_f64(b, y));
+    y = vfmaq_f64(y, y, vfmsq_f64(one, b, y));
+    return vfmaq_f64(y, y, vfmsq_f64(one, b, y));
+  };
+  constexpr uint64_t kFrac = (uint64_t(1) << 52) - 1;
+  long checked = 0, wrong = 0, ones_wrong = 0;
+  auto check = [&](double a, double b) {
+    const float64x2_t r = recip(vcombine_f64(vdup_n_f64(a), vdup_n_f64(b)));
+    const double got[2] = {vgetq_lane_f64(r, 0), vgetq_lane_f64(r, 1)}, in[2] = {a, b};
+    for (int l = 0; l < 2; ++l) {
+      const volatile double x = in[l];
+      const bool bad = bits(got[l]) != bits(1.0 / x);
+      if ((bits(in[l]) & kFrac) == kFrac) {
+        ones_wrong += bad;
+      } else {
+        wrong += bad;
+        ++checked;
+      }
+    }
+  };
+  const int emin = -30, emax = 999;
+  double max_err = 0.0;
+  for (int e = emin; e <= emax; ++e) {
+    for (uint64_t i = 0; i < 256; ++i) {
+      const uint64_t lo = uint64_t(e + 1023) << 52 | i << 44, hi = lo + (uint64_t(1) << 44) - 1;
+      const double y = vgetq_lane_f64(vrecpeq_f64(vdupq_n_f64(from(lo))), 0);
+      ASSERT_EQ(bits(y), bits(vgetq_lane_f64(vrecpeq_f64(vdupq_n_f64(from(hi))), 0))) << e << " " << i;
+      // |b y - 1| at both ends (b y exact in long double: 53 + 9 bits), scaled to [1, 2).
+      for (uint64_t end : {lo, hi}) {
+        const double b = std::ldexp(from(end), -e), ys = std::ldexp(y, e);
+        max_err = std::max(max_err, double(std::fabs((long double)b * ys - 1.0L)));
+      }
+      check(from(lo), from(hi));
+    }
+  }
+  EXPECT_LT(max_err, 0x1.78p-9);  // 2^-8.453 measured; the proof takes 2^-8.44
+  std::mt19937_64 rng(77);
+  for (long t = 0; t < 400000; ++t) {  // 1 / b next to a midpoint M 2^-54: B = round(2^106 / M) + k
+    const unsigned __int128 M = (unsigned __int128)(uint64_t(1) << 53 | (rng() & kFrac) | 1);
+    const uint64_t B = uint64_t(((unsigned __int128)1 << 106) / M);
+    for (uint64_t Bk = B - 2; Bk <= B + 2; ++Bk) {
+      if (Bk < (uint64_t(1) << 52) || Bk >= (uint64_t(1) << 53)) continue;
+      const uint64_t e = uint64_t(int(rng() % uint64_t(emax - emin + 1)) + emin + 1023);
+      check(from(e << 52 | (Bk & kFrac)), from(uint64_t(1023) << 52 | (Bk & kFrac)));
+    }
+  }
+  for (long t = 0; t < 4000000; ++t) {
+    const uint64_t e = uint64_t(int(rng() % uint64_t(emax - emin + 1)) + emin + 1023);
+    check(from(e << 52 | (rng() & kFrac)), 1e-9 + double(rng() >> 11) * 0x1p-53 * 1e3);
+  }
+  for (int e = emin; e <= emax; ++e) check(from(uint64_t(e + 1023) << 52 | kFrac), from(uint64_t(e + 1023) << 52));
+  EXPECT_EQ(wrong, 0);
+  EXPECT_GT(ones_wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld reciprocals without a divide, %ld wrong (frecpe error 2^%.3f)\n",
+              checked, wrong, std::log2(max_err));
+}
+#endif
+
+// The short spans' reciprocal falls back to the divide for depths whose significand is all
+// ones (there 1 / zi lies 2^-107 from a rounding midpoint) and for zi >= 2^1000: spans of
+// 17 .. 64 pixels at such a constant depth, u placed so that z one ulp low moves it one
+// texel left (u 65536 = A (1 + 2^-52) with A = c 2^16 - ulp: exactly c 2^16 or more when z
+// is right, A when it is low).
+TEST(AsmSpanPersp, ShortSpansDivideWhereTheReciprocalCannot) {
+  std::mt19937 rng(5);
+  const int sw = 37, sh = 19;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i);  // every texel of a row differs
+  std::vector<uint8_t> ref(64), got(64);
+  int cases = 0;
+  std::vector<int> ks;
+  for (int k = -29; k < 60; ++k) ks.push_back(k);
+  for (int k = 60; k < 1000; k += 37) ks.push_back(k);
+  for (int k : {1000, 1001, 1010, 1022}) ks.push_back(k);
+  for (int k : ks) {
+    for (int c : {3, 5, 7, 11, 13}) {
+      const double m = double(c) * 65536.0, a = std::nextafter(m, 0.0);
+      sb::simd::PerspSpan p{};
+      p.zi0 = k < 1000 ? std::ldexp(2.0 - 0x1p-52, k) : std::ldexp(1.5, k);
+      p.dzi = rng() & 1 ? 0.0 : std::ldexp(1.0, k - 80);  // second order; zi still rounds to zi0
+      p.uz0 = k < 1000 ? std::ldexp(a, k + 1 - 16) : 0.0;
+      p.px0 = double(rng() % 100) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1);
+      p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+      p.second_order = true;
+      const int n = 17 + int(rng() % 48);
+      sb::simd::surface_span_persp_scalar(ref.data(), n, surf.data(), sw, sh, p);
+      for (int v = 0; v < sb::simd::variant_count(); ++v) {
+        const sb::simd::Variant var = sb::simd::variant(v);
+        if (!var.kernels || !var.supported) continue;
+        std::fill(got.begin(), got.end(), 0);
+        var.kernels->surface_span_persp(got.data(), n, surf.data(), sw, sh, p);
+        ASSERT_TRUE(std::equal(ref.begin(), ref.begin() + n, got.begin())) << var.kernels->name << " k " << k;
+      }
+      if (k < 1000) {
+        EXPECT_EQ(ref[0], uint8_t(c)) << k;  // the case is the sensitive one
+      }
+      ++cases;
+    }
+  }
+  std::printf("[ asm      ] span_persp: %d short spans at all-ones and huge depths, every variant identical\n",
+              cases);
 }
 
 TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
