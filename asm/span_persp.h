@@ -61,12 +61,12 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // the last run's by constants too (no 64-bit divide instruction or armhf library call; on
 // ARM second-order last runs branch-free, from the quotient of one divide; on aarch64 that
 // quotient correctly rounded from a table of 1 / steps and two fused multiply-adds).
-// aarch64, spans of 17 .. 64 pixels: every sample's reciprocal first (Newton steps from
-// frecpe, correctly rounded: the proof in asm/span_persp_arm.h), then the conversions and
-// steps in 2-lane vectors, then the runs. Longer spans (linear over 48 pixels, second-order
-// over 80): each pass of 32 pixels one pipeline of eight 4-pixel groups in inline asm,
-// ordered for in-order cores, with the samples' double arithmetic in 2-lane vectors and
-// to_fixed as saturating integer clamps.
+// aarch64, spans of 17 .. 64 pixels: every sample's reciprocal first (second order: Newton
+// steps from frecpe, correctly rounded, proof in asm/span_persp_arm.h; linear: divides), then
+// the conversions and steps in 2-lane vectors, then the runs. Longer spans (linear over 48
+// pixels, second-order over 80): each pass of 32 pixels one pipeline of eight 4-pixel groups
+// in inline asm, ordered for in-order cores, with the samples' double arithmetic in 2-lane
+// vectors and to_fixed as saturating integer clamps.
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& span);
 
