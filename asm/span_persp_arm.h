@@ -413,13 +413,13 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
   // One asm block, each operation the vector code's lane operation (the same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
   // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
-  // reciprocals 1 / max(zi, kMinZi) (above: zA, zB in 2 lanes, zC scalar, the three chains
-  // level by level, the range and all-ones test and the [u, v] products uvrow + uvx pos in
-  // their latency gaps; the divides only on the branch), then the samples: fcvtzs #16 of
-  // (uv z), sqxtn, clamps to [0, max] (persp_fast's argument). Two samples per vector: S01 =
-  // [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered for the in-order A53 (a
-  // consumer after its producer's latency; its model also completes in order, so the
-  // integer work comes first and each latency gap holds work of the same latency); the
+  // [u, v] products uvrow + uvx pos beside the depth chains; the reciprocals 1 / max(zi,
+  // kMinZi) (above: zA, zB in 2 lanes, zC scalar, the three chains level by level, the
+  // range and all-ones test in their latency gaps; the divides only on the branch), then
+  // the samples: fcvtzs #16 of (uv z), sqxtn, clamps to [0, max] (persp_fast's argument).
+  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
+  // for the in-order A53 (a consumer after its producer's latency; its model also completes
+  // in order, so each latency gap holds work of the same or shorter latency); the
   // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
   // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
   float64x2_t zA, zB, zC;
