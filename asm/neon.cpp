@@ -453,6 +453,68 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
   }
   if (n > 0) band_deltas_one<LB>(g, gw, n, bxp, fxp, D);
 }
+
+// Mip 3 (B = 2): the colormap rows of ng full groups' bands, nb bands from grid row g (group
+// k's nine entries at g + 8 k), 32 bytes a band (its two rows' 16 lanes), group after group.
+// Lanes 2j, 2j + 1 of a band's rows from entries p_j, p_j+1 (its first grid row) and q_j, q_j+1
+// (the next): numerators 4 p_j, 2 (p_j + p_j+1) and 2 (p_j + q_j), p_j + p_j+1 + q_j + q_j+1,
+// each < 2^16 (entries < 2^14), the row their bits 10-15.
+__attribute__((noinline)) void band_rows3(const uint16_t* g, int gw, int nb, int ng, uint8_t* tab) {
+  // Lanes j of a band's row 0 as 16 bits: (2 s >> 10) << 8 | 4 p >> 10 = vshr(s, 1) with its low
+  // byte replaced (vsri) by p >> 8; row 1: vshr(s + t, 2) with vhadd(p, q) >> 8 (s = p + p',
+  // t = q + q', p' and q' the entries one on). Two bands a pass (q8-q9 and q10-q11 swap roles).
+  for (int k = 0; k < ng; ++k, g += 8) {
+    const uint16_t *g0 = g, *g1 = g + 1;
+    int n = nb;
+    asm volatile(
+        "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
+        "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
+        "subs %[n], %[n], #2\n\t"
+        "vadd.i16 q9, q8, q9\n\t"
+        "vshr.u16 q0, q9, #1\n\t"
+        "vsri.16 q0, q8, #8\n\t"
+        "blt 2f\n"
+        "1:\n\t"
+        "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t"
+        "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t"
+        "vadd.i16 q11, q10, q11\n\t"
+        "vhadd.u16 q3, q8, q10\n\t"
+        "vadd.i16 q1, q9, q11\n\t"
+        "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
+        "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
+        "vshr.u16 q2, q11, #1\n\t"
+        "vshr.u16 q1, q1, #2\n\t"
+        "vsri.16 q1, q3, #8\n\t"
+        "vsri.16 q2, q10, #8\n\t"
+        "vst1.8 {d0-d3}, [%[o]:128]!\n\t"
+        "vadd.i16 q9, q8, q9\n\t"
+        "vhadd.u16 q14, q10, q8\n\t"
+        "vadd.i16 q3, q11, q9\n\t"
+        "vshr.u16 q0, q9, #1\n\t"
+        "vshr.u16 q3, q3, #2\n\t"
+        "vsri.16 q3, q14, #8\n\t"
+        "vsri.16 q0, q8, #8\n\t"
+        "subs %[n], %[n], #2\n\t"
+        "vst1.8 {d4-d7}, [%[o]:128]!\n\t"
+        "bge 1b\n"
+        "2:\n\t"
+        "cmp %[n], #-1\n\t"
+        "bne 3f\n\t"
+        "vld1.16 {d20-d21}, [%[g0]]\n\t"
+        "vld1.16 {d22-d23}, [%[g1]]\n\t"
+        "vadd.i16 q11, q10, q11\n\t"
+        "vhadd.u16 q3, q8, q10\n\t"
+        "vadd.i16 q1, q9, q11\n\t"
+        "vshr.u16 q1, q1, #2\n\t"
+        "vsri.16 q1, q3, #8\n\t"
+        "vst1.8 {d0-d3}, [%[o]:128]!\n"
+        "3:\n\t"
+        : [g0] "+r"(g0), [g1] "+r"(g1), [n] "+r"(n), [o] "+r"(tab)
+        : [st] "r"(2 * gw)
+        : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
+          "d28", "d29", "cc", "memory");
+  }
+}
 #endif
 
 #if defined(__aarch64__)
@@ -817,9 +879,16 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
-        first_numerators<LB>(r0, w[0], w[1], blk);
+        if constexpr (LB == 1) {  // the bands' rows of as many full groups as blk holds (one more row read)
+          const int per = 32 * nb, cg = int(sizeof blk - 16) / per;
+          const int k = g % cg, f = (width >> 4) - g;
+          if (k == 0) band_rows3(r0, grid_width, nb, f < cg ? f : cg, reinterpret_cast<uint8_t*>(blk));
+        } else {
+          first_numerators<LB>(r0, w[0], w[1], blk);
+        }
         // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        if constexpr (LB == 2) {
+        if constexpr (LB == 1) {
+        } else if constexpr (LB == 2) {
           const uint8_t* const ep = etab + 8 * g;
           std::memcpy(blk + 5, &ep, sizeof ep);
         } else {
@@ -842,7 +911,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         uint8_t* d = strip + 16 * g;
         const uint8_t** sa = srcs;
-        const uint32x4_t* dp = blk;
+        const uint32x4_t* dp = LB == 1 ? blk + 2 * nb * (g % ((int(sizeof blk) - 16) / (32 * nb))) : blk;
         // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
         // 512-byte block (no page crossing).
 #define SB_STRIP7(ROW, TEST, PD, BD0, BD) \
@@ -911,17 +980,122 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmlal.s16 q9, d3, d0[2]\n\t" \
   "vmlal.s16 q10, d3, d0[3]\n\t" \
   "vmlal.s16 q11, d3, d1[0]\n\t"
+        // Mip 3: a pass is a band; its rows' colormap rows (bytes) come from blk (band_rows3),
+        // zipped with the texels into row << 8 | texel (16 bits), widened.
+#define SB_ROW3_HEAD \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "add %[d], %[d], %[st]\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vld1.8 {d4-d5}, [%[dp]:128]!\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t"
+#define SB_ROW3A \
+  SB_ROW3_HEAD \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r8, r2, d28\n\t" \
+  "strd r1, r0, [%[d], #0]\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  "ldrb r8, [%[cm], r8]\n\t" \
+  "vzip.8 q0, q2\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r8, r8, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r8, r8, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d4\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d5\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "strd r8, r0, [%[d], #8]\n\t"
+#define SB_ROW3 \
+  SB_ROW3_HEAD \
+  "str r1, [%[d], #0]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmov r1, r2, d28\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  "vzip.8 q0, q2\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "str r0, [%[d], #4]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, d4\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, d5\n\t" \
+  "str r1, [%[d], #8]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "str r0, [%[d], #12]\n\t"
+#define SB_STRIP3(ROW) \
+  "sub %[d], %[d], %[st]\n\t" \
+  "ldr r0, [%[sa], #-4]\n\t" \
+  "vld1.8 {d4-d5}, [%[dp]:128]!\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "vzip.8 q0, q2\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "vmovl.u16 q14, d4\n\t" \
+  "vmovl.u16 q15, d5\n\t" \
+  "b 1f\n\t" \
+  ".balign 512\n" \
+  "1:\n\t" ROW ROW \
+  "ldr r0, [%[sa]]\n\t" \
+  "cmp r0, #0\n\t" \
+  "bne 1b\n\t"
+#define SB_STRIP3_OPS_ \
+  : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
+  : [cm] "r"(colormap), [st] "r"(width) \
+  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d24", "d25", "d26", \
+    "d27", "d28", "d29", "d30", "d31", "cc", "memory"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP3(SB_ROW3A) SB_STRIP3_OPS_);
           else if constexpr (LB == 2)
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP3(SB_ROW3) SB_STRIP3_OPS_);
           else if constexpr (LB == 2)
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
@@ -938,6 +1112,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_ROW7A
 #undef SB_ROW7
 #undef SB_ROW7_HEAD
+#undef SB_STRIP3
+#undef SB_STRIP3_OPS_
+#undef SB_ROW3A
+#undef SB_ROW3
+#undef SB_ROW3_HEAD
         continue;
       }
 #endif
