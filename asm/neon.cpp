@@ -454,16 +454,19 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
   if (n > 0) band_deltas_one<LB>(g, gw, n, bxp, fxp, D);
 }
 
-// Mip 3 (B = 2): the colormap rows of ng full groups' bands, nb bands from grid row g (group
-// k's nine entries at g + 8 k), 32 bytes a band (its two rows' 16 lanes), group after group.
+// Mip 3 (B = 2): the colormap rows of up to ng full groups' bands (as many as fit before
+// tab_end; returns how many), nb bands from grid row g (group k's nine entries at g + 8 k),
+// 32 bytes a band (its two rows' 16 lanes), group after group.
 // Lanes 2j, 2j + 1 of a band's rows from entries p_j, p_j+1 (its first grid row) and q_j, q_j+1
 // (the next): numerators 4 p_j, 2 (p_j + p_j+1) and 2 (p_j + q_j), p_j + p_j+1 + q_j + q_j+1,
 // each < 2^16 (entries < 2^14), the row their bits 10-15.
-__attribute__((noinline)) void band_rows3(const uint16_t* g, int gw, int nb, int ng, uint8_t* tab) {
+__attribute__((noinline)) int band_rows3(const uint16_t* g, int gw, int nb, int ng, uint8_t* tab,
+                                          const uint8_t* tab_end) {
   // Lanes j of a band's row 0 as 16 bits: (2 s >> 10) << 8 | 4 p >> 10 = vshr(s, 1) with its low
   // byte replaced (vsri) by p >> 8; row 1: vshr(s + t, 2) with vhadd(p, q) >> 8 (s = p + p',
   // t = q + q', p' and q' the entries one on). Two bands a pass (q8-q9 and q10-q11 swap roles).
-  for (int k = 0; k < ng; ++k, g += 8) {
+  int k = 0;
+  for (; k < ng && tab + 32 * nb + 16 <= tab_end; ++k, g += 8) {  // (the strip reads 16 bytes past)
     const uint16_t *g0 = g, *g1 = g + 1;
     int n = nb;
     asm volatile(
@@ -514,10 +517,10 @@ __attribute__((noinline)) void band_rows3(const uint16_t* g, int gw, int nb, int
         : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
           "d28", "d29", "cc", "memory");
   }
+  return k;
 }
 #endif
 
-#if defined(__aarch64__)
 // Per-lane weights (see surface_block_groups), lanes k = 0..15 of a group.
 template <int kMip>
 struct BlockWeights {
@@ -534,6 +537,8 @@ struct BlockWeights {
 };
 template <int kMip>
 constexpr BlockWeights<kMip> kBlockWeights{};
+
+#if defined(__aarch64__)
 
 constexpr uint8_t kIota32[32] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15,
                                  16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31};
@@ -627,17 +632,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 
   // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
   // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
-#if defined(__aarch64__)
   const auto& w = kBlockWeights<kMip>.w;  // (a table: setup counts at the small mips)
-#else
-  uint16_t w[4][16];
-  for (int k = 0; k < 16; ++k) {
-    w[0][k] = uint16_t((B - k % B) << (4 + kMip));
-    w[1][k] = uint16_t((k % B) << (4 + kMip));
-    w[2][k] = uint16_t((B - k % B) << (2 * kMip));
-    w[3][k] = uint16_t((k % B) << (2 * kMip));
-  }
-#endif
 #if defined(__aarch64__)
   // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
   auto ld = [](const uint16_t* p) {
@@ -645,11 +640,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     asm("" : "+w"(v));
     return v;
   };
-#else
-  auto ld = [](const uint16_t* p) { return vld1q_u16(p); };
-#endif
   const uint16x8_t BX0[2] = {ld(w[0]), ld(w[0] + 8)}, FX0[2] = {ld(w[1]), ld(w[1] + 8)};
   const uint16x8_t BX1[2] = {ld(w[2]), ld(w[2] + 8)}, FX1[2] = {ld(w[3]), ld(w[3] + 8)};
+#endif
 #if defined(__aarch64__)
   const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
   const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
@@ -757,6 +750,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         if (j != i) break;
       }
     }
+#endif
+#if !defined(__aarch64__)
+    int rows3_left = 0;  // mip 3: groups left in blk (band_rows3), rows3 the next's bands
+    const uint32x4_t* rows3 = blk;
 #endif
     for (int g = 0; g < groups; ++g) {
       const int b0 = g * G;
@@ -879,10 +876,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
-        if constexpr (LB == 1) {  // the bands' rows of as many full groups as blk holds (one more row read)
-          const int per = 32 * nb, cg = int(sizeof blk - 16) / per;
-          const int k = g % cg, f = (width >> 4) - g;
-          if (k == 0) band_rows3(r0, grid_width, nb, f < cg ? f : cg, reinterpret_cast<uint8_t*>(blk));
+        if constexpr (LB == 1) {  // the bands' rows of as many full groups as blk holds
+          if (rows3_left == 0) {
+            rows3_left = band_rows3(r0, grid_width, nb, (width >> 4) - g, reinterpret_cast<uint8_t*>(blk),
+                                    reinterpret_cast<const uint8_t*>(blk + sizeof blk / 16));
+            rows3 = blk;
+          } else {
+            rows3 += 2 * nb;
+          }
+          --rows3_left;
         } else {
           first_numerators<LB>(r0, w[0], w[1], blk);
         }
@@ -911,7 +913,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         uint8_t* d = strip + 16 * g;
         const uint8_t** sa = srcs;
-        const uint32x4_t* dp = LB == 1 ? blk + 2 * nb * (g % ((int(sizeof blk) - 16) / (32 * nb))) : blk;
+        const uint32x4_t* dp = LB == 1 ? rows3 : blk;
         // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
         // 512-byte block (no page crossing).
 #define SB_STRIP7(ROW, TEST, PD, BD0, BD) \
@@ -1119,6 +1121,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_ROW3_HEAD
         continue;
       }
+      // (ARMv7: the weights loaded here, for the last partial group only)
+      const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
+      const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
 #endif
       uint32x4_t num[4], delta[4], prev[4];
       {
