@@ -464,59 +464,72 @@ __attribute__((noinline)) int band_rows3(const uint16_t* g, int gw, int nb, int 
                                           const uint8_t* tab_end) {
   // Lanes j of a band's row 0 as 16 bits: (2 s >> 10) << 8 | 4 p >> 10 = vshr(s, 1) with its low
   // byte replaced (vsri) by p >> 8; row 1: vshr(s + t, 2) with vhadd(p, q) >> 8 (s = p + p',
-  // t = q + q', p' and q' the entries one on). Two bands a pass (q8-q9 and q10-q11 swap roles).
+  // t = q + q', p' and q' the entries one on). Software-pipelined by grid row r: its loads and
+  // sums, band r - 1's s + t and vhadd, band r - 2 finished and stored, band r - 1's row 0.
+  // Rows alternate q8-q9 / q10-q11 (entries, sums), bands q0-q1 / q2-q3 (rows 0, 1) and q12 / q13.
+#define SB_BR3_EVEN \
+  "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t" \
+  "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t" \
+  "vadd.i16 q9, q8, q9\n\t" \
+  "vshr.u16 q1, q1, #2\n\t" \
+  "vshr.u16 q2, q11, #1\n\t" \
+  "vadd.i16 q3, q11, q9\n\t" \
+  "vsri.16 q1, q12, #8\n\t" \
+  "vhadd.u16 q13, q10, q8\n\t" \
+  "vsri.16 q2, q10, #8\n\t" \
+  "vst1.8 {d0-d3}, [%[o]:128]!\n\t"
+#define SB_BR3_ODD \
+  "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t" \
+  "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t" \
+  "vadd.i16 q11, q10, q11\n\t" \
+  "vshr.u16 q3, q3, #2\n\t" \
+  "vshr.u16 q0, q9, #1\n\t" \
+  "vadd.i16 q1, q9, q11\n\t" \
+  "vsri.16 q3, q13, #8\n\t" \
+  "vhadd.u16 q12, q8, q10\n\t" \
+  "vsri.16 q0, q8, #8\n\t" \
+  "vst1.8 {d4-d7}, [%[o]:128]!\n\t"
   int k = 0;
   for (; k < ng && tab + 32 * nb + 16 <= tab_end; ++k, g += 8) {  // (the strip reads 16 bytes past)
     const uint16_t *g0 = g, *g1 = g + 1;
-    int n = nb;
+    int n = nb - 1;  // rows 2..nb
     asm volatile(
         "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
         "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
-        "subs %[n], %[n], #2\n\t"
+        "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t"
+        "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t"
         "vadd.i16 q9, q8, q9\n\t"
+        "vadd.i16 q11, q10, q11\n\t"
+        "vhadd.u16 q12, q8, q10\n\t"
         "vshr.u16 q0, q9, #1\n\t"
+        "subs %[n], %[n], #2\n\t"
+        "vadd.i16 q1, q9, q11\n\t"
         "vsri.16 q0, q8, #8\n\t"
         "blt 2f\n"
         "1:\n\t"
-        "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t"
-        "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t"
-        "vadd.i16 q11, q10, q11\n\t"
-        "vhadd.u16 q3, q8, q10\n\t"
-        "vadd.i16 q1, q9, q11\n\t"
-        "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
-        "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
-        "vshr.u16 q2, q11, #1\n\t"
-        "vshr.u16 q1, q1, #2\n\t"
-        "vsri.16 q1, q3, #8\n\t"
-        "vsri.16 q2, q10, #8\n\t"
-        "vst1.8 {d0-d3}, [%[o]:128]!\n\t"
-        "vadd.i16 q9, q8, q9\n\t"
-        "vhadd.u16 q14, q10, q8\n\t"
-        "vadd.i16 q3, q11, q9\n\t"
-        "vshr.u16 q0, q9, #1\n\t"
-        "vshr.u16 q3, q3, #2\n\t"
-        "vsri.16 q3, q14, #8\n\t"
-        "vsri.16 q0, q8, #8\n\t"
+        SB_BR3_EVEN SB_BR3_ODD
         "subs %[n], %[n], #2\n\t"
-        "vst1.8 {d4-d7}, [%[o]:128]!\n\t"
         "bge 1b\n"
         "2:\n\t"
-        "cmp %[n], #-1\n\t"
-        "bne 3f\n\t"
-        "vld1.16 {d20-d21}, [%[g0]]\n\t"
-        "vld1.16 {d22-d23}, [%[g1]]\n\t"
-        "vadd.i16 q11, q10, q11\n\t"
-        "vhadd.u16 q3, q8, q10\n\t"
-        "vadd.i16 q1, q9, q11\n\t"
+        "cmn %[n], #1\n\t"
+        "bne 4f\n\t"
+        SB_BR3_EVEN
+        "vshr.u16 q3, q3, #2\n\t"
+        "vsri.16 q3, q13, #8\n\t"
+        "vst1.8 {d4-d7}, [%[o]:128]!\n\t"
+        "b 5f\n"
+        "4:\n\t"
         "vshr.u16 q1, q1, #2\n\t"
-        "vsri.16 q1, q3, #8\n\t"
+        "vsri.16 q1, q12, #8\n\t"
         "vst1.8 {d0-d3}, [%[o]:128]!\n"
-        "3:\n\t"
+        "5:\n\t"
         : [g0] "+r"(g0), [g1] "+r"(g1), [n] "+r"(n), [o] "+r"(tab)
         : [st] "r"(2 * gw)
         : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
-          "d28", "d29", "cc", "memory");
+          "d24", "d25", "d26", "d27", "cc", "memory");
   }
+#undef SB_BR3_EVEN
+#undef SB_BR3_ODD
   return k;
 }
 #endif
