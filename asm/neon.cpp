@@ -454,82 +454,41 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
   if (n > 0) band_deltas_one<LB>(g, gw, n, bxp, fxp, D);
 }
 
-// Mip 3 (B = 2): the colormap rows of up to ng full groups' bands (as many as fit before
-// tab_end; returns how many), nb bands from grid row g (group k's nine entries at g + 8 k),
-// 32 bytes a band (its two rows' 16 lanes), group after group.
-// Lanes 2j, 2j + 1 of a band's rows from entries p_j, p_j+1 (its first grid row) and q_j, q_j+1
-// (the next): numerators 4 p_j, 2 (p_j + p_j+1) and 2 (p_j + q_j), p_j + p_j+1 + q_j + q_j+1,
-// each < 2^16 (entries < 2^14), the row their bits 10-15.
-__attribute__((noinline)) int band_rows3(const uint16_t* g, int gw, int nb, int ng, uint8_t* tab,
-                                          const uint8_t* tab_end) {
-  // Lanes j of a band's row 0 as 16 bits: (2 s >> 10) << 8 | 4 p >> 10 = vshr(s, 1) with its low
-  // byte replaced (vsri) by p >> 8; row 1: vshr(s + t, 2) with vhadd(p, q) >> 8 (s = p + p',
-  // t = q + q', p' and q' the entries one on). Software-pipelined by grid row r: its loads and
-  // sums, band r - 1's s + t and vhadd, band r - 2 finished and stored, band r - 1's row 0.
-  // Rows alternate q8-q9 / q10-q11 (entries, sums), bands q0-q1 / q2-q3 (rows 0, 1) and q12 / q13.
-#define SB_BR3_EVEN \
-  "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t" \
-  "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t" \
-  "vadd.i16 q9, q8, q9\n\t" \
-  "vshr.u16 q1, q1, #2\n\t" \
-  "vshr.u16 q2, q11, #1\n\t" \
-  "vadd.i16 q3, q11, q9\n\t" \
-  "vsri.16 q1, q12, #8\n\t" \
-  "vhadd.u16 q13, q10, q8\n\t" \
-  "vsri.16 q2, q10, #8\n\t" \
-  "vst1.8 {d0-d3}, [%[o]:128]!\n\t"
-#define SB_BR3_ODD \
-  "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t" \
-  "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t" \
-  "vadd.i16 q11, q10, q11\n\t" \
-  "vshr.u16 q3, q3, #2\n\t" \
-  "vshr.u16 q0, q9, #1\n\t" \
-  "vadd.i16 q1, q9, q11\n\t" \
-  "vsri.16 q3, q13, #8\n\t" \
-  "vhadd.u16 q12, q8, q10\n\t" \
-  "vsri.16 q0, q8, #8\n\t" \
-  "vst1.8 {d4-d7}, [%[o]:128]!\n\t"
+// Mip 3 (B = 2): for up to ng full groups (as many as fit before tab_end; returns how many),
+// grid rows r = 0..nb from g (group k's nine entries at g + 8 k), 32 bytes a row: the group's
+// entries p_j and sums s_j = p_j + p_j+1 (j < 8, 16 bits), group after group. A band's lanes
+// 2j, 2j + 1 have numerators 4 p_j, 2 s_j (row 0) and 2 (p_j + q_j), s_j + t_j (row 1; q, t:
+// the next grid row's), each < 2^16 (entries < 2^14): the row is their bits 10-15 (see the
+// strip's assembly).
+__attribute__((noinline)) int grid_rows3(const uint16_t* g, int gw, int nb, int ng, uint8_t* tab,
+                                         const uint8_t* tab_end) {
   int k = 0;
-  for (; k < ng && tab + 32 * nb + 16 <= tab_end; ++k, g += 8) {  // (the strip reads 16 bytes past)
+  for (; k < ng && tab + 32 * nb + 64 <= tab_end; ++k, g += 8) {  // (the strip reads a row past)
     const uint16_t *g0 = g, *g1 = g + 1;
-    int n = nb - 1;  // rows 2..nb
+    int n = nb - 1;  // rows 0..nb, two a pass
     asm volatile(
+        "1:\n\t"
         "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
         "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
         "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t"
         "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t"
         "vadd.i16 q9, q8, q9\n\t"
         "vadd.i16 q11, q10, q11\n\t"
-        "vhadd.u16 q12, q8, q10\n\t"
-        "vshr.u16 q0, q9, #1\n\t"
         "subs %[n], %[n], #2\n\t"
-        "vadd.i16 q1, q9, q11\n\t"
-        "vsri.16 q0, q8, #8\n\t"
-        "blt 2f\n"
-        "1:\n\t"
-        SB_BR3_EVEN SB_BR3_ODD
-        "subs %[n], %[n], #2\n\t"
-        "bge 1b\n"
-        "2:\n\t"
+        "vst1.16 {d16-d19}, [%[o]:128]!\n\t"
+        "vst1.16 {d20-d23}, [%[o]:128]!\n\t"
+        "bge 1b\n\t"
         "cmn %[n], #1\n\t"
-        "bne 4f\n\t"
-        SB_BR3_EVEN
-        "vshr.u16 q3, q3, #2\n\t"
-        "vsri.16 q3, q13, #8\n\t"
-        "vst1.8 {d4-d7}, [%[o]:128]!\n\t"
-        "b 5f\n"
-        "4:\n\t"
-        "vshr.u16 q1, q1, #2\n\t"
-        "vsri.16 q1, q12, #8\n\t"
-        "vst1.8 {d0-d3}, [%[o]:128]!\n"
-        "5:\n\t"
+        "bne 2f\n\t"
+        "vld1.16 {d16-d17}, [%[g0]]\n\t"
+        "vld1.16 {d18-d19}, [%[g1]]\n\t"
+        "vadd.i16 q9, q8, q9\n\t"
+        "vst1.16 {d16-d19}, [%[o]:128]!\n"
+        "2:\n\t"
         : [g0] "+r"(g0), [g1] "+r"(g1), [n] "+r"(n), [o] "+r"(tab)
         : [st] "r"(2 * gw)
-        : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
-          "d24", "d25", "d26", "d27", "cc", "memory");
+        : "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "cc", "memory");
   }
-#undef SB_BR3_EVEN
-#undef SB_BR3_ODD
   return k;
 }
 #endif
@@ -765,7 +724,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
 #endif
 #if !defined(__aarch64__)
-    int rows3_left = 0;  // mip 3: groups left in blk (band_rows3), rows3 the next's bands
+    int rows3_left = 0;  // mip 3: groups left in blk (grid_rows3), rows3 the next's grid rows
     const uint32x4_t* rows3 = blk;
 #endif
     for (int g = 0; g < groups; ++g) {
@@ -889,13 +848,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
-        if constexpr (LB == 1) {  // the bands' rows of as many full groups as blk holds
+        if constexpr (LB == 1) {  // the grid rows of as many full groups as blk holds
           if (rows3_left == 0) {
-            rows3_left = band_rows3(r0, grid_width, nb, (width >> 4) - g, reinterpret_cast<uint8_t*>(blk),
+            rows3_left = grid_rows3(r0, grid_width, nb, (width >> 4) - g, reinterpret_cast<uint8_t*>(blk),
                                     reinterpret_cast<const uint8_t*>(blk + sizeof blk / 16));
             rows3 = blk;
           } else {
-            rows3 += 2 * nb;
+            rows3 += 2 * (nb + 1);
           }
           --rows3_left;
         } else {
@@ -995,39 +954,49 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmlal.s16 q9, d3, d0[2]\n\t" \
   "vmlal.s16 q10, d3, d0[3]\n\t" \
   "vmlal.s16 q11, d3, d1[0]\n\t"
-        // Mip 3: a pass is a band; its rows' colormap rows (bytes) come from blk (band_rows3),
-        // zipped with the texels into row << 8 | texel (16 bits), widened.
-#define SB_ROW3_HEAD \
+        // Mip 3: a pass is a band. Row 0's colormap rows: vshr(s, 1) with its low byte replaced
+        // (vsri) by p >> 8, i.e. 16-bit lanes (2 s >> 10) << 8 | 4 p >> 10; row 1's: vshr(s + t, 2)
+        // with vhadd(p, q) >> 8 (p, s in q4-q5 and q, t in q6-q7 from grid_rows3's rows, row 1's
+        // rows made in q8 during row 0's). Each zipped with the texels into row << 8 | texel.
+        // Slots S1..S8 take the NEON work (x0: the next band's row 0, x1: row 1).
+#define SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
   "ldr r0, [%[sa]], #4\n\t" \
   "vmov r1, r2, d24\n\t" \
   "add %[d], %[d], %[st]\n\t" \
   "vmov r3, ip, d25\n\t" \
   "ldrb r1, [%[cm], r1]\n\t" \
-  "vld1.8 {d4-d5}, [%[dp]:128]!\n\t" \
+  S1 \
   "ldrb r2, [%[cm], r2]\n\t" \
+  S2 \
   "ldrb r3, [%[cm], r3]\n\t" \
   "vld1.8 {d0-d1}, [r0]\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
+  S3 \
   "orr r1, r1, r2, lsl #8\n\t" \
+  S4 \
   "orr r3, r3, ip, lsl #8\n\t" \
   "vmov r0, r2, d26\n\t" \
   "orr r1, r1, r3, lsl #16\n\t" \
   "vmov ip, lr, d27\n\t" \
   "ldrb r0, [%[cm], r0]\n\t" \
+  S5 \
   "ldrb r2, [%[cm], r2]\n\t" \
+  S6 \
   "ldrb ip, [%[cm], ip]\n\t" \
   "ldrb lr, [%[cm], lr]\n\t"
-#define SB_ROW3A \
-  SB_ROW3_HEAD \
+#define SB_ROW3A(S1, S2, S3, S4, S5, S6, S7, S8, ZQ, DLO, DHI) \
+  SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
   "orr r0, r0, r2, lsl #8\n\t" \
+  S7 \
   "orr ip, ip, lr, lsl #8\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "vmov r8, r2, d28\n\t" \
   "strd r1, r0, [%[d], #0]\n\t" \
   "vmov r3, lr, d29\n\t" \
   "ldrb r8, [%[cm], r8]\n\t" \
-  "vzip.8 q0, q2\n\t" \
+  "vzip.8 q0, " ZQ "\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
+  S8 \
   "ldrb r3, [%[cm], r3]\n\t" \
   "ldrb lr, [%[cm], lr]\n\t" \
   "orr r8, r8, r2, lsl #8\n\t" \
@@ -1040,24 +1009,26 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "ldrb r2, [%[cm], r2]\n\t" \
   "vmovl.u16 q13, d1\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
-  "vmovl.u16 q14, d4\n\t" \
+  "vmovl.u16 q14, " DLO "\n\t" \
   "ldrb lr, [%[cm], lr]\n\t" \
-  "vmovl.u16 q15, d5\n\t" \
+  "vmovl.u16 q15, " DHI "\n\t" \
   "orr r0, r0, r2, lsl #8\n\t" \
   "orr ip, ip, lr, lsl #8\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "strd r8, r0, [%[d], #8]\n\t"
-#define SB_ROW3 \
-  SB_ROW3_HEAD \
+#define SB_ROW3(S1, S2, S3, S4, S5, S6, S7, S8, ZQ, DLO, DHI) \
+  SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
   "str r1, [%[d], #0]\n\t" \
   "orr r0, r0, r2, lsl #8\n\t" \
+  S7 \
   "orr ip, ip, lr, lsl #8\n\t" \
   "vmov r1, r2, d28\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "vmov r3, lr, d29\n\t" \
   "ldrb r1, [%[cm], r1]\n\t" \
-  "vzip.8 q0, q2\n\t" \
+  "vzip.8 q0, " ZQ "\n\t" \
   "ldrb r2, [%[cm], r2]\n\t" \
+  S8 \
   "ldrb r3, [%[cm], r3]\n\t" \
   "str r0, [%[d], #4]\n\t" \
   "ldrb lr, [%[cm], lr]\n\t" \
@@ -1071,35 +1042,49 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "ldrb r2, [%[cm], r2]\n\t" \
   "vmovl.u16 q13, d1\n\t" \
   "ldrb ip, [%[cm], ip]\n\t" \
-  "vmovl.u16 q14, d4\n\t" \
+  "vmovl.u16 q14, " DLO "\n\t" \
   "ldrb lr, [%[cm], lr]\n\t" \
-  "vmovl.u16 q15, d5\n\t" \
+  "vmovl.u16 q15, " DHI "\n\t" \
   "str r1, [%[d], #8]\n\t" \
   "orr r0, r0, r2, lsl #8\n\t" \
   "orr ip, ip, lr, lsl #8\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "str r0, [%[d], #12]\n\t"
+#define SB_X1 "", "", "", "", "", "", "", "", "q8", "d16", "d17"
+#define SB_X0 \
+  "vld1.16 {d8-d11}, [%[dp]:128]!\n\t", "vld1.16 {d12-d15}, [%[dp]:128]\n\t", "vshr.u16 q2, q5, #1\n\t", \
+  "vadd.i16 q8, q5, q7\n\t", "vsri.16 q2, q4, #8\n\t", "vhadd.u16 q9, q4, q6\n\t", "vshr.u16 q8, q8, #2\n\t", \
+  "vsri.16 q8, q9, #8\n\t", "q2", "d4", "d5"
+#define SB_CALL3(M, ...) M(__VA_ARGS__)
 #define SB_STRIP3(ROW) \
   "sub %[d], %[d], %[st]\n\t" \
   "ldr r0, [%[sa], #-4]\n\t" \
-  "vld1.8 {d4-d5}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d8-d11}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d12-d15}, [%[dp]:128]\n\t" \
   "vld1.8 {d0-d1}, [r0]\n\t" \
+  "vshr.u16 q2, q5, #1\n\t" \
+  "vadd.i16 q8, q5, q7\n\t" \
+  "vhadd.u16 q9, q4, q6\n\t" \
+  "vsri.16 q2, q4, #8\n\t" \
+  "vshr.u16 q8, q8, #2\n\t" \
   "vzip.8 q0, q2\n\t" \
+  "vsri.16 q8, q9, #8\n\t" \
   "vmovl.u16 q12, d0\n\t" \
   "vmovl.u16 q13, d1\n\t" \
   "vmovl.u16 q14, d4\n\t" \
   "vmovl.u16 q15, d5\n\t" \
   "b 1f\n\t" \
   ".balign 512\n" \
-  "1:\n\t" ROW ROW \
+  "1:\n\t" SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0) \
   "ldr r0, [%[sa]]\n\t" \
   "cmp r0, #0\n\t" \
   "bne 1b\n\t"
 #define SB_STRIP3_OPS_ \
   : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
   : [cm] "r"(colormap), [st] "r"(width) \
-  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d24", "d25", "d26", \
-    "d27", "d28", "d29", "d30", "d31", "cc", "memory"
+  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d8", "d9", "d10", "d11", \
+    "d12", "d13", "d14", "d15", "d16", "d17", "d18", "d19", "d24", "d25", "d26", "d27", "d28", "d29", "d30", \
+    "d31", "cc", "memory"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
@@ -1132,6 +1117,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_ROW3A
 #undef SB_ROW3
 #undef SB_ROW3_HEAD
+#undef SB_X0
+#undef SB_X1
+#undef SB_CALL3
         continue;
       }
       // (ARMv7: the weights loaded here, for the last partial group only)
