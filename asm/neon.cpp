@@ -627,7 +627,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk).
   constexpr int kStripBands = 32;
   if (strip_bands > kStripBands) strip_bands = kStripBands;
-  const uint8_t* strip_rows[kStripBands * B + 4];
+  const uint8_t* strip_rows_buf[kStripBands * B + 8];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
   // Mip 2: blk holds the numerators, the row-step weights w0 (B - fx), w1 (fx) of a quarter,
   // the group's first band in etab, then etab: row b (at b width bytes) the grid's band b
@@ -678,18 +678,25 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #endif
     uint8_t* const strip = out + by0 * B * width;
 #if !defined(__aarch64__)
-    {  // the strip's rows in order, four past its end (read cyclically from run[first])
-      const int n = nb * B + 4;
-      for (int y = 0, k = first; y < n;) {
-        const int m = count - k < n - y ? count - k : n - y;  // rows before run[] wraps
-        int i = 0;
-        for (; i + 4 <= m; i += 4)
-          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y + i),
-                    vld1q_u32(reinterpret_cast<const uint32_t*>(run + k + i)));
-        for (; i < m; ++i) strip_rows[y + i] = run[k + i];
-        y += m;
-        k = 0;
+    // The strip's rows in order, four past its end (run[first..] cyclically, period count);
+    // when gs = 0 they are every group's srcs (below) and go there directly.
+    const uint8_t** const strip_rows = gs ? strip_rows_buf : sbuf + 15;
+    {
+      auto copy4 = [](const uint8_t** o, const uint8_t* const* r, int k) {  // (up to 3 past k)
+        for (int i = 0; i < k; i += 4)
+          vst1q_u32(reinterpret_cast<uint32_t*>(o + i), vld1q_u32(reinterpret_cast<const uint32_t*>(r + i)));
+      };
+      const int n = nb * B + 4, c = count < n ? count : n, m = count - first < c ? count - first : c;
+      copy4(strip_rows, run + first, m);
+      copy4(strip_rows + m, run, c - m);
+      if (count >= 4) {
+        for (int y = c; y < n; y += 4)
+          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y),
+                    vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + y - count)));
+      } else {
+        for (int y = c; y < n; ++y) strip_rows[y] = strip_rows[y - count];
       }
+      if (!gs) sbuf[16 + nb * B] = nullptr;
     }
     if (LB == 2 && width >= 16) {  // etab (see there): a column of eight entries (F = 1: four) at a time
       const int ne = 4 * (width >> 4) + 1;
@@ -872,7 +879,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
         const uint8_t** const srcs = sbuf + 16;
-        if (g == 0 || gs) {  // (the same for every group when gs = 0)
+        if (gs) {  // (gs = 0: every group's, laid out per strip)
           const uint32x4_t off = vdupq_n_u32(uint32_t(gs * g));
           const uint32_t* r = reinterpret_cast<const uint32_t*>(strip_rows);
           const uint32_t* const r_end = r + rows;
