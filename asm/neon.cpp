@@ -734,18 +734,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     int rows3_left = 0;  // mip 3: groups left in blk (grid_rows3), rows3 the next's grid rows
     const uint32x4_t* rows3 = blk;
 #endif
-    for (int g = 0; g < groups; ++g) {
-      const int b0 = g * G;
-      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
-      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
-        const uint16_t* r = grid + by * grid_width + b0;
-        if (direct) return r;
-        const int n = bw + 1 - b0;
-        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
-        return pad;
-      };
 #if !defined(__aarch64__)
-      if (width - 16 * g >= 16) {
+    int g = 0;
+    for (; 16 * g + 16 <= width; ++g) {
+      const int b0 = g * G;
+      {
         // Full groups: the whole strip in one assembly loop, two rows a pass. Row y: the step
         // to row y + 1 (numerators q4-q7 += the delta of row y's band, q8-q11), the scalar work
         // of row y (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str:
@@ -1127,8 +1120,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_X0
 #undef SB_X1
 #undef SB_CALL3
-        continue;
       }
+    }
+    for (; g < groups; ++g) {
+#else
+    for (int g = 0; g < groups; ++g) {
+#endif
+      const int b0 = g * G;
+      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
+        const uint16_t* r = grid + by * grid_width + b0;
+        if (direct) return r;
+        const int n = bw + 1 - b0;
+        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
+        return pad;
+      };
+#if !defined(__aarch64__)
       // (ARMv7: the weights loaded here, for the last partial group only)
       const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
       const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
