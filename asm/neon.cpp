@@ -956,9 +956,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmlal.s16 q11, d3, d1[0]\n\t"
         // Mip 3: a pass is a band. Row 0's colormap rows: vshr(s, 1) with its low byte replaced
         // (vsri) by p >> 8, i.e. 16-bit lanes (2 s >> 10) << 8 | 4 p >> 10; row 1's: vshr(s + t, 2)
-        // with vhadd(p, q) >> 8 (p, s in q4-q5 and q, t in q6-q7 from grid_rows3's rows, row 1's
-        // rows made in q8 during row 0's). Each zipped with the texels into row << 8 | texel.
-        // Slots S1..S8 take the NEON work (x0: the next band's row 0, x1: row 1).
+        // with vhadd(p, q) >> 8 (p, s and q, t: grid_rows3's rows, in q4-q5 and q6-q7 by turns,
+        // one loaded a pass; row 1's rows made in q8 during row 0's). Each zipped with the
+        // texels into row << 8 | texel. Slots S1..S8 take the NEON work (x0: the next band's
+        // row 0, x1: row 1), ZA or ZB the zip (the A9 model pairs them so).
 #define SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
   "ldr r0, [%[sa]], #4\n\t" \
   "vmov r1, r2, d24\n\t" \
@@ -984,7 +985,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   S6 \
   "ldrb ip, [%[cm], ip]\n\t" \
   "ldrb lr, [%[cm], lr]\n\t"
-#define SB_ROW3A(S1, S2, S3, S4, S5, S6, S7, S8, ZQ, DLO, DHI) \
+#define SB_ROW3A(S1, S2, S3, S4, S5, S6, S7, S8, ZA, ZB, DLO, DHI) \
   SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
   "orr r0, r0, r2, lsl #8\n\t" \
   S7 \
@@ -993,8 +994,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmov r8, r2, d28\n\t" \
   "strd r1, r0, [%[d], #0]\n\t" \
   "vmov r3, lr, d29\n\t" \
+  ZA \
   "ldrb r8, [%[cm], r8]\n\t" \
-  "vzip.8 q0, " ZQ "\n\t" \
+  ZB \
   "ldrb r2, [%[cm], r2]\n\t" \
   S8 \
   "ldrb r3, [%[cm], r3]\n\t" \
@@ -1016,7 +1018,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "orr ip, ip, lr, lsl #8\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "strd r8, r0, [%[d], #8]\n\t"
-#define SB_ROW3(S1, S2, S3, S4, S5, S6, S7, S8, ZQ, DLO, DHI) \
+#define SB_ROW3(S1, S2, S3, S4, S5, S6, S7, S8, ZA, ZB, DLO, DHI) \
   SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
   "str r1, [%[d], #0]\n\t" \
   "orr r0, r0, r2, lsl #8\n\t" \
@@ -1025,8 +1027,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmov r1, r2, d28\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "vmov r3, lr, d29\n\t" \
+  ZA \
   "ldrb r1, [%[cm], r1]\n\t" \
-  "vzip.8 q0, " ZQ "\n\t" \
+  ZB \
   "ldrb r2, [%[cm], r2]\n\t" \
   S8 \
   "ldrb r3, [%[cm], r3]\n\t" \
@@ -1050,17 +1053,21 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "orr ip, ip, lr, lsl #8\n\t" \
   "orr r0, r0, ip, lsl #16\n\t" \
   "str r0, [%[d], #12]\n\t"
-#define SB_X1 "", "", "", "", "", "", "", "", "q8", "d16", "d17"
-#define SB_X0 \
-  "vld1.16 {d8-d11}, [%[dp]:128]!\n\t", "vld1.16 {d12-d15}, [%[dp]:128]\n\t", "vshr.u16 q2, q5, #1\n\t", \
-  "vadd.i16 q8, q5, q7\n\t", "vsri.16 q2, q4, #8\n\t", "vhadd.u16 q9, q4, q6\n\t", "vshr.u16 q8, q8, #2\n\t", \
-  "vsri.16 q8, q9, #8\n\t", "q2", "d4", "d5"
+#define SB_X1 "", "", "", "", "", "", "", "", "", "vzip.8 q0, q8\n\t", "d16", "d17"
+#define SB_X0A \
+  "vld1.16 {d8-d11}, [%[dp]:128]!\n\t", "", "vshr.u16 q2, q7, #1\n\t", "vadd.i16 q8, q7, q5\n\t", \
+  "vsri.16 q2, q6, #8\n\t", "vhadd.u16 q9, q6, q4\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
+  "vzip.8 q0, q2\n\t", "", "d4", "d5"
+#define SB_X0B \
+  "vld1.16 {d12-d15}, [%[dp]:128]!\n\t", "", "vshr.u16 q2, q5, #1\n\t", "vadd.i16 q8, q5, q7\n\t", \
+  "vsri.16 q2, q4, #8\n\t", "vhadd.u16 q9, q4, q6\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
+  "vzip.8 q0, q2\n\t", "", "d4", "d5"
 #define SB_CALL3(M, ...) M(__VA_ARGS__)
 #define SB_STRIP3(ROW) \
   "sub %[d], %[d], %[st]\n\t" \
   "ldr r0, [%[sa], #-4]\n\t" \
   "vld1.16 {d8-d11}, [%[dp]:128]!\n\t" \
-  "vld1.16 {d12-d15}, [%[dp]:128]\n\t" \
+  "vld1.16 {d12-d15}, [%[dp]:128]!\n\t" \
   "vld1.8 {d0-d1}, [r0]\n\t" \
   "vshr.u16 q2, q5, #1\n\t" \
   "vadd.i16 q8, q5, q7\n\t" \
@@ -1075,10 +1082,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmovl.u16 q15, d5\n\t" \
   "b 1f\n\t" \
   ".balign 512\n" \
-  "1:\n\t" SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0) \
+  "1:\n\t" SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0A) \
   "ldr r0, [%[sa]]\n\t" \
   "cmp r0, #0\n\t" \
-  "bne 1b\n\t"
+  "beq 3f\n\t" \
+  SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0B) \
+  "ldr r0, [%[sa]]\n\t" \
+  "cmp r0, #0\n\t" \
+  "bne 1b\n" \
+  "3:\n\t"
 #define SB_STRIP3_OPS_ \
   : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
   : [cm] "r"(colormap), [st] "r"(width) \
@@ -1117,7 +1129,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_ROW3A
 #undef SB_ROW3
 #undef SB_ROW3_HEAD
-#undef SB_X0
+#undef SB_X0A
+#undef SB_X0B
 #undef SB_X1
 #undef SB_CALL3
       }
