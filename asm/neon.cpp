@@ -167,23 +167,35 @@ SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t
                                const uint8_t** run) {
   int n = th + 1 - (16 >> __builtin_ctz(unsigned(tw)));  // rows t: t tw + 16 <= th tw
   if (n < 0) n = 0;
-#if !defined(__aarch64__)
-  const uint8x8_t i0 = vget_low_u8(period), i1 = vget_high_u8(period);
-#endif
+#if defined(__aarch64__)
   const uint8_t* row = texels;
   uint8_t* o = buf;
   for (const uint8_t** r = run; r != run + n; ++r, row += tw, o += 16) {
-    const uint8x16_t v = vld1q_u8(row);
-#if defined(__aarch64__)
-    vst1q_u8(o, vqtbl1q_u8(v, period));
-#else
-    uint8x8x2_t tb;
-    tb.val[0] = vget_low_u8(v);
-    tb.val[1] = vget_high_u8(v);
-    vst1q_u8(o, vcombine_u8(vtbl2_u8(tb, i0), vtbl2_u8(tb, i1)));
-#endif
+    vst1q_u8(o, vqtbl1q_u8(vld1q_u8(row), period));
     *r = o;
   }
+#else
+  if (n > 0) {  // (GCC copies the table pair a row; assembly keeps it in d16-d17)
+    const uint8_t* row = texels;
+    uint8_t* o = buf;
+    const uint8_t** r = run;
+    const uint8_t** const r_end = run + n;
+    asm volatile(
+        "vmov d20, %P[i0]\n\t"
+        "vmov d21, %P[i1]\n"
+        "1:\n\t"
+        "vld1.8 {d16-d17}, [%[row]], %[tw]\n\t"
+        "str %[o], [%[r]], #4\n\t"
+        "vtbl.8 d18, {d16-d17}, d20\n\t"
+        "vtbl.8 d19, {d16-d17}, d21\n\t"
+        "cmp %[r], %[r_end]\n\t"
+        "vst1.8 {d18-d19}, [%[o]:128]!\n\t"
+        "bne 1b\n\t"
+        : [row] "+r"(row), [o] "+r"(o), [r] "+r"(r)
+        : [tw] "r"(tw), [r_end] "r"(r_end), [i0] "w"(vget_low_u8(period)), [i1] "w"(vget_high_u8(period))
+        : "d16", "d17", "d18", "d19", "d20", "d21", "cc", "memory");
+  }
+#endif
   return n;
 }
 
