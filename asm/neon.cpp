@@ -968,7 +968,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmlal.s16 q11, d3, d1[0]\n\t"
         // Mip 3: a pass is a band. Row 0's colormap rows: vshr(s, 1) with its low byte replaced
         // (vsri) by p >> 8, i.e. 16-bit lanes (2 s >> 10) << 8 | 4 p >> 10; row 1's: vshr(s + t, 2)
-        // with vhadd(p, q) >> 8 (p, s and q, t: grid_rows3's rows, in q4-q5 and q6-q7 by turns,
+        // with vhadd(p, q) >> 8 (p, s and q, t: grid_rows3's rows, in q10-q11 and q2-q3 by turns,
         // one loaded a pass; row 1's rows made in q8 during row 0's). Each zipped with the
         // texels into row << 8 | texel. Slots S1..S8 take the NEON work (x0: the next band's
         // row 0, x1: row 1), ZA or ZB the zip (the A9 model pairs them so).
@@ -1067,31 +1067,31 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "str r0, [%[d], #12]\n\t"
 #define SB_X1 "", "", "", "", "", "", "", "", "", "vzip.8 q0, q8\n\t", "d16", "d17"
 #define SB_X0A \
-  "vld1.16 {d8-d11}, [%[dp]:128]!\n\t", "", "vshr.u16 q2, q7, #1\n\t", "vadd.i16 q8, q7, q5\n\t", \
-  "vsri.16 q2, q6, #8\n\t", "vhadd.u16 q9, q6, q4\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
-  "vzip.8 q0, q2\n\t", "", "d4", "d5"
+  "vld1.16 {d20-d23}, [%[dp]:128]!\n\t", "", "vshr.u16 q1, q3, #1\n\t", "vadd.i16 q8, q3, q11\n\t", \
+  "vsri.16 q1, q2, #8\n\t", "vhadd.u16 q9, q2, q10\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
+  "vzip.8 q0, q1\n\t", "", "d2", "d3"
 #define SB_X0B \
-  "vld1.16 {d12-d15}, [%[dp]:128]!\n\t", "", "vshr.u16 q2, q5, #1\n\t", "vadd.i16 q8, q5, q7\n\t", \
-  "vsri.16 q2, q4, #8\n\t", "vhadd.u16 q9, q4, q6\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
-  "vzip.8 q0, q2\n\t", "", "d4", "d5"
+  "vld1.16 {d4-d7}, [%[dp]:128]!\n\t", "", "vshr.u16 q1, q11, #1\n\t", "vadd.i16 q8, q11, q3\n\t", \
+  "vsri.16 q1, q10, #8\n\t", "vhadd.u16 q9, q10, q2\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
+  "vzip.8 q0, q1\n\t", "", "d2", "d3"
 #define SB_CALL3(M, ...) M(__VA_ARGS__)
 #define SB_STRIP3(ROW) \
   "sub %[d], %[d], %[st]\n\t" \
   "ldr r0, [%[sa], #-4]\n\t" \
-  "vld1.16 {d8-d11}, [%[dp]:128]!\n\t" \
-  "vld1.16 {d12-d15}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d20-d23}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d4-d7}, [%[dp]:128]!\n\t" \
   "vld1.8 {d0-d1}, [r0]\n\t" \
-  "vshr.u16 q2, q5, #1\n\t" \
-  "vadd.i16 q8, q5, q7\n\t" \
-  "vhadd.u16 q9, q4, q6\n\t" \
-  "vsri.16 q2, q4, #8\n\t" \
+  "vshr.u16 q1, q11, #1\n\t" \
+  "vadd.i16 q8, q11, q3\n\t" \
+  "vhadd.u16 q9, q10, q2\n\t" \
+  "vsri.16 q1, q10, #8\n\t" \
   "vshr.u16 q8, q8, #2\n\t" \
-  "vzip.8 q0, q2\n\t" \
+  "vzip.8 q0, q1\n\t" \
   "vsri.16 q8, q9, #8\n\t" \
   "vmovl.u16 q12, d0\n\t" \
   "vmovl.u16 q13, d1\n\t" \
-  "vmovl.u16 q14, d4\n\t" \
-  "vmovl.u16 q15, d5\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
   "b 1f\n\t" \
   ".balign 512\n" \
   "1:\n\t" SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0A) \
@@ -1106,9 +1106,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #define SB_STRIP3_OPS_ \
   : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
   : [cm] "r"(colormap), [st] "r"(width) \
-  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d8", "d9", "d10", "d11", \
-    "d12", "d13", "d14", "d15", "d16", "d17", "d18", "d19", "d24", "d25", "d26", "d27", "d28", "d29", "d30", \
-    "d31", "cc", "memory"
+  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", \
+    "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", "cc", \
+    "memory"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
