@@ -240,22 +240,8 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
 template <int LB>
 __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_t* bx, const uint16_t* fx,
                                                 uint32x4_t* out) {
-  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: g_j << 8, (g_j + g_j+1) << 7, stored interleaved
-    asm volatile(
-        "vld1.16 {d16-d17}, [%[g]]!\n\t"
-        "sub %[g], %[g], #14\n\t"
-        "vld1.16 {d18-d19}, [%[g]]\n\t"
-        "vshll.u16 q0, d16, #8\n\t"
-        "vadd.i16 q9, q9, q8\n\t"
-        "vshll.u16 q2, d17, #8\n\t"
-        "vshll.u16 q1, d18, #7\n\t"
-        "vshll.u16 q3, d19, #7\n\t"
-        "vst2.32 {d0-d3}, [%[o]:128]!\n\t"
-        "vst2.32 {d4-d7}, [%[o]:128]\n\t"
-        : [g] "+r"(g), [o] "+r"(out)
-        :
-        : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "memory");
-    (void)bx, (void)fx;
+  if constexpr (LB == 1) {
+    static_assert(LB != 1, "mip 3 lays out grid rows instead (grid_rows3)");
   } else {  // quarter q: entries j = 4 q >> LB and j + 1 as scalars (lanes of d0 and d1)
     asm volatile(
         "vld1.16 {d0}, [%[g]]!\n\t"
@@ -297,14 +283,8 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
-    if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1 (32 bytes a band)
-      const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
-      const int16x8_t c = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw + 1), vld1q_u16(g + 1)));
-      int16x8x2_t z;
-      z.val[0] = vaddq_s16(a, a);
-      z.val[1] = vaddq_s16(a, c);
-      vst2q_s16(reinterpret_cast<int16_t*>(D), z);
-      D -= 2;  // (the loop adds 4)
+    if constexpr (LB == 1) {
+      static_assert(LB != 1, "mip 3 lays out grid rows instead (grid_rows3)");
     } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
       const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
       const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
@@ -336,39 +316,7 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
 template <int LB>
 __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const uint16_t* bxp,
                                            const uint16_t* fxp, uint32x4_t* D) {
-  if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1, stored interleaved (vst2;
-                            // 32 bytes a band, widened << 6 by the strip's assembly)
-    if (n >= 2) {
-      const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
-      int k = n >> 1;
-      asm volatile(
-          "1:\n\t"
-          "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
-          "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
-          "vld1.16 {d20-d21}, [%[g2]], %[st]\n\t"
-          "vld1.16 {d22-d23}, [%[h0]], %[st]\n\t"
-          "vld1.16 {d24-d25}, [%[h1]], %[st]\n\t"
-          "vld1.16 {d26-d27}, [%[h2]], %[st]\n\t"
-          "vsub.i16 q14, q9, q8\n\t"
-          "vsub.i16 q15, q10, q9\n\t"
-          "vsub.i16 q11, q12, q11\n\t"
-          "vsub.i16 q12, q13, q12\n\t"
-          "vadd.i16 q0, q14, q14\n\t"
-          "vadd.i16 q1, q11, q14\n\t"
-          "vadd.i16 q2, q15, q15\n\t"
-          "vadd.i16 q3, q12, q15\n\t"
-          "vst2.16 {d0-d3}, [%[D]:128]!\n\t"
-          "vst2.16 {d4-d7}, [%[D]:128]!\n\t"
-          "subs %[k], %[k], #1\n\t"
-          "bne 1b\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
-            [k] "+r"(k)
-          : [st] "r"(4 * gw)
-          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
-            "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", "cc", "memory");
-      n &= 1;
-    }
-  }
+  static_assert(LB != 1, "mip 3 lays out grid rows instead (grid_rows3)");
   if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
     if (n >= 2) {
       const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
@@ -636,7 +584,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 #if !defined(__aarch64__)
   // ARMv7 full groups run a strip at a time in assembly: at most kStripBands bands, their
-  // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk).
+  // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk;
+  // mip 3: grid_rows3's rows of as many full groups as it holds).
   constexpr int kStripBands = 32;
   if (strip_bands > kStripBands) strip_bands = kStripBands;
   const uint8_t* strip_rows_buf[kStripBands * B + 8];
@@ -869,15 +818,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             rows3 += 2 * (nb + 1);
           }
           --rows3_left;
-        } else {
-          first_numerators<LB>(r0, w[0], w[1], blk);
-        }
-        // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        if constexpr (LB == 1) {
         } else if constexpr (LB == 2) {
+          first_numerators<LB>(r0, w[0], w[1], blk);
           const uint8_t* const ep = etab + 8 * g;
           std::memcpy(blk + 5, &ep, sizeof ep);
-        } else {
+        } else {  // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
+          first_numerators<LB>(r0, w[0], w[1], blk);
           band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
         }
         const int rows = nb * B;
@@ -935,19 +881,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
   "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
   "cc", "memory"
-        // Every pass ends a band when B = 2; else a band ends where srcs is 4 B-aligned.
+        // A band ends where srcs is 4 B-aligned.
 #define SB_BAND_TEST "tst %[sa], %[bm]\n\tbne 1b\n\t"
         // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
         // free between rows): quarter j is w0 e[j] + w1 e1[j].
 #define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-        // (mip 3: 16-bit lanes, 32 bytes a band, widened; in the loop loaded after the pass's
-        // rows (SB_LD3), the strip's last pass reading past its bands)
-#define SB_LD3 "vld1.16 {d0-d3}, [%[dp]:128]!\n\t"
-#define SB_WIDEN3 \
-  "vshll.s16 q8, d0, #6\n\t" \
-  "vshll.s16 q9, d1, #6\n\t" \
-  "vshll.s16 q10, d2, #6\n\t" \
-  "vshll.s16 q11, d3, #6\n\t"
         // (mip 2: after the numerators dp reads the weights, pushed on the stack for the loop as
         // no register is left, and the group's first band in etab; then a row of etab a band)
 #define SB_EP2 \
@@ -1126,8 +1064,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
 #undef SB_LD_DELTA
-#undef SB_LD3
-#undef SB_WIDEN3
 #undef SB_DELTA2
 #undef SB_EP2
 #undef SB_BAND_TEST
