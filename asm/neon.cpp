@@ -160,9 +160,11 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
-// Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside:
+// Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside
+// (ARMv7 with kTail, mip 3's narrow textures: every row when the texture has 16 bytes):
 // run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.
 // Returns the rows done.
+template <bool kTail>
 SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t period, uint8_t* buf,
                                const uint8_t** run) {
   int n = th + 1 - (16 >> __builtin_ctz(unsigned(tw)));  // rows t: t tw + 16 <= th tw
@@ -175,14 +177,20 @@ SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t
     *r = o;
   }
 #else
-  if (n > 0) {  // (GCC copies the table pair a row; assembly keeps it in d16-d17)
+  // (GCC copies the table pair a row; assembly keeps it in d16-d17.) The rows past n, when
+  // the texture has 16 bytes, from its last 16 with the indices moved up (as tile_row).
+  const bool tail = kTail && n < th && th * tw >= 16;
+  if (n > 0 || tail) {
     const uint8_t* row = texels;
     uint8_t* o = buf;
     const uint8_t** r = run;
     const uint8_t** const r_end = run + n;
+    const uint8_t** const r_tail = tail ? run + th : r_end;
     asm volatile(
         "vmov d20, %P[i0]\n\t"
-        "vmov d21, %P[i1]\n"
+        "vmov d21, %P[i1]\n\t"
+        "cmp %[r], %[r_end]\n\t"
+        "beq 2f\n"
         "1:\n\t"
         "vld1.8 {d16-d17}, [%[row]], %[tw]\n\t"
         "str %[o], [%[r]], #4\n\t"
@@ -190,10 +198,29 @@ SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t
         "vtbl.8 d19, {d16-d17}, d21\n\t"
         "cmp %[r], %[r_end]\n\t"
         "vst1.8 {d18-d19}, [%[o]:128]!\n\t"
-        "bne 1b\n\t"
+        "bne 1b\n"
+        "2:\n\t"
+        "cmp %[r], %[r_tail]\n\t"
+        "beq 4f\n\t"
+        "sub %[row], %[row], %[end]\n\t"  // the first tail row's offset in the last 16 bytes
+        "vld1.8 {d16-d17}, [%[end]]\n\t"
+        "vdup.8 q11, %[tw]\n\t"
+        "vdup.8 q9, %[row]\n\t"
+        "vadd.i8 q10, q10, q9\n"
+        "3:\n\t"
+        "vtbl.8 d18, {d16-d17}, d20\n\t"
+        "vtbl.8 d19, {d16-d17}, d21\n\t"
+        "str %[o], [%[r]], #4\n\t"
+        "vadd.i8 q10, q10, q11\n\t"
+        "cmp %[r], %[r_tail]\n\t"
+        "vst1.8 {d18-d19}, [%[o]:128]!\n\t"
+        "bne 3b\n"
+        "4:\n\t"
         : [row] "+r"(row), [o] "+r"(o), [r] "+r"(r)
-        : [tw] "r"(tw), [r_end] "r"(r_end), [i0] "w"(vget_low_u8(period)), [i1] "w"(vget_high_u8(period))
-        : "d16", "d17", "d18", "d19", "d20", "d21", "cc", "memory");
+        : [tw] "r"(tw), [r_end] "r"(r_end), [r_tail] "r"(r_tail), [end] "r"(texels + th * tw - 16),
+          [i0] "w"(vget_low_u8(period)), [i1] "w"(vget_high_u8(period))
+        : "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "cc", "memory");
+    if (tail) n = th;
   }
 #endif
   return n;
@@ -540,7 +567,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows) {
     if (p16) {  // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
-      int t = in_place(0) ? 0 : tile_rows16(texels, tw, th, period[0], buf, run);
+      int t = in_place(0) ? 0 : tile_rows16<kMip == 3>(texels, tw, th, period[0], buf, run);
       for (; t < th; ++t)
         run[t] = in_place(t) ? texels + t * tw + c0
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
