@@ -624,6 +624,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // strip's assembly.)
   constexpr int kEBytes = 4096;
   alignas(16) uint32x4_t blk[LB == 2 ? 6 + kEBytes / 16 : 8 + 4 * kStripBands];
+  static_assert(sizeof blk >= 32 * kStripBands + 64, "mip 3: a group's grid rows fit blk");
   uint8_t* const etab = reinterpret_cast<uint8_t*>(blk + 6);
   if constexpr (LB == 2) {
     uint16_t w2[8];
