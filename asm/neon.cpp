@@ -160,30 +160,69 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
-// Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside:
+// Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside
+// (ARMv7 with kTail, mip 3's narrow textures: every row when the texture has 16 bytes):
 // run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.
 // Returns the rows done.
+template <bool kTail>
 SB_TILE_INLINE int tile_rows16(const uint8_t* texels, int tw, int th, uint8x16_t period, uint8_t* buf,
                                const uint8_t** run) {
   int n = th + 1 - (16 >> __builtin_ctz(unsigned(tw)));  // rows t: t tw + 16 <= th tw
   if (n < 0) n = 0;
-#if !defined(__aarch64__)
-  const uint8x8_t i0 = vget_low_u8(period), i1 = vget_high_u8(period);
-#endif
+#if defined(__aarch64__)
   const uint8_t* row = texels;
   uint8_t* o = buf;
   for (const uint8_t** r = run; r != run + n; ++r, row += tw, o += 16) {
-    const uint8x16_t v = vld1q_u8(row);
-#if defined(__aarch64__)
-    vst1q_u8(o, vqtbl1q_u8(v, period));
-#else
-    uint8x8x2_t tb;
-    tb.val[0] = vget_low_u8(v);
-    tb.val[1] = vget_high_u8(v);
-    vst1q_u8(o, vcombine_u8(vtbl2_u8(tb, i0), vtbl2_u8(tb, i1)));
-#endif
+    vst1q_u8(o, vqtbl1q_u8(vld1q_u8(row), period));
     *r = o;
   }
+#else
+  // (GCC copies the table pair a row; assembly keeps it in d16-d17.) The rows past n, when
+  // the texture has 16 bytes, from its last 16 with the indices moved up (as tile_row).
+  const bool tail = kTail && n < th && th * tw >= 16;
+  if (n > 0 || tail) {
+    const uint8_t* row = texels;
+    uint8_t* o = buf;
+    const uint8_t** r = run;
+    const uint8_t** const r_end = run + n;
+    const uint8_t** const r_tail = tail ? run + th : r_end;
+    asm volatile(
+        "vmov d20, %P[i0]\n\t"
+        "vmov d21, %P[i1]\n\t"
+        "cmp %[r], %[r_end]\n\t"
+        "beq 2f\n"
+        "1:\n\t"
+        "vld1.8 {d16-d17}, [%[row]], %[tw]\n\t"
+        "str %[o], [%[r]], #4\n\t"
+        "vtbl.8 d18, {d16-d17}, d20\n\t"
+        "vtbl.8 d19, {d16-d17}, d21\n\t"
+        "cmp %[r], %[r_end]\n\t"
+        "vst1.8 {d18-d19}, [%[o]:128]!\n\t"
+        "bne 1b\n"
+        "2:\n\t"
+        "cmp %[r], %[r_tail]\n\t"
+        "beq 4f\n\t"
+        "sub %[row], %[row], %[end]\n\t"  // the first tail row's offset in the last 16 bytes
+        "vld1.8 {d16-d17}, [%[end]]\n\t"
+        "vdup.8 q11, %[tw]\n\t"
+        "vdup.8 q9, %[row]\n\t"
+        "vadd.i8 q10, q10, q9\n"
+        "3:\n\t"
+        "vtbl.8 d18, {d16-d17}, d20\n\t"
+        "vtbl.8 d19, {d16-d17}, d21\n\t"
+        "str %[o], [%[r]], #4\n\t"
+        "vadd.i8 q10, q10, q11\n\t"
+        "cmp %[r], %[r_tail]\n\t"
+        "vst1.8 {d18-d19}, [%[o]:128]!\n\t"
+        "bne 3b\n"
+        "4:\n\t"
+        : [row] "+r"(row), [o] "+r"(o), [r] "+r"(r)
+        : [tw] "r"(tw), [r_end] "r"(r_end), [r_tail] "r"(r_tail), [end] "r"(texels + th * tw - 16),
+          [i0] "w"(vget_low_u8(period)), [i1] "w"(vget_high_u8(period))
+        : "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "cc", "memory");
+    if (tail) n = th;
+  }
+#endif
   return n;
 }
 
@@ -228,22 +267,8 @@ inline void weigh(const uint16_t* g, const uint16x8_t* bx, const uint16x8_t* fx,
 template <int LB>
 __attribute__((noinline)) void first_numerators(const uint16_t* g, const uint16_t* bx, const uint16_t* fx,
                                                 uint32x4_t* out) {
-  if constexpr (LB == 1) {  // lanes 2j, 2j + 1: g_j << 8, (g_j + g_j+1) << 7, stored interleaved
-    asm volatile(
-        "vld1.16 {d16-d17}, [%[g]]!\n\t"
-        "sub %[g], %[g], #14\n\t"
-        "vld1.16 {d18-d19}, [%[g]]\n\t"
-        "vshll.u16 q0, d16, #8\n\t"
-        "vadd.i16 q9, q9, q8\n\t"
-        "vshll.u16 q2, d17, #8\n\t"
-        "vshll.u16 q1, d18, #7\n\t"
-        "vshll.u16 q3, d19, #7\n\t"
-        "vst2.32 {d0-d3}, [%[o]:128]!\n\t"
-        "vst2.32 {d4-d7}, [%[o]:128]\n\t"
-        : [g] "+r"(g), [o] "+r"(out)
-        :
-        : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "memory");
-    (void)bx, (void)fx;
+  if constexpr (LB == 1) {
+    static_assert(LB != 1, "mip 3 lays out grid rows instead (grid_rows3)");
   } else {  // quarter q: entries j = 4 q >> LB and j + 1 as scalars (lanes of d0 and d1)
     asm volatile(
         "vld1.16 {d0}, [%[g]]!\n\t"
@@ -285,14 +310,8 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
     vst1q_u32(reinterpret_cast<uint32_t*>(o + 3), vreinterpretq_u32_s32(vmlal_s16(vmull_s16(a3, bx3), c3, fx3)));
   };
   for (int b = 0; b < n; ++b, g += gw, D += 4) {
-    if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1 (32 bytes a band)
-      const int16x8_t a = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw), vld1q_u16(g)));
-      const int16x8_t c = vreinterpretq_s16_u16(vsubq_u16(vld1q_u16(g + gw + 1), vld1q_u16(g + 1)));
-      int16x8x2_t z;
-      z.val[0] = vaddq_s16(a, a);
-      z.val[1] = vaddq_s16(a, c);
-      vst2q_s16(reinterpret_cast<int16_t*>(D), z);
-      D -= 2;  // (the loop adds 4)
+    if constexpr (LB == 1) {
+      static_assert(LB != 1, "mip 3 lays out grid rows instead (grid_rows3)");
     } else if constexpr (LB == 2) {  // quarter q: v_q, v_q+1
       const int16x4_t a = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw), vld1_u16(g)));
       const int16x4_t c = vreinterpret_s16_u16(vsub_u16(vld1_u16(g + gw + 1), vld1_u16(g + 1)));
@@ -324,39 +343,7 @@ __attribute__((noinline)) void band_deltas_one(const uint16_t* g, int gw, int n,
 template <int LB>
 __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int over, const uint16_t* bxp,
                                            const uint16_t* fxp, uint32x4_t* D) {
-  if constexpr (LB == 1) {  // 16-bit lanes 2j, 2j + 1: 2 v_j, v_j + v_j+1, stored interleaved (vst2;
-                            // 32 bytes a band, widened << 6 by the strip's assembly)
-    if (n >= 2) {
-      const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
-      int k = n >> 1;
-      asm volatile(
-          "1:\n\t"
-          "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
-          "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
-          "vld1.16 {d20-d21}, [%[g2]], %[st]\n\t"
-          "vld1.16 {d22-d23}, [%[h0]], %[st]\n\t"
-          "vld1.16 {d24-d25}, [%[h1]], %[st]\n\t"
-          "vld1.16 {d26-d27}, [%[h2]], %[st]\n\t"
-          "vsub.i16 q14, q9, q8\n\t"
-          "vsub.i16 q15, q10, q9\n\t"
-          "vsub.i16 q11, q12, q11\n\t"
-          "vsub.i16 q12, q13, q12\n\t"
-          "vadd.i16 q0, q14, q14\n\t"
-          "vadd.i16 q1, q11, q14\n\t"
-          "vadd.i16 q2, q15, q15\n\t"
-          "vadd.i16 q3, q12, q15\n\t"
-          "vst2.16 {d0-d3}, [%[D]:128]!\n\t"
-          "vst2.16 {d4-d7}, [%[D]:128]!\n\t"
-          "subs %[k], %[k], #1\n\t"
-          "bne 1b\n\t"
-          : [g0] "+r"(g), [g1] "+r"(g1), [g2] "+r"(g2), [h0] "+r"(h0), [h1] "+r"(h1), [h2] "+r"(h2), [D] "+r"(D),
-            [k] "+r"(k)
-          : [st] "r"(4 * gw)
-          : "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23",
-            "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", "cc", "memory");
-      n &= 1;
-    }
-  }
+  static_assert(LB != 1, "mip 3 lays out grid rows instead (grid_rows3)");
   if constexpr (LB == 2) {  // two bands a pass: quarter q from lane q of a (v_j) and c (v_j+1)
     if (n >= 2) {
       const uint16_t *g1 = g + gw, *g2 = g1 + gw, *h0 = g + 1, *h1 = g1 + 1, *h2 = g2 + 1;
@@ -453,9 +440,46 @@ __attribute__((noinline)) void band_deltas(const uint16_t* g, int gw, int n, int
   }
   if (n > 0) band_deltas_one<LB>(g, gw, n, bxp, fxp, D);
 }
+
+// Mip 3 (B = 2): for up to ng full groups (as many as fit before tab_end; returns how many),
+// grid rows r = 0..nb from g (group k's nine entries at g + 8 k), 32 bytes a row: the group's
+// entries p_j and sums s_j = p_j + p_j+1 (j < 8, 16 bits), group after group. A band's lanes
+// 2j, 2j + 1 have numerators 4 p_j, 2 s_j (row 0) and 2 (p_j + q_j), s_j + t_j (row 1; q, t:
+// the next grid row's), each < 2^16 (entries < 2^14): the row is their bits 10-15 (see the
+// strip's assembly).
+__attribute__((noinline)) int grid_rows3(const uint16_t* g, int gw, int nb, int ng, uint8_t* tab,
+                                         const uint8_t* tab_end) {
+  int k = 0;
+  for (; k < ng && tab + 32 * nb + 64 <= tab_end; ++k, g += 8) {  // (the strip reads a row past)
+    const uint16_t *g0 = g, *g1 = g + 1;
+    int n = nb - 1;  // rows 0..nb, two a pass
+    asm volatile(
+        "1:\n\t"
+        "vld1.16 {d16-d17}, [%[g0]], %[st]\n\t"
+        "vld1.16 {d18-d19}, [%[g1]], %[st]\n\t"
+        "vld1.16 {d20-d21}, [%[g0]], %[st]\n\t"
+        "vld1.16 {d22-d23}, [%[g1]], %[st]\n\t"
+        "vadd.i16 q9, q8, q9\n\t"
+        "vadd.i16 q11, q10, q11\n\t"
+        "subs %[n], %[n], #2\n\t"
+        "vst1.16 {d16-d19}, [%[o]:128]!\n\t"
+        "vst1.16 {d20-d23}, [%[o]:128]!\n\t"
+        "bge 1b\n\t"
+        "cmn %[n], #1\n\t"
+        "bne 2f\n\t"
+        "vld1.16 {d16-d17}, [%[g0]]\n\t"
+        "vld1.16 {d18-d19}, [%[g1]]\n\t"
+        "vadd.i16 q9, q8, q9\n\t"
+        "vst1.16 {d16-d19}, [%[o]:128]!\n"
+        "2:\n\t"
+        : [g0] "+r"(g0), [g1] "+r"(g1), [n] "+r"(n), [o] "+r"(tab)
+        : [st] "r"(2 * gw)
+        : "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "cc", "memory");
+  }
+  return k;
+}
 #endif
 
-#if defined(__aarch64__)
 // Per-lane weights (see surface_block_groups), lanes k = 0..15 of a group.
 template <int kMip>
 struct BlockWeights {
@@ -472,6 +496,8 @@ struct BlockWeights {
 };
 template <int kMip>
 constexpr BlockWeights<kMip> kBlockWeights{};
+
+#if defined(__aarch64__)
 
 constexpr uint8_t kIota32[32] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15,
                                  16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31};
@@ -541,7 +567,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
   if (all_rows) {
     if (p16) {  // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
-      int t = in_place(0) ? 0 : tile_rows16(texels, tw, th, period[0], buf, run);
+      int t = in_place(0) ? 0 : tile_rows16<kMip == 3>(texels, tw, th, period[0], buf, run);
       for (; t < th; ++t)
         run[t] = in_place(t) ? texels + t * tw + c0
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
@@ -565,17 +591,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 
   // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
   // (the scaled B T), << 2 mip for the row steps (U - T, then each next grid row's difference).
-#if defined(__aarch64__)
   const auto& w = kBlockWeights<kMip>.w;  // (a table: setup counts at the small mips)
-#else
-  uint16_t w[4][16];
-  for (int k = 0; k < 16; ++k) {
-    w[0][k] = uint16_t((B - k % B) << (4 + kMip));
-    w[1][k] = uint16_t((k % B) << (4 + kMip));
-    w[2][k] = uint16_t((B - k % B) << (2 * kMip));
-    w[3][k] = uint16_t((k % B) << (2 * kMip));
-  }
-#endif
 #if defined(__aarch64__)
   // (opaque: else GCC reloads the table's lanes inside the loops instead of keeping registers)
   auto ld = [](const uint16_t* p) {
@@ -583,11 +599,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     asm("" : "+w"(v));
     return v;
   };
-#else
-  auto ld = [](const uint16_t* p) { return vld1q_u16(p); };
-#endif
   const uint16x8_t BX0[2] = {ld(w[0]), ld(w[0] + 8)}, FX0[2] = {ld(w[1]), ld(w[1] + 8)};
   const uint16x8_t BX1[2] = {ld(w[2]), ld(w[2] + 8)}, FX1[2] = {ld(w[3]), ld(w[3] + 8)};
+#endif
 #if defined(__aarch64__)
   const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
   const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
@@ -597,10 +611,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 #if !defined(__aarch64__)
   // ARMv7 full groups run a strip at a time in assembly: at most kStripBands bands, their
-  // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk).
+  // rows' texel runs (strip_rows, then srcs per group), first numerators and deltas (blk;
+  // mip 3: grid_rows3's rows of as many full groups as it holds).
   constexpr int kStripBands = 32;
   if (strip_bands > kStripBands) strip_bands = kStripBands;
-  const uint8_t* strip_rows[kStripBands * B + 4];
+  const uint8_t* strip_rows_buf[kStripBands * B + 8];
   alignas(64) const uint8_t* sbuf[16 + kStripBands * B + 8];
   // Mip 2: blk holds the numerators, the row-step weights w0 (B - fx), w1 (fx) of a quarter,
   // the group's first band in etab, then etab: row b (at b width bytes) the grid's band b
@@ -609,6 +624,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // strip's assembly.)
   constexpr int kEBytes = 4096;
   alignas(16) uint32x4_t blk[LB == 2 ? 6 + kEBytes / 16 : 8 + 4 * kStripBands];
+  static_assert(sizeof blk >= 32 * kStripBands + 64, "mip 3: a group's grid rows fit blk");
   uint8_t* const etab = reinterpret_cast<uint8_t*>(blk + 6);
   if constexpr (LB == 2) {
     uint16_t w2[8];
@@ -651,18 +667,25 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #endif
     uint8_t* const strip = out + by0 * B * width;
 #if !defined(__aarch64__)
-    {  // the strip's rows in order, four past its end (read cyclically from run[first])
-      const int n = nb * B + 4;
-      for (int y = 0, k = first; y < n;) {
-        const int m = count - k < n - y ? count - k : n - y;  // rows before run[] wraps
-        int i = 0;
-        for (; i + 4 <= m; i += 4)
-          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y + i),
-                    vld1q_u32(reinterpret_cast<const uint32_t*>(run + k + i)));
-        for (; i < m; ++i) strip_rows[y + i] = run[k + i];
-        y += m;
-        k = 0;
+    // The strip's rows in order, four past its end (run[first..] cyclically, period count);
+    // when gs = 0 they are every group's srcs (below) and go there directly.
+    const uint8_t** const strip_rows = gs ? strip_rows_buf : sbuf + 15;
+    {
+      auto copy4 = [](const uint8_t** o, const uint8_t* const* r, int k) {  // (up to 3 past k)
+        for (int i = 0; i < k; i += 4)
+          vst1q_u32(reinterpret_cast<uint32_t*>(o + i), vld1q_u32(reinterpret_cast<const uint32_t*>(r + i)));
+      };
+      const int n = nb * B + 4, c = count < n ? count : n, m = count - first < c ? count - first : c;
+      copy4(strip_rows, run + first, m);
+      copy4(strip_rows + m, run, c - m);
+      if (count >= 4) {
+        for (int y = c; y < n; y += 4)
+          vst1q_u32(reinterpret_cast<uint32_t*>(strip_rows + y),
+                    vld1q_u32(reinterpret_cast<const uint32_t*>(strip_rows + y - count)));
+      } else {
+        for (int y = c; y < n; ++y) strip_rows[y] = strip_rows[y - count];
       }
+      if (!gs) sbuf[16 + nb * B] = nullptr;
     }
     if (LB == 2 && width >= 16) {  // etab (see there): a column of eight entries (F = 1: four) at a time
       const int ne = 4 * (width >> 4) + 1;
@@ -696,18 +719,15 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
 #endif
-    for (int g = 0; g < groups; ++g) {
-      const int b0 = g * G;
-      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
-      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
-        const uint16_t* r = grid + by * grid_width + b0;
-        if (direct) return r;
-        const int n = bw + 1 - b0;
-        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
-        return pad;
-      };
 #if !defined(__aarch64__)
-      if (width - 16 * g >= 16) {
+    int rows3_left = 0;  // mip 3: groups left in blk (grid_rows3), rows3 the next's grid rows
+    const uint32x4_t* rows3 = blk;
+#endif
+#if !defined(__aarch64__)
+    int g = 0;
+    for (; 16 * g + 16 <= width; ++g) {
+      const int b0 = g * G;
+      {
         // Full groups: the whole strip in one assembly loop, two rows a pass. Row y: the step
         // to row y + 1 (numerators q4-q7 += the delta of row y's band, q8-q11), the scalar work
         // of row y (its indices moved from q12-q15 by vmov, colormap bytes, packed words, str:
@@ -817,19 +837,28 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // blk: the first row's numerators, then the bands' deltas (D[b]: band b, the step after
         // each of its rows).
         const uint16_t* const r0 = grid + by0 * grid_width + b0;
-        first_numerators<LB>(r0, w[0], w[1], blk);
-        // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
-        if constexpr (LB == 2) {
+        if constexpr (LB == 1) {  // the grid rows of as many full groups as blk holds
+          if (rows3_left == 0) {
+            rows3_left = grid_rows3(r0, grid_width, nb, (width >> 4) - g, reinterpret_cast<uint8_t*>(blk),
+                                    reinterpret_cast<const uint8_t*>(blk + sizeof blk / 16));
+            rows3 = blk;
+          } else {
+            rows3 += 2 * (nb + 1);
+          }
+          --rows3_left;
+        } else if constexpr (LB == 2) {
+          first_numerators<LB>(r0, w[0], w[1], blk);
           const uint8_t* const ep = etab + 8 * g;
           std::memcpy(blk + 5, &ep, sizeof ep);
-        } else {
+        } else {  // (mips 0-1 read four entries a row: past the grid only in its last row's last group)
+          first_numerators<LB>(r0, w[0], w[1], blk);
           band_deltas<LB>(r0, grid_width, nb, b0 + 4 <= grid_width || by0 + nb < bh ? nb : nb - 1, w[2], w[3], blk + 4);
         }
         const int rows = nb * B;
         // srcs[y] = row y + 1's texels (srcs[-1]: row 0; srcs[rows - 1]: a readable row past the
         // strip), then a null. srcs[y] lies at a multiple of 4 B bytes exactly when y % B == 0.
         const uint8_t** const srcs = sbuf + 16;
-        if (g == 0 || gs) {  // (the same for every group when gs = 0)
+        if (gs) {  // (gs = 0: every group's, laid out per strip)
           const uint32x4_t off = vdupq_n_u32(uint32_t(gs * g));
           const uint32_t* r = reinterpret_cast<const uint32_t*>(strip_rows);
           const uint32_t* const r_end = r + rows;
@@ -842,7 +871,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         uint8_t* d = strip + 16 * g;
         const uint8_t** sa = srcs;
-        const uint32x4_t* dp = blk;
+        const uint32x4_t* dp = LB == 1 ? rows3 : blk;
         // Prologue: row 0's indices (no step) and the first delta. The loop lies inside one
         // 512-byte block (no page crossing).
 #define SB_STRIP7(ROW, TEST, PD, BD0, BD) \
@@ -880,19 +909,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", \
   "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", \
   "cc", "memory"
-        // Every pass ends a band when B = 2; else a band ends where srcs is 4 B-aligned.
+        // A band ends where srcs is 4 B-aligned.
 #define SB_BAND_TEST "tst %[sa], %[bm]\n\tbne 1b\n\t"
         // The next band's delta (q8-q11): loaded; at mip 2 weighed from e, e1, w0, w1 (d0-d3,
         // free between rows): quarter j is w0 e[j] + w1 e1[j].
 #define SB_LD_DELTA "vld1.32 {d16-d19}, [%[dp]:128]!\n\tvld1.32 {d20-d23}, [%[dp]:128]!\n\t"
-        // (mip 3: 16-bit lanes, 32 bytes a band, widened; in the loop loaded after the pass's
-        // rows (SB_LD3), the strip's last pass reading past its bands)
-#define SB_LD3 "vld1.16 {d0-d3}, [%[dp]:128]!\n\t"
-#define SB_WIDEN3 \
-  "vshll.s16 q8, d0, #6\n\t" \
-  "vshll.s16 q9, d1, #6\n\t" \
-  "vshll.s16 q10, d2, #6\n\t" \
-  "vshll.s16 q11, d3, #6\n\t"
         // (mip 2: after the numerators dp reads the weights, pushed on the stack for the loop as
         // no register is left, and the group's first band in etab; then a row of etab a band)
 #define SB_EP2 \
@@ -911,25 +932,166 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   "vmlal.s16 q9, d3, d0[2]\n\t" \
   "vmlal.s16 q10, d3, d0[3]\n\t" \
   "vmlal.s16 q11, d3, d1[0]\n\t"
+        // Mip 3: a pass is a band. Row 0's colormap rows: vshr(s, 1) with its low byte replaced
+        // (vsri) by p >> 8, i.e. 16-bit lanes (2 s >> 10) << 8 | 4 p >> 10; row 1's: vshr(s + t, 2)
+        // with vhadd(p, q) >> 8 (p, s and q, t: grid_rows3's rows, in q10-q11 and q2-q3 by turns,
+        // one loaded a pass; row 1's rows made in q8 during row 0's). Each zipped with the
+        // texels into row << 8 | texel. Slots S1..S8 take the NEON work (x0: the next band's
+        // row 0, x1: row 1), ZA or ZB the zip (the A9 model pairs them so).
+#define SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
+  "ldr r0, [%[sa]], #4\n\t" \
+  "vmov r1, r2, d24\n\t" \
+  "add %[d], %[d], %[st]\n\t" \
+  "vmov r3, ip, d25\n\t" \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  S1 \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  S2 \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  S3 \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  S4 \
+  "orr r3, r3, ip, lsl #8\n\t" \
+  "vmov r0, r2, d26\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "vmov ip, lr, d27\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  S5 \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  S6 \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t"
+#define SB_ROW3A(S1, S2, S3, S4, S5, S6, S7, S8, ZA, ZB, DLO, DHI) \
+  SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  S7 \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r8, r2, d28\n\t" \
+  "strd r1, r0, [%[d], #0]\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  ZA \
+  "ldrb r8, [%[cm], r8]\n\t" \
+  ZB \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  S8 \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r8, r8, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r8, r8, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, " DLO "\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, " DHI "\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "strd r8, r0, [%[d], #8]\n\t"
+#define SB_ROW3(S1, S2, S3, S4, S5, S6, S7, S8, ZA, ZB, DLO, DHI) \
+  SB_ROW3_HEAD(S1, S2, S3, S4, S5, S6) \
+  "str r1, [%[d], #0]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  S7 \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "vmov r1, r2, d28\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "vmov r3, lr, d29\n\t" \
+  ZA \
+  "ldrb r1, [%[cm], r1]\n\t" \
+  ZB \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  S8 \
+  "ldrb r3, [%[cm], r3]\n\t" \
+  "str r0, [%[d], #4]\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "orr r1, r1, r2, lsl #8\n\t" \
+  "vmov r0, r2, d30\n\t" \
+  "orr r3, r3, lr, lsl #8\n\t" \
+  "vmov ip, lr, d31\n\t" \
+  "orr r1, r1, r3, lsl #16\n\t" \
+  "ldrb r0, [%[cm], r0]\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "ldrb r2, [%[cm], r2]\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "ldrb ip, [%[cm], ip]\n\t" \
+  "vmovl.u16 q14, " DLO "\n\t" \
+  "ldrb lr, [%[cm], lr]\n\t" \
+  "vmovl.u16 q15, " DHI "\n\t" \
+  "str r1, [%[d], #8]\n\t" \
+  "orr r0, r0, r2, lsl #8\n\t" \
+  "orr ip, ip, lr, lsl #8\n\t" \
+  "orr r0, r0, ip, lsl #16\n\t" \
+  "str r0, [%[d], #12]\n\t"
+#define SB_X1 "", "", "", "", "", "", "", "", "", "vzip.8 q0, q8\n\t", "d16", "d17"
+#define SB_X0A \
+  "vld1.16 {d20-d23}, [%[dp]:128]!\n\t", "", "vshr.u16 q1, q3, #1\n\t", "vadd.i16 q8, q3, q11\n\t", \
+  "vsri.16 q1, q2, #8\n\t", "vhadd.u16 q9, q2, q10\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
+  "vzip.8 q0, q1\n\t", "", "d2", "d3"
+#define SB_X0B \
+  "vld1.16 {d4-d7}, [%[dp]:128]!\n\t", "", "vshr.u16 q1, q11, #1\n\t", "vadd.i16 q8, q11, q3\n\t", \
+  "vsri.16 q1, q10, #8\n\t", "vhadd.u16 q9, q10, q2\n\t", "vshr.u16 q8, q8, #2\n\t", "vsri.16 q8, q9, #8\n\t", \
+  "vzip.8 q0, q1\n\t", "", "d2", "d3"
+#define SB_CALL3(M, ...) M(__VA_ARGS__)
+#define SB_STRIP3(ROW) \
+  "sub %[d], %[d], %[st]\n\t" \
+  "ldr r0, [%[sa], #-4]\n\t" \
+  "vld1.16 {d20-d23}, [%[dp]:128]!\n\t" \
+  "vld1.16 {d4-d7}, [%[dp]:128]!\n\t" \
+  "vld1.8 {d0-d1}, [r0]\n\t" \
+  "vshr.u16 q1, q11, #1\n\t" \
+  "vadd.i16 q8, q11, q3\n\t" \
+  "vhadd.u16 q9, q10, q2\n\t" \
+  "vsri.16 q1, q10, #8\n\t" \
+  "vshr.u16 q8, q8, #2\n\t" \
+  "vzip.8 q0, q1\n\t" \
+  "vsri.16 q8, q9, #8\n\t" \
+  "vmovl.u16 q12, d0\n\t" \
+  "vmovl.u16 q13, d1\n\t" \
+  "vmovl.u16 q14, d2\n\t" \
+  "vmovl.u16 q15, d3\n\t" \
+  "b 1f\n\t" \
+  ".balign 512\n" \
+  "1:\n\t" SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0A) \
+  "ldr r0, [%[sa]]\n\t" \
+  "cmp r0, #0\n\t" \
+  "beq 3f\n\t" \
+  SB_CALL3(ROW, SB_X1) SB_CALL3(ROW, SB_X0B) \
+  "ldr r0, [%[sa]]\n\t" \
+  "cmp r0, #0\n\t" \
+  "bne 1b\n" \
+  "3:\n\t"
+#define SB_STRIP3_OPS_ \
+  : [sa] "+r"(sa), [d] "+r"(d), [dp] "+r"(dp) \
+  : [cm] "r"(colormap), [st] "r"(width) \
+  : "r0", "r1", "r2", "r3", "r8", "ip", "lr", "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d16", "d17", \
+    "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31", "cc", \
+    "memory"
         constexpr bool kPassIsBand = B == 2;
         if (((uintptr_t(d) | uintptr_t(width)) & 3) == 0) {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7A, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP3(SB_ROW3A) SB_STRIP3_OPS_);
           else if constexpr (LB == 2)
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7A, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         } else {
           if constexpr (kPassIsBand)
-            asm volatile(SB_STRIP7(SB_ROW7, SB_LD3, SB_LD3 SB_WIDEN3, "", SB_WIDEN3) SB_STRIP7_OPS_());
+            asm volatile(SB_STRIP3(SB_ROW3) SB_STRIP3_OPS_);
           else if constexpr (LB == 2)
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, SB_EP2 SB_DELTA2, "", SB_DELTA2) "add sp, sp, #16\n\t" SB_STRIP7_OPS_());
           else
             asm volatile(SB_STRIP7(SB_ROW7, SB_BAND_TEST, "", SB_LD_DELTA, SB_LD_DELTA) SB_STRIP7_OPS_());
         }
 #undef SB_LD_DELTA
-#undef SB_LD3
-#undef SB_WIDEN3
 #undef SB_DELTA2
 #undef SB_EP2
 #undef SB_BAND_TEST
@@ -938,8 +1100,34 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_ROW7A
 #undef SB_ROW7
 #undef SB_ROW7_HEAD
-        continue;
+#undef SB_STRIP3
+#undef SB_STRIP3_OPS_
+#undef SB_ROW3A
+#undef SB_ROW3
+#undef SB_ROW3_HEAD
+#undef SB_X0A
+#undef SB_X0B
+#undef SB_X1
+#undef SB_CALL3
       }
+    }
+    for (; g < groups; ++g) {
+#else
+    for (int g = 0; g < groups; ++g) {
+#endif
+      const int b0 = g * G;
+      const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
+      auto row_of = [&](int by) -> const uint16_t* {  // grid row by from the group's first block
+        const uint16_t* r = grid + by * grid_width + b0;
+        if (direct) return r;
+        const int n = bw + 1 - b0;
+        for (int k = 0; k < 24; ++k) pad[k] = k < n ? r[k] : 0;
+        return pad;
+      };
+#if !defined(__aarch64__)
+      // (ARMv7: the weights loaded here, for the last partial group only)
+      const uint16x8_t BX0[2] = {vld1q_u16(w[0]), vld1q_u16(w[0] + 8)}, FX0[2] = {vld1q_u16(w[1]), vld1q_u16(w[1] + 8)};
+      const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
 #endif
       uint32x4_t num[4], delta[4], prev[4];
       {
