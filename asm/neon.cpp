@@ -942,7 +942,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
 #endif
       uint32x4_t num[4], delta[4], prev[4];
-      {
+#if defined(__aarch64__)
+      const bool weighs = LB != 1 || width - 16 * g < 16;  // (mip 3's full groups weigh in their loop)
+#else
+      const bool weighs = true;
+#endif
+      if (weighs) {
         const uint16_t* r0 = row_of(by0);
         weigh<LB>(r0, BX0, FX0, num);
         weigh<LB>(r0, BX1, FX1, prev);
@@ -997,7 +1002,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
         constexpr int kDs = LB == 1 ? 2 : LB == 2 ? 1 : 4;  // dtab entries a band (mips 2-3: 16-bit lanes)
-        if (direct) {
+        if (LB == 1) {  // (mip 3: no table, see its loop)
+        } else if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
           // the difference of the two rows' weighed values).
@@ -1090,7 +1096,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             }
           }
         }
-        for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
+        if (LB != 1)
+          for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
   #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4, BR) \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
@@ -1129,6 +1136,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "fmov x24, v6.d[1]\n\t" \
     "fmov x25, d7\n\t" \
     "fmov x26, v7.d[1]\n\t" \
+    SB_PAIR_SCALAR("adds %[q], %[q], #2\n\t", ", %[goff]", A, E1, E2, E3, E4, BR)
+  // The pair's scalar half (also mip 3's loop): CNT the loop count, GO the texel run offset.
+  #define SB_PAIR_SCALAR(CNT, GO, A, E1, E2, E3, E4, BR) \
     "add x10, %[cm], x1, lsr #32\n\t" \
     "ldrb w1, [%[cm], w1, uxtw]\n\t" \
     "add x9, %[cm], x0, lsr #32\n\t" \
@@ -1141,7 +1151,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldrb w9, [x9]\n\t" \
     "add x12, %[cm], x3, lsr #32\n\t" \
     "ldrb w4, [%[cm], w4, uxtw]\n\t" \
-    "adds %[q], %[q], #2\n\t" \
+    CNT \
     "ldrb w2, [%[cm], w2, uxtw]\n\t" \
     "orr x1, x1, x10, lsl #8\n\t" \
     "ldrb w3, [%[cm], w3, uxtw]\n\t" \
@@ -1160,7 +1170,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldrb w11, [x11]\n\t" \
     "ldrb w12, [x12]\n\t" \
     "orr x7, x7, x10, lsl #8\n\t" \
-    "ldr q20, [x8, %[goff]]\n\t" \
+    "ldr q20, [x8" GO "]\n\t" \
     "orr x6, x6, x9, lsl #8\n\t" \
     "ldrb w5, [%[cm], w5, uxtw]\n\t" \
     "add x9, %[cm], x19, lsr #32\n\t" \
@@ -1198,7 +1208,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "orr x23, x23, x18, lsl #8\n\t" \
     "ldrb w10, [x10]\n\t" \
     "orr x4, x4, x6, lsl #32\n\t" \
-    "ldr q25, [x8, %[goff]]\n\t" \
+    "ldr q25, [x8" GO "]\n\t" \
     "orr x24, x24, x30, lsl #8\n\t" \
     "orr x21, x21, x11, lsl #8\n\t" \
     A \
@@ -1430,43 +1440,116 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
 #undef SB_WEIGH_STEP
-        } else {  // mip 3 (a band an iteration): 16-bit steps (32 bytes a band) widened in the loop;
-                  // iteration y / 2 loads band y / 2 + 1's (q = y - rows, even: band offset 16 q)
-          int64_t q = -int64_t(nb) * B;
+        } else {
+          // Mip 3 (a band an iteration, no step table): a band's light in 16-bit lanes
+          // (n >> 6, < 2^16; row = n >> 16 = its high byte >> 2) from the grid directly:
+          // S_b (the band's first row, v18-v19) lanes 2j, 2j + 1: 4 g_j, 2 (g_j + g_j+1) of
+          // grid row b, the second row (S_b + S_b+1) / 2 (uhadd, exact: both even). Row
+          // indices: (S >> 2) with the texel put in its low byte (sri), widened. Each iteration
+          // weighs grid row b + 2 (S_b+2, v28-v29) for the next; the read is clamped to the
+          // strip's last row (the flags of the compare of gp, the row after the next, with ge:
+          // lo reads it, ls continues the loop). The texel runs' group offset is in lin.
+#define SB_S3(A, B, LO, HI) /* LO, HI = S of grid row A (B: scratch) */ \
+  "ldr q" #A ", [x9]\n\t" \
+  "ldur q" #B ", [x9, #2]\n\t" \
+  "add v" #B ".8h, v" #A ".8h, v" #B ".8h\n\t" \
+  "ushll v" #LO ".4s, v" #A ".4h, #2\n\t" \
+  "ushll2 v" #HI ".4s, v" #A ".8h, #2\n\t" \
+  "shl v" #B ".8h, v" #B ".8h, #1\n\t" \
+  "shll v" #A ".4s, v" #B ".4h, #16\n\t" \
+  "shll2 v" #B ".4s, v" #B ".8h, #16\n\t" \
+  "orr v" #LO ".16b, v" #LO ".16b, v" #A ".16b\n\t" \
+  "orr v" #HI ".16b, v" #HI ".16b, v" #B ".16b\n\t"
+          if (gs && g)
+            for (int i = 0; i < nb * B + 2; i += 2) {
+              uint64x2_t v;
+              std::memcpy(&v, lin + i, sizeof v);
+              v = vaddq_u64(v, vdupq_n_u64(uint64_t(gs)));
+              std::memcpy(lin + i, &v, sizeof v);
+            }
+          const uint16_t* gp = grid + by0 * grid_width + b0;
+          const int64_t gst = 2 * int64_t(grid_width);
+          const uintptr_t ge = uintptr_t(gp) + uintptr_t(nb + 1) * uintptr_t(gst);  // past the strip's last row
           asm volatile(
-              "mov v21.16b, %[n0].16b\n\t"
-              "mov v22.16b, %[n1].16b\n\t"
-              "mov v23.16b, %[n2].16b\n\t"
-              "mov v19.16b, %[n3].16b\n\t"
+              "mov x9, %[gp]\n\t" SB_S3(26, 27, 18, 19)
+              "add x9, %[gp], %[gst]\n\t" SB_S3(0, 1, 28, 29)
+              "add %[gp], x9, %[gst]\n\t"
               "ldr x8, [%[rp]]\n\t"
-              "ldr q20, [x8, %[goff]]\n\t"
+              "ldr q20, [x8]\n\t"
               "ldr x8, [%[rp], #8]\n\t"
-              "ldr q25, [x8, %[goff]]\n\t"
+              "ldr q25, [x8]\n\t"
               "add %[rp], %[rp], #16\n\t"
-              "add x8, %[dte], %[q], lsl #4\n\t"
-              "ldp q0, q1, [x8]\n\t"
-              "sshll v16.4s, v0.4h, #6\n\t"
-              "sshll2 v17.4s, v0.8h, #6\n\t"
-              "sshll v18.4s, v1.4h, #6\n\t"
-              "sshll2 v29.4s, v1.8h, #6\n\t"
+              "cmp %[gp], %[ge]\n\t"
               "b 2f\n\t"
-              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
-              "1:\n\t" SB_PAIR_LOOP("add x9, %[dte], %[q], lsl #4\n\t", "ldp q0, q1, [x9, #32]\n\t",
-                                   "sshll v18.4s, v1.4h, #6\n\tsshll v16.4s, v0.4h, #6\n\t"
-                                   "sshll2 v17.4s, v0.8h, #6\n\tsshll2 v29.4s, v1.8h, #6\n\t",
-                                   "", "", "", "", "", "b.ne 1b\n\t")
+              ".p2align 10\n\t"  // (the loop, 560 bytes, then never straddles a page)
+              "1:\n\t"
               "stp x19, x23, [%[d]]\n\t"
               "add %[d], %[d], %[w]\n\t"
-              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
-              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 2 * nb), [i0] "w"(TIX[0]),
-                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
-                [n2] "w"(num[2]), [n3] "w"(num[3])
+              "2:\n\t"
+              "sub x9, %[gp], %[gst]\n\t"
+              "csel x9, %[gp], x9, lo\n\t"
+              "uhadd v21.8h, v18.8h, v28.8h\n\t"
+              "uhadd v22.8h, v19.8h, v29.8h\n\t"
+              "ushr v0.8h, v18.8h, #2\n\t"
+              "ushr v2.8h, v19.8h, #2\n\t"
+              "ldr q26, [x9]\n\t"
+              "ldur q27, [x9, #2]\n\t"
+              "shll v1.8h, v20.8b, #8\n\t"
+              "shll2 v3.8h, v20.16b, #8\n\t"
+              "shll v5.8h, v25.8b, #8\n\t"
+              "shll2 v7.8h, v25.16b, #8\n\t"
+              "ushr v4.8h, v21.8h, #2\n\t"
+              "ushr v6.8h, v22.8h, #2\n\t"
+              "sri v0.8h, v1.8h, #8\n\t"
+              "sri v2.8h, v3.8h, #8\n\t"
+              "mov v18.16b, v28.16b\n\t"
+              "mov v19.16b, v29.16b\n\t"
+              "sri v4.8h, v5.8h, #8\n\t"
+              "sri v6.8h, v7.8h, #8\n\t"
+              "uxtl2 v1.4s, v0.8h\n\t"
+              "uxtl v0.4s, v0.4h\n\t"
+              "uxtl2 v3.4s, v2.8h\n\t"
+              "uxtl v2.4s, v2.4h\n\t"
+              "add v27.8h, v26.8h, v27.8h\n\t"
+              "uxtl2 v5.4s, v4.8h\n\t"
+              "uxtl v4.4s, v4.4h\n\t"
+              "uxtl2 v7.4s, v6.8h\n\t"
+              "uxtl v6.4s, v6.4h\n\t"
+              "ushll v28.4s, v26.4h, #2\n\t"
+              "ushll2 v29.4s, v26.8h, #2\n\t"
+              "shl v27.8h, v27.8h, #1\n\t"
+              "fmov x0, d0\n\t"
+              "fmov x1, v0.d[1]\n\t"
+              "fmov x2, d1\n\t"
+              "fmov x3, v1.d[1]\n\t"
+              "shll v26.4s, v27.4h, #16\n\t"
+              "fmov x4, d2\n\t"
+              "fmov x5, v2.d[1]\n\t"
+              "fmov x6, d3\n\t"
+              "fmov x7, v3.d[1]\n\t"
+              "shll2 v27.4s, v27.8h, #16\n\t"
+              "orr v28.16b, v28.16b, v26.16b\n\t"
+              "fmov x19, d4\n\t"
+              "fmov x20, v4.d[1]\n\t"
+              "fmov x21, d5\n\t"
+              "fmov x22, v5.d[1]\n\t"
+              "orr v29.16b, v29.16b, v27.16b\n\t"
+              "fmov x23, d6\n\t"
+              "fmov x24, v6.d[1]\n\t"
+              "fmov x25, d7\n\t"
+              "fmov x26, v7.d[1]\n\t"
+              SB_PAIR_SCALAR("add %[gp], %[gp], %[gst]\n\tcmp %[gp], %[ge]\n\t", "", "", "", "", "", "", "b.ls 1b\n\t")
+              "stp x19, x23, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [gp] "+r"(gp)
+              : [cm] "r"(colormap), [w] "r"(wstride), [gst] "r"(gst), [ge] "r"(ge)
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
-                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
-                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
-                "memory");
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v18",
+                "v19", "v20", "v21", "v22", "v25", "v26", "v27", "v28", "v29", "cc", "memory");
+#undef SB_S3
         }
 #undef SB_PAIR_LOOP
+#undef SB_PAIR_SCALAR
 #undef SB_PAIR_LOOP_N
         continue;
       }
