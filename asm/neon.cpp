@@ -1449,17 +1449,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           // weighs grid row b + 2 (S_b+2, v28-v29) for the next; the read is clamped to the
           // strip's last row (the flags of the compare of gp, the row after the next, with ge:
           // lo reads it, ls continues the loop). The texel runs' group offset is in lin.
-#define SB_S3(A, B, LO, HI) /* LO, HI = S of grid row A (B: scratch) */ \
+#define SB_T3(A, B, LO, HI) /* LO, HI = T of grid row at x9 (A, B: scratch) */ \
   "ldr q" #A ", [x9]\n\t" \
   "ldur q" #B ", [x9, #2]\n\t" \
   "add v" #B ".8h, v" #A ".8h, v" #B ".8h\n\t" \
-  "ushll v" #LO ".4s, v" #A ".4h, #2\n\t" \
-  "ushll2 v" #HI ".4s, v" #A ".8h, #2\n\t" \
-  "shl v" #B ".8h, v" #B ".8h, #1\n\t" \
-  "shll v" #A ".4s, v" #B ".4h, #16\n\t" \
-  "shll2 v" #B ".4s, v" #B ".8h, #16\n\t" \
-  "orr v" #LO ".16b, v" #LO ".16b, v" #A ".16b\n\t" \
-  "orr v" #HI ".16b, v" #HI ".16b, v" #B ".16b\n\t"
+  "add v" #A ".8h, v" #A ".8h, v" #A ".8h\n\t" \
+  "zip1 v" #LO ".8h, v" #A ".8h, v" #B ".8h\n\t" \
+  "zip2 v" #HI ".8h, v" #A ".8h, v" #B ".8h\n\t"
           if (gs && g)
             for (int i = 0; i < nb * B + 2; i += 2) {
               uint64x2_t v;
@@ -1471,8 +1467,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const int64_t gst = 2 * int64_t(grid_width);
           const uintptr_t ge = uintptr_t(gp) + uintptr_t(nb + 1) * uintptr_t(gst);  // past the strip's last row
           asm volatile(
-              "mov x9, %[gp]\n\t" SB_S3(26, 27, 18, 19)
-              "add x9, %[gp], %[gst]\n\t" SB_S3(0, 1, 28, 29)
+              "mov x9, %[gp]\n\t" SB_T3(26, 27, 18, 19)
+              "add x9, %[gp], %[gst]\n\t" SB_T3(0, 1, 28, 29)
               "add %[gp], x9, %[gst]\n\t"
               "ldr x8, [%[rp]]\n\t"
               "ldr q20, [x8]\n\t"
@@ -1488,10 +1484,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "2:\n\t"
               "sub x9, %[gp], %[gst]\n\t"
               "csel x9, %[gp], x9, lo\n\t"
-              "uhadd v21.8h, v18.8h, v28.8h\n\t"
-              "uhadd v22.8h, v19.8h, v29.8h\n\t"
-              "ushr v0.8h, v18.8h, #2\n\t"
-              "ushr v2.8h, v19.8h, #2\n\t"
+              "add v21.8h, v18.8h, v28.8h\n\t"
+              "add v22.8h, v19.8h, v29.8h\n\t"
+              "ushr v0.8h, v18.8h, #1\n\t"
+              "ushr v2.8h, v19.8h, #1\n\t"
               "ldr q26, [x9]\n\t"
               "ldur q27, [x9, #2]\n\t"
               "shll v1.8h, v20.8b, #8\n\t"
@@ -1511,29 +1507,25 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "uxtl2 v3.4s, v2.8h\n\t"
               "uxtl v2.4s, v2.4h\n\t"
               "add v27.8h, v26.8h, v27.8h\n\t"
+              "add v26.8h, v26.8h, v26.8h\n\t"
               "uxtl2 v5.4s, v4.8h\n\t"
               "uxtl v4.4s, v4.4h\n\t"
               "uxtl2 v7.4s, v6.8h\n\t"
               "uxtl v6.4s, v6.4h\n\t"
-              "ushll v28.4s, v26.4h, #2\n\t"
-              "ushll2 v29.4s, v26.8h, #2\n\t"
-              "shl v27.8h, v27.8h, #1\n\t"
+              "zip1 v28.8h, v26.8h, v27.8h\n\t"
+              "zip2 v29.8h, v26.8h, v27.8h\n\t"
               "fmov x0, d0\n\t"
               "fmov x1, v0.d[1]\n\t"
               "fmov x2, d1\n\t"
               "fmov x3, v1.d[1]\n\t"
-              "shll v26.4s, v27.4h, #16\n\t"
               "fmov x4, d2\n\t"
               "fmov x5, v2.d[1]\n\t"
               "fmov x6, d3\n\t"
               "fmov x7, v3.d[1]\n\t"
-              "shll2 v27.4s, v27.8h, #16\n\t"
-              "orr v28.16b, v28.16b, v26.16b\n\t"
               "fmov x19, d4\n\t"
               "fmov x20, v4.d[1]\n\t"
               "fmov x21, d5\n\t"
               "fmov x22, v5.d[1]\n\t"
-              "orr v29.16b, v29.16b, v27.16b\n\t"
               "fmov x23, d6\n\t"
               "fmov x24, v6.d[1]\n\t"
               "fmov x25, d7\n\t"
@@ -1546,7 +1538,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v18",
                 "v19", "v20", "v21", "v22", "v25", "v26", "v27", "v28", "v29", "cc", "memory");
-#undef SB_S3
+#undef SB_T3
         }
 #undef SB_PAIR_LOOP
 #undef SB_PAIR_SCALAR
