@@ -1441,21 +1441,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "memory");
 #undef SB_WEIGH_STEP
         } else {
-          // Mip 3 (a band an iteration, no step table): a band's light in 16-bit lanes
-          // (n >> 6, < 2^16; row = n >> 16 = its high byte >> 2) from the grid directly:
-          // S_b (the band's first row, v18-v19) lanes 2j, 2j + 1: 4 g_j, 2 (g_j + g_j+1) of
-          // grid row b, the second row (S_b + S_b+1) / 2 (uhadd, exact: both even). Row
-          // indices: (S >> 2) with the texel put in its low byte (sri), widened. Each iteration
-          // weighs grid row b + 2 (S_b+2, v28-v29) for the next; the read is clamped to the
-          // strip's last row (the flags of the compare of gp, the row after the next, with ge:
-          // lo reads it, ls continues the loop). The texel runs' group offset is in lin.
-#define SB_T3(A, B, LO, HI) /* LO, HI = T of grid row at x9 (A, B: scratch) */ \
+          // Mip 3 (a band an iteration, no step table). A texel's light n >> 6 (< 2^16) in
+          // 16-bit lanes, even texels (fx = 0) and odd ones (fx = 1) in separate vectors, so
+          // the grid rows need no interleaving: T_b = (2 g_j, g_j + g_j+1) of grid row b (j the
+          // block), the band's first row's light is 2 T_b, its second's T_b + T_b+1. Row
+          // indices row << 8 | texel: the light shifted so that its high byte is the row
+          // (T_b >> 1, (T_b + T_b+1) >> 2), the texel put in the low byte (bit: even texels;
+          // sri: odd ones, of the 16-bit texel pairs); four to a 64-bit register, each
+          // index taken out by ubfx or an extending add. Each iteration weighs grid row b + 2
+          // (T_b+2, v28-v29) for the next, the read clamped to the strip's last row: gp (the
+          // row after) compared with ge, one past that row: lo reads gp, ls continues the loop.
+          // The texel runs' group offset is added to lin once per group.
+#define SB_T3(A, B, E, O) /* E, O = T of grid row at x9 (A, B: scratch) */ \
   "ldr q" #A ", [x9]\n\t" \
   "ldur q" #B ", [x9, #2]\n\t" \
-  "add v" #B ".8h, v" #A ".8h, v" #B ".8h\n\t" \
-  "add v" #A ".8h, v" #A ".8h, v" #A ".8h\n\t" \
-  "zip1 v" #LO ".8h, v" #A ".8h, v" #B ".8h\n\t" \
-  "zip2 v" #HI ".8h, v" #A ".8h, v" #B ".8h\n\t"
+  "add v" #O ".8h, v" #A ".8h, v" #B ".8h\n\t" \
+  "add v" #E ".8h, v" #A ".8h, v" #A ".8h\n\t"
           if (gs && g)
             for (int i = 0; i < nb * B + 2; i += 2) {
               uint64x2_t v;
@@ -1470,74 +1471,151 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "mov x9, %[gp]\n\t" SB_T3(26, 27, 18, 19)
               "add x9, %[gp], %[gst]\n\t" SB_T3(0, 1, 28, 29)
               "add %[gp], x9, %[gst]\n\t"
+              "movi v31.8h, #0xff\n\t"
               "ldr x8, [%[rp]]\n\t"
               "ldr q20, [x8]\n\t"
               "ldr x8, [%[rp], #8]\n\t"
               "ldr q25, [x8]\n\t"
               "add %[rp], %[rp], #16\n\t"
               "cmp %[gp], %[ge]\n\t"
-              "b 2f\n\t"
-              ".p2align 10\n\t"  // (the loop, 560 bytes, then never straddles a page)
+              "b 1f\n\t"
+              ".p2align 10\n\t"  // (the loop, 524 bytes, then never straddles a page)
               "1:\n\t"
-              "stp x19, x23, [%[d]]\n\t"
-              "add %[d], %[d], %[w]\n\t"
-              "2:\n\t"
               "sub x9, %[gp], %[gst]\n\t"
               "csel x9, %[gp], x9, lo\n\t"
               "add v21.8h, v18.8h, v28.8h\n\t"
               "add v22.8h, v19.8h, v29.8h\n\t"
               "ushr v0.8h, v18.8h, #1\n\t"
-              "ushr v2.8h, v19.8h, #1\n\t"
+              "ushr v1.8h, v19.8h, #1\n\t"
               "ldr q26, [x9]\n\t"
               "ldur q27, [x9, #2]\n\t"
-              "shll v1.8h, v20.8b, #8\n\t"
-              "shll2 v3.8h, v20.16b, #8\n\t"
-              "shll v5.8h, v25.8b, #8\n\t"
-              "shll2 v7.8h, v25.16b, #8\n\t"
-              "ushr v4.8h, v21.8h, #2\n\t"
-              "ushr v6.8h, v22.8h, #2\n\t"
-              "sri v0.8h, v1.8h, #8\n\t"
-              "sri v2.8h, v3.8h, #8\n\t"
+              "ushr v2.8h, v21.8h, #2\n\t"
+              "ushr v3.8h, v22.8h, #2\n\t"
+              "bit v0.16b, v20.16b, v31.16b\n\t"
+              "sri v1.8h, v20.8h, #8\n\t"
               "mov v18.16b, v28.16b\n\t"
               "mov v19.16b, v29.16b\n\t"
-              "sri v4.8h, v5.8h, #8\n\t"
-              "sri v6.8h, v7.8h, #8\n\t"
-              "uxtl2 v1.4s, v0.8h\n\t"
-              "uxtl v0.4s, v0.4h\n\t"
-              "uxtl2 v3.4s, v2.8h\n\t"
-              "uxtl v2.4s, v2.4h\n\t"
-              "add v27.8h, v26.8h, v27.8h\n\t"
-              "add v26.8h, v26.8h, v26.8h\n\t"
-              "uxtl2 v5.4s, v4.8h\n\t"
-              "uxtl v4.4s, v4.4h\n\t"
-              "uxtl2 v7.4s, v6.8h\n\t"
-              "uxtl v6.4s, v6.4h\n\t"
-              "zip1 v28.8h, v26.8h, v27.8h\n\t"
-              "zip2 v29.8h, v26.8h, v27.8h\n\t"
+              "bit v2.16b, v25.16b, v31.16b\n\t"
+              "sri v3.8h, v25.8h, #8\n\t"
+              "add v29.8h, v26.8h, v27.8h\n\t"
+              "add v28.8h, v26.8h, v26.8h\n\t"
               "fmov x0, d0\n\t"
-              "fmov x1, v0.d[1]\n\t"
               "fmov x2, d1\n\t"
-              "fmov x3, v1.d[1]\n\t"
               "fmov x4, d2\n\t"
-              "fmov x5, v2.d[1]\n\t"
               "fmov x6, d3\n\t"
+              "fmov x1, v0.d[1]\n\t"
+              "fmov x3, v1.d[1]\n\t"
+              "fmov x5, v2.d[1]\n\t"
               "fmov x7, v3.d[1]\n\t"
-              "fmov x19, d4\n\t"
-              "fmov x20, v4.d[1]\n\t"
-              "fmov x21, d5\n\t"
-              "fmov x22, v5.d[1]\n\t"
-              "fmov x23, d6\n\t"
-              "fmov x24, v6.d[1]\n\t"
-              "fmov x25, d7\n\t"
-              "fmov x26, v7.d[1]\n\t"
-              SB_PAIR_SCALAR("add %[gp], %[gp], %[gst]\n\tcmp %[gp], %[ge]\n\t", "", "", "", "", "", "", "b.ls 1b\n\t")
-              "stp x19, x23, [%[d]]\n\t"
+              "ubfx x9, x0, #16, #16\n\t"
+              "ubfx x10, x0, #32, #16\n\t"
+              "add x11, %[cm], x0, lsr #48\n\t"
+              "add x0, %[cm], w0, uxth\n\t"
+              "ubfx x12, x2, #16, #16\n\t"
+              "ubfx x18, x2, #32, #16\n\t"
+              "add x19, %[cm], x2, lsr #48\n\t"
+              "add x2, %[cm], w2, uxth\n\t"
+              "ubfx x20, x4, #16, #16\n\t"
+              "ubfx x21, x4, #32, #16\n\t"
+              "add x22, %[cm], x4, lsr #48\n\t"
+              "add x4, %[cm], w4, uxth\n\t"
+              "ubfx x23, x6, #16, #16\n\t"
+              "ubfx x24, x6, #32, #16\n\t"
+              "add x25, %[cm], x6, lsr #48\n\t"
+              "add x6, %[cm], w6, uxth\n\t"
+              "ldrb w0, [x0]\n\t"
+              "ubfx x26, x1, #16, #16\n\t"
+              "ldrb w9, [%[cm], x9]\n\t"
+              "ubfx x30, x1, #32, #16\n\t"
+              "ldrb w10, [%[cm], x10]\n\t"
+              "add %[gp], %[gp], %[gst]\n\t"
+              "ldrb w11, [x11]\n\t"
+              "cmp %[gp], %[ge]\n\t"
+              "ldrb w2, [x2]\n\t"
+              "ldrb w12, [%[cm], x12]\n\t"
+              "ldrb w18, [%[cm], x18]\n\t"
+              "ldrb w19, [x19]\n\t"
+              "ldrb w4, [x4]\n\t"
+              "orr x0, x0, x2, lsl #8\n\t"
+              "ldrb w20, [%[cm], x20]\n\t"
+              "orr x9, x9, x12, lsl #8\n\t"
+              "ldrb w21, [%[cm], x21]\n\t"
+              "orr x10, x10, x18, lsl #8\n\t"
+              "ldrb w22, [x22]\n\t"
+              "orr x11, x11, x19, lsl #8\n\t"
+              "ldrb w6, [x6]\n\t"
+              "orr x0, x0, x9, lsl #16\n\t"
+              "ldrb w23, [%[cm], x23]\n\t"
+              "add x9, %[cm], x1, lsr #48\n\t"
+              "ldrb w24, [%[cm], x24]\n\t"
+              "orr x10, x10, x11, lsl #16\n\t"
+              "ldrb w25, [x25]\n\t"
+              "add x1, %[cm], w1, uxth\n\t"
+              "orr x4, x4, x6, lsl #8\n\t"
+              "ubfx x11, x3, #32, #16\n\t"
+              "orr x20, x20, x23, lsl #8\n\t"
+              "orr x0, x0, x10, lsl #32\n\t"
+              "orr x21, x21, x24, lsl #8\n\t"
+              "ubfx x10, x3, #16, #16\n\t"
+              "orr x22, x22, x25, lsl #8\n\t"
+              "add x12, %[cm], x3, lsr #48\n\t"
+              "orr x4, x4, x20, lsl #16\n\t"
+              "add x3, %[cm], w3, uxth\n\t"
+              "ubfx x18, x5, #16, #16\n\t"
+              "ubfx x19, x5, #32, #16\n\t"
+              "orr x21, x21, x22, lsl #16\n\t"
+              "add x20, %[cm], x5, lsr #48\n\t"
+              "add x5, %[cm], w5, uxth\n\t"
+              "ubfx x22, x7, #32, #16\n\t"
+              "add x23, %[cm], x7, lsr #48\n\t"
+              "ldrb w1, [x1]\n\t"
+              "orr x4, x4, x21, lsl #32\n\t"
+              "ubfx x21, x7, #16, #16\n\t"
+              "add x7, %[cm], w7, uxth\n\t"
+              "ldrb w26, [%[cm], x26]\n\t"
+              "ldrb w30, [%[cm], x30]\n\t"
+              "ldrb w9, [x9]\n\t"
+              "ldrb w3, [x3]\n\t"
+              "ldrb w10, [%[cm], x10]\n\t"
+              "ldrb w11, [%[cm], x11]\n\t"
+              "ldrb w12, [x12]\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "orr x1, x1, x3, lsl #8\n\t"
+              "ldrb w5, [x5]\n\t"
+              "orr x26, x26, x10, lsl #8\n\t"
+              "ldrb w18, [%[cm], x18]\n\t"
+              "orr x30, x30, x11, lsl #8\n\t"
+              "ldrb w19, [%[cm], x19]\n\t"
+              "orr x9, x9, x12, lsl #8\n\t"
+              "ldrb w20, [x20]\n\t"
+              "orr x1, x1, x26, lsl #16\n\t"
+              "ldrb w7, [x7]\n\t"
+              "ldrb w21, [%[cm], x21]\n\t"
+              "orr x30, x30, x9, lsl #16\n\t"
+              "ldrb w22, [%[cm], x22]\n\t"
+              "ldrb w23, [x23]\n\t"
+              "ldr q20, [x8]\n\t"
+              "orr x5, x5, x7, lsl #8\n\t"
+              "orr x18, x18, x21, lsl #8\n\t"
+              "orr x1, x1, x30, lsl #32\n\t"
+              "orr x19, x19, x22, lsl #8\n\t"
+              "orr x20, x20, x23, lsl #8\n\t"
+              "orr x5, x5, x18, lsl #16\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "stp x0, x1, [%[d]]\n\t"
+              "orr x19, x19, x20, lsl #16\n\t"
               "add %[d], %[d], %[w]\n\t"
+              "ldr q25, [x8]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "orr x5, x5, x19, lsl #32\n\t"
+              "stp x4, x5, [%[d]]\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              "b.ls 1b\n\t"
               : [d] "+r"(d), [rp] "+r"(rp), [gp] "+r"(gp)
               : [cm] "r"(colormap), [w] "r"(wstride), [gst] "r"(gst), [ge] "r"(ge)
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
-                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v18",
-                "v19", "v20", "v21", "v22", "v25", "v26", "v27", "v28", "v29", "cc", "memory");
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v18", "v19", "v20", "v21",
+                "v22", "v25", "v26", "v27", "v28", "v29", "v31", "cc", "memory");
 #undef SB_T3
         }
 #undef SB_PAIR_LOOP
