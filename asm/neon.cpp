@@ -636,17 +636,29 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
 #if defined(__aarch64__)
-    for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
-      const int n = count - t < total - r ? count - t : total - r;
-      for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
-        uint64x2_t v0, v1;
-        std::memcpy(&v0, run + t + i, sizeof v0);
-        std::memcpy(&v1, run + t + i + 2, sizeof v1);
-        asm("" : "+w"(v0), "+w"(v1));  // (else GCC makes this loop a memcpy call)
-        std::memcpy(lin + r + i, &v0, sizeof v0);
-        std::memcpy(lin + r + i + 2, &v1, sizeof v1);
+    {  // lin: the strip's runs, two rows beyond
+      const int total = nb * B + 2;
+      int r = 0;
+      for (int t = first; r < total && (r < count || count < 4); t = 0) {  // run[] from first, cyclic
+        const int n = count - t < total - r ? count - t : total - r;
+        for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
+          uint64x2_t v0, v1;
+          std::memcpy(&v0, run + t + i, sizeof v0);
+          std::memcpy(&v1, run + t + i + 2, sizeof v1);
+          asm("" : "+w"(v0), "+w"(v1));  // (else GCC makes this loop a memcpy call)
+          std::memcpy(lin + r + i, &v0, sizeof v0);
+          std::memcpy(lin + r + i + 2, &v1, sizeof v1);
+        }
+        r += n;
       }
-      r += n;
+      for (; r < total; r += 4) {  // then a period on (count >= 4: the reads precede the writes)
+        uint64x2_t v0, v1;
+        std::memcpy(&v0, lin + r - count, sizeof v0);
+        std::memcpy(&v1, lin + r - count + 2, sizeof v1);
+        asm("" : "+w"(v0), "+w"(v1));
+        std::memcpy(lin + r, &v0, sizeof v0);
+        std::memcpy(lin + r + 2, &v1, sizeof v1);
+      }
     }
 #endif
     uint8_t* const strip = out + by0 * B * width;
