@@ -1464,11 +1464,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           // (T_b+2, v28-v29) for the next, the read clamped to the strip's last row: gp (the
           // row after) compared with ge, one past that row: lo reads gp, ls continues the loop.
           // The texel runs' group offset is added to lin once per group.
-#define SB_T3(A, B, E, O) /* E, O = T of grid row at x9 (A, B: scratch) */ \
-  "ldr q" #A ", [x9]\n\t" \
-  "ldur q" #B ", [x9, #2]\n\t" \
-  "add v" #O ".8h, v" #A ".8h, v" #B ".8h\n\t" \
-  "add v" #E ".8h, v" #A ".8h, v" #A ".8h\n\t"
           if (gs && g)
             for (int i = 0; i < nb * B + 2; i += 2) {
               uint64x2_t v;
@@ -1480,16 +1475,23 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           const int64_t gst = 2 * int64_t(grid_width);
           const uintptr_t ge = uintptr_t(gp) + uintptr_t(nb + 1) * uintptr_t(gst);  // past the strip's last row
           asm volatile(
-              "mov x9, %[gp]\n\t" SB_T3(26, 27, 18, 19)
-              "add x9, %[gp], %[gst]\n\t" SB_T3(0, 1, 28, 29)
-              "add %[gp], x9, %[gst]\n\t"
-              "movi v31.8h, #0xff\n\t"
+              "add x9, %[gp], %[gst]\n\t"
+              "ldr q26, [%[gp]]\n\t"
+              "ldur q27, [%[gp], #2]\n\t"
+              "ldr q0, [x9]\n\t"
+              "ldur q1, [x9, #2]\n\t"
               "ldr x8, [%[rp]]\n\t"
               "ldr q20, [x8]\n\t"
               "ldr x8, [%[rp], #8]\n\t"
               "ldr q25, [x8]\n\t"
+              "add %[gp], x9, %[gst]\n\t"
               "add %[rp], %[rp], #16\n\t"
               "cmp %[gp], %[ge]\n\t"
+              "movi v31.8h, #0xff\n\t"
+              "add v19.8h, v26.8h, v27.8h\n\t"
+              "add v18.8h, v26.8h, v26.8h\n\t"
+              "add v29.8h, v0.8h, v1.8h\n\t"
+              "add v28.8h, v0.8h, v0.8h\n\t"
               "b 1f\n\t"
               ".p2align 10\n\t"  // (the loop, 524 bytes, then never straddles a page)
               "1:\n\t"
@@ -1628,7 +1630,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v18", "v19", "v20", "v21",
                 "v22", "v25", "v26", "v27", "v28", "v29", "v31", "cc", "memory");
-#undef SB_T3
         }
 #undef SB_PAIR_LOOP
 #undef SB_PAIR_SCALAR
