@@ -45,7 +45,8 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // of full groups is assembly on both ARM targets (the compilers' schedules and register
 // allocation cost 1.5-2x there); on ARMv7 row y's scalar work first, then row y + 1's NEON
 // work, so an in-order core never waits on a NEON result; on AArch64 a whole strip per call,
-// two rows per iteration (see there). The last, partial group of a row is C++.
+// two rows per iteration (see there; mip 3 keeps n >> 6 in 16-bit lanes, weighed from the
+// grid in the loop). The last, partial group of a row is C++.
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -1013,8 +1014,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
-        constexpr int kDs = LB == 1 ? 2 : LB == 2 ? 1 : 4;  // dtab entries a band (mips 2-3: 16-bit lanes)
-        if (LB == 1) {  // (mip 3: no table, see its loop)
+        constexpr int kDs = LB == 2 ? 1 : 4;  // dtab entries a band (mip 2: 16-bit lanes)
+        if constexpr (LB == 1) {  // (mip 3: no table, see its loop)
         } else if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
@@ -1027,34 +1028,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           // a step with the rows' roles swapped (no register copies).
           auto band = [&](uint16x8_t p, uint16x8_t p1, uint16x8_t q, uint16x8_t q1, uint32x4_t* dt)
               __attribute__((always_inline)) {
-            if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
-              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(q, p));
-              const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
-              const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
-              const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
-              vst1q_s16(reinterpret_cast<int16_t*>(dt), lo);  // (widened << 2 mip by the assembly)
-              vst1q_s16(reinterpret_cast<int16_t*>(dt) + 8, hi);
-            } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
-              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
-              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-              if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
-                vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
-              } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
-                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
-                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
-                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
-                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
-              } else {  // one block: e[1] is e's lane 1
+            // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
+            const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
+            const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
+            if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
+              vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
+            } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
+              dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+              dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
+              dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
+              dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
+            } else {  // one block: e[1] is e's lane 1
 #pragma GCC unroll 4
-                for (int j = 0; j < 4; ++j)
-                  dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
-              }
+              for (int j = 0; j < 4; ++j)
+                dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
             }
           };
           auto ldg = [](const uint16_t* p) {  // the group's entries p[0..G] a band reads
-            if constexpr (LB == 1) {
-              return vld1q_u16(p);
-            } else if constexpr (LB == 2) {
+            if constexpr (LB == 2) {
               return vcombine_u16(vld1_u16(p), vdup_n_u16(0));
             } else {
               uint32_t x;
@@ -1096,19 +1087,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               continue;
             }
             step_for(by0 + b + 1);
-            if constexpr (LB == 1) {  // 16-bit (the values fit: see band)
-              const int16x8_t lo = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[0]), 2 * kMip),
-                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[1]), 2 * kMip));
-              const int16x8_t hi = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[2]), 2 * kMip),
-                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[3]), 2 * kMip));
-              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b), lo);
-              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b) + 8, hi);
-            } else {
-              for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
-            }
+            for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
           }
         }
-        if (LB != 1)
+        if constexpr (LB != 1)
           for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
   #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4, BR) \
     "stp x19, x23, [%[d]]\n\t" \
@@ -1148,9 +1130,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "fmov x24, v6.d[1]\n\t" \
     "fmov x25, d7\n\t" \
     "fmov x26, v7.d[1]\n\t" \
-    SB_PAIR_SCALAR("adds %[q], %[q], #2\n\t", ", %[goff]", A, E1, E2, E3, E4, BR)
-  // The pair's scalar half (also mip 3's loop): CNT the loop count, GO the texel run offset.
-  #define SB_PAIR_SCALAR(CNT, GO, A, E1, E2, E3, E4, BR) \
     "add x10, %[cm], x1, lsr #32\n\t" \
     "ldrb w1, [%[cm], w1, uxtw]\n\t" \
     "add x9, %[cm], x0, lsr #32\n\t" \
@@ -1163,7 +1142,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldrb w9, [x9]\n\t" \
     "add x12, %[cm], x3, lsr #32\n\t" \
     "ldrb w4, [%[cm], w4, uxtw]\n\t" \
-    CNT \
+    "adds %[q], %[q], #2\n\t" \
     "ldrb w2, [%[cm], w2, uxtw]\n\t" \
     "orr x1, x1, x10, lsl #8\n\t" \
     "ldrb w3, [%[cm], w3, uxtw]\n\t" \
@@ -1182,7 +1161,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "ldrb w11, [x11]\n\t" \
     "ldrb w12, [x12]\n\t" \
     "orr x7, x7, x10, lsl #8\n\t" \
-    "ldr q20, [x8" GO "]\n\t" \
+    "ldr q20, [x8, %[goff]]\n\t" \
     "orr x6, x6, x9, lsl #8\n\t" \
     "ldrb w5, [%[cm], w5, uxtw]\n\t" \
     "add x9, %[cm], x19, lsr #32\n\t" \
@@ -1220,7 +1199,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "orr x23, x23, x18, lsl #8\n\t" \
     "ldrb w10, [x10]\n\t" \
     "orr x4, x4, x6, lsl #32\n\t" \
-    "ldr q25, [x8" GO "]\n\t" \
+    "ldr q25, [x8, %[goff]]\n\t" \
     "orr x24, x24, x30, lsl #8\n\t" \
     "orr x21, x21, x11, lsl #8\n\t" \
     A \
@@ -1632,7 +1611,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "v22", "v25", "v26", "v27", "v28", "v29", "v31", "cc", "memory");
         }
 #undef SB_PAIR_LOOP
-#undef SB_PAIR_SCALAR
 #undef SB_PAIR_LOOP_N
         continue;
       }
