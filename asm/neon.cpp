@@ -640,7 +640,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     {  // lin: the strip's runs, two rows beyond
       const int total = nb * B + 2;
       int r = 0;
-      for (int t = first; r < total && (r < count || count < 4); t = 0) {  // run[] from first, cyclic
+      // (mip 3, the most rows per texel: one period, then copies of it)
+      for (int t = first; r < total && (r < count || count < 4 || kMip != 3); t = 0) {  // run[] from first, cyclic
         const int n = count - t < total - r ? count - t : total - r;
         for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
           uint64x2_t v0, v1;
@@ -652,7 +653,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         r += n;
       }
-      for (; r < total; r += 4) {  // then a period on (count >= 4: the reads precede the writes)
+      for (; r < total; r += 4) {  // (count >= 4: the reads precede the writes)
         uint64x2_t v0, v1;
         std::memcpy(&v0, lin + r - count, sizeof v0);
         std::memcpy(&v1, lin + r - count + 2, sizeof v1);
