@@ -515,7 +515,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   uint8x16_t period[2];
 #if defined(__aarch64__)
   period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw > 16)
-  if (tw <= 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
+  if (tw <= 16 && (tw & (tw - 1)) == 0) {  // x mod tw = x & (tw - 1)
+    for (int h = 0; h < 2; ++h)
+      period[h] = vandq_u8(vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
+  } else if (tw <= 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
     const uint16x8_t m = vdupq_n_u16(uint16_t((65536 + tw - 1) / tw)), twv = vdupq_n_u16(uint16_t(tw));
     for (int h = 0; h < 2; ++h) {
       const uint8x16_t x8 = vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0)));
