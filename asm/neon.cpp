@@ -1449,7 +1449,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           // v18-v19: T_b (even, odd texels), v28-v29: T_b+1, v20 / v25: the rows' texels, v31:
           // 0x00ff lanes. The instruction order was searched against llvm-mca's Cortex-A53 model
           // (A57 no worse). A full group's G + 1 grid entries lie inside each row (grid_width >
-          // width / B). The texel runs' group offset is added to lin once per group.
+          // width / B). The texel runs' group offset is added to lin once per group; without
+          // one (gs = 0) the call runs all the full groups, their state on the stack: [sp] the
+          // group's output, [sp, #8] groups left, [sp, #16] lin, [sp, #24] its grid row.
           if (gs && g)
             for (int i = 0; i < nb * B + 2; i += 2) {
               uint64x2_t v;
@@ -1459,8 +1461,14 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             }
           const uint16_t* gp = grid + by0 * grid_width + b0;
           const int64_t gst = 2 * int64_t(grid_width);
-          const uintptr_t ge = uintptr_t(gp) + uintptr_t(nb + 1) * uintptr_t(gst);  // past the strip's last row
+          uintptr_t ge = uintptr_t(gp) + uintptr_t(nb + 1) * uintptr_t(gst);  // past the strip's last row
+          const int ng = gs ? 1 : (width >> 4) - g;  // full groups this call
+          register int64_t left asm("x10") = ng;
           asm volatile(
+              "sub sp, sp, #32\n\t"
+              "stp %[d], x10, [sp]\n\t"
+              "stp %[rp], %[gp], [sp, #16]\n\t"
+              "3:\n\t"
               "ldr x8, [%[rp]]\n\t"
               "ldr x10, [%[rp], #8]\n\t"
               "add x9, %[gp], %[gst]\n\t"
@@ -1611,11 +1619,22 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "add %[rp], %[rp], #16\n\t"
               "add %[d], %[d], %[w]\n\t"
               "b.ls 1b\n\t"
-              : [d] "+r"(d), [rp] "+r"(rp), [gp] "+r"(gp)
-              : [cm] "r"(colormap), [w] "r"(wstride), [gst] "r"(gst), [ge] "r"(ge)
-              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+              "ldp %[d], x10, [sp]\n\t"
+              "ldp %[rp], %[gp], [sp, #16]\n\t"
+              "add %[d], %[d], #16\n\t"
+              "add %[gp], %[gp], #16\n\t"
+              "add %[ge], %[ge], #16\n\t"
+              "subs x10, x10, #1\n\t"
+              "stp %[d], x10, [sp]\n\t"
+              "str %[gp], [sp, #24]\n\t"
+              "b.ne 3b\n\t"
+              "add sp, sp, #32\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [gp] "+r"(gp), [ge] "+r"(ge), "+r"(left)
+              : [cm] "r"(colormap), [w] "r"(wstride), [gst] "r"(gst)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x11", "x12", "x18", "x19", "x20",
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v18", "v19", "v20", "v21",
                 "v22", "v25", "v26", "v27", "v28", "v29", "v31", "cc", "memory");
+          g += ng - 1;
         }
 #undef SB_PAIR_LOOP
 #undef SB_PAIR_LOOP_N
