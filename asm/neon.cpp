@@ -45,7 +45,8 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // of full groups is assembly on both ARM targets (the compilers' schedules and register
 // allocation cost 1.5-2x there); on ARMv7 row y's scalar work first, then row y + 1's NEON
 // work, so an in-order core never waits on a NEON result; on AArch64 a whole strip per call,
-// two rows per iteration (see there). The last, partial group of a row is C++.
+// two rows per iteration (see there; mip 3 keeps n >> 6 in 16-bit lanes, weighed from the
+// grid in the loop). The last, partial group of a row is C++.
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -540,7 +541,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   uint8x16_t period[2];
 #if defined(__aarch64__)
   period[0] = period[1] = vdupq_n_u8(0);  // (unused when tw > 16)
-  if (tw <= 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
+  if (tw <= 16 && (tw & (tw - 1)) == 0) {  // x mod tw = x & (tw - 1)
+    for (int h = 0; h < 2; ++h)
+      period[h] = vandq_u8(vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
+  } else if (tw <= 16) {  // x mod tw = x - tw floor(x m / 2^16), m = ceil(2^16 / tw): exact for x = c0 + k < 47
     const uint16x8_t m = vdupq_n_u16(uint16_t((65536 + tw - 1) / tw)), twv = vdupq_n_u16(uint16_t(tw));
     for (int h = 0; h < 2; ++h) {
       const uint8x16_t x8 = vaddq_u8(vld1q_u8(kIota32 + 16 * h), vdupq_n_u8(uint8_t(c0)));
@@ -652,17 +656,30 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
 #if defined(__aarch64__)
-    for (int r = 0, t = first, total = nb * B + 2; r < total; t = 0) {  // run[] from first, cyclic
-      const int n = count - t < total - r ? count - t : total - r;
-      for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
-        uint64x2_t v0, v1;
-        std::memcpy(&v0, run + t + i, sizeof v0);
-        std::memcpy(&v1, run + t + i + 2, sizeof v1);
-        asm("" : "+w"(v0), "+w"(v1));  // (else GCC makes this loop a memcpy call)
-        std::memcpy(lin + r + i, &v0, sizeof v0);
-        std::memcpy(lin + r + i + 2, &v1, sizeof v1);
+    {  // lin: the strip's runs, two rows beyond
+      const int total = nb * B + 2;
+      int r = 0;
+      // (mip 3, the most rows per texel: one period, then copies of it)
+      for (int t = first; r < total && (r < count || count < 4 || kMip != 3); t = 0) {  // run[] from first, cyclic
+        const int n = count - t < total - r ? count - t : total - r;
+        for (int i = 0; i < n; i += 4) {  // (up to 3 past n: the next piece overwrites them)
+          uint64x2_t v0, v1;
+          std::memcpy(&v0, run + t + i, sizeof v0);
+          std::memcpy(&v1, run + t + i + 2, sizeof v1);
+          asm("" : "+w"(v0), "+w"(v1));  // (else GCC makes this loop a memcpy call)
+          std::memcpy(lin + r + i, &v0, sizeof v0);
+          std::memcpy(lin + r + i + 2, &v1, sizeof v1);
+        }
+        r += n;
       }
-      r += n;
+      for (; r < total; r += 4) {  // (count >= 4: the reads precede the writes)
+        uint64x2_t v0, v1;
+        std::memcpy(&v0, lin + r - count, sizeof v0);
+        std::memcpy(&v1, lin + r - count + 2, sizeof v1);
+        asm("" : "+w"(v0), "+w"(v1));
+        std::memcpy(lin + r, &v0, sizeof v0);
+        std::memcpy(lin + r + 2, &v1, sizeof v1);
+      }
     }
 #endif
     uint8_t* const strip = out + by0 * B * width;
@@ -1130,7 +1147,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       const uint16x8_t BX1[2] = {vld1q_u16(w[2]), vld1q_u16(w[2] + 8)}, FX1[2] = {vld1q_u16(w[3]), vld1q_u16(w[3] + 8)};
 #endif
       uint32x4_t num[4], delta[4], prev[4];
-      {
+#if defined(__aarch64__)
+      const bool weighs = LB != 1 || width - 16 * g < 16;  // (mip 3's full groups weigh in their loop)
+#else
+      const bool weighs = true;
+#endif
+      if (weighs) {
         const uint16_t* r0 = row_of(by0);
         weigh<LB>(r0, BX0, FX0, num);
         weigh<LB>(r0, BX1, FX1, prev);
@@ -1184,8 +1206,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
-        constexpr int kDs = LB == 1 ? 2 : LB == 2 ? 1 : 4;  // dtab entries a band (mips 2-3: 16-bit lanes)
-        if (direct) {
+        constexpr int kDs = LB == 2 ? 1 : 4;  // dtab entries a band (mip 2: 16-bit lanes)
+        if constexpr (LB == 1) {  // (mip 3: no table, see its loop)
+        } else if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
           // ((B - fx) e[blk] + fx e[blk + 1]) << 2 mip, as signed products (mod 2^32 they are
           // the difference of the two rows' weighed values).
@@ -1197,34 +1220,24 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           // a step with the rows' roles swapped (no register copies).
           auto band = [&](uint16x8_t p, uint16x8_t p1, uint16x8_t q, uint16x8_t q1, uint32x4_t* dt)
               __attribute__((always_inline)) {
-            if constexpr (LB == 1) {  // 2 e and e + e' fit 16 bits; lanes alternate them
-              const int16x8_t e = vreinterpretq_s16_u16(vsubq_u16(q, p));
-              const int16x8_t e1 = vreinterpretq_s16_u16(vsubq_u16(q1, p1));
-              const int16x8_t lo = vzip1q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
-              const int16x8_t hi = vzip2q_s16(vaddq_s16(e, e), vaddq_s16(e, e1));
-              vst1q_s16(reinterpret_cast<int16_t*>(dt), lo);  // (widened << 2 mip by the assembly)
-              vst1q_s16(reinterpret_cast<int16_t*>(dt) + 8, hi);
-            } else {  // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
-              const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
-              const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-              if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
-                vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
-              } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
-                dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
-                dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
-                dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
-                dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
-              } else {  // one block: e[1] is e's lane 1
+            // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
+            const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
+            const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
+            if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
+              vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
+            } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
+              dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
+              dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
+              dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
+              dt[3] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[3], e, 1), w1[3], e1, 1));
+            } else {  // one block: e[1] is e's lane 1
 #pragma GCC unroll 4
-                for (int j = 0; j < 4; ++j)
-                  dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
-              }
+              for (int j = 0; j < 4; ++j)
+                dt[j] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[j], e, 0), w1[j], e, 1));
             }
           };
           auto ldg = [](const uint16_t* p) {  // the group's entries p[0..G] a band reads
-            if constexpr (LB == 1) {
-              return vld1q_u16(p);
-            } else if constexpr (LB == 2) {
+            if constexpr (LB == 2) {
               return vcombine_u16(vld1_u16(p), vdup_n_u16(0));
             } else {
               uint32_t x;
@@ -1266,19 +1279,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               continue;
             }
             step_for(by0 + b + 1);
-            if constexpr (LB == 1) {  // 16-bit (the values fit: see band)
-              const int16x8_t lo = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[0]), 2 * kMip),
-                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[1]), 2 * kMip));
-              const int16x8_t hi = vcombine_s16(vshrn_n_s32(vreinterpretq_s32_u32(delta[2]), 2 * kMip),
-                                                vshrn_n_s32(vreinterpretq_s32_u32(delta[3]), 2 * kMip));
-              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b), lo);
-              vst1q_s16(reinterpret_cast<int16_t*>(dtab + kDs * b) + 8, hi);
-            } else {
-              for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
-            }
+            for (int j = 0; j < 4; ++j) dtab[4 * b + j] = delta[j];
           }
         }
-        for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
+        if constexpr (LB != 1)
+          for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
   #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4, BR) \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
@@ -1618,41 +1623,206 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
 #undef SB_WEIGH_STEP
-        } else {  // mip 3 (a band an iteration): 16-bit steps (32 bytes a band) widened in the loop;
-                  // iteration y / 2 loads band y / 2 + 1's (q = y - rows, even: band offset 16 q)
-          int64_t q = -int64_t(nb) * B;
+        } else {
+          // Mip 3 (a band an iteration, no step table). A texel's light n >> 6 (< 2^16) in
+          // 16-bit lanes, even texels (fx = 0) and odd ones (fx = 1) in separate vectors, so
+          // the grid rows need no interleaving: T_b = (2 g_j, g_j + g_j+1) of grid row b (j the
+          // block), the band's first row's light is 2 T_b, its second's T_b + T_b+1. Row
+          // indices row << 8 | texel: the light shifted so that its high byte is the row
+          // (T_b >> 1, (T_b + T_b+1) >> 2), the texel put in the low byte (bit: even texels;
+          // sri: odd ones, of the 16-bit texel pairs); four to a 64-bit register, each
+          // index taken out by ubfx or an extending add. Each iteration weighs grid row b + 2
+          // (T_b+2, v28-v29) for the next, the read clamped to the strip's last row: gp (the
+          // row after) compared with ge, one past that row: lo reads gp, ls continues the loop.
+          // v18-v19: T_b (even, odd texels), v28-v29: T_b+1, v20 / v25: the rows' texels, v31:
+          // 0x00ff lanes. The instruction order was searched against llvm-mca's Cortex-A53 model
+          // (A57 no worse). A full group's G + 1 grid entries lie inside each row (grid_width >
+          // width / B). The texel runs' group offset is added to lin once per group; without
+          // one (gs = 0) the call runs all the full groups, their state on the stack: [sp] the
+          // group's output, [sp, #8] groups left, [sp, #16] lin, [sp, #24] its grid row.
+          if (gs && g)
+            for (int i = 0; i < nb * B + 2; i += 2) {
+              uint64x2_t v;
+              std::memcpy(&v, lin + i, sizeof v);
+              v = vaddq_u64(v, vdupq_n_u64(uint64_t(gs)));
+              std::memcpy(lin + i, &v, sizeof v);
+            }
+          const uint16_t* gp = grid + by0 * grid_width + b0;
+          const int64_t gst = 2 * int64_t(grid_width);
+          uintptr_t ge = uintptr_t(gp) + uintptr_t(nb + 1) * uintptr_t(gst);  // past the strip's last row
+          const int ng = gs ? 1 : (width >> 4) - g;  // full groups this call
+          register int64_t left asm("x10") = ng;
           asm volatile(
-              "mov v21.16b, %[n0].16b\n\t"
-              "mov v22.16b, %[n1].16b\n\t"
-              "mov v23.16b, %[n2].16b\n\t"
-              "mov v19.16b, %[n3].16b\n\t"
+              "sub sp, sp, #32\n\t"
+              "stp %[d], x10, [sp]\n\t"
+              "stp %[rp], %[gp], [sp, #16]\n\t"
+              "3:\n\t"
               "ldr x8, [%[rp]]\n\t"
-              "ldr q20, [x8, %[goff]]\n\t"
-              "ldr x8, [%[rp], #8]\n\t"
-              "ldr q25, [x8, %[goff]]\n\t"
+              "ldr x10, [%[rp], #8]\n\t"
+              "add x9, %[gp], %[gst]\n\t"
+              "ldr q26, [%[gp]]\n\t"
+              "ldur q27, [%[gp], #2]\n\t"
+              "ldr q0, [x9]\n\t"
+              "ldur q1, [x9, #2]\n\t"
+              "ldr q20, [x8]\n\t"
+              "ldr q25, [x10]\n\t"
+              "add %[gp], x9, %[gst]\n\t"
               "add %[rp], %[rp], #16\n\t"
-              "add x8, %[dte], %[q], lsl #4\n\t"
-              "ldp q0, q1, [x8]\n\t"
-              "sshll v16.4s, v0.4h, #6\n\t"
-              "sshll2 v17.4s, v0.8h, #6\n\t"
-              "sshll v18.4s, v1.4h, #6\n\t"
-              "sshll2 v29.4s, v1.8h, #6\n\t"
-              "b 2f\n\t"
-              ".p2align 9\n\t"  // (the loop, 496 bytes, then never straddles a page)
-              "1:\n\t" SB_PAIR_LOOP("add x9, %[dte], %[q], lsl #4\n\t", "ldp q0, q1, [x9, #32]\n\t",
-                                   "sshll v18.4s, v1.4h, #6\n\tsshll v16.4s, v0.4h, #6\n\t"
-                                   "sshll2 v17.4s, v0.8h, #6\n\tsshll2 v29.4s, v1.8h, #6\n\t",
-                                   "", "", "", "", "", "b.ne 1b\n\t")
-              "stp x19, x23, [%[d]]\n\t"
+              "cmp %[gp], %[ge]\n\t"
+              "movi v31.8h, #0xff\n\t"
+              "add v19.8h, v26.8h, v27.8h\n\t"
+              "add v18.8h, v26.8h, v26.8h\n\t"
+              "add v29.8h, v0.8h, v1.8h\n\t"
+              "add v28.8h, v0.8h, v0.8h\n\t"
+              "b 1f\n\t"
+              ".p2align 10\n\t"  // (the loop, 520 bytes, then never straddles a page)
+              "1:\n\t"
+              "sub x9, %[gp], %[gst]\n\t"
+              "csel x9, %[gp], x9, lo\n\t"
+              "add v21.8h, v18.8h, v28.8h\n\t"
+              "ushr v0.8h, v18.8h, #1\n\t"
+              "add v22.8h, v19.8h, v29.8h\n\t"
+              "ushr v1.8h, v19.8h, #1\n\t"
+              "ldr q26, [x9]\n\t"
+              "ldur q27, [x9, #2]\n\t"
+              "ushr v2.8h, v21.8h, #2\n\t"
+              "bit v0.16b, v20.16b, v31.16b\n\t"
+              "ushr v3.8h, v22.8h, #2\n\t"
+              "sri v1.8h, v20.8h, #8\n\t"
+              "mov v18.16b, v28.16b\n\t"
+              "add v28.8h, v26.8h, v26.8h\n\t"
+              "bit v2.16b, v25.16b, v31.16b\n\t"
+              "fmov x1, v0.d[1]\n\t"
+              "sri v3.8h, v25.8h, #8\n\t"
+              "fmov x2, d1\n\t"
+              "mov v19.16b, v29.16b\n\t"
+              "fmov x0, d0\n\t"
+              "fmov x3, v1.d[1]\n\t"
+              "fmov x4, d2\n\t"
+              "fmov x6, d3\n\t"
+              "add v29.8h, v26.8h, v27.8h\n\t"
+              "fmov x5, v2.d[1]\n\t"
+              "fmov x7, v3.d[1]\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "add %[gp], %[gp], %[gst]\n\t"
+              "add x11, %[cm], x0, lsr #48\n\t"
+              "ubfx x12, x2, #16, #16\n\t"
+              "ubfx x18, x2, #32, #16\n\t"
+              "ubfx x21, x4, #32, #16\n\t"
+              "ubfx x24, x6, #32, #16\n\t"
+              "ubfx x26, x1, #16, #16\n\t"
+              "ubfx x9, x0, #16, #16\n\t"
+              "ubfx x20, x4, #16, #16\n\t"
+              "ubfx x10, x0, #32, #16\n\t"
+              "ubfx x30, x1, #32, #16\n\t"
+              "ubfx x23, x6, #16, #16\n\t"
+              "ldrb w12, [%[cm], x12]\n\t"
+              "add x19, %[cm], x2, lsr #48\n\t"
+              "ldrb w18, [%[cm], x18]\n\t"
+              "add x2, %[cm], w2, uxth\n\t"
+              "ldrb w9, [%[cm], x9]\n\t"
+              "add x22, %[cm], x4, lsr #48\n\t"
+              "ldrb w10, [%[cm], x10]\n\t"
+              "add x4, %[cm], w4, uxth\n\t"
+              "ldrb w26, [%[cm], x26]\n\t"
+              "add x0, %[cm], w0, uxth\n\t"
+              "ldrb w2, [x2]\n\t"
+              "ldrb w11, [x11]\n\t"
+              "orr x9, x9, x12, lsl #8\n\t"
+              "ldrb w19, [x19]\n\t"
+              "cmp %[gp], %[ge]\n\t"
+              "ldrb w0, [x0]\n\t"
+              "add x25, %[cm], x6, lsr #48\n\t"
+              "ldrb w4, [x4]\n\t"
+              "orr x10, x10, x18, lsl #8\n\t"
+              "ldrb w30, [%[cm], x30]\n\t"
+              "orr x11, x11, x19, lsl #8\n\t"
+              "ldrb w22, [x22]\n\t"
+              "orr x0, x0, x2, lsl #8\n\t"
+              "ldrb w25, [x25]\n\t"
+              "orr x0, x0, x9, lsl #16\n\t"
+              "ldrb w20, [%[cm], x20]\n\t"
+              "add x12, %[cm], x3, lsr #48\n\t"
+              "ldrb w23, [%[cm], x23]\n\t"
+              "add x9, %[cm], x1, lsr #48\n\t"
+              "ldrb w24, [%[cm], x24]\n\t"
+              "ldrb w21, [%[cm], x21]\n\t"
+              "add x6, %[cm], w6, uxth\n\t"
+              "orr x10, x10, x11, lsl #16\n\t"
+              "add x1, %[cm], w1, uxth\n\t"
+              "ldrb w9, [x9]\n\t"
+              "orr x0, x0, x10, lsl #32\n\t"
+              "orr x22, x22, x25, lsl #8\n\t"
+              "ubfx x18, x5, #16, #16\n\t"
+              "ldrb w12, [x12]\n\t"
+              "orr x21, x21, x24, lsl #8\n\t"
+              "ldrb w6, [x6]\n\t"
+              "orr x21, x21, x22, lsl #16\n\t"
+              "orr x20, x20, x23, lsl #8\n\t"
+              "ubfx x22, x7, #32, #16\n\t"
+              "ubfx x19, x5, #32, #16\n\t"
+              "ubfx x10, x3, #16, #16\n\t"
+              "ubfx x11, x3, #32, #16\n\t"
+              "add x23, %[cm], x7, lsr #48\n\t"
+              "ldrb w19, [%[cm], x19]\n\t"
+              "add x3, %[cm], w3, uxth\n\t"
+              "ldrb w18, [%[cm], x18]\n\t"
+              "orr x4, x4, x6, lsl #8\n\t"
+              "ldrb w1, [x1]\n\t"
+              "orr x4, x4, x20, lsl #16\n\t"
+              "ldrb w11, [%[cm], x11]\n\t"
+              "ldrb w3, [x3]\n\t"
+              "add x20, %[cm], x5, lsr #48\n\t"
+              "ldrb w23, [x23]\n\t"
+              "orr x9, x9, x12, lsl #8\n\t"
+              "ldr q20, [x8]\n\t"
+              "orr x4, x4, x21, lsl #32\n\t"
+              "add x5, %[cm], w5, uxth\n\t"
+              "ubfx x21, x7, #16, #16\n\t"
+              "ldrb w10, [%[cm], x10]\n\t"
+              "add x7, %[cm], w7, uxth\n\t"
+              "ldrb w20, [x20]\n\t"
+              "orr x30, x30, x11, lsl #8\n\t"
+              "ldrb w21, [%[cm], x21]\n\t"
+              "orr x30, x30, x9, lsl #16\n\t"
+              "ldrb w22, [%[cm], x22]\n\t"
+              "orr x26, x26, x10, lsl #8\n\t"
+              "ldrb w7, [x7]\n\t"
+              "orr x1, x1, x3, lsl #8\n\t"
+              "ldrb w5, [x5]\n\t"
+              "orr x20, x20, x23, lsl #8\n\t"
+              "orr x1, x1, x26, lsl #16\n\t"
+              "orr x1, x1, x30, lsl #32\n\t"
+              "orr x18, x18, x21, lsl #8\n\t"
+              "orr x19, x19, x22, lsl #8\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "orr x19, x19, x20, lsl #16\n\t"
+              "orr x5, x5, x7, lsl #8\n\t"
+              "orr x5, x5, x18, lsl #16\n\t"
+              "stp x0, x1, [%[d]]\n\t"
+              "orr x5, x5, x19, lsl #32\n\t"
               "add %[d], %[d], %[w]\n\t"
-              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
-              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 2 * nb), [i0] "w"(TIX[0]),
-                [i1] "w"(TIX[1]), [i2] "w"(TIX[2]), [i3] "w"(TIX[3]), [n0] "w"(num[0]), [n1] "w"(num[1]),
-                [n2] "w"(num[2]), [n3] "w"(num[3])
-              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
-                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
-                "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
-                "memory");
+              "ldr q25, [x8]\n\t"
+              "stp x4, x5, [%[d]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add %[d], %[d], %[w]\n\t"
+              "b.ls 1b\n\t"
+              "ldp %[d], x10, [sp]\n\t"
+              "ldp %[rp], %[gp], [sp, #16]\n\t"
+              "add %[d], %[d], #16\n\t"
+              "add %[gp], %[gp], #16\n\t"
+              "add %[ge], %[ge], #16\n\t"
+              "subs x10, x10, #1\n\t"
+              "stp %[d], x10, [sp]\n\t"
+              "str %[gp], [sp, #24]\n\t"
+              "b.ne 3b\n\t"
+              "add sp, sp, #32\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [gp] "+r"(gp), [ge] "+r"(ge), "+r"(left)
+              : [cm] "r"(colormap), [w] "r"(wstride), [gst] "r"(gst)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v18", "v19", "v20", "v21",
+                "v22", "v25", "v26", "v27", "v28", "v29", "v31", "cc", "memory");
+          g += ng - 1;
         }
 #undef SB_PAIR_LOOP
 #undef SB_PAIR_LOOP_N
