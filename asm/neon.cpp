@@ -495,7 +495,7 @@ constexpr uint8_t kTix16[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6,
                                    {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
 #endif
 
-// kInOrder: the mips 0-2 row loops scheduled for in-order cores (surface_block_neon_inorder).
+// kInOrder: the row loops scheduled for in-order cores (surface_block_neon_inorder).
 template <int kMip, bool kInOrder = false>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
@@ -1880,6 +1880,163 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
 #undef SB_WEIGH_STEP
+        } else if constexpr (kInOrder) {
+          // Mip 3, in-order cores: the loop above, a band (one pair) an iteration; its 16-bit
+          // steps (v8, v9, loaded an iteration ahead: x30 + 64) widened after the NEON run's
+          // last use of the current step.
+#define SB_PAIR16_M3 \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "2:\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "sshll v16.4s, v8.4h, #6\n\t" \
+    "sshll2 v17.4s, v8.8h, #6\n\t" \
+    "sshll v18.4s, v9.4h, #6\n\t" \
+    "sshll2 v29.4s, v9.8h, #6\n\t" \
+    "and x9, x26, x0, lsr #16\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "and x10, x26, x2, lsr #16\n\t" \
+    "and x11, x26, x4, lsr #16\n\t" \
+    "and x12, x26, x6, lsr #16\n\t" \
+    "add x18, %[cm], w0, uxth\n\t" \
+    "add x19, %[cm], w2, uxth\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "add x21, %[cm], w6, uxth\n\t" \
+    "and x22, x26, x0, lsr #32\n\t" \
+    "ld1 {v4.b}[0], [x18]\n\t" \
+    "and x23, x26, x2, lsr #32\n\t" \
+    "ld1 {v5.b}[0], [x19]\n\t" \
+    "and x24, x26, x4, lsr #32\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "and x25, x26, x6, lsr #32\n\t" \
+    "ld1 {v7.b}[0], [x21]\n\t" \
+    "add x9, %[cm], x9\n\t" \
+    "add x10, %[cm], x10\n\t" \
+    "add x11, %[cm], x11\n\t" \
+    "add x12, %[cm], x12\n\t" \
+    "add x30, %[dte], %[q], lsl #4\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v4.b}[1], [x9]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v5.b}[1], [x10]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[1], [x11]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v7.b}[1], [x12]\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ld1 {v4.b}[2], [x22]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v5.b}[2], [x23]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v6.b}[2], [x24]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "ldp q8, q9, [x30, #64]\n\t" \
+    "and x18, x26, x1, lsr #16\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "and x19, x26, x3, lsr #16\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "and x20, x26, x5, lsr #16\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "and x21, x26, x7, lsr #16\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
+    "add x12, %[cm], w7, uxth\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
+    "and x22, x26, x1, lsr #32\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "and x23, x26, x3, lsr #32\n\t" \
+    "ld1 {v5.b}[4], [x10]\n\t" \
+    "and x24, x26, x5, lsr #32\n\t" \
+    "ld1 {v6.b}[4], [x11]\n\t" \
+    "and x25, x26, x7, lsr #32\n\t" \
+    "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x18, %[cm], x18\n\t" \
+    "add x19, %[cm], x19\n\t" \
+    "add x20, %[cm], x20\n\t" \
+    "add x21, %[cm], x21\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v5.b}[5], [x19]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[5], [x20]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v7.b}[5], [x21]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x22]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x23]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v6.b}[6], [x24]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "ldr q26, [x8, %[goff]]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "adds %[q], %[q], #2\n\t" \
+    "b.ne 1b\n\t"
+          const uint8x16_t J0 = vld1q_u8(kTix16[0]), J1 = vld1q_u8(kTix16[1]);
+          int64_t q = -int64_t(nb) * B;
+          asm volatile(
+              "mov v22.16b, %[n0].16b\n\t"
+              "mov v23.16b, %[n1].16b\n\t"
+              "mov v19.16b, %[n2].16b\n\t"
+              "mov v20.16b, %[n3].16b\n\t"
+              "mov x26, #0xffff\n\t"
+              "sub %[d], %[d], %[w], lsl #1\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q21, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q26, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add x8, %[dte], %[q], lsl #4\n\t"
+              "ldp q8, q9, [x8]\n\t"
+              "sshll v16.4s, v8.4h, #6\n\t"
+              "sshll2 v17.4s, v8.8h, #6\n\t"
+              "sshll v18.4s, v9.4h, #6\n\t"
+              "sshll2 v29.4s, v9.8h, #6\n\t"
+              "ldp q8, q9, [x8, #32]\n\t"
+              "b 2f\n\t"
+              ".p2align 9\n\t"
+              "1:\n\t" SB_PAIR16_M3
+              "stp d4, d5, [%[d]]\n\t"
+              "stp d6, d7, [x8]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + 2 * nb), [j0] "w"(J0),
+                [j1] "w"(J1), [n0] "w"(num[0]), [n1] "w"(num[1]), [n2] "w"(num[2]), [n3] "w"(num[3])
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8",
+                "v9", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29",
+                "cc", "memory");
+#undef SB_PAIR16_M3
         } else {  // mip 3 (a band an iteration): 16-bit steps (32 bytes a band) widened in the loop;
                   // iteration y / 2 loads band y / 2 + 1's (q = y - rows, even: band offset 16 q)
           int64_t q = -int64_t(nb) * B;
@@ -2000,18 +2157,21 @@ void surface_block_neon(const uint16_t* grid, int grid_width, const uint8_t* tex
 }
 
 #if defined(__aarch64__)
-// The in-order variant (Cortex-A53/A55/A35): its own mips 0-2 row loops, mip 3 as neon.
+// The in-order variant (Cortex-A53/A55/A35): its own row loops at every mip.
 void surface_block_neon_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width,
                                 int tex_height, int mip, int soff, int toff, int width, int height,
                                 const uint8_t* colormap, uint8_t* out) {
-  if (width > 0 && height > 0 && mip >= 0 && mip <= 2 && width / (16 >> mip) <= kMaxBlockColumns) {
+  if (width > 0 && height > 0 && mip >= 0 && mip <= 3 && width / (16 >> mip) <= kMaxBlockColumns) {
     if (mip == 0)
       return surface_block_groups<0, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
                                            colormap, out);
     if (mip == 1)
       return surface_block_groups<1, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
                                            colormap, out);
-    return surface_block_groups<2, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
+    if (mip == 2)
+      return surface_block_groups<2, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
+                                           colormap, out);
+    return surface_block_groups<3, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
                                          colormap, out);
   }
   surface_block_neon(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap, out);
