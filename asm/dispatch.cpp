@@ -111,8 +111,9 @@ Choice make_choice() {
   c.tuned.expand_palette = kNeon.expand_palette;
   const char *block = "neon", *z = "neon", *pal = "neon";
 #if defined(SB_SIMD_NEON_INORDER)
-  // In-order cores: the builder's mips 0-1 loop with a short NEON run (Cortex-A53 model 74
-  // against 82 cycles per 32 texels; the Cortex-A57 model prefers neon's, 62 against 66).
+  // In-order cores: the builder's row loops with a short NEON run (Cortex-A53 model 72
+  // against 82 cycles per 32 texels at mips 0-1; the Cortex-A57 model prefers neon's, 62
+  // against 68).
   if (cpu_in_order()) {
     c.tuned.surface_block = kNeonInOrder.surface_block;
     block = "neon_a53";

@@ -46,6 +46,8 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // allocation cost 1.5-2x there); on ARMv7 row y's scalar work first, then row y + 1's NEON
 // work, so an in-order core never waits on a NEON result; on AArch64 a whole strip per call,
 // two rows per iteration (see there). The last, partial group of a row is C++.
+// neon_a53 (kInOrder, for in-order cores: Cortex-A53/A35/A55) keeps the rest but runs its own
+// row loops: 16-bit indices, colormap bytes loaded straight into output lanes (see there).
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
