@@ -1,11 +1,13 @@
 // asm/kernels.h: SIMD kernels beside their scalar references, and the dispatch that picks
 // one variant per kernel once, at the first call of active() (CPU detection on x86-64 with
-// __builtin_cpu_supports; NEON is chosen at compile time where the target has it).
+// __builtin_cpu_supports; NEON is chosen at compile time where the target has it; on aarch64
+// Linux the core's MIDR picks neon_a53's block builder on in-order cores).
 //
 //   kernel          contract               variants (when built and the CPU has them)
 //   surface_span    asm/surface_span.h     scalar, sse2, avx2, avx2g (gathers), fast (portable; the neon table)
 //   surface_block   asm/surface_block.h    scalar, sse2 and avx2 (asm/surface_block_x86.h), avx2g
-//                                          (gathers), neon (aarch64 and armv7 assembly row loops)
+//                                          (gathers), neon (aarch64 and armv7 assembly row loops),
+//                                          neon_a53 (aarch64: mips 0-1 loop for in-order cores)
 //   z_span          asm/z_span.h           scalar, sse2, avx2, neon
 //   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gathers), neon
 //   alias_span      asm/alias_span.h       scalar, sse2, neon (avx2 tables: the sse2 one)

@@ -47,6 +47,9 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // work, so an in-order core never waits on a NEON result; on AArch64 a whole strip per call,
 // two rows per iteration (see there; mip 3 keeps n >> 6 in 16-bit lanes, weighed from the
 // grid in the loop). The last, partial group of a row is C++.
+// neon_a53 (kInOrder, for in-order cores: Cortex-A53/A35/A55) keeps the rest but runs its own
+// row loops at mips 0-2: 16-bit indices, colormap bytes loaded straight into output lanes
+// (see there); mip 3 runs the shared loop.
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -516,9 +519,14 @@ constexpr uint8_t kTix[4][16] = {{0, 18, 255, 255, 1, 22, 255, 255, 2, 26, 255, 
                                  {4, 34, 255, 255, 5, 38, 255, 255, 6, 42, 255, 255, 7, 46, 255, 255},
                                  {8, 50, 255, 255, 9, 54, 255, 255, 10, 58, 255, 255, 11, 62, 255, 255},
                                  {28, 2, 255, 255, 29, 6, 255, 255, 30, 10, 255, 255, 31, 14, 255, 255}};
+// The in-order variant's lookups (mips 0-1): 16-bit lanes texel | row << 8, lanes 0-7 from
+// {T, N0, N1}, lanes 8-15 from {N2, N3, T} (row: byte 2 of a numerator lane).
+constexpr uint8_t kTix16[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6, 42, 7, 46},
+                                   {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
 #endif
 
-template <int kMip>
+// kInOrder: the row loops scheduled for in-order cores (surface_block_neon_inorder).
+template <int kMip, bool kInOrder = false>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
                           uint8_t* __restrict out) {
@@ -1206,7 +1214,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
-        constexpr int kDs = LB == 2 ? 1 : 4;  // dtab entries a band (mip 2: 16-bit lanes)
+        // dtab entries a band (mip 2 and the in-order mips 0-1: e, e1 in 16-bit lanes)
+        constexpr int kDs = LB == 2 || (kInOrder && LB >= 3) ? 1 : 4;
+        constexpr int kDo = kInOrder && LB >= 3 ? 4 : 0;  // (in-order mips 0-1: the numerators first)
         if constexpr (LB == 1) {  // (mip 3: no table, see its loop)
         } else if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
@@ -1223,7 +1233,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
             const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
             const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-            if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
+            if constexpr (LB == 2 || kInOrder) {  // e, e1 (16 bytes a band): the assembly weighs them
               vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
             } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
               dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
@@ -1247,7 +1257,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           };
           const uint16_t* r = grid + by0 * grid_width + b0;  // the next band's upper grid row
           uint16x8_t p = ldg(r), p1 = LB <= 3 ? ldg(r + 1) : p;
-          uint32x4_t* dt = dtab;
+          uint32x4_t* dt = dtab + kDo;
           int b = 0;
 #pragma GCC unroll 2
           for (; b + 2 <= nb; b += 2, dt += 2 * kDs) {
@@ -1266,7 +1276,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         } else {
           for (int b = 0; b < nb; ++b) {
-            if constexpr (LB == 2) {  // e, e1 as above, from the zero-padded rows
+            if constexpr (LB == 2 || (kInOrder && LB >= 3)) {  // e, e1 as above, from the zero-padded rows
               uint16_t a[5];
               std::memcpy(a, row_of(by0 + b), sizeof a);
               const uint16_t* const c = row_of(by0 + b + 1);
@@ -1275,7 +1285,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 ee[j] = int16_t(c[j] - a[j]);
                 ee[4 + j] = int16_t(c[j + 1] - a[j + 1]);
               }
-              std::memcpy(dtab + b, ee, sizeof ee);
+              std::memcpy(dtab + kDo + b, ee, sizeof ee);
               continue;
             }
             step_for(by0 + b + 1);
@@ -1283,7 +1293,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         }
         if constexpr (LB != 1)
-          for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
+          for (int j = 0; j < 4; ++j) dtab[kDo + kDs * nb + j] = vdupq_n_u32(0);
   #define SB_PAIR_LOOP(T0, TOP, MID, A, E1, E2, E3, E4, BR) \
     "stp x19, x23, [%[d]]\n\t" \
     "add %[d], %[d], %[w]\n\t" \
@@ -1537,7 +1547,435 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     "b.ne 1b\n\t"
         const int64_t goff = gs * g, wstride = width;
         const uint8_t* const* rp = lin;
-        if constexpr (LB >= 3) {
+        if constexpr (LB >= 3 && kInOrder) {
+          // In-order cores (Cortex-A53 model): llvm-mca writes results back in program order, so
+          // core instructions after a NEON one wait for it and the NEON run costs its length
+          // in full; this loop keeps it short (20 instructions for two rows). The indices leave
+          // as 16-bit lanes, four a 64-bit move (x0-x3 the even row, x4-x7 the odd one, texels
+          // 4i..4i + 3 in xi). Each index becomes an address (cm + lane: uxth, and + add, or
+          // lsr #48) and its colormap byte is loaded straight into an output lane (ld1 lane),
+          // no packing: v4 / v5 the even row's bytes 0-7 / 8-15, v6 / v7 the odd row's, four
+          // chains taken in turn (a lane load waits for the previous one into its register).
+          // Rows are stored at the next iteration's start (d: the even row, x8: the odd).
+          // Numerators {N2, N3, T, N0, N1}: v19-v23 (even row), v24-v28 (odd); steps v16-v18,
+          // v29 as in the loop below; x26 = 0xffff. (Order from bench/mca_a53_block.)
+#define SB_PAIR_LOOP_16 \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "2:\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "fmov x0, d0\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "add x18, %[cm], w0, uxth\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "and x22, x26, x0, lsr #32\n\t" \
+    "and x24, x26, x4, lsr #32\n\t" \
+    "and x23, x26, x2, lsr #32\n\t" \
+    "and x9, x26, x0, lsr #16\n\t" \
+    "add x19, %[cm], w2, uxth\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x21, %[cm], w6, uxth\n\t" \
+    "ld1 {v4.b}[0], [x18]\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "and x11, x26, x4, lsr #16\n\t" \
+    "and x10, x26, x2, lsr #16\n\t" \
+    "add x9, %[cm], x9\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "and x12, x26, x6, lsr #16\n\t" \
+    "ld1 {v5.b}[0], [x19]\n\t" \
+    "and x25, x26, x6, lsr #32\n\t" \
+    "ld1 {v7.b}[0], [x21]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "add x10, %[cm], x10\n\t" \
+    "add x12, %[cm], x12\n\t" \
+    "add x11, %[cm], x11\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v4.b}[1], [x9]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v5.b}[1], [x10]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v6.b}[1], [x11]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ld1 {v7.b}[1], [x12]\n\t" \
+    "and x18, x26, x1, lsr #16\n\t" \
+    "ld1 {v4.b}[2], [x22]\n\t" \
+    "ld1 {v5.b}[2], [x23]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v6.b}[2], [x24]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "and x20, x26, x5, lsr #16\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "and x24, x26, x5, lsr #32\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "and x21, x26, x7, lsr #16\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x12, %[cm], w7, uxth\n\t" \
+    "and x19, x26, x3, lsr #16\n\t" \
+    "and x22, x26, x1, lsr #32\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "add x19, %[cm], x19\n\t" \
+    "ld1 {v5.b}[4], [x10]\n\t" \
+    "add x21, %[cm], x21\n\t" \
+    "ld1 {v6.b}[4], [x11]\n\t" \
+    "add x18, %[cm], x18\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "and x23, x26, x3, lsr #32\n\t" \
+    "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x20, %[cm], x20\n\t" \
+    "ld1 {v5.b}[5], [x19]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "and x25, x26, x7, lsr #32\n\t" \
+    "ld1 {v6.b}[5], [x20]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v7.b}[5], [x21]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v4.b}[6], [x22]\n\t" \
+    "ld1 {v5.b}[6], [x23]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v6.b}[6], [x24]\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "ldr q26, [x8, %[goff]]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "subs %[q], %[q], #1\n\t" \
+    "b.ne 1b\n\t"
+// The band's last pair: the next band's step weighed after its NEON run from e, e1 (v8,
+// loaded a band ahead at x30 + 32; lanes 0 / 4 for quarters 0-1, 0 / 4 (mip 0) or 1 / 5
+// (mip 1) for quarters 2-3), then x30 moves to the next band's entry.
+#define SB_PAIR_LOOP_16W0 \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "smull2 v29.4s, %[wb].8h, v8.h[0]\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
+    "smull v16.4s, %[wa].4h, v8.h[0]\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "smull v18.4s, %[wb].4h, v8.h[0]\n\t" \
+    "fmov x4, d2\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "smlal2 v17.4s, %[wc].8h, v8.h[1]\n\t" \
+    "smlal v16.4s, %[wc].4h, v8.h[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "smlal v18.4s, %[wd].4h, v8.h[1]\n\t" \
+    "smlal2 v29.4s, %[wd].8h, v8.h[1]\n\t" \
+    "and x9, x26, x0, lsr #16\n\t" \
+    "and x11, x26, x4, lsr #16\n\t" \
+    "add x19, %[cm], w2, uxth\n\t" \
+    "and x23, x26, x2, lsr #32\n\t" \
+    "add x18, %[cm], w0, uxth\n\t" \
+    "and x22, x26, x0, lsr #32\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x21, %[cm], w6, uxth\n\t" \
+    "ld1 {v5.b}[0], [x19]\n\t" \
+    "and x10, x26, x2, lsr #16\n\t" \
+    "ld1 {v4.b}[0], [x18]\n\t" \
+    "and x24, x26, x4, lsr #32\n\t" \
+    "and x25, x26, x6, lsr #32\n\t" \
+    "add x9, %[cm], x9\n\t" \
+    "add x11, %[cm], x11\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add x10, %[cm], x10\n\t" \
+    "and x12, x26, x6, lsr #16\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "mov %[q], %[hp1]\n\t" \
+    "ld1 {v7.b}[0], [x21]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "add x12, %[cm], x12\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v4.b}[1], [x9]\n\t" \
+    "ld1 {v5.b}[1], [x10]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[1], [x11]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ld1 {v7.b}[1], [x12]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v4.b}[2], [x22]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v5.b}[2], [x23]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v6.b}[2], [x24]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "and x18, x26, x1, lsr #16\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "and x19, x26, x3, lsr #16\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "and x20, x26, x5, lsr #16\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "add x20, %[cm], x20\n\t" \
+    "and x21, x26, x7, lsr #16\n\t" \
+    "ldr q8, [x30, #32]\n\t" \
+    "add x12, %[cm], w7, uxth\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x19, %[cm], x19\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
+    "and x22, x26, x1, lsr #32\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "and x24, x26, x5, lsr #32\n\t" \
+    "ld1 {v6.b}[4], [x11]\n\t" \
+    "add x18, %[cm], x18\n\t" \
+    "and x25, x26, x7, lsr #32\n\t" \
+    "and x23, x26, x3, lsr #32\n\t" \
+    "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x21, %[cm], x21\n\t" \
+    "ld1 {v5.b}[4], [x10]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v7.b}[5], [x21]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v5.b}[5], [x19]\n\t" \
+    "add x30, x30, #16\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[5], [x20]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x22]\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x23]\n\t" \
+    "ldr q26, [x8, %[goff]]\n\t" \
+    "ld1 {v6.b}[6], [x24]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "cmp x30, %[ete]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "b.ne 1b\n\t"
+#define SB_PAIR_LOOP_16W1 \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "smull2 v29.4s, %[wb].8h, v8.h[1]\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
+    "smull v16.4s, %[wa].4h, v8.h[0]\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "smull v18.4s, %[wb].4h, v8.h[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "smlal2 v17.4s, %[wc].8h, v8.h[4]\n\t" \
+    "smlal v16.4s, %[wc].4h, v8.h[4]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "smlal v18.4s, %[wd].4h, v8.h[5]\n\t" \
+    "smlal2 v29.4s, %[wd].8h, v8.h[5]\n\t" \
+    "and x9, x26, x0, lsr #16\n\t" \
+    "and x11, x26, x4, lsr #16\n\t" \
+    "add x19, %[cm], w2, uxth\n\t" \
+    "and x23, x26, x2, lsr #32\n\t" \
+    "add x18, %[cm], w0, uxth\n\t" \
+    "and x22, x26, x0, lsr #32\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x21, %[cm], w6, uxth\n\t" \
+    "ld1 {v5.b}[0], [x19]\n\t" \
+    "and x10, x26, x2, lsr #16\n\t" \
+    "ld1 {v4.b}[0], [x18]\n\t" \
+    "and x24, x26, x4, lsr #32\n\t" \
+    "and x25, x26, x6, lsr #32\n\t" \
+    "add x9, %[cm], x9\n\t" \
+    "add x11, %[cm], x11\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add x10, %[cm], x10\n\t" \
+    "and x12, x26, x6, lsr #16\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "mov %[q], %[hp1]\n\t" \
+    "ld1 {v7.b}[0], [x21]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "add x12, %[cm], x12\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v4.b}[1], [x9]\n\t" \
+    "ld1 {v5.b}[1], [x10]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[1], [x11]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ld1 {v7.b}[1], [x12]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v4.b}[2], [x22]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v5.b}[2], [x23]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v6.b}[2], [x24]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "and x18, x26, x1, lsr #16\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "and x19, x26, x3, lsr #16\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "and x20, x26, x5, lsr #16\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "add x20, %[cm], x20\n\t" \
+    "and x21, x26, x7, lsr #16\n\t" \
+    "ldr q8, [x30, #32]\n\t" \
+    "add x12, %[cm], w7, uxth\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x19, %[cm], x19\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
+    "and x22, x26, x1, lsr #32\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "and x24, x26, x5, lsr #32\n\t" \
+    "ld1 {v6.b}[4], [x11]\n\t" \
+    "add x18, %[cm], x18\n\t" \
+    "and x25, x26, x7, lsr #32\n\t" \
+    "and x23, x26, x3, lsr #32\n\t" \
+    "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x21, %[cm], x21\n\t" \
+    "ld1 {v5.b}[4], [x10]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v7.b}[5], [x21]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v5.b}[5], [x19]\n\t" \
+    "add x30, x30, #16\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[5], [x20]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x22]\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x23]\n\t" \
+    "ldr q26, [x8, %[goff]]\n\t" \
+    "ld1 {v6.b}[6], [x24]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "cmp x30, %[ete]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "b.ne 1b\n\t"
+#define SB_WEIGH01(L0, L1, L4) \
+  "smull v16.4s, %[wa].4h, v8.h[0]\n\t" \
+  "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
+  "smull v18.4s, %[wb].4h, v8.h[" L0 "]\n\t" \
+  "smull2 v29.4s, %[wb].8h, v8.h[" L0 "]\n\t" \
+  "smlal v16.4s, %[wc].4h, v8.h[" L1 "]\n\t" \
+  "smlal2 v17.4s, %[wc].8h, v8.h[" L1 "]\n\t" \
+  "smlal v18.4s, %[wd].4h, v8.h[" L4 "]\n\t" \
+  "smlal2 v29.4s, %[wd].8h, v8.h[" L4 "]\n\t"
+// Bands of B / 2 pairs: B / 2 - 1 of SB_PAIR_LOOP_16 (q counts them), then the last one.
+#define SB_INORDER01(LAST, L0, L1, L4) \
+  "add x30, %[ete], %[q]\n\t" \
+  "ldp q22, q23, [x30, #-64]\n\t" \
+  "ldp q19, q20, [x30, #-32]\n\t" \
+  "mov x26, #0xffff\n\t" \
+  "sub %[d], %[d], %[w], lsl #1\n\t" \
+  "ldr x8, [%[rp]]\n\t" \
+  "ldr q21, [x8, %[goff]]\n\t" \
+  "ldr x8, [%[rp], #8]\n\t" \
+  "ldr q26, [x8, %[goff]]\n\t" \
+  "add %[rp], %[rp], #16\n\t" \
+  "ldr q8, [x30]\n\t" SB_WEIGH01(L0, L1, L4) \
+  "ldr q8, [x30, #16]\n\t" \
+  "mov %[q], %[hp1]\n\t" \
+  "b 2f\n\t" \
+  ".p2align 10\n\t" \
+  "1:\n\t" SB_PAIR_LOOP_16 LAST \
+  "stp d4, d5, [%[d]]\n\t" \
+  "stp d6, d7, [x8]\n\t"
+          const uint8x16_t J0 = vld1q_u8(kTix16[0]), J1 = vld1q_u8(kTix16[1]);
+          const int16x8_t WA = vreinterpretq_s16_u16(BX1[0]), WB = vreinterpretq_s16_u16(BX1[1]);
+          const int16x8_t WC = vreinterpretq_s16_u16(FX1[0]), WD = vreinterpretq_s16_u16(FX1[1]);
+          // dtab: the numerators (64 bytes), then e, e1 of each band (x30: the band's).
+          std::memcpy(dtab, num, sizeof num);
+          const uint8_t* const ete = reinterpret_cast<const uint8_t*>(dtab + kDo + nb);
+          int64_t q = -16 * int64_t(nb);
+#define SB_INORDER01_OPERANDS \
+  : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q) \
+  : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [ete] "r"(ete), [j0] "w"(J0), [j1] "w"(J1), \
+    [wa] "w"(WA), [wb] "w"(WB), [wc] "w"(WC), [wd] "w"(WD), [hp1] "i"(B / 2 - 1) \
+  : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21", \
+    "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
+    "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory"
+          if constexpr (LB == 4) {
+            asm volatile(SB_INORDER01(SB_PAIR_LOOP_16W0, "0", "1", "1") SB_INORDER01_OPERANDS);
+          } else {
+            asm volatile(SB_INORDER01(SB_PAIR_LOOP_16W1, "1", "4", "5") SB_INORDER01_OPERANDS);
+          }
+#undef SB_INORDER01_OPERANDS
+#undef SB_INORDER01
+#undef SB_WEIGH01
+#undef SB_PAIR_LOOP_16W0
+#undef SB_PAIR_LOOP_16W1
+#undef SB_PAIR_LOOP_16
+        } else if constexpr (LB >= 3) {
           // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
           // the bands (x30: its address), not in every iteration. q: iterations left in the band.
           int64_t q = -int64_t(nb) * 64;
@@ -1576,6 +2014,287 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
+        } else if constexpr (LB == 2 && kInOrder) {
+          // Mip 2, in-order cores: the loop above, a band (two pairs) an iteration as in the
+          // mip 2 loop below: the first pair loads the next band's e, e1 (v8, at x30 + 16),
+          // the second weighs them into the step after its last use of the current one.
+#define SB_PAIR16_A \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "2:\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "add x19, %[cm], w2, uxth\n\t" \
+    "add x18, %[cm], w0, uxth\n\t" \
+    "and x12, x26, x6, lsr #16\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "and x9, x26, x0, lsr #16\n\t" \
+    "and x11, x26, x4, lsr #16\n\t" \
+    "and x10, x26, x2, lsr #16\n\t" \
+    "ld1 {v4.b}[0], [x18]\n\t" \
+    "add x21, %[cm], w6, uxth\n\t" \
+    "ld1 {v5.b}[0], [x19]\n\t" \
+    "and x23, x26, x2, lsr #32\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "add x10, %[cm], x10\n\t" \
+    "and x22, x26, x0, lsr #32\n\t" \
+    "and x24, x26, x4, lsr #32\n\t" \
+    "add x9, %[cm], x9\n\t" \
+    "add x30, %[dte], %[q], lsl #2\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "ld1 {v7.b}[0], [x21]\n\t" \
+    "add x11, %[cm], x11\n\t" \
+    "ld1 {v5.b}[1], [x10]\n\t" \
+    "add x12, %[cm], x12\n\t" \
+    "ld1 {v4.b}[1], [x9]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "and x25, x26, x6, lsr #32\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[1], [x11]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v7.b}[1], [x12]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ld1 {v4.b}[2], [x22]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v5.b}[2], [x23]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v6.b}[2], [x24]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "and x19, x26, x3, lsr #16\n\t" \
+    "and x18, x26, x1, lsr #16\n\t" \
+    "and x22, x26, x1, lsr #32\n\t" \
+    "ldr q8, [x30, #16]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "and x20, x26, x5, lsr #16\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "and x21, x26, x7, lsr #16\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
+    "add x12, %[cm], w7, uxth\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "and x24, x26, x5, lsr #32\n\t" \
+    "ld1 {v5.b}[4], [x10]\n\t" \
+    "add x18, %[cm], x18\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
+    "and x23, x26, x3, lsr #32\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "add x21, %[cm], x21\n\t" \
+    "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x19, %[cm], x19\n\t" \
+    "ld1 {v6.b}[4], [x11]\n\t" \
+    "add x20, %[cm], x20\n\t" \
+    "and x25, x26, x7, lsr #32\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v7.b}[5], [x21]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v6.b}[5], [x20]\n\t" \
+    "ld1 {v5.b}[5], [x19]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x22]\n\t" \
+    "ld1 {v6.b}[6], [x24]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x23]\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "ldr q26, [x8, %[goff]]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "b 3f\n\t" \
+    "3:\n\t"
+#define SB_PAIR16_B \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
+    "fmov x0, d0\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
+    "fmov x2, d1\n\t" \
+    "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "smlal2 v29.4s, %[wt].8h, v8.h[7]\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "smlal2 v17.4s, %[wt].8h, v8.h[5]\n\t" \
+    "fmov x6, d3\n\t" \
+    "smlal2 v16.4s, %[wt].8h, v8.h[4]\n\t" \
+    "smlal2 v18.4s, %[wt].8h, v8.h[6]\n\t" \
+    "and x22, x26, x0, lsr #32\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "and x11, x26, x4, lsr #16\n\t" \
+    "and x9, x26, x0, lsr #16\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add x18, %[cm], w0, uxth\n\t" \
+    "add x19, %[cm], w2, uxth\n\t" \
+    "and x10, x26, x2, lsr #16\n\t" \
+    "add x21, %[cm], w6, uxth\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "and x24, x26, x4, lsr #32\n\t" \
+    "ld1 {v4.b}[0], [x18]\n\t" \
+    "add x9, %[cm], x9\n\t" \
+    "ld1 {v5.b}[0], [x19]\n\t" \
+    "and x12, x26, x6, lsr #16\n\t" \
+    "add x11, %[cm], x11\n\t" \
+    "and x23, x26, x2, lsr #32\n\t" \
+    "ld1 {v7.b}[0], [x21]\n\t" \
+    "add x10, %[cm], x10\n\t" \
+    "and x25, x26, x6, lsr #32\n\t" \
+    "add x12, %[cm], x12\n\t" \
+    "ld1 {v4.b}[1], [x9]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v6.b}[1], [x11]\n\t" \
+    "ld1 {v5.b}[1], [x10]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v7.b}[1], [x12]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v4.b}[2], [x22]\n\t" \
+    "and x18, x26, x1, lsr #16\n\t" \
+    "ld1 {v5.b}[2], [x23]\n\t" \
+    "ld1 {v6.b}[2], [x24]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "and x19, x26, x3, lsr #16\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "and x21, x26, x7, lsr #16\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
+    "and x20, x26, x5, lsr #16\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
+    "and x22, x26, x1, lsr #32\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "add x12, %[cm], w7, uxth\n\t" \
+    "ld1 {v5.b}[4], [x10]\n\t" \
+    "and x23, x26, x3, lsr #32\n\t" \
+    "add x18, %[cm], x18\n\t" \
+    "add x21, %[cm], x21\n\t" \
+    "ld1 {v6.b}[4], [x11]\n\t" \
+    "add x19, %[cm], x19\n\t" \
+    "ldr x8, [%[rp], #8]\n\t" \
+    "and x24, x26, x5, lsr #32\n\t" \
+    "add x20, %[cm], x20\n\t" \
+    "and x25, x26, x7, lsr #32\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
+    "add x22, %[cm], x22\n\t" \
+    "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x23, %[cm], x23\n\t" \
+    "ld1 {v5.b}[5], [x19]\n\t" \
+    "add x24, %[cm], x24\n\t" \
+    "ld1 {v6.b}[5], [x20]\n\t" \
+    "add %[rp], %[rp], #16\n\t" \
+    "ld1 {v4.b}[6], [x22]\n\t" \
+    "add x25, %[cm], x25\n\t" \
+    "ld1 {v7.b}[5], [x21]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x23]\n\t" \
+    "ld1 {v6.b}[6], [x24]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "ldr q26, [x8, %[goff]]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "adds %[q], %[q], #4\n\t" \
+    "b.ne 1b\n\t"
+#define SB_WEIGH_STEP8 \
+  "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+  "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
+  "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
+  "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
+  "smlal2 v16.4s, %[wt].8h, v8.h[4]\n\t" \
+  "smlal2 v17.4s, %[wt].8h, v8.h[5]\n\t" \
+  "smlal2 v18.4s, %[wt].8h, v8.h[6]\n\t" \
+  "smlal2 v29.4s, %[wt].8h, v8.h[7]\n\t"
+          const int16x8_t wt = vcombine_s16(vget_low_s16(vreinterpretq_s16_u16(BX1[0])),
+                                            vget_low_s16(vreinterpretq_s16_u16(FX1[0])));
+          const uint8x16_t J0 = vld1q_u8(kTix16[0]), J1 = vld1q_u8(kTix16[1]);
+          int64_t q = -int64_t(nb) * B;
+          asm volatile(
+              "mov v22.16b, %[n0].16b\n\t"
+              "mov v23.16b, %[n1].16b\n\t"
+              "mov v19.16b, %[n2].16b\n\t"
+              "mov v20.16b, %[n3].16b\n\t"
+              "mov x26, #0xffff\n\t"
+              "sub %[d], %[d], %[w], lsl #1\n\t"
+              "ldr x8, [%[rp]]\n\t"
+              "ldr q21, [x8, %[goff]]\n\t"
+              "ldr x8, [%[rp], #8]\n\t"
+              "ldr q26, [x8, %[goff]]\n\t"
+              "add %[rp], %[rp], #16\n\t"
+              "add x8, %[dte], %[q], lsl #2\n\t"
+              "ldr q8, [x8]\n\t" SB_WEIGH_STEP8
+              "b 2f\n\t"
+              ".p2align 10\n\t"
+              "1:\n\t" SB_PAIR16_A SB_PAIR16_B
+              "stp d4, d5, [%[d]]\n\t"
+              "stp d6, d7, [x8]\n\t"
+              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
+              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + nb), [j0] "w"(J0),
+                [j1] "w"(J1), [n0] "w"(num[0]), [n1] "w"(num[1]), [n2] "w"(num[2]), [n3] "w"(num[3]), [wt] "w"(wt)
+              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
+                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8",
+                "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
+                "memory");
+#undef SB_PAIR16_A
+#undef SB_PAIR16_B
+#undef SB_WEIGH_STEP8
         } else if constexpr (LB == 2) {
           // Mip 2: a band (two pairs of rows) an iteration, q counting -rows + 4 up to 0. The
           // band's step from its e, e1 (16 bytes at dte + 4 q): lanes of quarter j
@@ -1907,6 +2626,28 @@ void surface_block_neon(const uint16_t* grid, int grid_width, const uint8_t* tex
   }
 }
 
+#if defined(__aarch64__)
+// The in-order variant (Cortex-A53/A55/A35): its own row loops at every mip.
+void surface_block_neon_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width,
+                                int tex_height, int mip, int soff, int toff, int width, int height,
+                                const uint8_t* colormap, uint8_t* out) {
+  if (width > 0 && height > 0 && mip >= 0 && mip <= 3 && width / (16 >> mip) <= kMaxBlockColumns) {
+    if (mip == 0)
+      return surface_block_groups<0, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
+                                           colormap, out);
+    if (mip == 1)
+      return surface_block_groups<1, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
+                                           colormap, out);
+    if (mip == 2)
+      return surface_block_groups<2, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
+                                           colormap, out);
+    return surface_block_groups<3, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
+                                         colormap, out);
+  }
+  surface_block_neon(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap, out);
+}
+#endif
+
 // ---------------------------------------------------------------- 3. z span
 
 void z_span_neon(uint16_t* __restrict z, int n, uint32_t zi, uint32_t step) {
@@ -1978,6 +2719,10 @@ void expand_palette_neon(const uint8_t* src, ptrdiff_t src_stride, int width, in
 
 const Kernels kNeon = {"neon", surface_span_fast, surface_block_neon, z_span_neon, expand_palette_neon, alias_span_neon,
                         surface_span_persp_fast};
+#if defined(__aarch64__)
+const Kernels kNeonInOrder = {"neon_a53", surface_span_fast, surface_block_neon_inorder, z_span_neon,
+                              expand_palette_neon, alias_span_neon, surface_span_persp_fast};
+#endif
 
 }  // namespace sb::simd::detail
 

@@ -23,6 +23,10 @@ extern const Kernels kAvx2Gather;
 #endif
 #if defined(SB_SIMD_HAVE_NEON)
 extern const Kernels kNeon;
+#if defined(__aarch64__)
+#define SB_SIMD_NEON_INORDER 1
+extern const Kernels kNeonInOrder;  // "neon_a53": the block builder's row loop for in-order cores
+#endif
 #endif
 
 // Positive modulo (n > 0).
