@@ -4,16 +4,13 @@
 // have (bench/asm_bench.cpp prints the figures) among those the CPU supports. x86-64: CPU detection with __builtin_cpu_supports (a compiler
 // builtin: no OS header). ARM: NEON is a build-time property (aarch64 always; armv7 when
 // the build enables it), so the choice is made by the compiler; on aarch64 Linux the core
-// type (MIDR_EL1 or /proc/cpuinfo) picks the in-order block builder (neon_a53).
+// type (/proc/cpuinfo's CPU parts) picks the in-order block builder (neon_a53).
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 
 #include "asm/variants.h"
-#if defined(SB_SIMD_NEON_INORDER) && defined(__linux__)
-#include <sys/auxv.h>
-#endif
 
 namespace sb::simd {
 namespace detail {
@@ -37,16 +34,11 @@ bool in_order_part(unsigned implementer, unsigned part) {
   return implementer == 0x41 && (part == 0xd03 || part == 0xd04 || part == 0xd05 || part == 0xd46 || part == 0xd80);
 }
 
-// The running core's MIDR_EL1 when the kernel traps and emulates its read (HWCAP_CPUID),
-// else every "CPU part" of /proc/cpuinfo must be an in-order one. Unknown: false.
+// Every "CPU part" of /proc/cpuinfo (Linux) must be an in-order one, so a big.LITTLE system
+// keeps the out-of-order loop. Read with the standard library only (no OS header in asm/;
+// MIDR_EL1 would need getauxval's HWCAP_CPUID first). Unknown or unreadable: false.
 bool cpu_in_order() {
 #if defined(__linux__)
-  constexpr unsigned long kHwcapCpuid = 1ul << 11;
-  if (getauxval(AT_HWCAP) & kHwcapCpuid) {
-    unsigned long midr = 0;
-    asm volatile("mrs %0, midr_el1" : "=r"(midr));
-    return in_order_part(unsigned(midr >> 24) & 0xff, unsigned(midr >> 4) & 0xfff);
-  }
   std::FILE* f = std::fopen("/proc/cpuinfo", "r");
   if (!f) return false;
   char line[256];
