@@ -217,6 +217,9 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
 #if defined(__aarch64__) || defined(__arm__)
 #define SB_SPAN_WORDS 1
 #endif
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FEATURE_DSP)
+#define SB_SPAN_SMULBT 1
+#endif
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__ && defined(SB_SPAN_WORDS)
 #error "draw16 gathers texels little-endian"
 #endif
@@ -345,7 +348,17 @@ class Run16 {
     if constexpr (kCurve) e_[c] += dd4_;
 #else
     (void)c;
+#if defined(SB_SPAN_SMULBT)
+    // (v >> 16) w + (u >> 16) in two instructions: smulbt multiplies w's signed low half by
+    // v's signed high half, which are w and v >> 16 (the contract: 1 <= w <= 32767,
+    // 0 <= v < 2^31), exactly (< 2^30); uxtah adds the low half of u rotated by 16, u >> 16.
+    Addr t, a;
+    __asm__("smulbt %0, %1, %2" : "=r"(t) : "r"(w), "r"(v_));
+    __asm__("uxtah %0, %1, %2, ror #16" : "=r"(a) : "r"(t), "r"(u_));
+    a_[K] = a;
+#else
     a_[K] = (v_ >> 16) * w + (u_ >> 16);
+#endif
     u_ += du_;
     v_ += dv_;
     if constexpr (kCurve) {
