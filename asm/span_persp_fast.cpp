@@ -351,15 +351,28 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         sum1 = s1.z + z2, sum2 = z2 + z3;
         zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
       } else if constexpr (G == 1) {
-        qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
+        if constexpr (kFixed16) {  // armhf: trunc(q 2^16) in place (see cvt_fixed16)
+          qu2 = cvt_fixed16(qu2), qv2 = cvt_fixed16(qv2), qu3 = cvt_fixed16(qu3), qv3 = cvt_fixed16(qv3);
+        } else {
+          qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
+        }
         if constexpr (kCurve) c1 = zck * sum1, c2 = zck * sum2;
       } else if constexpr (G == 2) {
-        qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
+        if constexpr (!kFixed16) {
+          qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
+        }
       } else if constexpr (G == 3) {
-        qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
+        if constexpr (!kFixed16) {
+          qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
+        }
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
-        s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
+        if constexpr (kFixed16) {  // to_fixed_int's clamps on the converted values
+          s2u = clamp_fixed(fixed16_bits(qu2), p.umax), s2v = clamp_fixed(fixed16_bits(qv2), p.vmax);
+          s3u = clamp_fixed(fixed16_bits(qu3), p.umax), s3v = clamp_fixed(fixed16_bits(qv3), p.vmax);
+        } else {
+          s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
+        }
       } else if constexpr (G == 5) {
         if constexpr (kCurve) {
           fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);

@@ -151,7 +151,25 @@ inline int32_t clamp_fixed(int32_t t, int32_t max) {
   t &= ~(t >> 31);
   return t < max ? t : max;
 }
-inline int32_t to_fixed_int(double v, int32_t max) { return clamp_fixed(cvt_sat(v * 65536.0), max); }
+// armhf: cvt_sat(q * 65536.0) by one fixed-point vcvt in place (trunc(q 2^16), saturating,
+// NaN -> 0; q 2^16 is exact or overflows, and then saturates the same way), its result in
+// the register's low 32 bits (fixed16_bits).
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+constexpr bool kFixed16 = true;
+inline double cvt_fixed16(double q) {
+  __asm__("vcvt.s32.f64 %P0, %P0, #16" : "+w"(q));
+  return q;
+}
+#else
+constexpr bool kFixed16 = false;
+inline double cvt_fixed16(double q) { return q; }
+#endif
+inline int32_t fixed16_bits(double x) { return int32_t(uint32_t(__builtin_bit_cast(uint64_t, x))); }
+inline int32_t to_fixed_int(double v, int32_t max) {
+  if constexpr (kFixed16) return clamp_fixed(fixed16_bits(cvt_fixed16(v)), max);
+  return clamp_fixed(cvt_sat(v * 65536.0), max);
+}
+
 
 // run_steps(a, b, 16, curve) without branches. a, b lie in [0, 2^31 - 2^16) (the clamps),
 // so delta = b - a fits 32 bits. The walker's test, mirrored to delta >= 0 (the
