@@ -301,6 +301,22 @@ class Run16 {
 #endif
   template <int G>
   SB_INLINE void group(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
+#if defined(SB_SPAN_SMULBT)
+    // ARMv7 (few registers; the modelled Cortex-A9 issues loads out of order): each group
+    // loads its own two pixels and gathers them at once, so at most a half-word of bytes
+    // is held between groups (no spills).
+    if constexpr (G < 8) {
+      address<2 * G>(w);
+      address<2 * G + 1>(w);
+      const uint32_t b0 = texels[a_[2 * G]], b1 = texels[a_[2 * G + 1]];
+      if constexpr (G % 2 == 0) {
+        out_[0] = b0 | (b1 << 8);
+      } else {
+        const uint32_t word = uint32_t(out_[0]) | (b0 << 16) | (b1 << 24);  // little-endian
+        __builtin_memcpy(dest + 2 * G - 2, &word, 4);
+      }
+    }
+#else
     if constexpr (G < 8) {
       address<2 * G>(w);
       address<2 * G + 1>(w);
@@ -314,6 +330,7 @@ class Run16 {
       put<2 * G - 3>(dest);
     }
     if constexpr (G == 9) finish(dest);
+#endif
   }
   SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
     draw(dest, texels, w, [](auto) {});
