@@ -212,6 +212,37 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
 // num >= 240 |pdd| iff pd >= 120 |pdd|. Then num = pd - 120 pdd lies in [0, 2 pd] < 2^32:
 // its uint32 value (arithmetic mod 2^32) is exact and d0' = num >> 4. Rejected: the linear
 // step (pd >> 4, mirrored) and dd = 0.
+#if defined(__arm__) && defined(__GNUC__) && defined(__ARM_ARCH) && __ARM_ARCH >= 7
+// ARMv7 in asm (GCC's masks and 64-bit compare cost some 25 instructions): the same test
+// with x = ssat(dd, 26): |dd| < 2^25 gives x = dd; else |x| >= 2^25 - 1 and 120 |x| >
+// 2^31 > pd rejects, as 120 |dd| does. 120 |x| < 2^32: one 32-bit mul and unsigned compare.
+// num = pd - 120 pdd is the mirror of r = delta - 120 dd (mod 2^32); the pick by condition.
+inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
+  uint32_t s, pd, x, r, res, ddo = uint32_t(dd);
+  __asm__(
+      "asr %[s], %[delta], #31\n\t"
+      "ssat %[x], #26, %[dd]\n\t"
+      "eor %[pd], %[delta], %[s]\n\t"
+      "eor %[r], %[x], %[x], asr #31\n\t"
+      "sub %[pd], %[pd], %[s]\n\t"
+      "sub %[r], %[r], %[x], asr #31\n\t"
+      "mul %[x], %[r], %[c]\n\t"
+      "mls %[r], %[dd], %[c], %[delta]\n\t"
+      "cmp %[x], %[pd]\n\t"
+      "eor %[r], %[r], %[s]\n\t"
+      "sub %[r], %[r], %[s]\n\t"
+      "itee ls\n\t"
+      "lsrls %[res], %[r], #4\n\t"
+      "lsrhi %[res], %[pd], #4\n\t"
+      "movhi %[ddo], #0\n\t"
+      "eor %[res], %[res], %[s]\n\t"
+      "sub %[res], %[res], %[s]"
+      : [s] "=&r"(s), [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [res] "=&r"(res), [ddo] "+&r"(ddo)
+      : [delta] "r"(delta), [dd] "r"(dd), [c] "r"(120u)
+      : "cc");
+  return {int32_t(res), int32_t(ddo)};
+}
+#else
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
   const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
   const uint32_t pd = (uint32_t(delta) ^ s) - s, pdd = (uint32_t(dd) ^ s) - s;
@@ -221,6 +252,7 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
   const uint32_t pick = lin ^ ((q ^ lin) & accept);  // d0' or the linear step, mirrored
   return {int32_t((pick ^ s) - s), int32_t(uint32_t(dd) & accept)};
 }
+#endif
 #endif
 
 // One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
