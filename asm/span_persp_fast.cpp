@@ -76,8 +76,12 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     return;
   }
   if (n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
+  // Linear: the four divides first, samples 0 and 1 after (the in-order FP pipe of the
+  // modelled Cortex-A9 waits on the first quotient; the other divides issue meanwhile).
+  // Second order: samples 0 and 1 between (there it schedules better).
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
-  Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  Sample s0{}, s1{};
+  if constexpr (kCurve) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
   if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
     pos2 = P + double(32);
@@ -87,6 +91,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     pos2 = P + double(n - 1);
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
+  if constexpr (!kCurve) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
   RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
