@@ -452,10 +452,10 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
   // last run that is sample r + 1 itself, which the walker does not recompute).
 #if defined(__arm__) && !defined(__aarch64__)
-  if constexpr (kCurve) {
-    // ARMv7: the last sample and its steps' quotients computed beside run r (stage slots),
-    // so that the modelled Cortex-A9's in-order FP pipe stalls on them less; the same
-    // operations as below.
+  {
+    // ARMv7: the last sample, and (second order) its steps' quotients, computed beside run r
+    // (stage slots), so that the modelled Cortex-A9's in-order FP pipe stalls on them less;
+    // the same operations as the code below (other targets).
     const int last = left - 16, steps = last - 1;
     RunSteps lu, lv;
     Sample s2 = s1;
@@ -467,11 +467,13 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       if constexpr (G == 0) {
         const Sample t = sample(pos2, z2);
         s2 = steps > 0 ? t : s1;
-      } else if constexpr (G == 4) {
+      } else if constexpr (G == 4 && kCurve) {
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
-      } else if constexpr (G == 9) {
+      } else if constexpr (G == 9 && kCurve) {
         last_steps_q(steps, du, dv, qu, qv, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+      } else if constexpr (G == 9) {
+        run_steps_uv(steps, s1, s2, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
       }
     });
     dest += 16;
@@ -481,9 +483,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
                uint32_t(lu.dd), uint32_t(lv.dd));
     }
-    return;
   }
-#endif
+#else
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
@@ -501,6 +502,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
              uint32_t(lv.dd));
   }
+#endif
 }
 }  // namespace
 
