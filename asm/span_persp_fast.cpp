@@ -335,10 +335,13 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
   }
 #endif
-  while (left > 48) {
+  // One pass. kFull (ARMv7 second order, left >= 81): both offsets are 32 (no integer min,
+  // no conversion; linear spans keep one loop: the split moved their 64-px case the wrong way).
+  auto pass = [&](auto full) SB_LAMBDA_INLINE {
+    constexpr bool kFull = decltype(full)::value;
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
-    const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
-    const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
+    const double pos4 = P2 + (kFull ? 32.0 : double(left - 33 < 32 ? left - 33 : 32));
+    const double pos5 = P3 + (kFull ? 32.0 : double(left - 49 < 32 ? left - 49 : 32));
     // Software-pipelined setup: samples 2 and 3 (their divides issued a pass earlier), the
     // steps of runs r + 1 (needed by the second run of this pass) and r + 2 (the next pass),
     // and the divides for samples 4 and 5, one dependent operation per pixel group. Each
@@ -432,7 +435,13 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     pos2 = pos4;
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
+  };
+#if defined(__arm__) && !defined(__aarch64__)
+  if constexpr (kCurve) {
+    while (left >= 81) pass(std::true_type{});
   }
+#endif
+  while (left > 48) pass(std::false_type{});
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
