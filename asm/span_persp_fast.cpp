@@ -75,13 +75,21 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
     return;
   }
-  if (n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
-  // Linear: the four divides first, samples 0 and 1 after (the in-order FP pipe of the
-  // modelled Cortex-A9 waits on the first quotient; the other divides issue meanwhile).
-  // Second order: samples 0 and 1 between (there it schedules better).
+  // 17 .. kShortMax pixels: persp_short, which surface_span_persp_fast calls directly. The
+  // linear instance keeps this (never taken) call: without it GCC scheduled its long-span
+  // loop worse (A53 persp1920lin 6.84 -> 7.09).
+  if (!kCurve && n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
+  // ARMv7 linear: the four divides first, samples 0 and 1 after (the in-order FP pipe of
+  // the modelled Cortex-A9 waits on the first quotient; the other divides issue meanwhile).
+  // Elsewhere samples 0 and 1 between (there it schedules better).
+#if defined(__arm__) && !defined(__aarch64__)
+  constexpr bool kDivFirst = !kCurve;
+#else
+  constexpr bool kDivFirst = false;
+#endif
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
-  Sample s0{}, s1{};
-  if constexpr (kCurve) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  Sample s0, s1;
+  if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
   if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
     pos2 = P + double(32);
@@ -91,7 +99,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     pos2 = P + double(n - 1);
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
-  if constexpr (!kCurve) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  if constexpr (kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
   RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
@@ -337,8 +345,13 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
 #endif
   // One pass. kFull (ARMv7 second order, left >= 81): both offsets are 32 (no integer min,
   // no conversion; linear spans keep one loop: the split moved their 64-px case the wrong way).
+#if !defined(__x86_64__)
   auto pass = [&](auto full) SB_LAMBDA_INLINE {
     constexpr bool kFull = decltype(full)::value;
+#else
+  while (left > 48) {  // x86-64: the loop written out (its scheduling as before the split)
+    constexpr bool kFull = false;
+#endif
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
     const double pos4 = P2 + (kFull ? 32.0 : double(left - 33 < 32 ? left - 33 : 32));
     const double pos5 = P3 + (kFull ? 32.0 : double(left - 49 < 32 ? left - 49 : 32));
@@ -435,6 +448,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     pos2 = pos4;
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
+#if !defined(__x86_64__)
   };
 #if defined(__arm__) && !defined(__aarch64__)
   if constexpr (kCurve) {
@@ -442,6 +456,9 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   }
 #endif
   while (left > 48) pass(std::false_type{});
+#else
+  }
+#endif
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
@@ -518,7 +535,14 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
                              const PerspSpan& p) {
   // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
-  if (!p.second_order || p.dzi == 0.0) return persp_fast<false>(dest, n, texels, width, p);
+  // Short spans (aarch64) go to persp_short from here, not past persp_fast's entry (which
+  // saves the registers of the long-span loop).
+  const bool is_short = n > 16 && n <= kShortMax;
+  if (!p.second_order || p.dzi == 0.0) {
+    if (is_short) return persp_short<false>(dest, n, texels, width, p);
+    return persp_fast<false>(dest, n, texels, width, p);
+  }
+  if (is_short) return persp_short<true>(dest, n, texels, width, p);
   persp_fast<true>(dest, n, texels, width, p);
 }
 
