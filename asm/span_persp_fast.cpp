@@ -44,6 +44,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // branch-free (one block per pass).
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double umaxd = double(p.umax), vmaxd = double(p.vmax);
+  const int32_t umax = p.umax, vmax = p.vmax;
   const double zc = p.second_order ? zix : 0.0;
   const uint32_t w = uint32_t(width);
   auto sample = [&](double px, double z) {
@@ -389,8 +390,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
         if constexpr (kFixed16) {  // to_fixed_int's clamps on the converted values
-          s2u = clamp_fixed(fixed16_bits(qu2), p.umax), s2v = clamp_fixed(fixed16_bits(qv2), p.vmax);
-          s3u = clamp_fixed(fixed16_bits(qu3), p.umax), s3v = clamp_fixed(fixed16_bits(qv3), p.vmax);
+          s2u = clamp_fixed(fixed16_bits(qu2), umax), s2v = clamp_fixed(fixed16_bits(qv2), vmax);
+          s3u = clamp_fixed(fixed16_bits(qu3), umax), s3v = clamp_fixed(fixed16_bits(qv3), vmax);
         } else {
           s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
         }
