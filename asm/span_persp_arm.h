@@ -263,16 +263,35 @@ SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t 
   const uint32_t d = ((d0 ^ sg) - sg) & accept;
   return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
 }
+#if !defined(__aarch64__)
+// The quotients double(delta) / max(steps, 1), as last_steps takes them (ARMv7: the tail
+// issues them early, beside the run before the last).
+SB_INLINE double last_quotient(int steps, int32_t delta) {
+  return double(delta) / double(int(uint32_t(steps > 1 ? steps : 1)));
+}
+SB_INLINE void last_steps_q(int steps, int32_t du, int32_t dv, double qu, double qv, double curve, RunSteps* su,
+                            RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+  const int32_t lu = int32_t(qu), lv = int32_t(qv);
+  const double fu = -2.0 * (qu * curve), fv = -2.0 * (qv * curve);
+  const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
+  *su = last_dd(du, lu, du2 & int32_t(two), s, T);
+  *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+}
+#endif
 #if defined(__aarch64__)
 // du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as doubles [du, dv].
 SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, float64x2_t duv, double curve, RunSteps* su,
                           RunSteps* sv) {
 #else
 SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSteps* su, RunSteps* sv) {
+  last_steps_q(steps, du, dv, last_quotient(steps, du), last_quotient(steps, dv), curve, su, sv);
+}
 #endif
+#if defined(__aarch64__)
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
   const uint32_t two = steps > 1 ? ~0u : 0u;
-#if defined(__aarch64__)
   const float64x2_t q = div_steps(duv, s);
   const int64x2_t lin = vcvtq_s64_f64(q);
   const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
@@ -281,13 +300,6 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
   const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
   const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
   const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
-#else
-  const double qu = double(du) / double(int(s)), qv = double(dv) / double(int(s));
-  const int32_t lu = int32_t(qu), lv = int32_t(qv);
-  const double fu = -2.0 * (qu * curve), fv = -2.0 * (qv * curve);
-  const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
-#endif
-#if defined(__aarch64__)
   // last_dd for u and v in one asm block, the two chains interleaved (the compiler runs
   // them one after the other; on an in-order core each step waits for the previous one).
   // Per lane, as last_dd: sg, pd, add, Q, pdd; acc = pd - add T (umsubl, 64-bit), rejected
@@ -350,11 +362,8 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
       : "cc");
   *su = RunSteps{lu_, ddu};
   *sv = RunSteps{lv_, ddv};
-#else
-  *su = last_dd(du, lu, du2 & int32_t(two), s, T);
-  *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
-#endif
 }
+#endif
 SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double curve, RunSteps* su, RunSteps* sv) {
   const int32_t du = b.u - a.u, dv = b.v - a.v;  // 0 <= u, v < 2^31: no overflow
 #if defined(__aarch64__)

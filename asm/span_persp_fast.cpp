@@ -44,6 +44,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // branch-free (one block per pass).
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double umaxd = double(p.umax), vmaxd = double(p.vmax);
+  const int32_t umax = p.umax, vmax = p.vmax;
   const double zc = p.second_order ? zix : 0.0;
   const uint32_t w = uint32_t(width);
   auto sample = [&](double px, double z) {
@@ -75,9 +76,21 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
     return;
   }
-  if (n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
+  // 17 .. kShortMax pixels: persp_short, which surface_span_persp_fast calls directly. The
+  // linear instance keeps this (never taken) call: without it GCC scheduled its long-span
+  // loop worse (A53 persp1920lin 6.84 -> 7.09).
+  if (!kCurve && n <= kShortMax) return persp_short<kCurve>(dest, n, texels, width, p);
+  // ARMv7 linear: the four divides first, samples 0 and 1 after (the in-order FP pipe of
+  // the modelled Cortex-A9 waits on the first quotient; the other divides issue meanwhile).
+  // Elsewhere samples 0 and 1 between (there it schedules better).
+#if defined(__arm__) && !defined(__aarch64__)
+  constexpr bool kDivFirst = !kCurve;
+#else
+  constexpr bool kDivFirst = false;
+#endif
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
-  Sample s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  Sample s0, s1;
+  if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
   if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
     pos2 = P + double(32);
@@ -87,6 +100,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     pos2 = P + double(n - 1);
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
+  if constexpr (kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
   RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
@@ -330,10 +344,18 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     }
   }
 #endif
-  while (left > 48) {
+  // One pass. kFull (ARMv7 second order, left >= 81): both offsets are 32 (no integer min,
+  // no conversion; linear spans keep one loop: the split moved their 64-px case the wrong way).
+#if !defined(__x86_64__)
+  auto pass = [&](auto full) SB_LAMBDA_INLINE {
+    constexpr bool kFull = decltype(full)::value;
+#else
+  while (left > 48) {  // x86-64: the loop written out (its scheduling as before the split)
+    constexpr bool kFull = false;
+#endif
     const double P1 = P + double(16), P2 = P1 + double(16), P3 = P2 + double(16);
-    const double pos4 = P2 + double(left - 33 < 32 ? left - 33 : 32);
-    const double pos5 = P3 + double(left - 49 < 32 ? left - 49 : 32);
+    const double pos4 = P2 + (kFull ? 32.0 : double(left - 33 < 32 ? left - 33 : 32));
+    const double pos5 = P3 + (kFull ? 32.0 : double(left - 49 < 32 ? left - 49 : 32));
     // Software-pipelined setup: samples 2 and 3 (their divides issued a pass earlier), the
     // steps of runs r + 1 (needed by the second run of this pass) and r + 2 (the next pass),
     // and the divides for samples 4 and 5, one dependent operation per pixel group. Each
@@ -351,15 +373,28 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         sum1 = s1.z + z2, sum2 = z2 + z3;
         zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
       } else if constexpr (G == 1) {
-        qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
+        if constexpr (kFixed16) {  // armhf: trunc(q 2^16) in place (see cvt_fixed16)
+          qu2 = cvt_fixed16(qu2), qv2 = cvt_fixed16(qv2), qu3 = cvt_fixed16(qu3), qv3 = cvt_fixed16(qv3);
+        } else {
+          qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
+        }
         if constexpr (kCurve) c1 = zck * sum1, c2 = zck * sum2;
       } else if constexpr (G == 2) {
-        qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
+        if constexpr (!kFixed16) {
+          qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
+        }
       } else if constexpr (G == 3) {
-        qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
+        if constexpr (!kFixed16) {
+          qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
+        }
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
-        s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
+        if constexpr (kFixed16) {  // to_fixed_int's clamps on the converted values
+          s2u = clamp_fixed(fixed16_bits(qu2), umax), s2v = clamp_fixed(fixed16_bits(qv2), vmax);
+          s3u = clamp_fixed(fixed16_bits(qu3), umax), s3v = clamp_fixed(fixed16_bits(qv3), vmax);
+        } else {
+          s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
+        }
       } else if constexpr (G == 5) {
         if constexpr (kCurve) {
           fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
@@ -414,7 +449,17 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     pos2 = pos4;
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
+#if !defined(__x86_64__)
+  };
+#if defined(__arm__) && !defined(__aarch64__)
+  if constexpr (kCurve) {
+    while (left >= 81) pass(std::true_type{});
   }
+#endif
+  while (left > 48) pass(std::false_type{});
+#else
+  }
+#endif
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
@@ -433,6 +478,40 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
   // last run that is sample r + 1 itself, which the walker does not recompute).
+#if defined(__arm__) && !defined(__aarch64__)
+  {
+    // ARMv7: the last sample, and (second order) its steps' quotients, computed beside run r
+    // (stage slots), so that the modelled Cortex-A9's in-order FP pipe stalls on them less;
+    // the same operations as the code below (other targets).
+    const int last = left - 16, steps = last - 1;
+    RunSteps lu, lv;
+    Sample s2 = s1;
+    Run16<kCurve> run(s0.u, s0.v, su, sv);
+    int32_t du = 0, dv = 0;
+    double qu = 0.0, qv = 0.0;
+    run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        const Sample t = sample(pos2, z2);
+        s2 = steps > 0 ? t : s1;
+      } else if constexpr (G == 4 && kCurve) {
+        du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
+        qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
+      } else if constexpr (G == 9 && kCurve) {
+        last_steps_q(steps, du, dv, qu, qv, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+      } else if constexpr (G == 9) {
+        run_steps_uv(steps, s1, s2, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+      }
+    });
+    dest += 16;
+    if (last == 16) {
+      draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
+               uint32_t(lu.dd), uint32_t(lv.dd));
+    }
+  }
+#else
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
@@ -450,13 +529,21 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
              uint32_t(lv.dd));
   }
+#endif
 }
 }  // namespace
 
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
                              const PerspSpan& p) {
   // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
-  if (!p.second_order || p.dzi == 0.0) return persp_fast<false>(dest, n, texels, width, p);
+  // Short spans (aarch64) go to persp_short from here, not past persp_fast's entry (which
+  // saves the registers of the long-span loop).
+  const bool is_short = n > 16 && n <= kShortMax;
+  if (!p.second_order || p.dzi == 0.0) {
+    if (is_short) return persp_short<false>(dest, n, texels, width, p);
+    return persp_fast<false>(dest, n, texels, width, p);
+  }
+  if (is_short) return persp_short<true>(dest, n, texels, width, p);
   persp_fast<true>(dest, n, texels, width, p);
 }
 

@@ -151,7 +151,25 @@ inline int32_t clamp_fixed(int32_t t, int32_t max) {
   t &= ~(t >> 31);
   return t < max ? t : max;
 }
-inline int32_t to_fixed_int(double v, int32_t max) { return clamp_fixed(cvt_sat(v * 65536.0), max); }
+// armhf: cvt_sat(q * 65536.0) by one fixed-point vcvt in place (trunc(q 2^16), saturating,
+// NaN -> 0; q 2^16 is exact or overflows, and then saturates the same way), its result in
+// the register's low 32 bits (fixed16_bits).
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+constexpr bool kFixed16 = true;
+inline double cvt_fixed16(double q) {
+  __asm__("vcvt.s32.f64 %P0, %P0, #16" : "+w"(q));
+  return q;
+}
+#else
+constexpr bool kFixed16 = false;
+inline double cvt_fixed16(double q) { return q; }
+#endif
+inline int32_t fixed16_bits(double x) { return int32_t(uint32_t(__builtin_bit_cast(uint64_t, x))); }
+inline int32_t to_fixed_int(double v, int32_t max) {
+  if constexpr (kFixed16) return clamp_fixed(fixed16_bits(cvt_fixed16(v)), max);
+  return clamp_fixed(cvt_sat(v * 65536.0), max);
+}
+
 
 // run_steps(a, b, 16, curve) without branches. a, b lie in [0, 2^31 - 2^16) (the clamps),
 // so delta = b - a fits 32 bits. The walker's test, mirrored to delta >= 0 (the
@@ -194,6 +212,37 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
 // num >= 240 |pdd| iff pd >= 120 |pdd|. Then num = pd - 120 pdd lies in [0, 2 pd] < 2^32:
 // its uint32 value (arithmetic mod 2^32) is exact and d0' = num >> 4. Rejected: the linear
 // step (pd >> 4, mirrored) and dd = 0.
+#if defined(__arm__) && defined(__GNUC__) && defined(__ARM_ARCH) && __ARM_ARCH >= 7
+// ARMv7 in asm (GCC's masks and 64-bit compare cost some 25 instructions): the same test
+// with x = ssat(dd, 26): |dd| < 2^25 gives x = dd; else |x| >= 2^25 - 1 and 120 |x| >
+// 2^31 > pd rejects, as 120 |dd| does. 120 |x| < 2^32: one 32-bit mul and unsigned compare.
+// num = pd - 120 pdd is the mirror of r = delta - 120 dd (mod 2^32); the pick by condition.
+inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
+  uint32_t s, pd, x, r, res, ddo = uint32_t(dd);
+  __asm__(
+      "asr %[s], %[delta], #31\n\t"
+      "ssat %[x], #26, %[dd]\n\t"
+      "eor %[pd], %[delta], %[s]\n\t"
+      "eor %[r], %[x], %[x], asr #31\n\t"
+      "sub %[pd], %[pd], %[s]\n\t"
+      "sub %[r], %[r], %[x], asr #31\n\t"
+      "mul %[x], %[r], %[c]\n\t"
+      "mls %[r], %[dd], %[c], %[delta]\n\t"
+      "cmp %[x], %[pd]\n\t"
+      "eor %[r], %[r], %[s]\n\t"
+      "sub %[r], %[r], %[s]\n\t"
+      "itee ls\n\t"
+      "lsrls %[res], %[r], #4\n\t"
+      "lsrhi %[res], %[pd], #4\n\t"
+      "movhi %[ddo], #0\n\t"
+      "eor %[res], %[res], %[s]\n\t"
+      "sub %[res], %[res], %[s]"
+      : [s] "=&r"(s), [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [res] "=&r"(res), [ddo] "+&r"(ddo)
+      : [delta] "r"(delta), [dd] "r"(dd), [c] "r"(120u)
+      : "cc");
+  return {int32_t(res), int32_t(ddo)};
+}
+#else
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
   const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
   const uint32_t pd = (uint32_t(delta) ^ s) - s, pdd = (uint32_t(dd) ^ s) - s;
@@ -203,6 +252,7 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
   const uint32_t pick = lin ^ ((q ^ lin) & accept);  // d0' or the linear step, mirrored
   return {int32_t((pick ^ s) - s), int32_t(uint32_t(dd) & accept)};
 }
+#endif
 #endif
 
 // One 16-pixel run, straight-line: u, v stepped with their second-order terms (0 when
@@ -216,6 +266,9 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
 #endif
 #if defined(__aarch64__) || defined(__arm__)
 #define SB_SPAN_WORDS 1
+#endif
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FEATURE_DSP)
+#define SB_SPAN_SMULBT 1
 #endif
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__ && defined(SB_SPAN_WORDS)
 #error "draw16 gathers texels little-endian"
@@ -280,6 +333,22 @@ class Run16 {
 #endif
   template <int G>
   SB_INLINE void group(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
+#if defined(SB_SPAN_SMULBT)
+    // ARMv7 (few registers; the modelled Cortex-A9 issues loads out of order): each group
+    // loads its own two pixels and gathers them at once, so at most a half-word of bytes
+    // is held between groups (no spills).
+    if constexpr (G < 8) {
+      address<2 * G>(w);
+      address<2 * G + 1>(w);
+      const uint32_t b0 = texels[a_[2 * G]], b1 = texels[a_[2 * G + 1]];
+      if constexpr (G % 2 == 0) {
+        out_[0] = b0 | (b1 << 8);
+      } else {
+        const uint32_t word = uint32_t(out_[0]) | (b0 << 16) | (b1 << 24);  // little-endian
+        __builtin_memcpy(dest + 2 * G - 2, &word, 4);
+      }
+    }
+#else
     if constexpr (G < 8) {
       address<2 * G>(w);
       address<2 * G + 1>(w);
@@ -293,6 +362,7 @@ class Run16 {
       put<2 * G - 3>(dest);
     }
     if constexpr (G == 9) finish(dest);
+#endif
   }
   SB_INLINE void draw(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w) {
     draw(dest, texels, w, [](auto) {});
@@ -345,7 +415,17 @@ class Run16 {
     if constexpr (kCurve) e_[c] += dd4_;
 #else
     (void)c;
+#if defined(SB_SPAN_SMULBT)
+    // (v >> 16) w + (u >> 16) in two instructions: smulbt multiplies w's signed low half by
+    // v's signed high half, which are w and v >> 16 (the contract: 1 <= w <= 32767,
+    // 0 <= v < 2^31), exactly (< 2^30); uxtah adds the low half of u rotated by 16, u >> 16.
+    Addr t, a;
+    __asm__("smulbt %0, %1, %2" : "=r"(t) : "r"(w), "r"(v_));
+    __asm__("uxtah %0, %1, %2, ror #16" : "=r"(a) : "r"(t), "r"(u_));
+    a_[K] = a;
+#else
     a_[K] = (v_ >> 16) * w + (u_ >> 16);
+#endif
     u_ += du_;
     v_ += dv_;
     if constexpr (kCurve) {

@@ -19,6 +19,7 @@
 #endif
 
 #include "asm/kernels.h"
+#include "asm/span_persp_run.h"  // steps16_dd (internal linkage: this test's own copy)
 #include "engine/render/render_local.h"
 #include "engine/render/span_draw.h"
 #include "tests/support/quake_data.h"
@@ -164,6 +165,45 @@ TEST(AsmSpanPersp, StepQuotientWithoutDivide) {
   }
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld step quotients without a divide, %ld wrong\n", checked, wrong);
+}
+
+// asm/span_persp_run.h's full-run step test steps16_dd (ARMv7: in asm) against the walker's
+// (asm/span_walk.h) integer arithmetic for steps 16 given dd: |delta| < 2^31 - 2^16 (the
+// clamps), dd over every magnitude, the 2^25 and int32 ends among them.
+TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
+  auto walker = [](int64_t delta, int64_t dd) {
+    const int64_t linear = delta / 16, bend = dd * 120, d0 = (delta - bend) / 16;
+    const int64_t last_step = d0 + dd * 15, reach = d0 * 16 + bend;
+    const bool monotone = delta >= 0 ? (d0 >= 0 && last_step >= 0 && reach >= 0 && reach <= delta)
+                                     : (d0 <= 0 && last_step <= 0 && reach <= 0 && reach >= delta);
+    if (!monotone || d0 > INT32_MAX || d0 < INT32_MIN) return std::pair<int64_t, int64_t>{linear, 0};
+    return std::pair<int64_t, int64_t>{d0, dd};
+  };
+  std::mt19937 rng(5);
+  const int32_t kMaxDelta = INT32_MAX - 65535;
+  long checked = 0, wrong = 0;
+  auto check = [&](int32_t delta, int32_t dd) {
+    const sb::simd::RunSteps got = sb::simd::steps16_dd(delta, dd);
+    const auto want = walker(delta, dd);
+    wrong += got.d != want.first || got.dd != want.second;
+    ++checked;
+  };
+  const int32_t ends[] = {0, 1, -1, 15, -15, 16, -16, (1 << 25) - 1, -(1 << 25) + 1, 1 << 25, -(1 << 25),
+                          (1 << 25) + 1, INT32_MAX, INT32_MIN, INT32_MIN + 1, 17895697, -17895697};
+  for (int i = 0; i < 2000000; ++i) {
+    const int32_t delta = int32_t(int64_t(rng()) % (2 * int64_t(kMaxDelta) + 1) - kMaxDelta) >> (rng() % 31);
+    int32_t dd = int32_t(rng()) >> (rng() % 32);
+    if (i % 4 == 0) dd = int32_t(delta / 120 + int32_t(rng() % 5) - 2);  // next to the 120 |dd| = |delta| edge
+    if (i % 4 == 1) dd = -int32_t(delta / 120 + int32_t(rng() % 5) - 2);
+    check(delta, dd);
+  }
+  for (int32_t dd : ends) {
+    for (int32_t delta : {0, 1, -1, 120, -120, kMaxDelta, -kMaxDelta, 2013265800, -2013265800, 2013265920}) {
+      check(delta, dd);
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld full-run step tests, %ld wrong\n", checked, wrong);
 }
 
 #if defined(__aarch64__)
