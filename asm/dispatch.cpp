@@ -20,6 +20,39 @@ const Kernels kScalar = {"scalar", surface_span_scalar, surface_block_scalar, z_
 
 namespace {
 
+// In-order Arm cores (the surface block builder's neon_a53 loop is for them): Cortex-A53
+// (part 0xd03), A35 (0xd04), A55 (0xd05), A510 (0xd46), A520 (0xd80), implementer 0x41.
+bool in_order_part(unsigned implementer, unsigned part) {
+  return implementer == 0x41 && (part == 0xd03 || part == 0xd04 || part == 0xd05 || part == 0xd46 || part == 0xd80);
+}
+
+}  // namespace
+
+// Every "CPU part" line must name an in-order core (with the "CPU implementer" line before
+// it), so a big.LITTLE system keeps the out-of-order loop; no "CPU part" line (x86, an
+// emulator that hides it): false. Lines longer than the buffer are read in pieces; a piece
+// counts only at the start of a line.
+bool cpuinfo_in_order(std::FILE* f) {
+  char line[256];
+  unsigned implementer = 0;
+  int parts = 0;
+  bool all = true, at_start = true;
+  while (std::fgets(line, sizeof line, f)) {
+    const bool start = at_start;
+    at_start = std::strchr(line, '\n') != nullptr;
+    const char* colon = std::strchr(line, ':');
+    if (!start || !colon) continue;
+    if (std::strncmp(line, "CPU implementer", 15) == 0) implementer = unsigned(std::strtoul(colon + 1, nullptr, 0));
+    if (std::strncmp(line, "CPU part", 8) == 0) {
+      ++parts;
+      all = all && in_order_part(implementer, unsigned(std::strtoul(colon + 1, nullptr, 0)));
+    }
+  }
+  return parts > 0 && all;
+}
+
+namespace {
+
 #if defined(SB_SIMD_X86)
 bool cpu_has_avx2() {
   __builtin_cpu_init();
@@ -28,34 +61,15 @@ bool cpu_has_avx2() {
 #endif
 
 #if defined(SB_SIMD_NEON_INORDER)
-// In-order Arm cores (the surface block builder's neon_a53 loop is for them): Cortex-A53
-// (part 0xd03), A35 (0xd04), A55 (0xd05), A510 (0xd46), A520 (0xd80), implementer 0x41.
-bool in_order_part(unsigned implementer, unsigned part) {
-  return implementer == 0x41 && (part == 0xd03 || part == 0xd04 || part == 0xd05 || part == 0xd46 || part == 0xd80);
-}
-
-// Every "CPU part" of /proc/cpuinfo (Linux) must be an in-order one, so a big.LITTLE system
-// keeps the out-of-order loop. Read with the standard library only (no OS header in asm/;
-// MIDR_EL1 would need getauxval's HWCAP_CPUID first). Unknown or unreadable: false.
+// On Linux, /proc/cpuinfo read through cpuinfo_in_order (no OS header in asm/; MIDR_EL1
+// would need getauxval's HWCAP_CPUID first). Unreadable: false.
 bool cpu_in_order() {
 #if defined(__linux__)
   std::FILE* f = std::fopen("/proc/cpuinfo", "r");
   if (!f) return false;
-  char line[256];
-  unsigned implementer = 0;
-  int parts = 0;
-  bool all = true;
-  while (std::fgets(line, sizeof line, f)) {
-    const char* colon = std::strchr(line, ':');
-    if (!colon) continue;
-    if (std::strncmp(line, "CPU implementer", 15) == 0) implementer = unsigned(std::strtoul(colon + 1, nullptr, 0));
-    if (std::strncmp(line, "CPU part", 8) == 0) {
-      ++parts;
-      all = all && in_order_part(implementer, unsigned(std::strtoul(colon + 1, nullptr, 0)));
-    }
-  }
+  const bool r = cpuinfo_in_order(f);
   std::fclose(f);
-  return parts > 0 && all;
+  return r;
 #else
   return false;
 #endif

@@ -3,6 +3,7 @@
 // compiles its code (see asm/CMakeLists.txt); a missing kernel falls back to the scalar one.
 #pragma once
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 #include "asm/kernels.h"
@@ -28,6 +29,11 @@ extern const Kernels kNeon;
 extern const Kernels kNeonInOrder;  // "neon_a53": the block builder's row loop for in-order cores
 #endif
 #endif
+
+// Reads a Linux /proc/cpuinfo text from f (not closed): true iff it names at least one core
+// ("CPU part") and every one is an in-order Arm core (Cortex-A53, A35, A55, A510, A520),
+// where asm/dispatch.cpp picks neon_a53 for the block builder. Compiled on every target.
+bool cpuinfo_in_order(std::FILE* f);
 
 // Positive modulo (n > 0).
 inline int wrap(int i, int n) {
