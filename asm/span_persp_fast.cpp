@@ -494,13 +494,15 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       if constexpr (G == 0) {
         const Sample t = sample(pos2, z2);
         s2 = steps > 0 ? t : s1;
-      } else if constexpr (G == 4 && kCurve) {
+      } else if constexpr (G == 4) {
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
       } else if constexpr (G == 9 && kCurve) {
         last_steps_q(steps, du, dv, qu, qv, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
       } else if constexpr (G == 9) {
-        run_steps_uv(steps, s1, s2, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+        // Linear: run_steps' delta / steps truncated is trunc(qu) (see last_steps_q); a
+        // one-pixel last run (steps 0) has s2 = s1, delta 0: steps 0, as run_steps gives.
+        lu = RunSteps{int32_t(qu), 0}, lv = RunSteps{int32_t(qv), 0};
       }
     });
     dest += 16;

@@ -216,31 +216,32 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
 // ARMv7 in asm (GCC's masks and 64-bit compare cost some 25 instructions): the same test
 // with x = ssat(dd, 26): |dd| < 2^25 gives x = dd; else |x| >= 2^25 - 1 and 120 |x| >
 // 2^31 > pd rejects, as 120 |dd| does. 120 |x| < 2^32: one 32-bit mul and unsigned compare.
-// num = pd - 120 pdd is the mirror of r = delta - 120 dd (mod 2^32); the pick by condition.
+// num = pd - 120 pdd, the mirror (x ^ s) - s of r = delta - 120 dd (mod 2^32), is exact in
+// uint32 when accepted ([0, 2 pd]); rejected, num = pd (and dd = 0) by condition; then
+// d = mirror(num >> 4): d0' mirrored, or the linear step pd >> 4 mirrored.
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
-  uint32_t s, pd, x, r, res, ddo = uint32_t(dd);
+  uint32_t pd, x, r, ax, ddo = uint32_t(dd);
   __asm__(
-      "asr %[s], %[delta], #31\n\t"
+      "eor %[pd], %[delta], %[delta], asr #31\n\t"
       "ssat %[x], #26, %[dd]\n\t"
-      "eor %[pd], %[delta], %[s]\n\t"
-      "eor %[r], %[x], %[x], asr #31\n\t"
-      "sub %[pd], %[pd], %[s]\n\t"
-      "sub %[r], %[r], %[x], asr #31\n\t"
-      "mul %[x], %[r], %[c]\n\t"
       "mls %[r], %[dd], %[c], %[delta]\n\t"
+      "sub %[pd], %[pd], %[delta], asr #31\n\t"
+      "eor %[ax], %[x], %[x], asr #31\n\t"
+      "sub %[ax], %[ax], %[x], asr #31\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "mul %[x], %[ax], %[c]\n\t"
+      "sub %[r], %[r], %[delta], asr #31\n\t"
       "cmp %[x], %[pd]\n\t"
-      "eor %[r], %[r], %[s]\n\t"
-      "sub %[r], %[r], %[s]\n\t"
-      "itee ls\n\t"
-      "lsrls %[res], %[r], #4\n\t"
-      "lsrhi %[res], %[pd], #4\n\t"
+      "itt hi\n\t"
+      "movhi %[r], %[pd]\n\t"
       "movhi %[ddo], #0\n\t"
-      "eor %[res], %[res], %[s]\n\t"
-      "sub %[res], %[res], %[s]"
-      : [s] "=&r"(s), [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [res] "=&r"(res), [ddo] "+&r"(ddo)
+      "lsr %[r], %[r], #4\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "sub %[r], %[r], %[delta], asr #31"
+      : [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [ax] "=&r"(ax), [ddo] "+&r"(ddo)
       : [delta] "r"(delta), [dd] "r"(dd), [c] "r"(120u)
       : "cc");
-  return {int32_t(res), int32_t(ddo)};
+  return {int32_t(r), int32_t(ddo)};
 }
 #else
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
