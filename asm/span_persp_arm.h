@@ -263,6 +263,19 @@ SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t 
   const uint32_t d = ((d0 ^ sg) - sg) & accept;
   return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
 }
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__)
+// ARMv7: keeps a value computed where it is written (an empty volatile asm that takes it),
+// so that the compiler does not sink a divide or conversion to its use, where the
+// modelled Cortex-A9's in-order FP pipe would wait for it (as pin above, for aarch64).
+template <class T>
+SB_INLINE void pin7(T& x) {
+  if constexpr (std::is_integral_v<T>) {
+    __asm__ volatile("" : "+r"(x));
+  } else {
+    __asm__ volatile("" : "+w"(x));
+  }
+}
+#endif
 #if !defined(__aarch64__)
 // The quotients double(delta) / max(steps, 1), as last_steps takes them (ARMv7: the tail
 // issues them early, beside the run before the last).

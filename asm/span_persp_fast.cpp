@@ -494,9 +494,10 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       if constexpr (G == 0) {
         const Sample t = sample(pos2, z2);
         s2 = steps > 0 ? t : s1;
-      } else if constexpr (G == 4) {
+      } else if constexpr (G == 1) {
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
+        pin7(qu), pin7(qv);
       } else if constexpr (G == 9 && kCurve) {
         last_steps_q(steps, du, dv, qu, qv, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
       } else if constexpr (G == 9) {
