@@ -292,6 +292,23 @@ SB_INLINE void last_steps_q(int steps, int32_t du, int32_t dv, double qu, double
   *su = last_dd(du, lu, du2 & int32_t(two), s, T);
   *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
 }
+// last_steps_q in two parts, for stage slots (ARMv7 tails): the conversion of
+// ddf = -2 (q curve) (last_ddi) and the integer rest (last_steps_i). The range test
+// -1e9 < ddf < 1e9 on the converted i = cvt_sat(ddf) instead (no vcmpe / vmrs): |ddf| < 1e9
+// iff |i| < 1e9 (trunc keeps |ddf| < 1e9 below 1e9 and 1e9 and more at 1e9 or more, or
+// saturated), i = 0 for NaN, and dd = 0 gives last_dd's linear result as a rejection does
+// (T 0 <= pd accepts, m = 0, d0 = Q). (AsmSpanPersp.LastRunStepsMatchTheWalker checks it.)
+SB_INLINE int32_t last_ddi(double q, double curve) {
+  const int32_t i = cvt_sat(-2.0 * (q * curve));
+  return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0;
+}
+SB_INLINE void last_steps_i(int steps, int32_t du, int32_t dv, int32_t lu, int32_t lv, int32_t iu, int32_t iv,
+                            RunSteps* su, RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+  *su = last_dd(du, lu, iu & int32_t(two), s, T);
+  *sv = last_dd(dv, lv, iv & int32_t(two), s, T);
+}
 #endif
 #if defined(__aarch64__)
 // du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as doubles [du, dv].

@@ -487,8 +487,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     RunSteps lu, lv;
     Sample s2 = s1;
     Run16<kCurve> run(s0.u, s0.v, su, sv);
-    int32_t du = 0, dv = 0;
-    double qu = 0.0, qv = 0.0;
+    int32_t du = 0, dv = 0, iu = 0, iv = 0, lu0 = 0, lv0 = 0;
+    double qu = 0.0, qv = 0.0, curve = 0.0;
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
@@ -498,8 +498,13 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
         pin7(qu), pin7(qv);
+        if constexpr (kCurve) curve = zc * 0.5 * (s1.z + s2.z), pin7(curve);
+      } else if constexpr (G == 7 && kCurve) {
+        iu = last_ddi(qu, curve), iv = last_ddi(qv, curve);
+        lu0 = int32_t(qu), lv0 = int32_t(qv);
+        pin7(iu), pin7(iv), pin7(lu0), pin7(lv0);
       } else if constexpr (G == 9 && kCurve) {
-        last_steps_q(steps, du, dv, qu, qv, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+        last_steps_i(steps, du, dv, lu0, lv0, iu, iv, &lu, &lv);
       } else if constexpr (G == 9) {
         // Linear: run_steps' delta / steps truncated is trunc(qu) (see last_steps_q); a
         // one-pixel last run (steps 0) has s2 = s1, delta 0: steps 0, as run_steps gives.

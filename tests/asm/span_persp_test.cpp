@@ -20,6 +20,9 @@
 
 #include "asm/kernels.h"
 #include "asm/span_persp_run.h"  // steps16_dd (internal linkage: this test's own copy)
+#if !defined(__aarch64__)
+#include "asm/span_persp_arm.h"  // last_ddi, last_steps_i (the ARMv7 tails' parts; portable C++)
+#endif
 #include "engine/render/render_local.h"
 #include "engine/render/span_draw.h"
 #include "tests/support/quake_data.h"
@@ -205,6 +208,47 @@ TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld full-run step tests, %ld wrong\n", checked, wrong);
 }
+
+#if !defined(__aarch64__)
+// asm/span_persp_arm.h's last-run steps as the ARMv7 tails take them in two parts
+// (last_ddi: ddf converted, its range test in integers; last_steps_i) against the walker's
+// run_steps (asm/span_walk.h) for steps 1 .. 15: clamped ends, curves of every magnitude
+// (ddf near the +-1e9 range ends, 0, NaN, infinite).
+TEST(AsmSpanPersp, LastRunStepsMatchTheWalker) {
+  std::mt19937 rng(11);
+  const int32_t kMax = INT32_MAX - 65535;
+  long checked = 0, wrong = 0;
+  auto check = [&](int32_t a, int32_t b, int steps, double curve) {
+    const sb::simd::RunSteps want = sb::simd::span_walk::run_steps(a, b, steps, curve);
+    const int32_t delta = b - a;
+    const double q = sb::simd::last_quotient(steps, delta);
+    const int32_t ddi = sb::simd::last_ddi(q, curve);
+    sb::simd::RunSteps got, other;
+    sb::simd::last_steps_i(steps, delta, 0, int32_t(q), 0, ddi, 0, &got, &other);
+    wrong += got.d != want.d || got.dd != want.dd;
+    ++checked;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 400000; ++i) {
+    const int steps = 1 + int(rng() % 15);
+    const int32_t a = int32_t(rng() % uint32_t(kMax)), b = int32_t(rng() % uint32_t(kMax)) >> (rng() % 31);
+    const double q = double(b - a) / steps;
+    double curve = std::ldexp(double(int32_t(rng())) / 2147483648.0, -int(rng() % 40));
+    if (i % 3 == 0 && q != 0.0) curve = -5e8 / q * (1.0 + (double(int(rng() % 2001)) - 1000.0) * 1e-12);
+    if (i % 3 == 1 && q != 0.0) curve = 5e8 / q * (1.0 + (double(int(rng() % 2001)) - 1000.0) * 1e-12);
+    check(a, b, steps, curve);
+  }
+  for (int steps = 1; steps <= 15; ++steps) {
+    for (double curve : {0.0, -0.0, nan, inf, -inf, 1e-300, 1e300}) {
+      for (int32_t a : {0, 1, kMax}) {
+        for (int32_t b : {0, 1, 7, kMax, kMax - 1}) check(a, b, steps, curve);
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld last-run step tests, %ld wrong\n", checked, wrong);
+}
+#endif
 
 #if defined(__aarch64__)
 // asm/span_persp_arm.h's short-span reciprocal (aarch64): y0 = frecpe(b), two steps
