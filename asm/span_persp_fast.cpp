@@ -44,11 +44,15 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // branch-free (one block per pass).
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double umaxd = double(p.umax), vmaxd = double(p.vmax);
-  const int32_t umax = p.umax, vmax = p.vmax;
   const double zc = p.second_order ? zix : 0.0;
   const uint32_t w = uint32_t(width);
+  const double kUmax = bound16(p.umax), kVmax = bound16(p.vmax);
   auto sample = [&](double px, double z) {
-    if constexpr (kIntClamp) {
+    if constexpr (kFixed16) {  // armhf: to_fixed in the VFP/NEON registers (see min_ufixed16)
+      const double qu = min_ufixed16(cvt_ufixed16((urow + ux * px) * z), kUmax);
+      const double qv = min_ufixed16(cvt_ufixed16((vrow + vx * px) * z), kVmax);
+      return Sample{fixed16_bits(qu), fixed16_bits(qv), z};
+    } else if constexpr (kIntClamp) {
       return Sample{to_fixed_int((urow + ux * px) * z, p.umax), to_fixed_int((vrow + vx * px) * z, p.vmax), z};
     } else {
       return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
@@ -373,8 +377,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         sum1 = s1.z + z2, sum2 = z2 + z3;
         zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
       } else if constexpr (G == 1) {
-        if constexpr (kFixed16) {  // armhf: trunc(q 2^16) in place (see cvt_fixed16)
-          qu2 = cvt_fixed16(qu2), qv2 = cvt_fixed16(qv2), qu3 = cvt_fixed16(qu3), qv3 = cvt_fixed16(qv3);
+        if constexpr (kFixed16) {  // armhf: usat32(trunc(q 2^16)) in place (see min_ufixed16)
+          qu2 = cvt_ufixed16(qu2), qv2 = cvt_ufixed16(qv2), qu3 = cvt_ufixed16(qu3), qv3 = cvt_ufixed16(qv3);
         } else {
           qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
         }
@@ -384,14 +388,16 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
           qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
         }
       } else if constexpr (G == 3) {
-        if constexpr (!kFixed16) {
+        if constexpr (kFixed16) {
+          qu2 = min_ufixed16(qu2, kUmax), qv2 = min_ufixed16(qv2, kVmax);
+          qu3 = min_ufixed16(qu3, kUmax), qv3 = min_ufixed16(qv3, kVmax);
+        } else {
           qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
         }
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
-        if constexpr (kFixed16) {  // to_fixed_int's clamps on the converted values
-          s2u = clamp_fixed(fixed16_bits(qu2), umax), s2v = clamp_fixed(fixed16_bits(qv2), vmax);
-          s3u = clamp_fixed(fixed16_bits(qu3), umax), s3v = clamp_fixed(fixed16_bits(qv3), vmax);
+        if constexpr (kFixed16) {  // the clamped values' bits
+          s2u = fixed16_bits(qu2), s2v = fixed16_bits(qv2), s3u = fixed16_bits(qu3), s3v = fixed16_bits(qv3);
         } else {
           s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
         }

@@ -160,9 +160,27 @@ inline double cvt_fixed16(double q) {
   __asm__("vcvt.s32.f64 %P0, %P0, #16" : "+w"(q));
   return q;
 }
+// The same clamp without leaving the VFP/NEON register: x = usat32(trunc(q 2^16))
+// (vcvt.u32.f64 in place: negatives and NaN -> 0), then min(x, m) unsigned by vmin.u32 on
+// the low lane, kmax holding m in its low 32 bits (bound16). Equal to to_fixed: NaN and
+// q 2^16 <= 0 give 0 (trunc of (-1, 0] is 0, below saturates to 0); q 2^16 > m (an
+// integer) gives x >= m -> m; else 0 < q 2^16 <= m and trunc fits. The result in the low
+// 32 bits (fixed16_bits).
+inline double cvt_ufixed16(double q) {
+  __asm__("vcvt.u32.f64 %P0, %P0, #16" : "+w"(q));
+  return q;
+}
+inline double min_ufixed16(double x, double kmax) {
+  __asm__("vmin.u32 %P0, %P0, %P1" : "+w"(x) : "w"(kmax));
+  return x;
+}
+inline double bound16(int32_t m) { return __builtin_bit_cast(double, uint64_t(uint32_t(m))); }
 #else
 constexpr bool kFixed16 = false;
 inline double cvt_fixed16(double q) { return q; }
+inline double cvt_ufixed16(double q) { return q; }
+inline double min_ufixed16(double x, double) { return x; }
+inline double bound16(int32_t) { return 0.0; }
 #endif
 inline int32_t fixed16_bits(double x) { return int32_t(uint32_t(__builtin_bit_cast(uint64_t, x))); }
 inline int32_t to_fixed_int(double v, int32_t max) {

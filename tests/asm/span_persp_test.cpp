@@ -209,6 +209,38 @@ TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
   std::printf("[ asm      ] span_persp: %ld full-run step tests, %ld wrong\n", checked, wrong);
 }
 
+// asm/span_persp_run.h's ARMv7 to_fixed in the VFP/NEON registers (vcvt.u32.f64 #16, then
+// vmin.u32 against the bound) against the walker's to_fixed: zero, negatives, (-1, 0] and
+// (0, 1) after scaling, the bound's neighbourhood, huge, infinite and NaN values.
+TEST(AsmSpanPersp, FixedPointClampMatchesTheWalker) {
+  if constexpr (!sb::simd::kFixed16) GTEST_SKIP() << "ARMv7 only";
+  std::mt19937 rng(13);
+  long checked = 0, wrong = 0;
+  auto check = [&](double q, int32_t m) {
+    const int32_t want = sb::simd::span_walk::to_fixed(q, m);
+    const int32_t got =
+        sb::simd::fixed16_bits(sb::simd::min_ufixed16(sb::simd::cvt_ufixed16(q), sb::simd::bound16(m)));
+    wrong += got != want;
+    ++checked;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int32_t m : {0, 1, 65535, 65536, (1 << 24) - 1, INT32_MAX - 65535, INT32_MAX}) {
+    const double mq = double(m) / 65536.0;
+    for (double q : {0.0, -0.0, 1e-300, -1e-300, 0.5 / 65536, -0.5 / 65536, 1.0 / 65536, -1.0 / 65536, mq,
+                     std::nextafter(mq, 0.0), std::nextafter(mq, 1e300), mq + 1.0 / 65536, mq - 1.0 / 65536,
+                     65536.0, 32768.0, 1e10, -1e10, 1e300, -1e300, inf, -inf, nan, -nan}) {
+      check(q, m);
+    }
+  }
+  for (int i = 0; i < 300000; ++i) {
+    const int32_t m = int32_t(rng() >> 1) >> (rng() % 31);
+    const double q = std::ldexp(double(int32_t(rng())), -int(rng() % 60));
+    check(q, m);
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld fixed-point clamps, %ld wrong\n", checked, wrong);
+}
+
 #if !defined(__aarch64__)
 // asm/span_persp_arm.h's last-run steps as the ARMv7 tails take them in two parts
 // (last_ddi: ddf converted, its range test in integers; last_steps_i) against the walker's
