@@ -412,7 +412,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       } else if constexpr (G == 7) {
         if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
       } else if constexpr (G == 8) {
-        if constexpr (kCurve) u1 = steps16_dd(s2u - s1.u, iu1), v1 = steps16_dd(s2v - s1.v, iv1);
+        if constexpr (kCurve) steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
       } else if constexpr (G == 9) {
         if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
       }
@@ -429,7 +429,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       } else if constexpr (G == 5) {
         if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
       } else if constexpr (G == 8) {
-        if constexpr (kCurve) u2 = steps16_dd(s3u - s2u, iu2), v2 = steps16_dd(s3v - s2v, iv2);
+        if constexpr (kCurve) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }

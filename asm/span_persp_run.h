@@ -261,6 +261,51 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
       : "cc");
   return {int32_t(r), int32_t(ddo)};
 }
+// The same in two asm statements (part 1: pd, 120 |x|, the mirrored r; part 2: the test
+// and the pick), so that steps16_dd_uv interleaves the u and v chains.
+inline __attribute__((always_inline)) void steps16_part1(int32_t delta, int32_t dd, uint32_t& pd_, uint32_t& x_,
+                                                          uint32_t& r_) {
+  uint32_t pd, x, r, ax;
+  __asm__(
+      "eor %[pd], %[delta], %[delta], asr #31\n\t"
+      "ssat %[x], #26, %[dd]\n\t"
+      "mls %[r], %[dd], %[c], %[delta]\n\t"
+      "sub %[pd], %[pd], %[delta], asr #31\n\t"
+      "eor %[ax], %[x], %[x], asr #31\n\t"
+      "sub %[ax], %[ax], %[x], asr #31\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "mul %[x], %[ax], %[c]\n\t"
+      "sub %[r], %[r], %[delta], asr #31"
+      : [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [ax] "=&r"(ax)
+      : [delta] "r"(delta), [dd] "r"(dd), [c] "r"(120u));
+  pd_ = pd, x_ = x, r_ = r;
+}
+inline __attribute__((always_inline)) RunSteps steps16_part2(int32_t delta, int32_t dd, uint32_t pd, uint32_t x,
+                                                             uint32_t r) {
+  uint32_t ddo = uint32_t(dd);
+  __asm__(
+      "cmp %[x], %[pd]\n\t"
+      "itt hi\n\t"
+      "movhi %[r], %[pd]\n\t"
+      "movhi %[ddo], #0\n\t"
+      "lsr %[r], %[r], #4\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "sub %[r], %[r], %[delta], asr #31"
+      : [r] "+&r"(r), [ddo] "+&r"(ddo)
+      : [x] "r"(x), [pd] "r"(pd), [delta] "r"(delta)
+      : "cc");
+  return {int32_t(r), int32_t(ddo)};
+}
+// u and v, the two chains interleaved (in-order cores wait on each step of one chain).
+inline __attribute__((always_inline)) void steps16_dd_uv(int32_t du, int32_t iu, int32_t dv, int32_t iv, RunSteps* su,
+                                                         RunSteps* sv) {
+  uint32_t pu, xu, ru, pv, xv, rv;
+  steps16_part1(du, iu, pu, xu, ru);
+  steps16_part1(dv, iv, pv, xv, rv);
+  *su = steps16_part2(du, iu, pu, xu, ru);
+  *sv = steps16_part2(dv, iv, pv, xv, rv);
+}
+#define SB_STEPS16_UV 1
 #else
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
   const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
@@ -302,6 +347,12 @@ inline RunSteps steps16(int32_t a, int32_t b, double curve) {
     return {(b - a) / 16, 0};  // |b - a| < 2^31 (the clamps)
   }
 }
+#if !defined(SB_STEPS16_UV)
+inline void steps16_dd_uv(int32_t du, int32_t iu, int32_t dv, int32_t iv, RunSteps* su, RunSteps* sv) {
+  *su = steps16_dd(du, iu);
+  *sv = steps16_dd(dv, iv);
+}
+#endif
 
 #define SB_INLINE inline __attribute__((always_inline))
 #define SB_LAMBDA_INLINE __attribute__((always_inline))

@@ -189,6 +189,12 @@ TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
     const sb::simd::RunSteps got = sb::simd::steps16_dd(delta, dd);
     const auto want = walker(delta, dd);
     wrong += got.d != want.first || got.dd != want.second;
+    // The u, v pair form (ARMv7: its own asm, the chains interleaved), with a second pair.
+    const int32_t delta2 = -delta, dd2 = dd ^ 5;
+    sb::simd::RunSteps a, b;
+    sb::simd::steps16_dd_uv(delta, dd, delta2, dd2, &a, &b);
+    const auto want2 = walker(delta2, dd2);
+    wrong += a.d != want.first || a.dd != want.second || b.d != want2.first || b.dd != want2.second;
     ++checked;
   };
   const int32_t ends[] = {0, 1, -1, 15, -15, 16, -16, (1 << 25) - 1, -(1 << 25) + 1, 1 << 25, -(1 << 25),
