@@ -92,10 +92,21 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
 #else
   constexpr bool kDivFirst = false;
 #endif
-  recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
   Sample s0, s1;
-  if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
+#if defined(__arm__) && !defined(__aarch64__)
+  if (n > 32) {  // ARMv7: the four clamps branch-free, the four divides back to back
+    pos2 = P + double(32);
+    pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
+    const double zi0 = max_or_lo_sel(zrow + zix * P, kMinZi), zi1 = max_or_lo_sel(zrow + zix * (P + double(16)), kMinZi);
+    const double zi2 = max_or_lo_sel(zrow + zix * pos2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * pos3, kMinZi);
+    z0 = 1.0 / zi0, z1 = 1.0 / zi1, z2 = 1.0 / zi2, z3 = 1.0 / zi3;
+    s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  } else
+#endif
+  {
+  recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
+  if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
     pos2 = P + double(32);
     pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
@@ -105,8 +116,28 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
   if constexpr (kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  }
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__)
+  RunSteps su, sv;
+  if constexpr (kCurve) {
+    // ARMv7: steps16_sel for u and v with ddf = delta (zck (z_0 + z_1)), zck = zc * -1/16,
+    // the same bits (see the loop below: one multiply after the conversion, not three), the
+    // two chains interleaved step by step (pinned: the modelled Cortex-A9's in-order FP
+    // pipe would wait on each step of one chain).
+    const double c0 = (zc * -0.0625) * (s0.z + s1.z);
+    const int32_t du = s1.u - s0.u, dv = s1.v - s0.v;
+    double fu = double(du), fv = double(dv);
+    pin7(fu), pin7(fv);
+    fu = fu * c0, fv = fv * c0;
+    pin7(fu), pin7(fv);
+    steps16_dd_uv(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
+  } else {
+    su = steps16<kCurve>(s0.u, s1.u, 0.0), sv = steps16<kCurve>(s0.v, s1.v, 0.0);
+  }
+#else
   RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
   RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+#endif
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
   // over 16 pixels): left > 48. Samples r + 4 and r + 5 are then at o_{r+4} - o_{r+2} =
   // min(32, left - 33) and o_{r+5} - o_{r+3} = min(32, left - 49) past P_{r+2}, P_{r+3}.

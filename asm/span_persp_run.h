@@ -528,6 +528,16 @@ SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels
   run.draw(dest, texels, w);
 }
 
+// ARMv7: max_or_lo without a branch (vcmpe, vmrs, a conditional vmov: le is x <= lo or
+// unordered, NaN -> lo), for the long spans' first divides.
+inline double max_or_lo_sel(double x, double lo) {
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+  __asm__("vcmpe.f64 %P0, %P1\n\tvmrs APSR_nzcv, fpscr\n\tit le\n\tvmovle.f64 %P0, %P1" : "+w"(x) : "w"(lo) : "cc");
+  return x;
+#else
+  return max_or_lo(x, lo);
+#endif
+}
 // 1 / max(zi, kMinZi) for two samples (NaN -> kMinZi). aarch64: one vector divide (on
 // Cortex-A53 it costs what one scalar divide costs); elsewhere two.
 inline void recip2(double zia, double zib, double* za, double* zb) {

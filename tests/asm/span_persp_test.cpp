@@ -215,6 +215,21 @@ TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
   std::printf("[ asm      ] span_persp: %ld full-run step tests, %ld wrong\n", checked, wrong);
 }
 
+// asm/span_persp_run.h's branch-free depth clamp (ARMv7: vcmpe, vmrs, a conditional vmov)
+// against max(zi, kMinZi) with NaN -> kMinZi, as the walker clamps 1/z.
+TEST(AsmSpanPersp, DepthClampWithoutBranchMatches) {
+  const double k = sb::simd::span_walk::kMinZi, nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  long wrong = 0;
+  for (double zi : {0.0, -0.0, k, std::nextafter(k, 0.0), std::nextafter(k, 1.0), -k, 1.0, -1.0, 1e300, -1e300, inf,
+                    -inf, nan, -nan, 5e-324, 0.25, 123456.75}) {
+    const double want = zi > k ? zi : k;
+    const double got = sb::simd::max_or_lo_sel(zi, k);
+    wrong += std::memcmp(&want, &got, sizeof got) != 0;
+  }
+  EXPECT_EQ(wrong, 0);
+}
+
 // asm/span_persp_run.h's ARMv7 to_fixed in the VFP/NEON registers (vcvt.u32.f64 #16, then
 // vmin.u32 against the bound) against the walker's to_fixed: zero, negatives, (-1, 0] and
 // (0, 1) after scaling, the bound's neighbourhood, huge, infinite and NaN values.
