@@ -30,10 +30,17 @@ void surface_span_fast(uint8_t* dest, int n, const uint8_t* texels, int width, i
 
 namespace {
 
+// ARMv7: persp_fast inlined into surface_span_persp_fast (one function entry per span).
+#if defined(__arm__) && !defined(__aarch64__)
+#define SB_V7_INLINE inline __attribute__((always_inline))
+#else
+#define SB_V7_INLINE
+#endif
+
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
 // row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
 template <bool kCurve>
-void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
   // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
