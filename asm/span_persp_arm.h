@@ -263,6 +263,19 @@ SB_INLINE RunSteps last_dd(int32_t delta, int32_t linear, int32_t ddi, uint32_t 
   const uint32_t d = ((d0 ^ sg) - sg) & accept;
   return RunSteps{int32_t(d | (uint32_t(linear) & ~accept)), int32_t(uint32_t(ddi) & accept)};
 }
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__)
+// ARMv7: keeps a value computed where it is written (an empty volatile asm that takes it),
+// so that the compiler does not sink a divide or conversion to its use, where the
+// modelled Cortex-A9's in-order FP pipe would wait for it (as pin above, for aarch64).
+template <class T>
+SB_INLINE void pin7(T& x) {
+  if constexpr (std::is_integral_v<T>) {
+    __asm__ volatile("" : "+r"(x));
+  } else {
+    __asm__ volatile("" : "+w"(x));
+  }
+}
+#endif
 #if !defined(__aarch64__)
 // The quotients double(delta) / max(steps, 1), as last_steps takes them (ARMv7: the tail
 // issues them early, beside the run before the last).
@@ -278,6 +291,23 @@ SB_INLINE void last_steps_q(int steps, int32_t du, int32_t dv, double qu, double
   const int32_t du2 = cvt_sat(fu) & -int32_t(fu > -1e9 && fu < 1e9), dv2 = cvt_sat(fv) & -int32_t(fv > -1e9 && fv < 1e9);
   *su = last_dd(du, lu, du2 & int32_t(two), s, T);
   *sv = last_dd(dv, lv, dv2 & int32_t(two), s, T);
+}
+// last_steps_q in two parts, for stage slots (ARMv7 tails): the conversion of
+// ddf = -2 (q curve) (last_ddi) and the integer rest (last_steps_i). The range test
+// -1e9 < ddf < 1e9 on the converted i = cvt_sat(ddf) instead (no vcmpe / vmrs): |ddf| < 1e9
+// iff |i| < 1e9 (trunc keeps |ddf| < 1e9 below 1e9 and 1e9 and more at 1e9 or more, or
+// saturated), i = 0 for NaN, and dd = 0 gives last_dd's linear result as a rejection does
+// (T 0 <= pd accepts, m = 0, d0 = Q). (AsmSpanPersp.LastRunStepsMatchTheWalker checks it.)
+SB_INLINE int32_t last_ddi(double q, double curve) {
+  const int32_t i = cvt_sat(-2.0 * (q * curve));
+  return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0;
+}
+SB_INLINE void last_steps_i(int steps, int32_t du, int32_t dv, int32_t lu, int32_t lv, int32_t iu, int32_t iv,
+                            RunSteps* su, RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
+  *su = last_dd(du, lu, iu & int32_t(two), s, T);
+  *sv = last_dd(dv, lv, iv & int32_t(two), s, T);
 }
 #endif
 #if defined(__aarch64__)

@@ -30,10 +30,17 @@ void surface_span_fast(uint8_t* dest, int n, const uint8_t* texels, int width, i
 
 namespace {
 
+// ARMv7: persp_fast inlined into surface_span_persp_fast (one function entry per span).
+#if defined(__arm__) && !defined(__aarch64__)
+#define SB_V7_INLINE inline __attribute__((always_inline))
+#else
+#define SB_V7_INLINE
+#endif
+
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
 // row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
 template <bool kCurve>
-void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
   // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
@@ -44,11 +51,15 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
   // branch-free (one block per pass).
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double umaxd = double(p.umax), vmaxd = double(p.vmax);
-  const int32_t umax = p.umax, vmax = p.vmax;
   const double zc = p.second_order ? zix : 0.0;
   const uint32_t w = uint32_t(width);
+  const double kUmax = bound16(p.umax), kVmax = bound16(p.vmax);
   auto sample = [&](double px, double z) {
-    if constexpr (kIntClamp) {
+    if constexpr (kFixed16) {  // armhf: to_fixed in the VFP/NEON registers (see min_ufixed16)
+      const double qu = min_ufixed16(cvt_ufixed16((urow + ux * px) * z), kUmax);
+      const double qv = min_ufixed16(cvt_ufixed16((vrow + vx * px) * z), kVmax);
+      return Sample{fixed16_bits(qu), fixed16_bits(qv), z};
+    } else if constexpr (kIntClamp) {
       return Sample{to_fixed_int((urow + ux * px) * z, p.umax), to_fixed_int((vrow + vx * px) * z, p.vmax), z};
     } else {
       return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
@@ -88,10 +99,21 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
 #else
   constexpr bool kDivFirst = false;
 #endif
-  recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
   Sample s0, s1;
-  if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   double pos2, pos3 = 0.0;
+#if defined(__arm__) && !defined(__aarch64__)
+  if (n > 32) {  // ARMv7: the four clamps branch-free, the four divides back to back
+    pos2 = P + double(32);
+    pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
+    const double zi0 = max_or_lo_sel(zrow + zix * P, kMinZi), zi1 = max_or_lo_sel(zrow + zix * (P + double(16)), kMinZi);
+    const double zi2 = max_or_lo_sel(zrow + zix * pos2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * pos3, kMinZi);
+    z0 = 1.0 / zi0, z1 = 1.0 / zi1, z2 = 1.0 / zi2, z3 = 1.0 / zi3;
+    s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  } else
+#endif
+  {
+  recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
+  if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
   if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
     pos2 = P + double(32);
     pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
@@ -101,8 +123,28 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
   if constexpr (kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+  }
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__)
+  RunSteps su, sv;
+  if constexpr (kCurve) {
+    // ARMv7: steps16_sel for u and v with ddf = delta (zck (z_0 + z_1)), zck = zc * -1/16,
+    // the same bits (see the loop below: one multiply after the conversion, not three), the
+    // two chains interleaved step by step (pinned: the modelled Cortex-A9's in-order FP
+    // pipe would wait on each step of one chain).
+    const double c0 = (zc * -0.0625) * (s0.z + s1.z);
+    const int32_t du = s1.u - s0.u, dv = s1.v - s0.v;
+    double fu = double(du), fv = double(dv);
+    pin7(fu), pin7(fv);
+    fu = fu * c0, fv = fv * c0;
+    pin7(fu), pin7(fv);
+    steps16_dd_uv(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
+  } else {
+    su = steps16<kCurve>(s0.u, s1.u, 0.0), sv = steps16<kCurve>(s0.v, s1.v, 0.0);
+  }
+#else
   RunSteps su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
   RunSteps sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+#endif
   // Two runs per pass while runs r + 1 and r + 2 are full and not the last (their steps are
   // over 16 pixels): left > 48. Samples r + 4 and r + 5 are then at o_{r+4} - o_{r+2} =
   // min(32, left - 33) and o_{r+5} - o_{r+3} = min(32, left - 49) past P_{r+2}, P_{r+3}.
@@ -373,8 +415,8 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
         sum1 = s1.z + z2, sum2 = z2 + z3;
         zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
       } else if constexpr (G == 1) {
-        if constexpr (kFixed16) {  // armhf: trunc(q 2^16) in place (see cvt_fixed16)
-          qu2 = cvt_fixed16(qu2), qv2 = cvt_fixed16(qv2), qu3 = cvt_fixed16(qu3), qv3 = cvt_fixed16(qv3);
+        if constexpr (kFixed16) {  // armhf: usat32(trunc(q 2^16)) in place (see min_ufixed16)
+          qu2 = cvt_ufixed16(qu2), qv2 = cvt_ufixed16(qv2), qu3 = cvt_ufixed16(qu3), qv3 = cvt_ufixed16(qv3);
         } else {
           qu2 = qu2 * 65536.0, qv2 = qv2 * 65536.0, qu3 = qu3 * 65536.0, qv3 = qv3 * 65536.0;
         }
@@ -384,14 +426,16 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
           qu2 = max_or_lo(qu2, 0.0), qv2 = max_or_lo(qv2, 0.0), qu3 = max_or_lo(qu3, 0.0), qv3 = max_or_lo(qv3, 0.0);
         }
       } else if constexpr (G == 3) {
-        if constexpr (!kFixed16) {
+        if constexpr (kFixed16) {
+          qu2 = min_ufixed16(qu2, kUmax), qv2 = min_ufixed16(qv2, kVmax);
+          qu3 = min_ufixed16(qu3, kUmax), qv3 = min_ufixed16(qv3, kVmax);
+        } else {
           qu2 = min_hi(qu2, umaxd), qv2 = min_hi(qv2, vmaxd), qu3 = min_hi(qu3, umaxd), qv3 = min_hi(qv3, vmaxd);
         }
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
-        if constexpr (kFixed16) {  // to_fixed_int's clamps on the converted values
-          s2u = clamp_fixed(fixed16_bits(qu2), umax), s2v = clamp_fixed(fixed16_bits(qv2), vmax);
-          s3u = clamp_fixed(fixed16_bits(qu3), umax), s3v = clamp_fixed(fixed16_bits(qv3), vmax);
+        if constexpr (kFixed16) {  // the clamped values' bits
+          s2u = fixed16_bits(qu2), s2v = fixed16_bits(qv2), s3u = fixed16_bits(qu3), s3v = fixed16_bits(qv3);
         } else {
           s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
         }
@@ -406,7 +450,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       } else if constexpr (G == 7) {
         if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
       } else if constexpr (G == 8) {
-        if constexpr (kCurve) u1 = steps16_dd(s2u - s1.u, iu1), v1 = steps16_dd(s2v - s1.v, iv1);
+        if constexpr (kCurve) steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
       } else if constexpr (G == 9) {
         if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
       }
@@ -423,7 +467,7 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
       } else if constexpr (G == 5) {
         if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
       } else if constexpr (G == 8) {
-        if constexpr (kCurve) u2 = steps16_dd(s3u - s2u, iu2), v2 = steps16_dd(s3v - s2v, iv2);
+        if constexpr (kCurve) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
@@ -487,20 +531,28 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
     RunSteps lu, lv;
     Sample s2 = s1;
     Run16<kCurve> run(s0.u, s0.v, su, sv);
-    int32_t du = 0, dv = 0;
-    double qu = 0.0, qv = 0.0;
+    int32_t du = 0, dv = 0, iu = 0, iv = 0, lu0 = 0, lv0 = 0;
+    double qu = 0.0, qv = 0.0, curve = 0.0;
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
         const Sample t = sample(pos2, z2);
         s2 = steps > 0 ? t : s1;
-      } else if constexpr (G == 4 && kCurve) {
+      } else if constexpr (G == 1) {
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
+        pin7(qu), pin7(qv);
+        if constexpr (kCurve) curve = zc * 0.5 * (s1.z + s2.z), pin7(curve);
+      } else if constexpr (G == 7 && kCurve) {
+        iu = last_ddi(qu, curve), iv = last_ddi(qv, curve);
+        lu0 = int32_t(qu), lv0 = int32_t(qv);
+        pin7(iu), pin7(iv), pin7(lu0), pin7(lv0);
       } else if constexpr (G == 9 && kCurve) {
-        last_steps_q(steps, du, dv, qu, qv, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+        last_steps_i(steps, du, dv, lu0, lv0, iu, iv, &lu, &lv);
       } else if constexpr (G == 9) {
-        run_steps_uv(steps, s1, s2, zc * 0.5 * (s1.z + s2.z), &lu, &lv);
+        // Linear: run_steps' delta / steps truncated is trunc(qu) (see last_steps_q); a
+        // one-pixel last run (steps 0) has s2 = s1, delta 0: steps 0, as run_steps gives.
+        lu = RunSteps{int32_t(qu), 0}, lv = RunSteps{int32_t(qv), 0};
       }
     });
     dest += 16;

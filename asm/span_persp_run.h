@@ -160,9 +160,27 @@ inline double cvt_fixed16(double q) {
   __asm__("vcvt.s32.f64 %P0, %P0, #16" : "+w"(q));
   return q;
 }
+// The same clamp without leaving the VFP/NEON register: x = usat32(trunc(q 2^16))
+// (vcvt.u32.f64 in place: negatives and NaN -> 0), then min(x, m) unsigned by vmin.u32 on
+// the low lane, kmax holding m in its low 32 bits (bound16). Equal to to_fixed: NaN and
+// q 2^16 <= 0 give 0 (trunc of (-1, 0] is 0, below saturates to 0); q 2^16 > m (an
+// integer) gives x >= m -> m; else 0 < q 2^16 <= m and trunc fits. The result in the low
+// 32 bits (fixed16_bits).
+inline double cvt_ufixed16(double q) {
+  __asm__("vcvt.u32.f64 %P0, %P0, #16" : "+w"(q));
+  return q;
+}
+inline double min_ufixed16(double x, double kmax) {
+  __asm__("vmin.u32 %P0, %P0, %P1" : "+w"(x) : "w"(kmax));
+  return x;
+}
+inline double bound16(int32_t m) { return __builtin_bit_cast(double, uint64_t(uint32_t(m))); }
 #else
 constexpr bool kFixed16 = false;
 inline double cvt_fixed16(double q) { return q; }
+inline double cvt_ufixed16(double q) { return q; }
+inline double min_ufixed16(double x, double) { return x; }
+inline double bound16(int32_t) { return 0.0; }
 #endif
 inline int32_t fixed16_bits(double x) { return int32_t(uint32_t(__builtin_bit_cast(uint64_t, x))); }
 inline int32_t to_fixed_int(double v, int32_t max) {
@@ -216,32 +234,78 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd32) {
 // ARMv7 in asm (GCC's masks and 64-bit compare cost some 25 instructions): the same test
 // with x = ssat(dd, 26): |dd| < 2^25 gives x = dd; else |x| >= 2^25 - 1 and 120 |x| >
 // 2^31 > pd rejects, as 120 |dd| does. 120 |x| < 2^32: one 32-bit mul and unsigned compare.
-// num = pd - 120 pdd is the mirror of r = delta - 120 dd (mod 2^32); the pick by condition.
+// num = pd - 120 pdd, the mirror (x ^ s) - s of r = delta - 120 dd (mod 2^32), is exact in
+// uint32 when accepted ([0, 2 pd]); rejected, num = pd (and dd = 0) by condition; then
+// d = mirror(num >> 4): d0' mirrored, or the linear step pd >> 4 mirrored.
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
-  uint32_t s, pd, x, r, res, ddo = uint32_t(dd);
+  uint32_t pd, x, r, ax, ddo = uint32_t(dd);
   __asm__(
-      "asr %[s], %[delta], #31\n\t"
+      "eor %[pd], %[delta], %[delta], asr #31\n\t"
       "ssat %[x], #26, %[dd]\n\t"
-      "eor %[pd], %[delta], %[s]\n\t"
-      "eor %[r], %[x], %[x], asr #31\n\t"
-      "sub %[pd], %[pd], %[s]\n\t"
-      "sub %[r], %[r], %[x], asr #31\n\t"
-      "mul %[x], %[r], %[c]\n\t"
       "mls %[r], %[dd], %[c], %[delta]\n\t"
+      "sub %[pd], %[pd], %[delta], asr #31\n\t"
+      "eor %[ax], %[x], %[x], asr #31\n\t"
+      "sub %[ax], %[ax], %[x], asr #31\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "mul %[x], %[ax], %[c]\n\t"
+      "sub %[r], %[r], %[delta], asr #31\n\t"
       "cmp %[x], %[pd]\n\t"
-      "eor %[r], %[r], %[s]\n\t"
-      "sub %[r], %[r], %[s]\n\t"
-      "itee ls\n\t"
-      "lsrls %[res], %[r], #4\n\t"
-      "lsrhi %[res], %[pd], #4\n\t"
+      "itt hi\n\t"
+      "movhi %[r], %[pd]\n\t"
       "movhi %[ddo], #0\n\t"
-      "eor %[res], %[res], %[s]\n\t"
-      "sub %[res], %[res], %[s]"
-      : [s] "=&r"(s), [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [res] "=&r"(res), [ddo] "+&r"(ddo)
+      "lsr %[r], %[r], #4\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "sub %[r], %[r], %[delta], asr #31"
+      : [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [ax] "=&r"(ax), [ddo] "+&r"(ddo)
       : [delta] "r"(delta), [dd] "r"(dd), [c] "r"(120u)
       : "cc");
-  return {int32_t(res), int32_t(ddo)};
+  return {int32_t(r), int32_t(ddo)};
 }
+// The same in two asm statements (part 1: pd, 120 |x|, the mirrored r; part 2: the test
+// and the pick), so that steps16_dd_uv interleaves the u and v chains.
+inline __attribute__((always_inline)) void steps16_part1(int32_t delta, int32_t dd, uint32_t& pd_, uint32_t& x_,
+                                                          uint32_t& r_) {
+  uint32_t pd, x, r, ax;
+  __asm__(
+      "eor %[pd], %[delta], %[delta], asr #31\n\t"
+      "ssat %[x], #26, %[dd]\n\t"
+      "mls %[r], %[dd], %[c], %[delta]\n\t"
+      "sub %[pd], %[pd], %[delta], asr #31\n\t"
+      "eor %[ax], %[x], %[x], asr #31\n\t"
+      "sub %[ax], %[ax], %[x], asr #31\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "mul %[x], %[ax], %[c]\n\t"
+      "sub %[r], %[r], %[delta], asr #31"
+      : [pd] "=&r"(pd), [x] "=&r"(x), [r] "=&r"(r), [ax] "=&r"(ax)
+      : [delta] "r"(delta), [dd] "r"(dd), [c] "r"(120u));
+  pd_ = pd, x_ = x, r_ = r;
+}
+inline __attribute__((always_inline)) RunSteps steps16_part2(int32_t delta, int32_t dd, uint32_t pd, uint32_t x,
+                                                             uint32_t r) {
+  uint32_t ddo = uint32_t(dd);
+  __asm__(
+      "cmp %[x], %[pd]\n\t"
+      "itt hi\n\t"
+      "movhi %[r], %[pd]\n\t"
+      "movhi %[ddo], #0\n\t"
+      "lsr %[r], %[r], #4\n\t"
+      "eor %[r], %[r], %[delta], asr #31\n\t"
+      "sub %[r], %[r], %[delta], asr #31"
+      : [r] "+&r"(r), [ddo] "+&r"(ddo)
+      : [x] "r"(x), [pd] "r"(pd), [delta] "r"(delta)
+      : "cc");
+  return {int32_t(r), int32_t(ddo)};
+}
+// u and v, the two chains interleaved (in-order cores wait on each step of one chain).
+inline __attribute__((always_inline)) void steps16_dd_uv(int32_t du, int32_t iu, int32_t dv, int32_t iv, RunSteps* su,
+                                                         RunSteps* sv) {
+  uint32_t pu, xu, ru, pv, xv, rv;
+  steps16_part1(du, iu, pu, xu, ru);
+  steps16_part1(dv, iv, pv, xv, rv);
+  *su = steps16_part2(du, iu, pu, xu, ru);
+  *sv = steps16_part2(dv, iv, pv, xv, rv);
+}
+#define SB_STEPS16_UV 1
 #else
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
   const uint32_t s = uint32_t(delta >> 31);  // all ones when delta < 0
@@ -283,6 +347,12 @@ inline RunSteps steps16(int32_t a, int32_t b, double curve) {
     return {(b - a) / 16, 0};  // |b - a| < 2^31 (the clamps)
   }
 }
+#if !defined(SB_STEPS16_UV)
+inline void steps16_dd_uv(int32_t du, int32_t iu, int32_t dv, int32_t iv, RunSteps* su, RunSteps* sv) {
+  *su = steps16_dd(du, iu);
+  *sv = steps16_dd(dv, iv);
+}
+#endif
 
 #define SB_INLINE inline __attribute__((always_inline))
 #define SB_LAMBDA_INLINE __attribute__((always_inline))
@@ -341,10 +411,15 @@ class Run16 {
       address<2 * G>(w);
       address<2 * G + 1>(w);
       const uint32_t b0 = texels[a_[2 * G]], b1 = texels[a_[2 * G + 1]];
+      // The gather in asm: three orr per word (GCC reassociated it into four).
       if constexpr (G % 2 == 0) {
-        out_[0] = b0 | (b1 << 8);
+        uint32_t half;
+        __asm__("orr %0, %1, %2, lsl #8" : "=r"(half) : "r"(b0), "r"(b1));
+        out_[0] = half;
       } else {
-        const uint32_t word = uint32_t(out_[0]) | (b0 << 16) | (b1 << 24);  // little-endian
+        uint32_t word;  // little-endian
+        __asm__("orr %0, %1, %2, lsl #16\n\torr %0, %0, %3, lsl #24"
+                : "=&r"(word) : "r"(uint32_t(out_[0])), "r"(b0), "r"(b1));
         __builtin_memcpy(dest + 2 * G - 2, &word, 4);
       }
     }
@@ -453,6 +528,16 @@ SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels
   run.draw(dest, texels, w);
 }
 
+// ARMv7: max_or_lo without a branch (vcmpe, vmrs, a conditional vmov: le is x <= lo or
+// unordered, NaN -> lo), for the long spans' first divides.
+inline double max_or_lo_sel(double x, double lo) {
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FP) && (__ARM_FP & 8)
+  __asm__("vcmpe.f64 %P0, %P1\n\tvmrs APSR_nzcv, fpscr\n\tit le\n\tvmovle.f64 %P0, %P1" : "+w"(x) : "w"(lo) : "cc");
+  return x;
+#else
+  return max_or_lo(x, lo);
+#endif
+}
 // 1 / max(zi, kMinZi) for two samples (NaN -> kMinZi). aarch64: one vector divide (on
 // Cortex-A53 it costs what one scalar divide costs); elsewhere two.
 inline void recip2(double zia, double zib, double* za, double* zb) {

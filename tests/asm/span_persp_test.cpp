@@ -20,6 +20,9 @@
 
 #include "asm/kernels.h"
 #include "asm/span_persp_run.h"  // steps16_dd (internal linkage: this test's own copy)
+#if !defined(__aarch64__)
+#include "asm/span_persp_arm.h"  // last_ddi, last_steps_i (the ARMv7 tails' parts; portable C++)
+#endif
 #include "engine/render/render_local.h"
 #include "engine/render/span_draw.h"
 #include "tests/support/quake_data.h"
@@ -186,6 +189,12 @@ TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
     const sb::simd::RunSteps got = sb::simd::steps16_dd(delta, dd);
     const auto want = walker(delta, dd);
     wrong += got.d != want.first || got.dd != want.second;
+    // The u, v pair form (ARMv7: its own asm, the chains interleaved), with a second pair.
+    const int32_t delta2 = -delta, dd2 = dd ^ 5;
+    sb::simd::RunSteps a, b;
+    sb::simd::steps16_dd_uv(delta, dd, delta2, dd2, &a, &b);
+    const auto want2 = walker(delta2, dd2);
+    wrong += a.d != want.first || a.dd != want.second || b.d != want2.first || b.dd != want2.second;
     ++checked;
   };
   const int32_t ends[] = {0, 1, -1, 15, -15, 16, -16, (1 << 25) - 1, -(1 << 25) + 1, 1 << 25, -(1 << 25),
@@ -205,6 +214,94 @@ TEST(AsmSpanPersp, FullRunStepsMatchTheWalker) {
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld full-run step tests, %ld wrong\n", checked, wrong);
 }
+
+// asm/span_persp_run.h's branch-free depth clamp (ARMv7: vcmpe, vmrs, a conditional vmov)
+// against max(zi, kMinZi) with NaN -> kMinZi, as the walker clamps 1/z.
+TEST(AsmSpanPersp, DepthClampWithoutBranchMatches) {
+  const double k = sb::simd::span_walk::kMinZi, nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  long wrong = 0;
+  for (double zi : {0.0, -0.0, k, std::nextafter(k, 0.0), std::nextafter(k, 1.0), -k, 1.0, -1.0, 1e300, -1e300, inf,
+                    -inf, nan, -nan, 5e-324, 0.25, 123456.75}) {
+    const double want = zi > k ? zi : k;
+    const double got = sb::simd::max_or_lo_sel(zi, k);
+    wrong += std::memcmp(&want, &got, sizeof got) != 0;
+  }
+  EXPECT_EQ(wrong, 0);
+}
+
+// asm/span_persp_run.h's ARMv7 to_fixed in the VFP/NEON registers (vcvt.u32.f64 #16, then
+// vmin.u32 against the bound) against the walker's to_fixed: zero, negatives, (-1, 0] and
+// (0, 1) after scaling, the bound's neighbourhood, huge, infinite and NaN values.
+TEST(AsmSpanPersp, FixedPointClampMatchesTheWalker) {
+  if constexpr (!sb::simd::kFixed16) GTEST_SKIP() << "ARMv7 only";
+  std::mt19937 rng(13);
+  long checked = 0, wrong = 0;
+  auto check = [&](double q, int32_t m) {
+    const int32_t want = sb::simd::span_walk::to_fixed(q, m);
+    const int32_t got =
+        sb::simd::fixed16_bits(sb::simd::min_ufixed16(sb::simd::cvt_ufixed16(q), sb::simd::bound16(m)));
+    wrong += got != want;
+    ++checked;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int32_t m : {0, 1, 65535, 65536, (1 << 24) - 1, INT32_MAX - 65535, INT32_MAX}) {
+    const double mq = double(m) / 65536.0;
+    for (double q : {0.0, -0.0, 1e-300, -1e-300, 0.5 / 65536, -0.5 / 65536, 1.0 / 65536, -1.0 / 65536, mq,
+                     std::nextafter(mq, 0.0), std::nextafter(mq, 1e300), mq + 1.0 / 65536, mq - 1.0 / 65536,
+                     65536.0, 32768.0, 1e10, -1e10, 1e300, -1e300, inf, -inf, nan, -nan}) {
+      check(q, m);
+    }
+  }
+  for (int i = 0; i < 300000; ++i) {
+    const int32_t m = int32_t(rng() >> 1) >> (rng() % 31);
+    const double q = std::ldexp(double(int32_t(rng())), -int(rng() % 60));
+    check(q, m);
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld fixed-point clamps, %ld wrong\n", checked, wrong);
+}
+
+#if !defined(__aarch64__)
+// asm/span_persp_arm.h's last-run steps as the ARMv7 tails take them in two parts
+// (last_ddi: ddf converted, its range test in integers; last_steps_i) against the walker's
+// run_steps (asm/span_walk.h) for steps 1 .. 15: clamped ends, curves of every magnitude
+// (ddf near the +-1e9 range ends, 0, NaN, infinite).
+TEST(AsmSpanPersp, LastRunStepsMatchTheWalker) {
+  std::mt19937 rng(11);
+  const int32_t kMax = INT32_MAX - 65535;
+  long checked = 0, wrong = 0;
+  auto check = [&](int32_t a, int32_t b, int steps, double curve) {
+    const sb::simd::RunSteps want = sb::simd::span_walk::run_steps(a, b, steps, curve);
+    const int32_t delta = b - a;
+    const double q = sb::simd::last_quotient(steps, delta);
+    const int32_t ddi = sb::simd::last_ddi(q, curve);
+    sb::simd::RunSteps got, other;
+    sb::simd::last_steps_i(steps, delta, 0, int32_t(q), 0, ddi, 0, &got, &other);
+    wrong += got.d != want.d || got.dd != want.dd;
+    ++checked;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 400000; ++i) {
+    const int steps = 1 + int(rng() % 15);
+    const int32_t a = int32_t(rng() % uint32_t(kMax)), b = int32_t(rng() % uint32_t(kMax)) >> (rng() % 31);
+    const double q = double(b - a) / steps;
+    double curve = std::ldexp(double(int32_t(rng())) / 2147483648.0, -int(rng() % 40));
+    if (i % 3 == 0 && q != 0.0) curve = -5e8 / q * (1.0 + (double(int(rng() % 2001)) - 1000.0) * 1e-12);
+    if (i % 3 == 1 && q != 0.0) curve = 5e8 / q * (1.0 + (double(int(rng() % 2001)) - 1000.0) * 1e-12);
+    check(a, b, steps, curve);
+  }
+  for (int steps = 1; steps <= 15; ++steps) {
+    for (double curve : {0.0, -0.0, nan, inf, -inf, 1e-300, 1e300}) {
+      for (int32_t a : {0, 1, kMax}) {
+        for (int32_t b : {0, 1, 7, kMax, kMax - 1}) check(a, b, steps, curve);
+      }
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld last-run step tests, %ld wrong\n", checked, wrong);
+}
+#endif
 
 #if defined(__aarch64__)
 // asm/span_persp_arm.h's short-span reciprocal (aarch64): y0 = frecpe(b), two steps
