@@ -4,6 +4,9 @@
 // asm/span_persp_run.h (anonymous namespace, as when this was part of that file).
 #pragma once
 #include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include "asm/span_persp_a64pass.h"
+#endif
 
 namespace sb::simd {
 namespace {
@@ -415,7 +418,7 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 constexpr int kShortMax = 64;
 alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
 template <bool kCurve>
-void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zc = p.second_order ? p.dzi : 0.0;
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
@@ -773,27 +776,12 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
       run.draw(dest + 16 * j, texels, w);
     };
-    // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
+    // Two 16-pixel runs as one pass: the long spans' pipeline without stage work, in one asm
+    // block (asm/span_persp_a64pass.h).
     auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
                     uint64_t b_dd) SB_LAMBDA_INLINE {
-      uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
-      uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
-      if constexpr (kCurve) {
-        lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
-      } else {
-        lin_start(c0, c1, c2, c3, e, a_uv, a_d);
-      }
-      auto none = [](auto) SB_LAMBDA_INLINE {};
-      const uint64_t w64 = uint64_t(width);
-      auto slot = [&](auto j) SB_LAMBDA_INLINE {
-        lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
-                                             d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
-      };
-      using std::integral_constant;
-      slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
-      slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
-      slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
-      slot(integral_constant<int, 9>{});
+      const uint64_t in[6] = {a_uv, a_d, a_dd, b_uv, b_d, b_dd};
+      short_pass<kCurve>(d, texels, uint64_t(width), in);
     };
     auto packed = [](const RunSteps& su, const RunSteps& sv) {
       return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
@@ -828,10 +816,18 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     rest(std::integral_constant<int, 3>{});
   }
 }
+// The same, out of line (persp_fast's linear instance keeps a call to it); the
+// dispatcher (surface_span_persp_fast) inlines persp_short_inl.
+template <bool kCurve>
+void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  persp_short_inl<kCurve>(dest, n, texels, width, p);
+}
 #else
 constexpr int kShortMax = 16;  // elsewhere the long-span code (its overlap wins there)
 template <bool kCurve>
 void persp_short(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+template <bool kCurve>
+void persp_short_inl(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
 #endif
 
 }  // namespace
