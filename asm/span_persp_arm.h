@@ -767,7 +767,15 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
-    last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zm[k], &lu, &lv);
+    if constexpr (kCurve) {
+      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zm[k], &lu, &lv);
+    } else {
+      // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one
+      // 32-bit divide each; steps 0 (a one-pixel last run) draws no step: any divisor.
+      const int32_t s = last > 2 ? last - 1 : 1;
+      lu = RunSteps{int32_t(uint32_t(dk)) / s, 0};
+      lv = RunSteps{int32_t(dk >> 32) / s, 0};
+    }
     auto full = [&](auto jc) SB_LAMBDA_INLINE {
       constexpr int j = decltype(jc)::value, l = j & 1;
       const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
