@@ -816,12 +816,61 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
                uint32_t(lv.dd));
     }
   };
+  // Linear steps: the samples' packed [u, v] (v 2^32 + u, clamped: 0 <= u, v < 2^31) moved
+  // to integer registers, each full run's step steps16_packed's delta / 16, the last run's
+  // delta / steps (32-bit divides; steps 0, a one-pixel last run, draws no step): in the
+  // integer unit, not a chain of vector ops (the A53 waits out each one's latency).
+  auto rest_lin = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+    const uint64_t x[5] = {vgetq_lane_u64(st01, 0), vgetq_lane_u64(st01, 1), vgetq_lane_u64(st23, 0),
+                           vgetq_lane_u64(st23, 1), vgetq_lane_u64(vreinterpretq_u64_s32(S44), 0)};
+    const uint64_t xa = x[k], xb = x[k + 1];
+    const int32_t s = last > 2 ? last - 1 : 1;
+    const int32_t ldu = (int32_t(uint32_t(xb)) - int32_t(uint32_t(xa))) / s;
+    const int32_t ldv = (int32_t(xb >> 32) - int32_t(xa >> 32)) / s;
+    const uint64_t ld = (uint64_t(uint32_t(ldv)) << 32) + uint64_t(int64_t(ldu));
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
+      const uint64_t in[6] = {a_uv, a_d, 0, b_uv, b_d, 0};
+      short_pass<false>(d, texels, uint64_t(width), in);
+    };
+    if (k == 1) {
+      Run16<false> run(x[0], steps16_packed(x[0], x[1]), 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      const uint64_t d1 = steps16_packed(x[1], x[2]);
+      if (k == 3 && last == 16) {
+        pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
+        pass(dest + 32, x[2], steps16_packed(x[2], x[3]), x[3], ld);
+        return;
+      }
+      pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
+      if (k > 2) {
+        Run16<false> run(x[2], steps16_packed(x[2], x[3]), 0, typename Run16<false>::Packed{});
+        run.draw(dest + 32, texels, w);
+      }
+    }
+    dest += 16 * k;
+    if (last == 16) {
+      Run16<false> run(xa, ld, 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), uint32_t(ldu), uint32_t(ldv), 0, 0);
+    }
+  };
+  auto go = [&](auto kc) SB_LAMBDA_INLINE {
+    if constexpr (kCurve) {
+      rest(kc);
+    } else {
+      rest_lin(kc);
+    }
+  };
   if (runs == 2) {
-    rest(std::integral_constant<int, 1>{});
+    go(std::integral_constant<int, 1>{});
   } else if (runs == 3) {
-    rest(std::integral_constant<int, 2>{});
+    go(std::integral_constant<int, 2>{});
   } else {
-    rest(std::integral_constant<int, 3>{});
+    go(std::integral_constant<int, 3>{});
   }
 }
 // The same, out of line (persp_fast's linear instance keeps a call to it); the
