@@ -788,8 +788,7 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     // block (asm/span_persp_a64pass.h).
     auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
                     uint64_t b_dd) SB_LAMBDA_INLINE {
-      const uint64_t in[6] = {a_uv, a_d, a_dd, b_uv, b_d, b_dd};
-      short_pass<kCurve>(d, texels, uint64_t(width), in);
+      short_pass<kCurve>(d, texels, uint64_t(width), a_uv, a_d, a_dd, b_uv, b_d, b_dd);
     };
     auto packed = [](const RunSteps& su, const RunSteps& sv) {
       return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
@@ -831,8 +830,7 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     const int32_t ldv = (int32_t(xb >> 32) - int32_t(xa >> 32)) / s;
     const uint64_t ld = (uint64_t(uint32_t(ldv)) << 32) + uint64_t(int64_t(ldu));
     auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
-      const uint64_t in[6] = {a_uv, a_d, 0, b_uv, b_d, 0};
-      short_pass<false>(d, texels, uint64_t(width), in);
+      short_pass<false>(d, texels, uint64_t(width), a_uv, a_d, 0, b_uv, b_d, 0);
     };
     if (k == 1) {
       Run16<false> run(x[0], steps16_packed(x[0], x[1]), 0, typename Run16<false>::Packed{});
