@@ -380,9 +380,11 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 #if defined(__aarch64__)
 // aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position, depth
 // and reciprocal first (two 2-lane and one scalar; second order without a divide, linear steps
-// by fdiv: there the test below costs the A53 more than it saves), the conversions and the
-// full runs' steps in vectors, the last run's by last_steps, all branch-free, then the runs
-// drawn straight (pairs of full runs as one lin_slot pass). Positions as the walker computes
+// by fdiv: there the test below costs the A53 more than it saves), the conversions in
+// vectors; second order: the full runs' steps in vectors, the last run's by last_steps;
+// linear: every run's step in integer registers (steps16_packed, the last run's delta /
+// steps); all branch-free, then the runs drawn straight (pairs of runs as one short_pass,
+// asm/span_persp_a64pass.h). Positions as the walker computes
 // them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1, sample j + 2 at
 // P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j). Samples past the
 // last one (j > runs) are computed but unused; for a one-pixel last run the last sample is
