@@ -758,11 +758,10 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     packs(d01, d23, &dlo, &dhi);
     packs(dd01, dd23, &ddlo, &ddhi);
     const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
-    int32_t sm[8];
-    double zm[4];
-    vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23);
-    vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
-    const int32_t au = sm[2 * k], av = sm[2 * k + 1];
+    // The last run's start (sample k: one 64-bit lane, v 2^32 + u) and z_k + z_{k+1}.
+    const uint64_t xk = vgetq_lane_u64(k < 2 ? st01 : st23, k & 1);
+    const int32_t au = int32_t(uint32_t(xk)), av = int32_t(xk >> 32);
+    const double zmk = vgetq_lane_f64(k < 2 ? zs01 : zs23, k & 1);
     RunSteps lu, lv;
     // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair) as doubles
     // (unbias) and as integers: one 64-bit lane move (dv 2^32 + du), split in the integer unit.
@@ -770,7 +769,7 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
     if constexpr (kCurve) {
-      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zm[k], &lu, &lv);
+      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zmk, &lu, &lv);
     } else {
       // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one
       // 32-bit divide each; steps 0 (a one-pixel last run) draws no step: any divisor.
@@ -795,7 +794,7 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     auto packed = [](const RunSteps& su, const RunSteps& sv) {
       return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
     };
-    const uint64_t luv = (uint64_t(uint32_t(av)) << 32) + uint32_t(au);
+    const uint64_t luv = xk;
     const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
     if (k == 1) {
       full(std::integral_constant<int, 0>{});
