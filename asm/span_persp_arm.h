@@ -4,6 +4,9 @@
 // asm/span_persp_run.h (anonymous namespace, as when this was part of that file).
 #pragma once
 #include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include "asm/span_persp_a64pass.h"
+#endif
 
 namespace sb::simd {
 namespace {
@@ -407,9 +410,11 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 #if defined(__aarch64__)
 // aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position, depth
 // and reciprocal first (two 2-lane and one scalar; second order without a divide, linear steps
-// by fdiv: there the test below costs the A53 more than it saves), the conversions and the
-// full runs' steps in vectors, the last run's by last_steps, all branch-free, then the runs
-// drawn straight (pairs of full runs as one lin_slot pass). Positions as the walker computes
+// by fdiv: there the test below costs the A53 more than it saves), the conversions in
+// vectors; second order: the full runs' steps in vectors, the last run's by last_steps;
+// linear: every run's step in integer registers (steps16_packed, the last run's delta /
+// steps); all branch-free, then the runs drawn straight (pairs of runs as one short_pass,
+// asm/span_persp_a64pass.h). Positions as the walker computes
 // them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1, sample j + 2 at
 // P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j). Samples past the
 // last one (j > runs) are computed but unused; for a one-pixel last run the last sample is
@@ -445,7 +450,7 @@ SB_INLINE void last_steps(int steps, const Sample& a, const Sample& b, double cu
 constexpr int kShortMax = 64;
 alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
 template <bool kCurve>
-void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zc = p.second_order ? p.dzi : 0.0;
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
@@ -783,18 +788,25 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
     packs(d01, d23, &dlo, &dhi);
     packs(dd01, dd23, &ddlo, &ddhi);
     const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
-    int32_t sm[8];
-    double zm[4];
-    vst1q_s32(sm, S01), vst1q_s32(sm + 4, S23);
-    vst1q_f64(zm, zs01), vst1q_f64(zm + 2, zs23);
-    const int32_t au = sm[2 * k], av = sm[2 * k + 1];
+    // The last run's start (sample k: one 64-bit lane, v 2^32 + u) and z_k + z_{k+1}.
+    const uint64_t xk = vgetq_lane_u64(k < 2 ? st01 : st23, k & 1);
+    const int32_t au = int32_t(uint32_t(xk)), av = int32_t(xk >> 32);
+    const double zmk = vgetq_lane_f64(k < 2 ? zs01 : zs23, k & 1);
     RunSteps lu, lv;
     // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair) as doubles
     // (unbias) and as integers: one 64-bit lane move (dv 2^32 + du), split in the integer unit.
     const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
-    last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zm[k], &lu, &lv);
+    if constexpr (kCurve) {
+      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zmk, &lu, &lv);
+    } else {
+      // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one
+      // 32-bit divide each; steps 0 (a one-pixel last run) draws no step: any divisor.
+      const int32_t s = last > 2 ? last - 1 : 1;
+      lu = RunSteps{int32_t(uint32_t(dk)) / s, 0};
+      lv = RunSteps{int32_t(dk >> 32) / s, 0};
+    }
     auto full = [&](auto jc) SB_LAMBDA_INLINE {
       constexpr int j = decltype(jc)::value, l = j & 1;
       const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
@@ -803,32 +815,16 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
       Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
       run.draw(dest + 16 * j, texels, w);
     };
-    // Two 16-pixel runs as one lin_slot pass (the long spans' pipeline, no stage work).
+    // Two 16-pixel runs as one pass: the long spans' pipeline without stage work, in one asm
+    // block (asm/span_persp_a64pass.h).
     auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
                     uint64_t b_dd) SB_LAMBDA_INLINE {
-      uint64_t c0, c1, c2 = 0, c3 = 0, e, e1 = 0, dd4 = 0;
-      uint64_t pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
-      if constexpr (kCurve) {
-        lin_start2(c0, c1, e, e1, dd4, a_uv, a_d, a_dd);
-      } else {
-        lin_start(c0, c1, c2, c3, e, a_uv, a_d);
-      }
-      auto none = [](auto) SB_LAMBDA_INLINE {};
-      const uint64_t w64 = uint64_t(width);
-      auto slot = [&](auto j) SB_LAMBDA_INLINE {
-        lin_slot<decltype(j)::value, kCurve>(c0, c1, c2, c3, e, e1, dd4, pa0, pa1, pa2, pa3, b0, b1, b2, b3, g0, g1,
-                                             d, texels, w64, b_uv, b_d, b_dd, a_uv, a_d, a_dd, none);
-      };
-      using std::integral_constant;
-      slot(integral_constant<int, 0>{}), slot(integral_constant<int, 1>{}), slot(integral_constant<int, 2>{});
-      slot(integral_constant<int, 3>{}), slot(integral_constant<int, 4>{}), slot(integral_constant<int, 5>{});
-      slot(integral_constant<int, 6>{}), slot(integral_constant<int, 7>{}), slot(integral_constant<int, 8>{});
-      slot(integral_constant<int, 9>{});
+      short_pass<kCurve>(d, texels, uint64_t(width), a_uv, a_d, a_dd, b_uv, b_d, b_dd);
     };
     auto packed = [](const RunSteps& su, const RunSteps& sv) {
       return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
     };
-    const uint64_t luv = (uint64_t(uint32_t(av)) << 32) + uint32_t(au);
+    const uint64_t luv = xk;
     const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
     if (k == 1) {
       full(std::integral_constant<int, 0>{});
@@ -850,18 +846,74 @@ void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const P
                uint32_t(lv.dd));
     }
   };
+  // Linear steps: the samples' packed [u, v] (v 2^32 + u, clamped: 0 <= u, v < 2^31) moved
+  // to integer registers, each full run's step steps16_packed's delta / 16, the last run's
+  // delta / steps (32-bit divides; steps 0, a one-pixel last run, draws no step): in the
+  // integer unit, not a chain of vector ops (the A53 waits out each one's latency).
+  auto rest_lin = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+    const uint64_t x[5] = {vgetq_lane_u64(st01, 0), vgetq_lane_u64(st01, 1), vgetq_lane_u64(st23, 0),
+                           vgetq_lane_u64(st23, 1), vgetq_lane_u64(vreinterpretq_u64_s32(S44), 0)};
+    const uint64_t xa = x[k], xb = x[k + 1];
+    const int32_t s = last > 2 ? last - 1 : 1;
+    const int32_t ldu = (int32_t(uint32_t(xb)) - int32_t(uint32_t(xa))) / s;
+    const int32_t ldv = (int32_t(xb >> 32) - int32_t(xa >> 32)) / s;
+    const uint64_t ld = (uint64_t(uint32_t(ldv)) << 32) + uint64_t(int64_t(ldu));
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
+      short_pass<false>(d, texels, uint64_t(width), a_uv, a_d, 0, b_uv, b_d, 0);
+    };
+    if (k == 1) {
+      Run16<false> run(x[0], steps16_packed(x[0], x[1]), 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      const uint64_t d1 = steps16_packed(x[1], x[2]);
+      if (k == 3 && last == 16) {
+        pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
+        pass(dest + 32, x[2], steps16_packed(x[2], x[3]), x[3], ld);
+        return;
+      }
+      pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
+      if (k > 2) {
+        Run16<false> run(x[2], steps16_packed(x[2], x[3]), 0, typename Run16<false>::Packed{});
+        run.draw(dest + 32, texels, w);
+      }
+    }
+    dest += 16 * k;
+    if (last == 16) {
+      Run16<false> run(xa, ld, 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), uint32_t(ldu), uint32_t(ldv), 0, 0);
+    }
+  };
+  auto go = [&](auto kc) SB_LAMBDA_INLINE {
+    if constexpr (kCurve) {
+      rest(kc);
+    } else {
+      rest_lin(kc);
+    }
+  };
   if (runs == 2) {
-    rest(std::integral_constant<int, 1>{});
+    go(std::integral_constant<int, 1>{});
   } else if (runs == 3) {
-    rest(std::integral_constant<int, 2>{});
+    go(std::integral_constant<int, 2>{});
   } else {
-    rest(std::integral_constant<int, 3>{});
+    go(std::integral_constant<int, 3>{});
   }
+}
+// The same, out of line (persp_fast's linear instance keeps a call to it); the
+// dispatcher (surface_span_persp_fast) inlines persp_short_inl.
+template <bool kCurve>
+void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  persp_short_inl<kCurve>(dest, n, texels, width, p);
 }
 #else
 constexpr int kShortMax = 16;  // elsewhere the long-span code (its overlap wins there)
 template <bool kCurve>
 void persp_short(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+template <bool kCurve>
+void persp_short_inl(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
 #endif
 
 }  // namespace

@@ -592,10 +592,10 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   // saves the registers of the long-span loop).
   const bool is_short = n > 16 && n <= kShortMax;
   if (!p.second_order || p.dzi == 0.0) {
-    if (is_short) return persp_short<false>(dest, n, texels, width, p);
+    if (is_short) return persp_short_inl<false>(dest, n, texels, width, p);
     return persp_fast<false>(dest, n, texels, width, p);
   }
-  if (is_short) return persp_short<true>(dest, n, texels, width, p);
+  if (is_short) return persp_short_inl<true>(dest, n, texels, width, p);
   persp_fast<true>(dest, n, texels, width, p);
 }
 
