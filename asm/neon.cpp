@@ -647,7 +647,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
               "ldr q26, [x8, %[goff]]\n\t"
               "add %[rp], %[rp], #16\n\t"
               "add x8, %[dte], %[q], lsl #2\n\t"
-              "ldr q8, [x8]\n\t" SB_WEIGH_STEP8 SB_PAIR16_A_PRO
+              "ldr q8, [x8]\n\t" SB_WEIGH_STEP8
               "b 2f\n\t"
               ".p2align 10\n\t"
               "1:\n\t" SB_PAIR16_A SB_PAIR16_B
@@ -661,7 +661,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
 #undef SB_PAIR16_A
-#undef SB_PAIR16_A_PRO
 #undef SB_PAIR16_B
 #undef SB_WEIGH_STEP8
         } else if constexpr (LB == 2) {
