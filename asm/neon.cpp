@@ -589,6 +589,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #undef SB_PAIR_LOOP_16W0
 #undef SB_PAIR_LOOP_16W1
 #undef SB_PAIR_LOOP_16
+#undef SB_PAIR_LOOP_16_PRO
         } else if constexpr (LB >= 3) {
           // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
           // the bands (x30: its address), not in every iteration. q: iterations left in the band.
