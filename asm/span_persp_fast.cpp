@@ -180,7 +180,7 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     pin7(fu), pin7(fv);
     fu = fu * c0, fv = fv * c0;
     pin7(fu), pin7(fv);
-    steps16_dd_uv(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
+    steps16_dd_uv_ordered(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
   } else {
     su = steps16<kCurve>(s0.u, s1.u, 0.0), sv = steps16<kCurve>(s0.v, s1.v, 0.0);
   }
