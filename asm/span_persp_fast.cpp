@@ -102,18 +102,54 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   Sample s0, s1;
   double pos2, pos3 = 0.0;
 #if defined(__arm__) && !defined(__aarch64__)
+  // Samples 0 and 1; armhf second order (kFixed16) keeps their clamped VFP values for the
+  // steps below: sample()'s operations.
+  double pu0 = 0.0, pv0 = 0.0, pu1 = 0.0, pv1 = 0.0, c0p = 0.0;
+  auto samples01 = [&] SB_LAMBDA_INLINE {
+    if constexpr (kCurve && kFixed16) {
+      // Pinned step by step: the modelled Cortex-A9's in-order FP pipe then overlaps the
+      // four chains (GCC interleaved them with the core moves).
+      const double P1 = P + double(16);
+      const double tu0 = urow + ux * P, tv0 = vrow + vx * P, tu1 = urow + ux * P1, tv1 = vrow + vx * P1;
+      pu0 = tu0 * z0, pv0 = tv0 * z0;
+      pin7(pu0), pin7(pv0);
+      pu1 = tu1 * z1, pv1 = tv1 * z1, c0p = (zc * -0.0625) * (z0 + z1);
+      pin7(pu1), pin7(pv1);
+      pu0 = cvt_ufixed16(pu0), pv0 = cvt_ufixed16(pv0), pu1 = cvt_ufixed16(pu1), pv1 = cvt_ufixed16(pv1);
+      pu0 = min_ufixed16(pu0, kUmax), pv0 = min_ufixed16(pv0, kVmax);
+      pu1 = min_ufixed16(pu1, kUmax), pv1 = min_ufixed16(pv1, kVmax);
+      pin7(pu0), pin7(pv0), pin7(pu1), pin7(pv1);
+      s0 = Sample{fixed16_bits(pu0), fixed16_bits(pv0), z0}, s1 = Sample{fixed16_bits(pu1), fixed16_bits(pv1), z1};
+    } else {
+      s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+    }
+  };
   if (n > 32) {  // ARMv7: the four clamps branch-free, the four divides back to back
     pos2 = P + double(32);
     pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
     const double zi0 = max_or_lo_sel(zrow + zix * P, kMinZi), zi1 = max_or_lo_sel(zrow + zix * (P + double(16)), kMinZi);
-    const double zi2 = max_or_lo_sel(zrow + zix * pos2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * pos3, kMinZi);
-    z0 = 1.0 / zi0, z1 = 1.0 / zi1, z2 = 1.0 / zi2, z3 = 1.0 / zi3;
-    s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+    if constexpr (kCurve && kFixed16) {
+      // The divides in this order (volatile asm), samples 2 and 3's depths computed after
+      // the first two divides are issued (pinned positions): those start earlier.
+      z0 = recip7(zi0), z1 = recip7(zi1);
+      double p2 = pos2, p3 = pos3;
+      pin7(p2), pin7(p3);
+      const double zi2 = max_or_lo_sel(zrow + zix * p2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * p3, kMinZi);
+      z2 = recip7(zi2), z3 = recip7(zi3);
+    } else {
+      const double zi2 = max_or_lo_sel(zrow + zix * pos2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * pos3, kMinZi);
+      z0 = 1.0 / zi0, z1 = 1.0 / zi1, z2 = 1.0 / zi2, z3 = 1.0 / zi3;
+    }
+    samples01();
   } else
 #endif
   {
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
+#if defined(__arm__) && !defined(__aarch64__)
+  if constexpr (!kDivFirst) samples01();
+#else
   if constexpr (!kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+#endif
   if (n > 32) {  // samples 2 and 3 (o_2 = 32; o_3 - o_1 = min(32, n - 17))
     pos2 = P + double(32);
     pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
@@ -131,13 +167,20 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     // the same bits (see the loop below: one multiply after the conversion, not three), the
     // two chains interleaved step by step (pinned: the modelled Cortex-A9's in-order FP
     // pipe would wait on each step of one chain).
-    const double c0 = (zc * -0.0625) * (s0.z + s1.z);
+    const double c0 = kFixed16 ? c0p : (zc * -0.0625) * (s0.z + s1.z);
     const int32_t du = s1.u - s0.u, dv = s1.v - s0.v;
-    double fu = double(du), fv = double(dv);
+    double fu, fv;
+    if constexpr (kFixed16) {
+      // double(s1.u - s0.u) as double(s1.u) - double(s0.u) (both in [0, 2^31): exact, the
+      // same bits), converted from the clamped VFP registers (no trip through the core).
+      fu = ufixed16_f64(pu1) - ufixed16_f64(pu0), fv = ufixed16_f64(pv1) - ufixed16_f64(pv0);
+    } else {
+      fu = double(du), fv = double(dv);
+    }
     pin7(fu), pin7(fv);
     fu = fu * c0, fv = fv * c0;
     pin7(fu), pin7(fv);
-    steps16_dd_uv(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
+    steps16_dd_uv_ordered(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
   } else {
     su = steps16<kCurve>(s0.u, s1.u, 0.0), sv = steps16<kCurve>(s0.v, s1.v, 0.0);
   }

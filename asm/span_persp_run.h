@@ -175,12 +175,28 @@ inline double min_ufixed16(double x, double kmax) {
   return x;
 }
 inline double bound16(int32_t m) { return __builtin_bit_cast(double, uint64_t(uint32_t(m))); }
+// double(uint32 low bits of x) by vcvt.f64.u32 from x's low single register (the clamped
+// results above: fixed16_bits(x) as a double, without moving it to a core register).
+// "t": x in d0 .. d15, and GCC prints such a double operand as its low single (s2n for dn).
+// 1.0 / x (vdiv.f64, IEEE: the same bits), in a volatile asm that keeps its place among
+// the other volatile asm (the issue order of a prologue's divides).
+inline double recip7(double x) {
+  double r;
+  __asm__ volatile("vdiv.f64 %P0, %P1, %P2" : "=w"(r) : "w"(1.0), "w"(x));
+  return r;
+}
+inline double ufixed16_f64(double x) {
+  double r;
+  __asm__("vcvt.f64.u32 %P0, %1" : "=w"(r) : "t"(x));
+  return r;
+}
 #else
 constexpr bool kFixed16 = false;
 inline double cvt_fixed16(double q) { return q; }
 inline double cvt_ufixed16(double q) { return q; }
 inline double min_ufixed16(double x, double) { return x; }
 inline double bound16(int32_t) { return 0.0; }
+inline double ufixed16_f64(double x) { return double(uint32_t(__builtin_bit_cast(uint64_t, x))); }
 #endif
 inline int32_t fixed16_bits(double x) { return int32_t(uint32_t(__builtin_bit_cast(uint64_t, x))); }
 inline int32_t to_fixed_int(double v, int32_t max) {
@@ -305,6 +321,18 @@ inline __attribute__((always_inline)) void steps16_dd_uv(int32_t du, int32_t iu,
   *su = steps16_part2(du, iu, pu, xu, ru);
   *sv = steps16_part2(dv, iv, pv, xv, rv);
 }
+// The same with both part 1 before both part 2 (an empty volatile asm takes part 1's
+// results: GCC otherwise put both parts of u before v's in the ARMv7 long-span prologue;
+// in the passes its own order schedules better).
+inline __attribute__((always_inline)) void steps16_dd_uv_ordered(int32_t du, int32_t iu, int32_t dv, int32_t iv,
+                                                                 RunSteps* su, RunSteps* sv) {
+  uint32_t pu, xu, ru, pv, xv, rv;
+  steps16_part1(du, iu, pu, xu, ru);
+  steps16_part1(dv, iv, pv, xv, rv);
+  __asm__ volatile("" : "+r"(pu), "+r"(xu), "+r"(ru), "+r"(pv), "+r"(xv), "+r"(rv));
+  *su = steps16_part2(du, iu, pu, xu, ru);
+  *sv = steps16_part2(dv, iv, pv, xv, rv);
+}
 #define SB_STEPS16_UV 1
 #else
 inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
@@ -351,6 +379,9 @@ inline RunSteps steps16(int32_t a, int32_t b, double curve) {
 inline void steps16_dd_uv(int32_t du, int32_t iu, int32_t dv, int32_t iv, RunSteps* su, RunSteps* sv) {
   *su = steps16_dd(du, iu);
   *sv = steps16_dd(dv, iv);
+}
+inline void steps16_dd_uv_ordered(int32_t du, int32_t iu, int32_t dv, int32_t iv, RunSteps* su, RunSteps* sv) {
+  steps16_dd_uv(du, iu, dv, iv, su, sv);
 }
 #endif
 

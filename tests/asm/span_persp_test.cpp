@@ -291,6 +291,20 @@ TEST(AsmSpanPersp, LastRunStepsMatchTheWalker) {
     if (i % 3 == 1 && q != 0.0) curve = 5e8 / q * (1.0 + (double(int(rng() % 2001)) - 1000.0) * 1e-12);
     check(a, b, steps, curve);
   }
+  // dd at the accept boundary T |dd| <= |delta| (T = steps (steps - 1) / 2): |dd| = k - 1,
+  // k, k + 1 with k = |delta| / T, both signs (ddf = +-(target + 1/2): truncated to target).
+  for (int i = 0; i < 100000; ++i) {
+    const int steps = 2 + int(rng() % 14);
+    const int32_t a = int32_t(rng() % uint32_t(kMax)), b = int32_t(rng() % uint32_t(kMax)) >> (rng() % 31);
+    const double q = double(b - a) / steps;
+    if (q == 0.0) continue;
+    const int64_t pd = b > a ? int64_t(b) - a : int64_t(a) - b, T = steps * (steps - 1) / 2, k = pd / T;
+    for (int64_t target : {k - 1, k, k + 1}) {
+      if (target < 0) continue;
+      check(a, b, steps, -(double(target) + 0.5) / (2.0 * q));
+      check(a, b, steps, (double(target) + 0.5) / (2.0 * q));
+    }
+  }
   for (int steps = 1; steps <= 15; ++steps) {
     for (double curve : {0.0, -0.0, nan, inf, -inf, 1e-300, 1e300}) {
       for (int32_t a : {0, 1, kMax}) {
