@@ -20,6 +20,8 @@
 // finds its texels (v24, v25) loaded by band b - 1, and S of grid rows b + 1 and b + 2's
 // entries loaded two bands ahead: grid rows rotate through v16-v18 (g) and v19-v21 (S), so
 // the loop is three band copies (SB_MIP3_BAND0..2); v22 = entries 1..8 of the next row.
+// Each band stores the previous band's rows first (v4-v7); the first band of a column runs
+// a copy without those stores (SB_MIP3_ENTRY), the last band's rows are stored after the loop.
 // The grid row read by band b is row b + 3 clamped to the last (x3 stops advancing when
 // fewer than four bands are left: x30 = bands left). Registers: x0 cm, x1 output, x2 its
 // stride, x3 / x4 grid row pointer / stride (bytes), x5 texel row pointers (two a band),
@@ -41,6 +43,342 @@ namespace {
 #if defined(__aarch64__)
 
 #define SB_MIP3_BAND0 \
+  "stp d4, d5, [x1]\n\t" \
+  "add v3.8h, v19.8h, v20.8h\n\t" \
+  "ushr v1.8h, v19.8h, #1\n\t" \
+  "uhadd v2.8h, v16.8h, v17.8h\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ldp x6, x7, [x5], #16\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "bif v24.16b, v16.16b, v31.16b\n\t" \
+  "ldr q16, [x3]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x10, d1\n\t" \
+  "fmov x12, d2\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "ldr q25, [x7, x28]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "add x22, x0, x22\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "add x25, x0, x25\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "cmp x30, #4\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "add x3, x3, x26\n\t" \
+
+#define SB_MIP3_BAND1 \
+  "stp d4, d5, [x1]\n\t" \
+  "add v3.8h, v20.8h, v21.8h\n\t" \
+  "ushr v1.8h, v20.8h, #1\n\t" \
+  "uhadd v2.8h, v17.8h, v18.8h\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ldp x6, x7, [x5], #16\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "bif v24.16b, v17.16b, v31.16b\n\t" \
+  "ldr q17, [x3]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "add v19.8h, v16.8h, v22.8h\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x10, d1\n\t" \
+  "fmov x12, d2\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "ldr q25, [x7, x28]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "add x22, x0, x22\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "add x25, x0, x25\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "cmp x30, #4\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "add x3, x3, x26\n\t" \
+
+#define SB_MIP3_BAND2 \
+  "stp d4, d5, [x1]\n\t" \
+  "add v3.8h, v21.8h, v19.8h\n\t" \
+  "ushr v1.8h, v21.8h, #1\n\t" \
+  "uhadd v2.8h, v18.8h, v16.8h\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ldp x6, x7, [x5], #16\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "bif v24.16b, v18.16b, v31.16b\n\t" \
+  "ldr q18, [x3]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "add v20.8h, v17.8h, v22.8h\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x10, d1\n\t" \
+  "fmov x12, d2\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "ldr q25, [x7, x28]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "add x22, x0, x22\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "add x25, x0, x25\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "cmp x30, #4\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "add x3, x3, x26\n\t" \
+
+#define SB_MIP3_ENTRY \
   "add v3.8h, v19.8h, v20.8h\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
@@ -145,236 +483,8 @@ namespace {
   "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v6.b}[7], [x25]\n\t" \
   "ld1 {v7.b}[7], [x17]\n\t" \
-  "stp d4, d5, [x1]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "add x1, x1, x2\n\t" \
   "add x3, x3, x26\n\t" \
-  "stp d6, d7, [x1]\n\t" \
-  "add x1, x1, x2\n\t" \
-
-#define SB_MIP3_BAND1 \
-  "add v3.8h, v20.8h, v21.8h\n\t" \
-  "ushr v1.8h, v20.8h, #1\n\t" \
-  "uhadd v2.8h, v17.8h, v18.8h\n\t" \
-  "ldp x6, x7, [x5], #16\n\t" \
-  "ushr v3.16b, v3.16b, #2\n\t" \
-  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
-  "bit v2.16b, v25.16b, v31.16b\n\t" \
-  "bif v24.16b, v17.16b, v31.16b\n\t" \
-  "ldr q17, [x3]\n\t" \
-  "add v19.8h, v16.8h, v22.8h\n\t" \
-  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x10, d1\n\t" \
-  "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
-  "fmov x8, d24\n\t" \
-  "fmov x13, v2.d[1]\n\t" \
-  "fmov x14, d3\n\t" \
-  "fmov x11, v1.d[1]\n\t" \
-  "fmov x15, v3.d[1]\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x6, x28]\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "ldr q25, [x7, x28]\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
-  "ld1 {v6.b}[0], [x17]\n\t" \
-  "and x24, x27, x8, lsr #16\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "and x16, x27, x9, lsr #16\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x25, x0, x25\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x17, x0, x17\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v6.b}[2], [x25]\n\t" \
-  "add x20, x0, x20\n\t" \
-  "ld1 {v5.b}[2], [x16]\n\t" \
-  "add x21, x0, x21\n\t" \
-  "ld1 {v7.b}[2], [x17]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
-  "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x24, x27, x9, lsr #32\n\t" \
-  "and x23, x27, x12, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
-  "add x22, x0, x22\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
-  "add x25, x0, x25\n\t" \
-  "and x17, x27, x14, lsr #32\n\t" \
-  "ld1 {v7.b}[3], [x21]\n\t" \
-  "and x18, x27, x11, lsr #32\n\t" \
-  "ld1 {v4.b}[4], [x22]\n\t" \
-  "and x19, x27, x15, lsr #32\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
-  "add x17, x0, x17\n\t" \
-  "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x20, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x16]\n\t" \
-  "add x21, x0, x12, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x17]\n\t" \
-  "add x22, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
-  "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
-  "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
-  "add x16, x0, x11, lsr #48\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
-  "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
-  "cmp x30, #4\n\t" \
-  "ld1 {v7.b}[6], [x23]\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
-  "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v6.b}[7], [x25]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
-  "stp d4, d5, [x1]\n\t" \
-  "subs x30, x30, #1\n\t" \
-  "add x1, x1, x2\n\t" \
-  "add x3, x3, x26\n\t" \
-  "stp d6, d7, [x1]\n\t" \
-  "add x1, x1, x2\n\t" \
-
-#define SB_MIP3_BAND2 \
-  "add v3.8h, v21.8h, v19.8h\n\t" \
-  "ushr v1.8h, v21.8h, #1\n\t" \
-  "uhadd v2.8h, v18.8h, v16.8h\n\t" \
-  "ldp x6, x7, [x5], #16\n\t" \
-  "ushr v3.16b, v3.16b, #2\n\t" \
-  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
-  "bit v2.16b, v25.16b, v31.16b\n\t" \
-  "bif v24.16b, v18.16b, v31.16b\n\t" \
-  "ldr q18, [x3]\n\t" \
-  "add v20.8h, v17.8h, v22.8h\n\t" \
-  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x10, d1\n\t" \
-  "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
-  "fmov x8, d24\n\t" \
-  "fmov x13, v2.d[1]\n\t" \
-  "fmov x14, d3\n\t" \
-  "fmov x11, v1.d[1]\n\t" \
-  "fmov x15, v3.d[1]\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x6, x28]\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "ldr q25, [x7, x28]\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
-  "ld1 {v6.b}[0], [x17]\n\t" \
-  "and x24, x27, x8, lsr #16\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "and x16, x27, x9, lsr #16\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x25, x0, x25\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x17, x0, x17\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v6.b}[2], [x25]\n\t" \
-  "add x20, x0, x20\n\t" \
-  "ld1 {v5.b}[2], [x16]\n\t" \
-  "add x21, x0, x21\n\t" \
-  "ld1 {v7.b}[2], [x17]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
-  "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x24, x27, x9, lsr #32\n\t" \
-  "and x23, x27, x12, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
-  "add x22, x0, x22\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
-  "add x25, x0, x25\n\t" \
-  "and x17, x27, x14, lsr #32\n\t" \
-  "ld1 {v7.b}[3], [x21]\n\t" \
-  "and x18, x27, x11, lsr #32\n\t" \
-  "ld1 {v4.b}[4], [x22]\n\t" \
-  "and x19, x27, x15, lsr #32\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
-  "add x17, x0, x17\n\t" \
-  "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x20, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x16]\n\t" \
-  "add x21, x0, x12, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x17]\n\t" \
-  "add x22, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
-  "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
-  "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
-  "add x16, x0, x11, lsr #48\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
-  "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
-  "cmp x30, #4\n\t" \
-  "ld1 {v7.b}[6], [x23]\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
-  "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v6.b}[7], [x25]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
-  "stp d4, d5, [x1]\n\t" \
-  "subs x30, x30, #1\n\t" \
-  "add x1, x1, x2\n\t" \
-  "add x3, x3, x26\n\t" \
-  "stp d6, d7, [x1]\n\t" \
-  "add x1, x1, x2\n\t" \
 
 constexpr uint8_t kMip3Iota[32] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15,
                                    16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 26, 27, 28, 29, 30, 31};
@@ -428,10 +538,14 @@ __attribute__((always_inline)) inline void mip3_columns(const uint8_t* cm, uint8
       "ldp x6, x7, [x5, #-16]\n\t"
       "ldr q24, [x6, x28]\n\t"
       "ldr q25, [x7, x28]\n\t"
+      SB_MIP3_ENTRY "b.eq 9f\n\t"
       "b 1f\n\t"
       ".p2align 11\n\t"  // (the band loop, about 1.3 KiB, then never straddles a page)
-      "1:\n\t" SB_MIP3_BAND0 "b.eq 9f\n\t" SB_MIP3_BAND1 "b.eq 9f\n\t" SB_MIP3_BAND2 "b.ne 1b\n\t"
+      "1:\n\t" SB_MIP3_BAND1 "b.eq 9f\n\t" SB_MIP3_BAND2 "b.eq 9f\n\t" SB_MIP3_BAND0 "b.ne 1b\n\t"
       "9:\n\t"
+      "stp d4, d5, [x1]\n\t"
+      "add x1, x1, x2\n\t"
+      "stp d6, d7, [x1]\n\t"
       "ldp x1, x10, [sp]\n\t"
       "ldp x6, x28, [sp, #16]\n\t"
       "ldr x11, [sp, #32]\n\t"
@@ -448,6 +562,22 @@ __attribute__((always_inline)) inline void mip3_columns(const uint8_t* cm, uint8
       : "x1", "x3", "x5", "x6", "x7", "x8", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x18", "x19",
         "x20", "x21", "x22", "x23", "x24", "x25", "x26", "x27", "x28", "x30", "v0", "v1", "v2", "v3", "v4", "v5",
         "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v31", "cc", "memory");
+}
+
+// A p16 row's 16 laid-out bytes (period[0]: byte k is (c0 + k) mod tw): one table lookup of
+// the row's first 16 bytes, or of the texture's last 16 at its end (writes 32 bytes when the
+// texture itself is shorter than 16 bytes).
+__attribute__((always_inline)) inline void mip3_tile16(uint8_t* o, const uint8_t* r, int tw, int c0,
+                                                       const uint8_t* texels, const uint8_t* tex_end,
+                                                       const uint8x16_t* period) {
+  if (r + 16 <= tex_end) {
+    vst1q_u8(o, vqtbl1q_u8(vld1q_u8(r), period[0]));
+  } else if (tex_end - 16 >= texels) {
+    const uint8_t* const last16 = tex_end - 16;
+    vst1q_u8(o, vqtbl1q_u8(vld1q_u8(last16), vaddq_u8(period[0], vdupq_n_u8(uint8_t(r - last16)))));
+  } else {
+    tile_row(o, r, tw, c0, 16, tex_end, period, texels);
+  }
 }
 
 // The mip-3 builder (asm/surface_block.h's contract, mip 3, width / 2 <= kMaxBlockColumns).
@@ -491,17 +621,25 @@ __attribute__((always_inline)) inline bool surface_block_mip3(const uint16_t* gr
   }
   {
     int t = t0;
-    if (p16 && !flat) {  // (a row shorter than 16 bytes at the texture's end: its last 16 bytes)
-      const uint8_t* const last16 = tex_end - 16 >= texels ? tex_end - 16 : nullptr;
+    if (p16 && !flat && used == th) {
+      // Every texture row once, in texture order at buf + 16 t, two a step while 16-byte reads
+      // stay inside; rp from t0 cyclically.
+      const uint8_t* r = texels;
+      int k = 0;
+      for (; k + 2 <= th && r + tw + 16 <= tex_end; k += 2, r += 2 * tw) {
+        const uint8x16_t a = vqtbl1q_u8(vld1q_u8(r), period[0]), b = vqtbl1q_u8(vld1q_u8(r + tw), period[0]);
+        vst1q_u8(buf + 16 * k, a);
+        vst1q_u8(buf + 16 * k + 16, b);
+      }
+      for (; k < th; ++k, r += tw) mip3_tile16(buf + 16 * k, r, tw, c0, texels, tex_end, period);
       for (int y = 0; y < used; ++y) {
-        const uint8_t* r = texels + t * tw;
+        rp[y] = buf + 16 * t;
+        if (++t == th) t = 0;
+      }
+    } else if (p16 && !flat) {
+      for (int y = 0; y < used; ++y) {
         uint8_t* o = buf + 16 * y;
-        if (r + 16 <= tex_end)
-          vst1q_u8(o, vqtbl1q_u8(vld1q_u8(r), period[0]));
-        else if (last16)
-          vst1q_u8(o, vqtbl1q_u8(vld1q_u8(last16), vaddq_u8(period[0], vdupq_n_u8(uint8_t(r - last16)))));
-        else
-          tile_row(o, r, tw, c0, 16, tex_end, period, texels);
+        mip3_tile16(o, texels + t * tw, tw, c0, texels, tex_end, period);
         rp[y] = o;
         if (++t == th) t = 0;
       }
@@ -520,6 +658,12 @@ __attribute__((always_inline)) inline bool surface_block_mip3(const uint16_t* gr
     }
     // Rows repeat every th (used = th here when height exceeds it): two pointers a step.
     int y = used;
+    for (; y + 3 < height + 2 && used >= 4; y += 4) {
+      const uint64x2_t a = vld1q_u64(reinterpret_cast<const uint64_t*>(rp + y - used));
+      const uint64x2_t b = vld1q_u64(reinterpret_cast<const uint64_t*>(rp + y - used + 2));
+      vst1q_u64(reinterpret_cast<uint64_t*>(rp + y), a);
+      vst1q_u64(reinterpret_cast<uint64_t*>(rp + y + 2), b);
+    }
     for (; y + 1 < height + 2 && used >= 2; y += 2)
       vst1q_u64(reinterpret_cast<uint64_t*>(rp + y), vld1q_u64(reinterpret_cast<const uint64_t*>(rp + y - used)));
     for (; y < height + 2; ++y) rp[y] = rp[y >= used ? y - used : 0];  // (read ahead by the last band, unused)
