@@ -43,35 +43,35 @@ namespace {
 #if defined(__aarch64__)
 
 #define SB_MIP3_BAND0 \
-  "stp d4, d5, [x1]\n\t" \
-  "add v3.8h, v19.8h, v20.8h\n\t" \
-  "ushr v1.8h, v19.8h, #1\n\t" \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
+  "ushr v1.8h, v19.8h, #1\n\t" \
+  "add v3.8h, v19.8h, v20.8h\n\t" \
+  "stp d4, d5, [x1]\n\t" \
   "add x1, x1, x2\n\t" \
   "ldp x6, x7, [x5], #16\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
-  "stp d6, d7, [x1]\n\t" \
-  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "bif v24.16b, v16.16b, v31.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
   "ldr q16, [x3]\n\t" \
   "add x1, x1, x2\n\t" \
-  "add v21.8h, v18.8h, v22.8h\n\t" \
-  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x10, d1\n\t" \
-  "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
-  "fmov x8, d24\n\t" \
   "fmov x13, v2.d[1]\n\t" \
-  "fmov x14, d3\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x12, d2\n\t" \
   "fmov x11, v1.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x10, d1\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x6, x28]\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
   "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
   "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
@@ -79,26 +79,26 @@ namespace {
   "ld1 {v6.b}[0], [x17]\n\t" \
   "and x24, x27, x8, lsr #16\n\t" \
   "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
   "add x24, x0, x24\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
   "and x17, x27, x13, lsr #16\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x25, x0, x25\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
   "add x16, x0, x16\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x18, x0, x18\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
   "add x17, x0, x17\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
   "add x19, x0, x19\n\t" \
   "ld1 {v6.b}[2], [x25]\n\t" \
   "add x20, x0, x20\n\t" \
@@ -107,17 +107,17 @@ namespace {
   "ld1 {v7.b}[2], [x17]\n\t" \
   "and x22, x27, x8, lsr #32\n\t" \
   "ld1 {v4.b}[3], [x18]\n\t" \
+  "add x22, x0, x22\n\t" \
   "and x24, x27, x9, lsr #32\n\t" \
   "and x23, x27, x12, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
   "and x25, x27, x13, lsr #32\n\t" \
-  "add x24, x0, x24\n\t" \
+  "add x23, x0, x23\n\t" \
   "ld1 {v6.b}[3], [x19]\n\t" \
-  "add x22, x0, x22\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
   "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
   "and x17, x27, x14, lsr #32\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
   "ld1 {v7.b}[3], [x21]\n\t" \
   "and x18, x27, x11, lsr #32\n\t" \
   "ld1 {v4.b}[4], [x22]\n\t" \
@@ -127,63 +127,63 @@ namespace {
   "ld1 {v5.b}[4], [x24]\n\t" \
   "add x17, x0, x17\n\t" \
   "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "add x18, x0, x18\n\t" \
   "add x20, x0, x8, lsr #48\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
   "ld1 {v4.b}[5], [x16]\n\t" \
   "add x21, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[5], [x17]\n\t" \
   "add x22, x0, x9, lsr #48\n\t" \
   "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
   "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
   "cmp x30, #4\n\t" \
   "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
   "ld1 {v5.b}[7], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v6.b}[7], [x25]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
   "subs x30, x30, #1\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
   "add x3, x3, x26\n\t" \
 
 #define SB_MIP3_BAND1 \
-  "stp d4, d5, [x1]\n\t" \
-  "add v3.8h, v20.8h, v21.8h\n\t" \
-  "ushr v1.8h, v20.8h, #1\n\t" \
   "uhadd v2.8h, v17.8h, v18.8h\n\t" \
+  "ushr v1.8h, v20.8h, #1\n\t" \
+  "add v3.8h, v20.8h, v21.8h\n\t" \
+  "stp d4, d5, [x1]\n\t" \
   "add x1, x1, x2\n\t" \
   "ldp x6, x7, [x5], #16\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
-  "stp d6, d7, [x1]\n\t" \
-  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "bif v24.16b, v17.16b, v31.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
   "ldr q17, [x3]\n\t" \
   "add x1, x1, x2\n\t" \
-  "add v19.8h, v16.8h, v22.8h\n\t" \
-  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x10, d1\n\t" \
-  "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
-  "fmov x8, d24\n\t" \
   "fmov x13, v2.d[1]\n\t" \
-  "fmov x14, d3\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x12, d2\n\t" \
   "fmov x11, v1.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x10, d1\n\t" \
+  "add v19.8h, v16.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x6, x28]\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
   "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
   "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
@@ -191,26 +191,26 @@ namespace {
   "ld1 {v6.b}[0], [x17]\n\t" \
   "and x24, x27, x8, lsr #16\n\t" \
   "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
   "add x24, x0, x24\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
   "and x17, x27, x13, lsr #16\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x25, x0, x25\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
   "add x16, x0, x16\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x18, x0, x18\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
   "add x17, x0, x17\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
   "add x19, x0, x19\n\t" \
   "ld1 {v6.b}[2], [x25]\n\t" \
   "add x20, x0, x20\n\t" \
@@ -219,17 +219,17 @@ namespace {
   "ld1 {v7.b}[2], [x17]\n\t" \
   "and x22, x27, x8, lsr #32\n\t" \
   "ld1 {v4.b}[3], [x18]\n\t" \
+  "add x22, x0, x22\n\t" \
   "and x24, x27, x9, lsr #32\n\t" \
   "and x23, x27, x12, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
   "and x25, x27, x13, lsr #32\n\t" \
-  "add x24, x0, x24\n\t" \
+  "add x23, x0, x23\n\t" \
   "ld1 {v6.b}[3], [x19]\n\t" \
-  "add x22, x0, x22\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
   "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
   "and x17, x27, x14, lsr #32\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
   "ld1 {v7.b}[3], [x21]\n\t" \
   "and x18, x27, x11, lsr #32\n\t" \
   "ld1 {v4.b}[4], [x22]\n\t" \
@@ -239,63 +239,63 @@ namespace {
   "ld1 {v5.b}[4], [x24]\n\t" \
   "add x17, x0, x17\n\t" \
   "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "add x18, x0, x18\n\t" \
   "add x20, x0, x8, lsr #48\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
   "ld1 {v4.b}[5], [x16]\n\t" \
   "add x21, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[5], [x17]\n\t" \
   "add x22, x0, x9, lsr #48\n\t" \
   "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
   "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
   "cmp x30, #4\n\t" \
   "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
   "ld1 {v5.b}[7], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v6.b}[7], [x25]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
   "subs x30, x30, #1\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
   "add x3, x3, x26\n\t" \
 
 #define SB_MIP3_BAND2 \
-  "stp d4, d5, [x1]\n\t" \
-  "add v3.8h, v21.8h, v19.8h\n\t" \
-  "ushr v1.8h, v21.8h, #1\n\t" \
   "uhadd v2.8h, v18.8h, v16.8h\n\t" \
+  "ushr v1.8h, v21.8h, #1\n\t" \
+  "add v3.8h, v21.8h, v19.8h\n\t" \
+  "stp d4, d5, [x1]\n\t" \
   "add x1, x1, x2\n\t" \
   "ldp x6, x7, [x5], #16\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
-  "stp d6, d7, [x1]\n\t" \
-  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "bif v24.16b, v18.16b, v31.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
   "ldr q18, [x3]\n\t" \
   "add x1, x1, x2\n\t" \
-  "add v20.8h, v17.8h, v22.8h\n\t" \
-  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x10, d1\n\t" \
-  "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
-  "fmov x8, d24\n\t" \
   "fmov x13, v2.d[1]\n\t" \
-  "fmov x14, d3\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x12, d2\n\t" \
   "fmov x11, v1.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x10, d1\n\t" \
+  "add v20.8h, v17.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x6, x28]\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
   "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
   "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
@@ -303,26 +303,26 @@ namespace {
   "ld1 {v6.b}[0], [x17]\n\t" \
   "and x24, x27, x8, lsr #16\n\t" \
   "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
   "add x24, x0, x24\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
   "and x17, x27, x13, lsr #16\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x25, x0, x25\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
   "add x16, x0, x16\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x18, x0, x18\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
   "add x17, x0, x17\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
   "add x19, x0, x19\n\t" \
   "ld1 {v6.b}[2], [x25]\n\t" \
   "add x20, x0, x20\n\t" \
@@ -331,17 +331,17 @@ namespace {
   "ld1 {v7.b}[2], [x17]\n\t" \
   "and x22, x27, x8, lsr #32\n\t" \
   "ld1 {v4.b}[3], [x18]\n\t" \
+  "add x22, x0, x22\n\t" \
   "and x24, x27, x9, lsr #32\n\t" \
   "and x23, x27, x12, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
   "and x25, x27, x13, lsr #32\n\t" \
-  "add x24, x0, x24\n\t" \
+  "add x23, x0, x23\n\t" \
   "ld1 {v6.b}[3], [x19]\n\t" \
-  "add x22, x0, x22\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
   "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
   "and x17, x27, x14, lsr #32\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
   "ld1 {v7.b}[3], [x21]\n\t" \
   "and x18, x27, x11, lsr #32\n\t" \
   "ld1 {v4.b}[4], [x22]\n\t" \
@@ -351,59 +351,59 @@ namespace {
   "ld1 {v5.b}[4], [x24]\n\t" \
   "add x17, x0, x17\n\t" \
   "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "add x18, x0, x18\n\t" \
   "add x20, x0, x8, lsr #48\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
   "ld1 {v4.b}[5], [x16]\n\t" \
   "add x21, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[5], [x17]\n\t" \
   "add x22, x0, x9, lsr #48\n\t" \
   "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
   "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
   "cmp x30, #4\n\t" \
   "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
   "ld1 {v5.b}[7], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v6.b}[7], [x25]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
   "subs x30, x30, #1\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
   "add x3, x3, x26\n\t" \
 
 #define SB_MIP3_ENTRY \
-  "add v3.8h, v19.8h, v20.8h\n\t" \
-  "ushr v1.8h, v19.8h, #1\n\t" \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
+  "ushr v1.8h, v19.8h, #1\n\t" \
+  "add v3.8h, v19.8h, v20.8h\n\t" \
   "ldp x6, x7, [x5], #16\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
-  "bit v2.16b, v25.16b, v31.16b\n\t" \
   "bif v24.16b, v16.16b, v31.16b\n\t" \
   "ldr q16, [x3]\n\t" \
-  "add v21.8h, v18.8h, v22.8h\n\t" \
-  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x10, d1\n\t" \
-  "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
-  "fmov x8, d24\n\t" \
   "fmov x13, v2.d[1]\n\t" \
-  "fmov x14, d3\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x12, d2\n\t" \
   "fmov x11, v1.d[1]\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x10, d1\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x6, x28]\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
   "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x6, x28]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
   "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
@@ -411,26 +411,26 @@ namespace {
   "ld1 {v6.b}[0], [x17]\n\t" \
   "and x24, x27, x8, lsr #16\n\t" \
   "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
   "add x24, x0, x24\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
   "and x17, x27, x13, lsr #16\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x25, x0, x25\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
   "add x16, x0, x16\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x18, x0, x18\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
   "add x17, x0, x17\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
   "add x19, x0, x19\n\t" \
   "ld1 {v6.b}[2], [x25]\n\t" \
   "add x20, x0, x20\n\t" \
@@ -439,17 +439,17 @@ namespace {
   "ld1 {v7.b}[2], [x17]\n\t" \
   "and x22, x27, x8, lsr #32\n\t" \
   "ld1 {v4.b}[3], [x18]\n\t" \
+  "add x22, x0, x22\n\t" \
   "and x24, x27, x9, lsr #32\n\t" \
   "and x23, x27, x12, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
   "and x25, x27, x13, lsr #32\n\t" \
-  "add x24, x0, x24\n\t" \
+  "add x23, x0, x23\n\t" \
   "ld1 {v6.b}[3], [x19]\n\t" \
-  "add x22, x0, x22\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
   "add x25, x0, x25\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "add x24, x0, x24\n\t" \
   "and x17, x27, x14, lsr #32\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
   "ld1 {v7.b}[3], [x21]\n\t" \
   "and x18, x27, x11, lsr #32\n\t" \
   "ld1 {v4.b}[4], [x22]\n\t" \
@@ -459,31 +459,31 @@ namespace {
   "ld1 {v5.b}[4], [x24]\n\t" \
   "add x17, x0, x17\n\t" \
   "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "add x18, x0, x18\n\t" \
   "add x20, x0, x8, lsr #48\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
   "ld1 {v4.b}[5], [x16]\n\t" \
   "add x21, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[5], [x17]\n\t" \
   "add x22, x0, x9, lsr #48\n\t" \
   "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
   "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
   "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
   "cmp x30, #4\n\t" \
   "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
   "ld1 {v5.b}[7], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v6.b}[7], [x25]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
   "subs x30, x30, #1\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
   "add x3, x3, x26\n\t" \
 
 constexpr uint8_t kMip3Iota[32] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12, 13, 14, 15,
