@@ -622,19 +622,25 @@ __attribute__((always_inline)) inline bool surface_block_mip3(const uint16_t* gr
   {
     int t = t0;
     if (p16 && !flat && used == th) {
-      // Every texture row once, in texture order at buf + 16 t, two a step while 16-byte reads
-      // stay inside; rp from t0 cyclically.
-      const uint8_t* r = texels;
-      int k = 0;
-      for (; k + 2 <= th && r + tw + 16 <= tex_end; k += 2, r += 2 * tw) {
-        const uint8x16_t a = vqtbl1q_u8(vld1q_u8(r), period[0]), b = vqtbl1q_u8(vld1q_u8(r + tw), period[0]);
-        vst1q_u8(buf + 16 * k, a);
-        vst1q_u8(buf + 16 * k + 16, b);
-      }
-      for (; k < th; ++k, r += tw) mip3_tile16(buf + 16 * k, r, tw, c0, texels, tex_end, period);
-      for (int y = 0; y < used; ++y) {
-        rp[y] = buf + 16 * t;
-        if (++t == th) t = 0;
+      // Every texture row once, from t0 on (buf + 16 k: row (t0 + k) mod th), two a step while
+      // 16-byte reads stay inside; then rp[y] = buf + 16 y for y < th, two a step.
+      auto tile_run = [&](int k, int first, int n) __attribute__((always_inline)) {
+        const uint8_t* r = texels + first * tw;
+        int i = 0;
+        for (; i + 2 <= n && r + tw + 16 <= tex_end; i += 2, r += 2 * tw) {
+          const uint8x16_t a = vqtbl1q_u8(vld1q_u8(r), period[0]), b = vqtbl1q_u8(vld1q_u8(r + tw), period[0]);
+          vst1q_u8(buf + 16 * (k + i), a);
+          vst1q_u8(buf + 16 * (k + i) + 16, b);
+        }
+        for (; i < n; ++i, r += tw) mip3_tile16(buf + 16 * (k + i), r, tw, c0, texels, tex_end, period);
+      };
+      tile_run(0, t0, th - t0);
+      if (t0) tile_run(th - t0, 0, t0);
+      uint64x2_t v = vaddq_u64(vdupq_n_u64(uint64_t(reinterpret_cast<uintptr_t>(buf))), vcombine_u64(vdup_n_u64(0), vdup_n_u64(16)));
+      const uint64x2_t step = vdupq_n_u64(32);
+      for (int y = 0; y < th; y += 2) {  // (an odd th writes rp[th]: rewritten below)
+        vst1q_u64(reinterpret_cast<uint64_t*>(rp + y), v);
+        v = vaddq_u64(v, step);
       }
     } else if (p16 && !flat) {
       for (int y = 0; y < used; ++y) {
