@@ -18,6 +18,7 @@
 #include "asm/neon_block_a32.h"
 #include "asm/neon_block_a53.h"
 #include "asm/neon_block_a64.h"
+#include "asm/neon_block_mip3.h"
 
 namespace sb::simd::detail {
 namespace {
@@ -54,7 +55,7 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // grid in the loop). The last, partial group of a row is C++.
 // neon_a53 (kInOrder, for in-order cores: Cortex-A53/A35/A55) keeps the rest but runs its own
 // row loops at mips 0-2: 16-bit indices, colormap bytes loaded straight into output lanes
-// (see there); mip 3 runs the shared loop.
+// (see there); mip 3 its own function (asm/neon_block_mip3.h, the shared loop as fallback).
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -831,6 +832,8 @@ void surface_block_neon_inorder(const uint16_t* grid, int grid_width, const uint
     if (mip == 2)
       return surface_block_groups<2, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
                                            colormap, out);
+    if (surface_block_mip3(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out))
+      return;
     return surface_block_groups<3, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
                                          colormap, out);
   }

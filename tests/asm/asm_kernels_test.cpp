@@ -270,6 +270,37 @@ TEST(AsmSurfaceBlock, EveryVariantMatchesScalarEveryMip) {
   std::printf("[ asm      ] surface_block: %d cases compared\n", cases);
 }
 
+// Mip 3 has its own AArch64 function (asm/neon_block_mip3.h): bands rotate through three
+// loop copies and an entry copy (1..7 bands), a last partial group (widths not a multiple of
+// 16), grid reads clamped to the last row, texel rows laid out 16 bytes wide (power-of-two
+// widths up to 16, repeating or not), n16 wide (other widths) or read in place, rows at the
+// texture's end, and shapes it leaves to the general builder (taller than 512 rows).
+TEST(AsmSurfaceBlock, Mip3EdgeShapes) {
+  std::mt19937 rng(3303);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int bh = 1; bh <= 7; ++bh) {
+      for (int w : {2, 6, 14, 16, 18, 30, 32, 34, 48, 64, 510, 512}) {
+        for (int tw : {2, 4, 6, 8, 10, 16, 18, 24, 32, 64}) {
+          const int th = 2 * int(1 + rng() % 10);
+          const int soff = 2 * (int(rng() % 65) - 32), toff = 2 * (int(rng() % 65) - 32);
+          const BlockCase c{3, w, 2 * bh, tw, th, soff, toff, w / 2 + 1 + int(rng() % 2)};
+          check_block(k, rng, c, Light(rng() % 6), false);
+          ++cases;
+        }
+      }
+    }
+    // In place (no wrap, texture wider than the surface), tall surfaces, too tall (fallback).
+    check_block(k, rng, BlockCase{3, 32, 64, 64, 8, 0, 6, 17}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{3, 40, 96, 128, 128, 16, 2, 21}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{3, 48, 512, 8, 16, -2, 4, 25}, Light::kSmooth, false);
+    check_block(k, rng, BlockCase{3, 16, 514, 8, 8, 2, 0, 9}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{3, 512, 64, 14, 6, 4, -6, 257}, Light::kAlternating, false);
+    cases += 5;
+  }
+  std::printf("[ asm      ] surface_block mip 3: %d cases compared\n", cases);
+}
+
 // ---------------------------------------------------------------- z span
 
 TEST(AsmZSpan, EveryVariantMatchesScalar) {
