@@ -224,7 +224,9 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     // value either way) and sqxtn to int32. Equal to to_fixed: NaN and x = q 2^16 <= 0
     // give trunc <= 0 -> 0; for x > m (m an integer >= 0) trunc(x) >= m, kept >= m by the
     // saturations -> m; else 0 < x <= m and trunc(x) fits. A sample's clamped [u, v] in
-    // one 64-bit lane is v 2^32 + u: a run's packed start.
+    // one 64-bit lane is v 2^32 + u: a run's packed start. Linear steps convert unsigned
+    // instead: fcvtzu #16 (trunc(q 2^16) saturating to [0, 2^64), NaN -> 0), uqxtn (to
+    // [0, 2^32)) and an unsigned min with m < 2^31: the same value with one clamp less.
     // Pipeline: a pass (runs r, r + 1) finishes samples r + 2, r + 3 (converted a pass
     // earlier), takes the steps of runs r + 1, r + 2 from them, computes the positions and
     // divides of samples r + 4, r + 5 and converts those. Second order: the steps as the
@@ -237,6 +239,7 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
       const float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
       const int32x2_t kMax = vcreate_s32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
       const int32x2_t kZero = vdup_n_s32(0);
+      const uint32x2_t kMaxU = vreinterpret_u32_s32(kMax);
       auto pack = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
       // [P_{r+2}, P_{r+3}] accumulated as the walker does (P_{r+3} = P_{r+2} + 16 exactly
       // as computed, so adding 16 twice to both lanes gives the next pass's pair, bit for
@@ -275,6 +278,7 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
         uint64_t b_uv = 0, b_d = 0, a_uv = 0, a_d = 0, b_dd = 0, a_dd = 0;
         float64x2_t off, pos45, zi45, z45, ts4, ts5, q4, q5, zsn;
         int64x2_t i4, i5;
+        uint64x2_t u4, u5;  // linear: the samples' unsigned conversions
         // Second order, runs r + 1, r + 2: deltas, their doubles, the products, dd.
         float64x2_t sum, c;
         int32_t du1 = 0, dv1 = 0, du2 = 0, dv2 = 0, iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
@@ -354,7 +358,8 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
           // Even stages (between the shifts and the loads): the vector work, two chains;
           // odd stages: integer work.
           if constexpr (G == 0) {
-            n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);
+            n2 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n2), kMaxU));
+            n3 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n3), kMaxU));
             off = vminnmq_f64(ll, k32);
             pin(n2), pin(n3), pin(off);
           } else if constexpr (G == 2) {
@@ -389,13 +394,10 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
             a_uv = x2p, a_d = steps16_packed(x2p, x3p);
             pin(a_d);
           } else if constexpr (G == 14) {
-            i4 = vcvtq_n_s64_f64(q4, 16), i5 = vcvtq_n_s64_f64(q5, 16);
-            pin(i4), pin(i5);
+            u4 = vcvtq_n_u64_f64(q4, 16), u5 = vcvtq_n_u64_f64(q5, 16);
+            pin(u4), pin(u5);
           } else if constexpr (G == 16) {
-            n4 = vqmovn_s64(i4), n5 = vqmovn_s64(i5);
-            pin(n4), pin(n5);
-          } else if constexpr (G == 18) {
-            n4 = vmax_s32(n4, kZero), n5 = vmax_s32(n5, kZero);
+            n4 = vreinterpret_s32_u32(vqmovn_u64(u4)), n5 = vreinterpret_s32_u32(vqmovn_u64(u5));
             pin(n4), pin(n5);
           }
         };

@@ -241,6 +241,10 @@ def estimate(t, dis, case, variant, units, reps, kernel_instr):
         weights.append(ecount)
         insns += icount * ecount
     cover = insns / kernel_instr if kernel_instr else 0.0
+    if os.environ.get("SB_MCA_DUMP"):  # debugging aid: the hot blocks and their weights
+        import json
+        json.dump({"regions": regions, "weights": weights, "reps": reps, "units": units},
+                  open(os.environ["SB_MCA_DUMP"] + f".{case}.{variant}.{t['name']}.json", "w"))
     out = {}
     gather = any(re.search(r"gather", " ".join(r)) for r in regions)
     for cpu in t["cpus"]:

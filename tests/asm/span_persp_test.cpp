@@ -262,6 +262,41 @@ TEST(AsmSpanPersp, FixedPointClampMatchesTheWalker) {
   std::printf("[ asm      ] span_persp: %ld fixed-point clamps, %ld wrong\n", checked, wrong);
 }
 
+// aarch64 long linear spans (asm/span_persp_fast.cpp) take to_fixed as fcvtzu #16, uqxtn and
+// an unsigned min with m: the walker's to_fixed on the same edges and random values.
+TEST(AsmSpanPersp, UnsignedFixedPointClampMatchesTheWalker) {
+#if defined(__aarch64__)
+  std::mt19937 rng(17);
+  long checked = 0, wrong = 0;
+  auto check = [&](double q, int32_t m) {
+    const int32_t want = sb::simd::span_walk::to_fixed(q, m);
+    const uint32x2_t c = vqmovn_u64(vcvtq_n_u64_f64(vdupq_n_f64(q), 16));
+    const int32_t got = int32_t(vget_lane_u32(vmin_u32(c, vdup_n_u32(uint32_t(m))), 0));
+    wrong += got != want;
+    ++checked;
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int32_t m : {0, 1, 65535, 65536, (1 << 24) - 1, INT32_MAX - 65535, INT32_MAX}) {
+    const double mq = double(m) / 65536.0;
+    for (double q : {0.0, -0.0, 1e-300, -1e-300, 0.5 / 65536, -0.5 / 65536, 1.0 / 65536, -1.0 / 65536, mq,
+                     std::nextafter(mq, 0.0), std::nextafter(mq, 1e300), mq + 1.0 / 65536, mq - 1.0 / 65536,
+                     65536.0, 32768.0, 4294967296.0 / 65536, 4294967295.0 / 65536, 1e10, -1e10, 1e300, -1e300,
+                     inf, -inf, nan, -nan}) {
+      check(q, m);
+    }
+  }
+  for (int i = 0; i < 300000; ++i) {
+    const int32_t m = int32_t(rng() >> 1) >> (rng() % 31);
+    const double q = std::ldexp(double(int32_t(rng())), -int(rng() % 60));
+    check(q, m);
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld unsigned fixed-point clamps, %ld wrong\n", checked, wrong);
+#else
+  GTEST_SKIP() << "aarch64 only";
+#endif
+}
+
 #if !defined(__aarch64__)
 // asm/span_persp_arm.h's last-run steps as the ARMv7 tails take them in two parts
 // (last_ddi: ddf converted, its range test in integers; last_steps_i) against the walker's
