@@ -517,9 +517,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
             const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
             const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-            if constexpr (LB == 2 || kInOrder) {  // e, e1 (16 bytes a band): the assembly weighs them
-              vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
-            } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
+            if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
               dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
               dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
               dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
@@ -540,6 +538,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             }
           };
           const uint16_t* r = grid + by0 * grid_width + b0;  // the next band's upper grid row
+          if constexpr (LB == 2 || kInOrder) {  // e, e1 (16 bytes a band): the assembly weighs them
+            grid_row_diffs<LB>(r, 2 * int64_t(grid_width), nb, dtab + kDo);
+          } else {
           uint16x8_t p = ldg(r), p1 = LB <= 3 ? ldg(r + 1) : p;
           uint32x4_t* dt = dtab + kDo;
           int b = 0;
@@ -557,6 +558,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             r += grid_width;
             const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
             band(p, p1, q, q1, dt);
+          }
           }
         } else {
           for (int b = 0; b < nb; ++b) {
