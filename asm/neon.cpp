@@ -124,11 +124,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // every tw bytes, so group g reads its 16 bytes at (16 g) mod tw and only the first tw + 15
   // (rounded up to 16) are laid out (not mip 3's loop: it steps its runs by gs a group).
   const int gper = kMip != 3 && !p16 && tw > 16 && width > tw && ((tw + 30) & ~15) < n16 ? tw : 0;
+  const int gs = p16 ? 0 : 16, tile_n = gper ? (tw + 30) & ~15 : p16 ? 16 : n16, wlim = p16 ? 16 : width;
+  auto goff_of = [&](int g) { return gper ? 16 * g % gper : gs * g; };  // group g's offset in a run
 #else
   constexpr int gper = 0;
+  const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16, wlim = p16 ? 16 : width;
 #endif
-  const int gs = p16 ? 0 : 16, tile_n = gper ? (tw + 30) & ~15 : p16 ? 16 : n16, wlim = p16 ? 16 : width;
-  [[maybe_unused]] auto goff_of = [&](int g) { return gper ? 16 * g % gper : gs * g; };  // group g's offset in a run
   auto in_place = [&](int t) { return c0 + wlim <= tw && texels + t * tw + c0 + tile_n <= tex_end; };
   // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
@@ -173,7 +174,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       for (int t = 0; t < th; ++t)
         run[t] = c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end
                      ? texels + t * tw + c0
-                     : (tile_row(buf + t * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
+                     : (tile_row(buf + t * stride, texels + t * tw, tw, c0, gper ? tile_n : n16, tex_end, period, texels),
                         buf + t * stride);
     }
   }
@@ -773,7 +774,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       alignas(16) uint32_t ib[2][16];
       int cur = 0;
       auto indices = [&](const uint8_t* src) {
-        const uint8x16_t t = vld1q_u8(src + goff_of(g));
+        const uint8x16_t t = vld1q_u8(src + gs * g);
         const uint16x8_t lo = vmovl_u8(vget_low_u8(t)), hi = vmovl_u8(vget_high_u8(t));
         const uint32x4_t t32[4] = {vmovl_u16(vget_low_u16(lo)), vmovl_u16(vget_high_u16(lo)),
                                    vmovl_u16(vget_low_u16(hi)), vmovl_u16(vget_high_u16(hi))};
