@@ -119,7 +119,17 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // Widths dividing 16: every 16 bytes of a run are its first 16, which every group reads (gs:
   // a group's offset step in a run); only they are laid out, none when the row is they.
   const bool p16 = tw <= 16 && (tw & (tw - 1)) == 0;
+#if defined(__aarch64__)
+  // Textures wider than 16 but narrower than the surface (no run in place): a run repeats
+  // every tw bytes, so group g reads its 16 bytes at (16 g) mod tw and only the first tw + 15
+  // (rounded up to 16) are laid out (not mip 3's loop: it steps its runs by gs a group).
+  const int gper = kMip != 3 && !p16 && tw > 16 && width > tw && ((tw + 30) & ~15) < n16 ? tw : 0;
+  const int gs = p16 ? 0 : 16, tile_n = gper ? (tw + 30) & ~15 : p16 ? 16 : n16, wlim = p16 ? 16 : width;
+  auto goff_of = [&](int g) { return gper ? 16 * g % gper : gs * g; };  // group g's offset in a run
+#else
+  constexpr int gper = 0;
   const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16, wlim = p16 ? 16 : width;
+#endif
   auto in_place = [&](int t) { return c0 + wlim <= tw && texels + t * tw + c0 + tile_n <= tex_end; };
   // Narrow textures (tw <= 16): byte k of a run's first 32 is the row's byte (c0 + k) mod tw.
   uint8x16_t period[2];
@@ -164,7 +174,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       for (int t = 0; t < th; ++t)
         run[t] = c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end
                      ? texels + t * tw + c0
-                     : (tile_row(buf + t * stride, texels + t * tw, tw, c0, n16, tex_end, period, texels),
+                     : (tile_row(buf + t * stride, texels + t * tw, tw, c0, gper ? tile_n : n16, tex_end, period, texels),
                         buf + t * stride);
     }
   }
@@ -467,7 +477,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       // (below); the last partial group of a row runs this C++ version.
       uint64_t P[8];
       auto indices = [&](const uint8_t* src) {  // P = the indices of the row at src
-        const uint8x16_t t = vld1q_u8(src + gs * g);
+        const uint8x16_t t = vld1q_u8(src + goff_of(g));
 #pragma GCC unroll 4
         for (int j = 0; j < 4; ++j) {
           const uint64x2_t v =
@@ -508,9 +518,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             // e: lanes e[0..3], e1: e[1..4] (only those a group reads are loaded)
             const int16x4_t e = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q), vget_low_u16(p)));
             const int16x4_t e1 = vreinterpret_s16_u16(vsub_u16(vget_low_u16(q1), vget_low_u16(p1)));
-            if constexpr (LB == 2 || kInOrder) {  // e, e1 (16 bytes a band): the assembly weighs them
-              vst1q_s16(reinterpret_cast<int16_t*>(dt), vcombine_s16(e, e1));
-            } else if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
+            if constexpr (LB == 3) {  // quarters 0-1: block 0, 2-3: block 1
               dt[0] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[0], e, 0), w1[0], e1, 0));
               dt[1] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[1], e, 0), w1[1], e1, 0));
               dt[2] = vreinterpretq_u32_s32(vmlal_lane_s16(vmull_lane_s16(w0[2], e, 1), w1[2], e1, 1));
@@ -531,6 +539,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             }
           };
           const uint16_t* r = grid + by0 * grid_width + b0;  // the next band's upper grid row
+          if constexpr (LB == 2 || kInOrder) {  // e, e1 (16 bytes a band): the assembly weighs them
+            grid_row_diffs<LB>(r, 2 * int64_t(grid_width), nb, dtab + kDo);
+          } else {
           uint16x8_t p = ldg(r), p1 = LB <= 3 ? ldg(r + 1) : p;
           uint32x4_t* dt = dtab + kDo;
           int b = 0;
@@ -548,6 +559,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             r += grid_width;
             const uint16x8_t q = ldg(r), q1 = LB <= 3 ? ldg(r + 1) : q;
             band(p, p1, q, q1, dt);
+          }
           }
         } else {
           for (int b = 0; b < nb; ++b) {
@@ -569,7 +581,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
         if constexpr (LB != 1)
           for (int j = 0; j < 4; ++j) dtab[kDo + kDs * nb + j] = vdupq_n_u32(0);
-        const int64_t goff = gs * g, wstride = width;
+        const int64_t goff = goff_of(g), wstride = width;
         const uint8_t* const* rp = lin;
         if constexpr (LB >= 3 && kInOrder) {
           const uint8x16_t J0 = vld1q_u8(kTix16[0]), J1 = vld1q_u8(kTix16[1]);

@@ -270,6 +270,30 @@ TEST(AsmSurfaceBlock, EveryVariantMatchesScalarEveryMip) {
   std::printf("[ asm      ] surface_block: %d cases compared\n", cases);
 }
 
+// Textures wider than 16 texels but narrower than the surface (AArch64 mips 0-2 lay out only
+// a run's first tw + 15 bytes and read group g at (16 g) mod tw): widths just past 16, not
+// multiples of 16 (mips 1-2), just below the surface's, rows at the texture's end.
+TEST(AsmSurfaceBlock, RunsRepeatingAcrossTheSurface) {
+  std::mt19937 rng(2718);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int mip = 0; mip < 3; ++mip) {
+      const int b = 16 >> mip;
+      for (int tw : {20, 24, 28, 32, 36, 40, 48, 56, 60, 64, 80, 96, 112, 240}) {
+        for (int w : {2 * b, 48, 64, 80, 128, 240, 256, 272}) {
+          if (w <= tw || w % b || tw % b) continue;
+          const int th = b * int(1 + rng() % 6), h = b * int(1 + rng() % 6);
+          const int soff = b * (int(rng() % 33) - 16), toff = b * (int(rng() % 33) - 16);
+          check_block(k, rng, BlockCase{mip, w, h, tw, th, soff, toff, w / b + 1 + int(rng() % 2)}, Light(rng() % 6),
+                      false);
+          ++cases;
+        }
+      }
+    }
+  }
+  std::printf("[ asm      ] surface_block repeating runs: %d cases compared\n", cases);
+}
+
 // Mip 3 has its own AArch64 function (asm/neon_block_mip3.h): bands rotate through three
 // loop copies and an entry copy (1..7 bands), a last partial group (widths not a multiple of
 // 16), grid reads clamped to the last row, texel rows laid out 16 bytes wide (power-of-two
