@@ -230,6 +230,28 @@ TEST(AsmSpanPersp, DepthClampWithoutBranchMatches) {
   EXPECT_EQ(wrong, 0);
 }
 
+// The to_fixed inputs both conversion tests run: bounds m from 0 to INT32_MAX, for each
+// zero, tiny, (-1, 0] and (0, 1) after scaling, the bound's neighbourhood, 2^32 / 2^16,
+// huge, infinite and NaN values; then 300000 random (q, m) pairs from rng.
+template <class Check>
+void to_fixed_cases(std::mt19937& rng, Check&& check) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (int32_t m : {0, 1, 65535, 65536, (1 << 24) - 1, INT32_MAX - 65535, INT32_MAX}) {
+    const double mq = double(m) / 65536.0;
+    for (double q : {0.0, -0.0, 1e-300, -1e-300, 0.5 / 65536, -0.5 / 65536, 1.0 / 65536, -1.0 / 65536, mq,
+                     std::nextafter(mq, 0.0), std::nextafter(mq, 1e300), mq + 1.0 / 65536, mq - 1.0 / 65536,
+                     65536.0, 32768.0, 4294967296.0 / 65536, 4294967295.0 / 65536, 1e10, -1e10, 1e300, -1e300,
+                     inf, -inf, nan, -nan}) {
+      check(q, m);
+    }
+  }
+  for (int i = 0; i < 300000; ++i) {
+    const int32_t m = int32_t(rng() >> 1) >> (rng() % 31);
+    const double q = std::ldexp(double(int32_t(rng())), -int(rng() % 60));
+    check(q, m);
+  }
+}
+
 // asm/span_persp_run.h's ARMv7 to_fixed in the VFP/NEON registers (vcvt.u32.f64 #16, then
 // vmin.u32 against the bound) against the walker's to_fixed: zero, negatives, (-1, 0] and
 // (0, 1) after scaling, the bound's neighbourhood, huge, infinite and NaN values.
@@ -244,20 +266,7 @@ TEST(AsmSpanPersp, FixedPointClampMatchesTheWalker) {
     wrong += got != want;
     ++checked;
   };
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-  for (int32_t m : {0, 1, 65535, 65536, (1 << 24) - 1, INT32_MAX - 65535, INT32_MAX}) {
-    const double mq = double(m) / 65536.0;
-    for (double q : {0.0, -0.0, 1e-300, -1e-300, 0.5 / 65536, -0.5 / 65536, 1.0 / 65536, -1.0 / 65536, mq,
-                     std::nextafter(mq, 0.0), std::nextafter(mq, 1e300), mq + 1.0 / 65536, mq - 1.0 / 65536,
-                     65536.0, 32768.0, 1e10, -1e10, 1e300, -1e300, inf, -inf, nan, -nan}) {
-      check(q, m);
-    }
-  }
-  for (int i = 0; i < 300000; ++i) {
-    const int32_t m = int32_t(rng() >> 1) >> (rng() % 31);
-    const double q = std::ldexp(double(int32_t(rng())), -int(rng() % 60));
-    check(q, m);
-  }
+  to_fixed_cases(rng, check);
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld fixed-point clamps, %ld wrong\n", checked, wrong);
 }
@@ -275,21 +284,7 @@ TEST(AsmSpanPersp, UnsignedFixedPointClampMatchesTheWalker) {
     wrong += got != want;
     ++checked;
   };
-  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-  for (int32_t m : {0, 1, 65535, 65536, (1 << 24) - 1, INT32_MAX - 65535, INT32_MAX}) {
-    const double mq = double(m) / 65536.0;
-    for (double q : {0.0, -0.0, 1e-300, -1e-300, 0.5 / 65536, -0.5 / 65536, 1.0 / 65536, -1.0 / 65536, mq,
-                     std::nextafter(mq, 0.0), std::nextafter(mq, 1e300), mq + 1.0 / 65536, mq - 1.0 / 65536,
-                     65536.0, 32768.0, 4294967296.0 / 65536, 4294967295.0 / 65536, 1e10, -1e10, 1e300, -1e300,
-                     inf, -inf, nan, -nan}) {
-      check(q, m);
-    }
-  }
-  for (int i = 0; i < 300000; ++i) {
-    const int32_t m = int32_t(rng() >> 1) >> (rng() % 31);
-    const double q = std::ldexp(double(int32_t(rng())), -int(rng() % 60));
-    check(q, m);
-  }
+  to_fixed_cases(rng, check);
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld unsigned fixed-point clamps, %ld wrong\n", checked, wrong);
 #else
