@@ -123,9 +123,23 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // Textures wider than 16 but narrower than the surface (no run in place): a run repeats
   // every tw bytes, so group g reads its 16 bytes at (16 g) mod tw and only the first tw + 15
   // (rounded up to 16) are laid out (not mip 3's loop: it steps its runs by gs a group).
-  const int gper = kMip != 3 && !p16 && tw > 16 && width > tw && ((tw + 30) & ~15) < n16 ? tw : 0;
+  // Widths a multiple of 16 (the usual case) instead keep rows unrotated: group g reads at
+  // (c0 + 16 g) mod tw, in place when c0 is a multiple of 16 too (every group's 16 bytes lie
+  // inside the row), else from the row laid out tw + 16 bytes (the row, then its first 16).
+  const int umod = kMip != 3 && tw > 16 && (tw & 15) == 0 && c0 + width > tw && tw + 16 <= stride ? tw : 0;
+  const bool uplace = umod && (c0 & 15) == 0;
+  const int gper = !umod && kMip != 3 && !p16 && tw > 16 && width > tw && ((tw + 30) & ~15) < n16 ? tw : 0;
   const int gs = p16 ? 0 : 16, tile_n = gper ? (tw + 30) & ~15 : p16 ? 16 : n16, wlim = p16 ? 16 : width;
-  auto goff_of = [&](int g) { return gper ? 16 * g % gper : gs * g; };  // group g's offset in a run
+  auto goff_of = [&](int g) {  // group g's offset in a run
+    return umod ? (c0 + 16 * g) % umod : gper ? 16 * g % gper : gs * g;
+  };
+  // Row t's run in the unrotated layout (umod), at dst when laid out.
+  auto urun = [&](int t, uint8_t* dst) -> const uint8_t* {
+    const uint8_t* const row = texels + t * tw;
+    if (uplace) return row;
+    tile_row_u(dst, row, tw);
+    return dst;
+  };
 #else
   constexpr int gper = 0;
   const int gs = p16 ? 0 : 16, tile_n = p16 ? 16 : n16, wlim = p16 ? 16 : width;
@@ -170,6 +184,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         run[t] = in_place(t) ? texels + t * tw + c0
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
                                 buf + t * stride);
+#if defined(__aarch64__)
+    } else if (umod) {
+      for (int t = 0; t < th; ++t) run[t] = urun(t, buf + t * stride);
+#endif
     } else {
       for (int t = 0; t < th; ++t)
         run[t] = c0 + width <= tw && texels + t * tw + c0 + n16 <= tex_end
@@ -243,6 +261,13 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       int t = t0 + by0 * B;
       if (t >= th) t = wrap2(t, th);
       for (int r = 0; r < count; ++r) {
+#if defined(__aarch64__)
+        if (umod) {
+          run[r] = urun(t, buf + r * stride);
+          if (++t == th) t = 0;
+          continue;
+        }
+#endif
         run[r] = in_place(t) ? texels + t * tw + c0
                              : (tile_row(buf + r * stride, texels + t * tw, tw, c0, tile_n, tex_end, period, texels),
                                 buf + r * stride);

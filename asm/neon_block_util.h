@@ -123,6 +123,24 @@ SB_TILE_INLINE void tile_row(uint8_t* dst, const uint8_t* row, int tw, int c0, i
   for (; x < n; x += 16) vst1q_u8(dst + x, vld1q_u8(dst + x - d));
 }
 
+#if defined(__aarch64__)
+// dst[x] = row[x mod tw] for x < tw + 16 (tw a multiple of 16, > 16): the row, then its
+// first 16 bytes again (reads only the row).
+SB_TILE_INLINE void tile_row_u(uint8_t* dst, const uint8_t* row, int tw) {
+  const uint8x16_t first = vld1q_u8(row);
+  int x = 16;
+  for (; x + 16 < tw; x += 32) {  // (two a step; tw / 16 - 1 copies)
+    uint8x16_t a = vld1q_u8(row + x), b = vld1q_u8(row + x + 16);
+    asm("" : "+w"(a), "+w"(b));  // (else GCC turns the loop back into a memcpy call)
+    vst1q_u8(dst + x, a);
+    vst1q_u8(dst + x + 16, b);
+  }
+  if (x < tw) vst1q_u8(dst + x, vld1q_u8(row + x));
+  vst1q_u8(dst, first);
+  vst1q_u8(dst + tw, first);
+}
+#endif
+
 // Every row of a texture whose width divides 16, as far as a row's 16-byte read stays inside
 // (ARMv7 with kTail, mip 3's narrow textures: every row when the texture has 16 bytes):
 // run[t] = buf + 16 t, the row's bytes (c0 + k) mod tw (k < 16) by one lookup of period.

@@ -294,6 +294,31 @@ TEST(AsmSurfaceBlock, RunsRepeatingAcrossTheSurface) {
   std::printf("[ asm      ] surface_block repeating runs: %d cases compared\n", cases);
 }
 
+// Texture widths a multiple of 16 (AArch64 mips 0-2 keep such rows unrotated and read group g
+// at (c0 + 16 g) mod tw: in place when c0 is a multiple of 16, else from the row laid out
+// tw + 16 bytes): every column offset c0 mod 16 the contract allows, all rows at once and in strips (textures
+// taller than the surface), rows at the texture's end.
+TEST(AsmSurfaceBlock, UnrotatedRuns) {
+  std::mt19937 rng(1618);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int mip = 0; mip < 3; ++mip) {
+      const int b = 16 >> mip;
+      for (int tw : {32, 48, 64, 128}) {
+        for (int w : {48, 80, 144, 256, 272}) {
+          if (w % b) continue;
+          const int soff = b * (int(rng() % 25) - 12), toff = b * (int(rng() % 25) - 12);
+          const int h = b * int(1 + rng() % 5), th = rng() % 2 ? 2 * h + b : b * int(1 + rng() % 4);
+          check_block(k, rng, BlockCase{mip, w, h, tw, th, soff, toff, w / b + 1 + int(rng() % 2)}, Light(rng() % 6),
+                      false);
+          ++cases;
+        }
+      }
+    }
+  }
+  std::printf("[ asm      ] surface_block unrotated runs: %d cases compared\n", cases);
+}
+
 // Mip 3 has its own AArch64 function (asm/neon_block_mip3.h): bands rotate through three
 // loop copies and an entry copy (1..7 bands), a last partial group (widths not a multiple of
 // 16), grid reads clamped to the last row, texel rows laid out 16 bytes wide (power-of-two
