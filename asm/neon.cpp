@@ -17,6 +17,7 @@
 #include "asm/neon_block_util.h"
 #include "asm/neon_block_a32.h"
 #include "asm/neon_block_a53.h"
+#include "asm/neon_block_a53g.h"
 #include "asm/neon_block_a64.h"
 #include "asm/neon_block_mip3.h"
 
@@ -203,6 +204,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   }
 #if defined(__aarch64__)
   if (strip_bands > kStripRows / B) strip_bands = kStripRows / B;  // the assembly's tables
+  if (kInOrder && LB >= 2 && strip_bands > kA53TableBytes / width - 3) strip_bands = kA53TableBytes / width - 3;
 #endif
 
   // Per-lane weights (halves 0 and 1): (B - fx, fx) << (4 + mip) for the first numerator
@@ -223,6 +225,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
   const uint8_t* lin[kStripRows + 2 + 3];  // the strip's texel runs in row order, two rows beyond
   uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
+  alignas(16) uint8_t a53t[kInOrder && LB >= 2 ? kA53TableBytes : 16];  // (asm/neon_block_a53g.h's table)
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
 #if !defined(__aarch64__)
@@ -448,7 +451,17 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     }
     for (; g < groups; ++g) {
 #else
-    for (int g = 0; g < groups; ++g) {
+    int g = 0;
+    if constexpr (kInOrder && LB >= 2) {  // the full groups (asm/neon_block_a53g.h)
+      if (width >= 16) {
+        const A53Groups st{strip, width >> 4, nullptr, goff_of(0), 0, lin, umod ? umod : gper ? gper : int64_t(1) << 40,
+                           umod || gper ? 16 : gs};
+        a53_full_groups<kMip>(grid + by0 * grid_width, grid_width, nb, width, st, a53t, colormap, BX1, FX1,
+                              vld1q_u8(kTix16[0]), vld1q_u8(kTix16[1]));
+        g = width >> 4;
+      }
+    }
+    for (; g < groups; ++g) {
 #endif
       const int b0 = g * G;
       const bool direct = b0 + G + 1 <= grid_width;  // the group's G + 1 entries inside each row
@@ -513,6 +526,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         }
       };
       if (m >= 16) {
+        if constexpr (kInOrder && LB >= 2) continue;  // (never: a53_full_groups ran them)
         // Full groups: the whole strip in assembly, two rows per iteration. Each iteration
         // first forms both rows' indices (table lookups or shift and lookup, steps, 64-bit
         // moves into x0-x7 and x19-x26) in one run of NEON instructions, then does their scalar
@@ -525,8 +539,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
         // dtab entries a band (mip 2 and the in-order mips 0-1: e, e1 in 16-bit lanes)
-        constexpr int kDs = LB == 2 || (kInOrder && LB >= 3) ? 1 : 4;
-        constexpr int kDo = kInOrder && LB >= 3 ? 4 : 0;  // (in-order mips 0-1: the numerators first)
+        constexpr int kDs = LB == 2 ? 1 : 4;
         if constexpr (LB == 1) {  // (mip 3: no table, see its loop)
         } else if (direct) {
           // Band b's step from the grid rows' differences e (|e| < 2^14): lanes
@@ -564,11 +577,11 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
             }
           };
           const uint16_t* r = grid + by0 * grid_width + b0;  // the next band's upper grid row
-          if constexpr (LB == 2 || kInOrder) {  // e, e1 (16 bytes a band): the assembly weighs them
-            grid_row_diffs<LB>(r, 2 * int64_t(grid_width), nb, dtab + kDo);
+          if constexpr (LB == 2) {  // e, e1 (16 bytes a band): the assembly weighs them
+            grid_row_diffs<LB>(r, 2 * int64_t(grid_width), nb, dtab);
           } else {
           uint16x8_t p = ldg(r), p1 = LB <= 3 ? ldg(r + 1) : p;
-          uint32x4_t* dt = dtab + kDo;
+          uint32x4_t* dt = dtab;
           int b = 0;
 #pragma GCC unroll 2
           for (; b + 2 <= nb; b += 2, dt += 2 * kDs) {
@@ -588,7 +601,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         } else {
           for (int b = 0; b < nb; ++b) {
-            if constexpr (LB == 2 || (kInOrder && LB >= 3)) {  // e, e1 as above, from the zero-padded rows
+            if constexpr (LB == 2) {  // e, e1 as above, from the zero-padded rows
               uint16_t a[5];
               std::memcpy(a, row_of(by0 + b), sizeof a);
               const uint16_t* const c = row_of(by0 + b + 1);
@@ -597,7 +610,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 ee[j] = int16_t(c[j] - a[j]);
                 ee[4 + j] = int16_t(c[j + 1] - a[j + 1]);
               }
-              std::memcpy(dtab + kDo + b, ee, sizeof ee);
+              std::memcpy(dtab + b, ee, sizeof ee);
               continue;
             }
             step_for(by0 + b + 1);
@@ -605,30 +618,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
           }
         }
         if constexpr (LB != 1)
-          for (int j = 0; j < 4; ++j) dtab[kDo + kDs * nb + j] = vdupq_n_u32(0);
+          for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
         const int64_t goff = goff_of(g), wstride = width;
         const uint8_t* const* rp = lin;
-        if constexpr (LB >= 3 && kInOrder) {
-          const uint8x16_t J0 = vld1q_u8(kTix16[0]), J1 = vld1q_u8(kTix16[1]);
-          const int16x8_t WA = vreinterpretq_s16_u16(BX1[0]), WB = vreinterpretq_s16_u16(BX1[1]);
-          const int16x8_t WC = vreinterpretq_s16_u16(FX1[0]), WD = vreinterpretq_s16_u16(FX1[1]);
-          // dtab: the numerators (64 bytes), then e, e1 of each band (x30: the band's).
-          std::memcpy(dtab, num, sizeof num);
-          const uint8_t* const ete = reinterpret_cast<const uint8_t*>(dtab + kDo + nb);
-          int64_t q = -16 * int64_t(nb);
-          if constexpr (LB == 4) {
-            asm volatile(SB_INORDER01(SB_PAIR_LOOP_16W0, "0", "1", "1") SB_INORDER01_OPERANDS);
-          } else {
-            asm volatile(SB_INORDER01(SB_PAIR_LOOP_16W1, "1", "4", "5") SB_INORDER01_OPERANDS);
-          }
-#undef SB_INORDER01_OPERANDS
-#undef SB_INORDER01
-#undef SB_WEIGH01
-#undef SB_PAIR_LOOP_16W0
-#undef SB_PAIR_LOOP_16W1
-#undef SB_PAIR_LOOP_16
-#undef SB_PAIR_LOOP_16_PRO
-        } else if constexpr (LB >= 3) {
+        if constexpr (LB >= 3) {
           // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
           // the bands (x30: its address), not in every iteration. q: iterations left in the band.
           int64_t q = -int64_t(nb) * 64;
@@ -667,40 +660,6 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                 "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16",
                 "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
                 "memory");
-        } else if constexpr (LB == 2 && kInOrder) {
-          const int16x8_t wt = vcombine_s16(vget_low_s16(vreinterpretq_s16_u16(BX1[0])),
-                                            vget_low_s16(vreinterpretq_s16_u16(FX1[0])));
-          const uint8x16_t J0 = vld1q_u8(kTix16[0]), J1 = vld1q_u8(kTix16[1]);
-          int64_t q = -int64_t(nb) * B;
-          asm volatile(
-              "mov v22.16b, %[n0].16b\n\t"
-              "mov v23.16b, %[n1].16b\n\t"
-              "mov v19.16b, %[n2].16b\n\t"
-              "mov v20.16b, %[n3].16b\n\t"
-              "mov x26, #0xffff\n\t"
-              "sub %[d], %[d], %[w], lsl #1\n\t"
-              "ldr x8, [%[rp]]\n\t"
-              "ldr q21, [x8, %[goff]]\n\t"
-              "ldr x8, [%[rp], #8]\n\t"
-              "ldr q26, [x8, %[goff]]\n\t"
-              "add %[rp], %[rp], #16\n\t"
-              "add x8, %[dte], %[q], lsl #2\n\t"
-              "ldr q8, [x8]\n\t" SB_WEIGH_STEP8
-              "b 2f\n\t"
-              ".p2align 10\n\t"
-              "1:\n\t" SB_PAIR16_A SB_PAIR16_B
-              "stp d4, d5, [%[d]]\n\t"
-              "stp d6, d7, [x8]\n\t"
-              : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q)
-              : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [dte] "r"(dtab + nb), [j0] "w"(J0),
-                [j1] "w"(J1), [n0] "w"(num[0]), [n1] "w"(num[1]), [n2] "w"(num[2]), [n3] "w"(num[3]), [wt] "w"(wt)
-              : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20",
-                "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8",
-                "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc",
-                "memory");
-#undef SB_PAIR16_A
-#undef SB_PAIR16_B
-#undef SB_WEIGH_STEP8
         } else if constexpr (LB == 2) {
           const int16x8_t wt = vcombine_s16(vget_low_s16(vreinterpretq_s16_u16(BX1[0])),
                                             vget_low_s16(vreinterpretq_s16_u16(FX1[0])));

@@ -234,7 +234,7 @@
     "and x21, x26, x7, lsr #16\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
     "add x9, %[cm], w1, uxth\n\t" \
-    "ldr q8, [x30, #32]\n\t" \
+    "ldr q8, [%[ete], x30]\n\t" \
     "and x23, x26, x3, lsr #32\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
     "and x22, x26, x1, lsr #32\n\t" \
@@ -247,7 +247,6 @@
     "ld1 {v7.b}[4], [x12]\n\t" \
     "add x21, %[cm], x21\n\t" \
     "ld1 {v5.b}[4], [x10]\n\t" \
-    "add x30, x30, #16\n\t" \
     "ld1 {v6.b}[4], [x11]\n\t" \
     "add x19, %[cm], x19\n\t" \
     "ldr x8, [%[rp], #8]\n\t" \
@@ -276,7 +275,7 @@
     "ld1 {v5.b}[7], [x3]\n\t" \
     "add x8, %[d], %[w]\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
-    "cmp x30, %[ete]\n\t" \
+    "adds x30, x30, %[w]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
     "b.ne 1b\n\t"
 
@@ -301,16 +300,16 @@
     "smull v18.4s, %[wb].4h, v8.h[1]\n\t" \
     "smull2 v29.4s, %[wb].8h, v8.h[1]\n\t" \
     "fmov x2, d1\n\t" \
-    "smlal v16.4s, %[wc].4h, v8.h[4]\n\t" \
+    "smlal v16.4s, %[wc].4h, v8.h[1]\n\t" \
     "fmov x4, d2\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x0, d0\n\t" \
     "fmov x7, v3.d[1]\n\t" \
-    "smlal2 v17.4s, %[wc].8h, v8.h[4]\n\t" \
+    "smlal2 v17.4s, %[wc].8h, v8.h[1]\n\t" \
     "fmov x1, v0.d[1]\n\t" \
     "fmov x5, v2.d[1]\n\t" \
-    "smlal v18.4s, %[wd].4h, v8.h[5]\n\t" \
-    "smlal2 v29.4s, %[wd].8h, v8.h[5]\n\t" \
+    "smlal v18.4s, %[wd].4h, v8.h[2]\n\t" \
+    "smlal2 v29.4s, %[wd].8h, v8.h[2]\n\t" \
     "ldr x8, [%[rp]]\n\t" \
     "and x12, x26, x6, lsr #16\n\t" \
     "and x23, x26, x2, lsr #32\n\t" \
@@ -358,7 +357,7 @@
     "and x21, x26, x7, lsr #16\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
     "add x9, %[cm], w1, uxth\n\t" \
-    "ldr q8, [x30, #32]\n\t" \
+    "ldr q8, [%[ete], x30]\n\t" \
     "and x23, x26, x3, lsr #32\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
     "and x22, x26, x1, lsr #32\n\t" \
@@ -371,7 +370,6 @@
     "ld1 {v7.b}[4], [x12]\n\t" \
     "add x21, %[cm], x21\n\t" \
     "ld1 {v5.b}[4], [x10]\n\t" \
-    "add x30, x30, #16\n\t" \
     "ld1 {v6.b}[4], [x11]\n\t" \
     "add x19, %[cm], x19\n\t" \
     "ldr x8, [%[rp], #8]\n\t" \
@@ -400,7 +398,7 @@
     "ld1 {v5.b}[7], [x3]\n\t" \
     "add x8, %[d], %[w]\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
-    "cmp x30, %[ete]\n\t" \
+    "adds x30, x30, %[w]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
     "b.ne 1b\n\t"
 
@@ -413,35 +411,6 @@
   "smlal2 v17.4s, %[wc].8h, v8.h[" L1 "]\n\t" \
   "smlal v18.4s, %[wd].4h, v8.h[" L4 "]\n\t" \
   "smlal2 v29.4s, %[wd].8h, v8.h[" L4 "]\n\t"
-
-// Bands of B / 2 pairs: B / 2 - 1 of SB_PAIR_LOOP_16 (q counts them), then the last one.
-#define SB_INORDER01(LAST, L0, L1, L4) \
-  "add x30, %[ete], %[q]\n\t" \
-  "ldp q22, q23, [x30, #-64]\n\t" \
-  "ldp q19, q20, [x30, #-32]\n\t" \
-  "mov x26, #0xffff\n\t" \
-  "sub %[d], %[d], %[w], lsl #1\n\t" \
-  "ldr x8, [%[rp]]\n\t" \
-  "ldr q21, [x8, %[goff]]\n\t" \
-  "ldr x8, [%[rp], #8]\n\t" \
-  "ldr q26, [x8, %[goff]]\n\t" \
-  "add %[rp], %[rp], #16\n\t" \
-  "ldr q8, [x30]\n\t" SB_WEIGH01(L0, L1, L4) \
-  "ldr q8, [x30, #16]\n\t" \
-  "mov %[q], %[hp1]\n\t" SB_PAIR_LOOP_16_PRO \
-  "b 2f\n\t" \
-  ".p2align 10\n\t" \
-  "1:\n\t" SB_PAIR_LOOP_16 LAST \
-  "stp d4, d5, [%[d]]\n\t" \
-  "stp d6, d7, [x8]\n\t"
-
-#define SB_INORDER01_OPERANDS \
-  : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q) \
-  : [cm] "r"(colormap), [w] "r"(wstride), [goff] "r"(goff), [ete] "r"(ete), [j0] "w"(J0), [j1] "w"(J1), \
-    [wa] "w"(WA), [wb] "w"(WB), [wc] "w"(WC), [wd] "w"(WD), [hp1] "i"(B / 2 - 1) \
-  : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21", \
-    "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
-    "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory"
 
 // Mip 2, in-order cores: the loop above, a band (two pairs) an iteration as in the
 // mip 2 loop below: the first pair loads the next band's e, e1 (v8, at x30 + 16),
@@ -482,7 +451,6 @@
     "and x23, x26, x2, lsr #32\n\t" \
     "ld1 {v4.b}[0], [x18]\n\t" \
     "add x20, %[cm], w4, uxth\n\t" \
-    "add x30, %[dte], %[q], lsl #2\n\t" \
     "and x24, x26, x4, lsr #32\n\t" \
     "ld1 {v5.b}[0], [x19]\n\t" \
     "add x10, %[cm], x10\n\t" \
@@ -498,7 +466,7 @@
     "add x23, %[cm], x23\n\t" \
     "and x25, x26, x6, lsr #32\n\t" \
     "add x22, %[cm], x22\n\t" \
-    "ldr q8, [x30, #16]\n\t" \
+    "ldr q8, [%[ete], %[q]]\n\t" \
     "add x10, %[cm], w3, uxth\n\t" \
     "ld1 {v6.b}[1], [x11]\n\t" \
     "add x25, %[cm], x25\n\t" \
@@ -583,15 +551,15 @@
     "add v19.4s, v24.4s, v18.4s\n\t" \
     "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
-    "smlal2 v29.4s, %[wt].8h, v8.h[7]\n\t" \
+    "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
     "fmov x0, d0\n\t" \
-    "smlal2 v17.4s, %[wt].8h, v8.h[5]\n\t" \
-    "smlal2 v16.4s, %[wt].8h, v8.h[4]\n\t" \
+    "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
+    "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
     "fmov x5, v2.d[1]\n\t" \
     "fmov x4, d2\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x7, v3.d[1]\n\t" \
-    "smlal2 v18.4s, %[wt].8h, v8.h[6]\n\t" \
+    "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "add x19, %[cm], w2, uxth\n\t" \
     "and x10, x26, x2, lsr #16\n\t" \
@@ -676,7 +644,7 @@
     "ld1 {v5.b}[6], [x23]\n\t" \
     "add x8, %[d], %[w]\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
-    "adds %[q], %[q], #4\n\t" \
+    "adds %[q], %[q], %[w]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
@@ -688,7 +656,7 @@
   "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
   "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
   "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
-  "smlal2 v16.4s, %[wt].8h, v8.h[4]\n\t" \
-  "smlal2 v17.4s, %[wt].8h, v8.h[5]\n\t" \
-  "smlal2 v18.4s, %[wt].8h, v8.h[6]\n\t" \
-  "smlal2 v29.4s, %[wt].8h, v8.h[7]\n\t"
+  "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
+  "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
+  "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
+  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t"

@@ -1,0 +1,236 @@
+// asm/neon_block_a53g.h: the neon_a53 surface block builder's full groups at mips 0-2 on
+// AArch64: every full 16-texel group of a strip in one assembly call (asm/neon.cpp's
+// surface_block_groups calls a53_full_groups; the row loops are asm/neon_block_a53.h's).
+// Only asm/neon.cpp includes this (after asm/neon_block_a53.h).
+//
+// Per strip, one table T of nb + 3 rows of es = width bytes (rows = grid rows' entries as
+// 16-bit lanes, group g's G + 1 entries at byte 2 G g): row 0 the strip's first grid row,
+// row 1 + b band b's differences e = grid row b + 1 - grid row b, rows nb + 1.. read, unused.
+// A group reads 16 bytes at 2 G g of a row (entries G g .. G g + 7: lanes 0..G of them used),
+// inside the row as width >= 16 F >= 2 G (F - 1) + 16 for F full groups. Its numerators are
+// row 0 weighed, its band steps rows 1.. weighed (one row a band, at the band's last pair).
+// The group loop keeps its state on the stack (A53Groups, copied there at entry): the group's
+// output, groups left, its table end (ete: one row past the last read, + 2 G g), its texel
+// offset goff (stepped by gstep, wrapped at gmod: asm/neon.cpp's goff_of), the table offset
+// each group starts from (-nb es) and the strip's texel runs (lin).
+#pragma once
+#include <arm_neon.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+
+#include "asm/neon_block_util.h"
+#include "asm/variants.h"
+
+namespace sb::simd::detail {
+namespace {
+
+#if defined(__aarch64__)
+
+constexpr int kA53TableBytes = 16384;  // T: (nb + 3) width bytes at most (caps the strip's bands)
+
+struct A53Groups {
+  uint8_t* d;                 // group 0's output (the strip's first row)
+  int64_t groups;             // full groups (>= 1)
+  const uint8_t* ete;         // group 0's table end
+  int64_t goff;               // group 0's texel offset in a run
+  int64_t off;                // -nb es: the table offset a group starts from
+  const uint8_t* const* lin;  // the strip's texel runs
+  int64_t gmod, gstep;        // goff += gstep, then -= gmod when >= gmod
+};
+static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, groups) == 8 && offsetof(A53Groups, ete) == 16 &&
+                  offsetof(A53Groups, goff) == 24 && offsetof(A53Groups, off) == 32 &&
+                  offsetof(A53Groups, lin) == 40 && offsetof(A53Groups, gmod) == 48 &&
+                  offsetof(A53Groups, gstep) == 56 && sizeof(A53Groups) == 64,
+              "the assembly reads A53Groups by these offsets");
+
+// The group loop around a strip's row loop (HEAD: the group's entry; OFF: its table offset
+// register; G2: 2 G, the table step a group).
+#define SB_A53_GROUPS(OFF, HEAD, LOOP, G2) \
+  "sub sp, sp, #64\n\t" \
+  "ldp x0, x1, [%[q]]\n\t" \
+  "ldp x2, x3, [%[q], #16]\n\t" \
+  "ldp x4, x5, [%[q], #32]\n\t" \
+  "ldp x6, x7, [%[q], #48]\n\t" \
+  "stp x0, x1, [sp]\n\t" \
+  "stp x2, x3, [sp, #16]\n\t" \
+  "stp x4, x5, [sp, #32]\n\t" \
+  "stp x6, x7, [sp, #48]\n\t" \
+  "mov x26, #0xffff\n" \
+  "5:\n\t" \
+  "ldr %[d], [sp]\n\t" \
+  "ldp %[ete], %[goff], [sp, #16]\n\t" \
+  "ldp " OFF ", %[rp], [sp, #32]\n\t" HEAD \
+  "b 2f\n\t" \
+  ".p2align 10\n" \
+  "1:\n\t" LOOP \
+  "stp d4, d5, [%[d]]\n\t" \
+  "stp d6, d7, [x8]\n\t" \
+  "ldp x0, x1, [sp]\n\t" \
+  "ldp x2, x3, [sp, #16]\n\t" \
+  "ldp x6, x7, [sp, #48]\n\t" \
+  "add x0, x0, #16\n\t" \
+  "add x2, x2, #" G2 "\n\t" \
+  "add x3, x3, x7\n\t" \
+  "cmp x3, x6\n\t" \
+  "sub x4, x3, x6\n\t" \
+  "csel x3, x4, x3, hs\n\t" \
+  "stp x2, x3, [sp, #16]\n\t" \
+  "subs x1, x1, #1\n\t" \
+  "stp x0, x1, [sp]\n\t" \
+  "b.ne 5b\n\t" \
+  "add sp, sp, #64\n\t"
+
+// Mips 0-1: numerators from row 0 (x11), the first band's step from row 1 (x10), row 2
+// preloaded (v8); x30 = the table offset (see SB_PAIR_LOOP_16W0).
+#define SB_A53_HEAD01(L0, L1, L4, SH) \
+  "add x9, %[ete], x30\n\t" \
+  "sub x10, x9, %[w], lsl #1\n\t" \
+  "sub x11, x10, %[w]\n\t" \
+  "sub x9, x9, %[w]\n\t" \
+  "ldr q8, [x11]\n\t" \
+  "ldr x8, [%[rp]]\n\t" \
+  "ldr q21, [x8, %[goff]]\n\t" \
+  "ldr x8, [%[rp], #8]\n\t" \
+  "ldr q26, [x8, %[goff]]\n\t" \
+  "add %[rp], %[rp], #16\n\t" \
+  "smull v22.4s, %[wa].4h, v8.h[0]\n\t" \
+  "smull2 v23.4s, %[wa].8h, v8.h[0]\n\t" \
+  "smull v19.4s, %[wb].4h, v8.h[" L0 "]\n\t" \
+  "smull2 v20.4s, %[wb].8h, v8.h[" L0 "]\n\t" \
+  "smlal v22.4s, %[wc].4h, v8.h[" L1 "]\n\t" \
+  "smlal2 v23.4s, %[wc].8h, v8.h[" L1 "]\n\t" \
+  "smlal v19.4s, %[wd].4h, v8.h[" L4 "]\n\t" \
+  "smlal2 v20.4s, %[wd].8h, v8.h[" L4 "]\n\t" \
+  "ldr q8, [x10]\n\t" \
+  "shl v22.4s, v22.4s, #" SH "\n\t" \
+  "shl v23.4s, v23.4s, #" SH "\n\t" \
+  "shl v19.4s, v19.4s, #" SH "\n\t" \
+  "shl v20.4s, v20.4s, #" SH "\n\t" SB_WEIGH01(L0, L1, L4) \
+  "ldr q8, [x9]\n\t" \
+  "mov %[q], %[hp1]\n\t" \
+  "sub %[d], %[d], %[w], lsl #1\n\t" SB_PAIR_LOOP_16_PRO
+
+// Mip 2: as above with q the table offset (see SB_PAIR16_A).
+#define SB_A53_HEAD2 \
+  "add x9, %[ete], %[q]\n\t" \
+  "sub x10, x9, %[w]\n\t" \
+  "sub x11, x10, %[w]\n\t" \
+  "ldr q8, [x11]\n\t" \
+  "ldr x8, [%[rp]]\n\t" \
+  "ldr q21, [x8, %[goff]]\n\t" \
+  "ldr x8, [%[rp], #8]\n\t" \
+  "ldr q26, [x8, %[goff]]\n\t" \
+  "add %[rp], %[rp], #16\n\t" \
+  "smull v22.4s, %[wt].4h, v8.h[0]\n\t" \
+  "smull v23.4s, %[wt].4h, v8.h[1]\n\t" \
+  "smull v19.4s, %[wt].4h, v8.h[2]\n\t" \
+  "smull v20.4s, %[wt].4h, v8.h[3]\n\t" \
+  "smlal2 v22.4s, %[wt].8h, v8.h[1]\n\t" \
+  "smlal2 v23.4s, %[wt].8h, v8.h[2]\n\t" \
+  "smlal2 v19.4s, %[wt].8h, v8.h[3]\n\t" \
+  "smlal2 v20.4s, %[wt].8h, v8.h[4]\n\t" \
+  "ldr q8, [x10]\n\t" \
+  "shl v22.4s, v22.4s, #2\n\t" \
+  "shl v23.4s, v23.4s, #2\n\t" \
+  "shl v19.4s, v19.4s, #2\n\t" \
+  "shl v20.4s, v20.4s, #2\n\t" SB_WEIGH_STEP8 \
+  "sub %[d], %[d], %[w], lsl #1\n\t"
+
+// T (see above) for the strip's nb bands from grid row r (stride gw entries): entries
+// 0..ne - 1 of rows 0..nb (ne <= gw), es bytes a row.
+template <int LB>
+inline void a53_table(const uint16_t* r, int gw, int nb, int ne, uint8_t* t, int64_t es) {
+  if (ne < 8) {
+    for (int j = 0; j < ne; ++j) {
+      const uint16_t* s = r + j;
+      uint16_t p = *s;
+      reinterpret_cast<uint16_t*>(t)[j] = p;
+      for (int b = 1; b <= nb; ++b) {
+        s += gw;
+        const uint16_t q = *s, e = uint16_t(q - p);
+        std::memcpy(t + b * es + 2 * j, &e, sizeof e);
+        p = q;
+      }
+    }
+    return;
+  }
+  for (int j = 0;; j += 8) {
+    if (j > ne - 8) j = ne - 8;  // (the last column overlaps the one before)
+    const uint16_t* s = r + j;
+    uint8_t* o = t + 2 * j;
+    uint16x8_t p = vld1q_u16(s);
+    vst1q_u16(reinterpret_cast<uint16_t*>(o), p);
+    int b = 1;
+    for (; b + 2 <= nb + 1; b += 2) {  // (two rows a step: both loads first)
+      uint16x8_t q0 = vld1q_u16(s + gw), q1 = vld1q_u16(s + 2 * gw);
+      asm("" : "+w"(q0), "+w"(q1));
+      s += 2 * gw;
+      vst1q_u16(reinterpret_cast<uint16_t*>(o + es), vsubq_u16(q0, p));
+      vst1q_u16(reinterpret_cast<uint16_t*>(o + 2 * es), vsubq_u16(q1, q0));
+      o += 2 * es;
+      p = q1;
+    }
+    if (b <= nb) vst1q_u16(reinterpret_cast<uint16_t*>(o + es), vsubq_u16(vld1q_u16(s + gw), p));
+    if (j == ne - 8) break;
+  }
+}
+
+// Every full group (16 g + 16 <= width, F >= 1 of them) of the strip at out (nb bands from
+// grid row r): st's d, groups, goff, off, lin, gmod, gstep set by the caller; t: the table
+// buffer (kA53TableBytes, (nb + 3) width bytes used); J0, J1: the index lookups (kTix16).
+template <int kMip>
+inline void a53_full_groups(const uint16_t* r, int gw, int nb, int width, A53Groups st, uint8_t* t,
+                            const uint8_t* colormap, const uint16x8_t* BX1, const uint16x8_t* FX1, uint8x16_t J0,
+                            uint8x16_t J1) {
+  constexpr int B = 16 >> kMip, G = 16 / B;
+  const int64_t es = width;
+  a53_table<4 - kMip>(r, gw, nb, G * int(st.groups) + 1, t, es);
+  st.ete = t + (kMip == 2 ? nb + 2 : nb + 3) * es;
+  st.off = -int64_t(nb) * es;
+  uint8_t* d = st.d;
+  const uint8_t* const* rp = st.lin;
+  const uint8_t* ete = st.ete;
+  int64_t goff = st.goff;
+  int64_t q = reinterpret_cast<int64_t>(&st);
+  const int64_t wstride = width;
+  if constexpr (kMip <= 1) {
+    const int16x8_t WA = vreinterpretq_s16_u16(BX1[0]), WB = vreinterpretq_s16_u16(BX1[1]);
+    const int16x8_t WC = vreinterpretq_s16_u16(FX1[0]), WD = vreinterpretq_s16_u16(FX1[1]);
+#define SB_A53_OPERANDS01 \
+  : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [goff] "+r"(goff) \
+  : [cm] "r"(colormap), [w] "r"(wstride), [j0] "w"(J0), [j1] "w"(J1), [wa] "w"(WA), [wb] "w"(WB), [wc] "w"(WC), \
+    [wd] "w"(WD), [hp1] "i"(B / 2 - 1) \
+  : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21", \
+    "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
+    "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory"
+    if constexpr (kMip == 0) {
+      asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD01("0", "1", "1", "4"), SB_PAIR_LOOP_16 SB_PAIR_LOOP_16W0, "2")
+                       SB_A53_OPERANDS01);
+    } else {
+      asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD01("1", "1", "2", "3"), SB_PAIR_LOOP_16 SB_PAIR_LOOP_16W1, "4")
+                       SB_A53_OPERANDS01);
+    }
+#undef SB_A53_OPERANDS01
+  } else {
+    const int16x8_t wt = vcombine_s16(vget_low_s16(vreinterpretq_s16_u16(BX1[0])),
+                                      vget_low_s16(vreinterpretq_s16_u16(FX1[0])));
+    asm volatile(SB_A53_GROUPS("%[q]", SB_A53_HEAD2, SB_PAIR16_A SB_PAIR16_B, "8")
+                 : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [goff] "+r"(goff)
+                 : [cm] "r"(colormap), [w] "r"(wstride), [j0] "w"(J0), [j1] "w"(J1), [wt] "w"(wt)
+                 : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19",
+                   "x20", "x21", "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6",
+                   "v7", "v8", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
+                   "v28", "v29", "cc", "memory");
+  }
+}
+
+#undef SB_A53_GROUPS
+#undef SB_A53_HEAD01
+#undef SB_A53_HEAD2
+
+#endif  // __aarch64__
+
+}  // namespace
+}  // namespace sb::simd::detail
