@@ -186,6 +186,12 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
                                 buf + t * stride);
 #if defined(__aarch64__)
+    } else if (uplace) {
+      const uint8_t* p = texels;
+      for (int t = 0; t < th; ++t, p += tw) {
+        run[t] = p;
+        asm("" : "+r"(p));  // (else GCC vectorizes the loop: vector adds and stores stall in order)
+      }
     } else if (umod) {
       for (int t = 0; t < th; ++t) run[t] = urun(t, buf + t * stride);
 #endif
@@ -197,6 +203,28 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                         buf + t * stride);
     }
   }
+#if defined(__aarch64__)
+  // All rows laid out and run[] long enough: run[] continued cyclically once (th + height + 2
+  // entries, eight a step), so a strip's runs in row order are run + first (mip 3's loop
+  // changes its copy).
+  const bool run_ext = all_rows && kMip != 3 && th + height + 2 + 7 <= kMaxRuns + 3;
+  if (run_ext) {
+    for (int t = th; t < th + height + 2; t += 8) {  // (th >= 8: the reads precede the writes)
+      if (th < 8) {
+        for (int i = 0; i < 8; ++i) run[t + i] = run[t + i - th];
+        continue;
+      }
+      const uint64_t* const src = reinterpret_cast<const uint64_t*>(run + t - th);
+      uint64_t* const dst = reinterpret_cast<uint64_t*>(run + t);
+      uint64x2_t v0 = vld1q_u64(src), v1 = vld1q_u64(src + 2), v2 = vld1q_u64(src + 4), v3 = vld1q_u64(src + 6);
+      asm("" : "+w"(v0), "+w"(v1), "+w"(v2), "+w"(v3));
+      vst1q_u64(dst, v0);
+      vst1q_u64(dst + 2, v1);
+      vst1q_u64(dst + 4, v2);
+      vst1q_u64(dst + 6, v3);
+    }
+  }
+#endif
   int strip_bands = bh;
   if (!all_rows) {
     const int fit = (kTileBytes / stride < kMaxRuns ? kTileBytes / stride : kMaxRuns) / B;  // >= 1
@@ -278,7 +306,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
       }
     }
 #if defined(__aarch64__)
-    {  // lin: the strip's runs, two rows beyond
+    const uint8_t* const* const linp = run_ext ? run + first : lin;
+    if (!run_ext) {  // lin: the strip's runs, two rows beyond
       const int total = nb * B + 2;
       int r = 0;
       // (mip 3, the most rows per texel: one period, then copies of it)
@@ -454,7 +483,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     int g = 0;
     if constexpr (kInOrder && LB >= 2) {  // the full groups (asm/neon_block_a53g.h)
       if (width >= 16) {
-        const A53Groups st{strip, width >> 4, nullptr, goff_of(0), 0, lin, umod ? umod : gper ? gper : int64_t(1) << 40,
+        const A53Groups st{strip, width >> 4, nullptr, goff_of(0), 0, linp, umod ? umod : gper ? gper : int64_t(1) << 40,
                            umod || gper ? 16 : gs};
         a53_full_groups<kMip>(grid + by0 * grid_width, grid_width, nb, width, st, a53t, colormap, BX1, FX1,
                               vld1q_u8(kTix16[0]), vld1q_u8(kTix16[1]));
@@ -620,7 +649,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         if constexpr (LB != 1)
           for (int j = 0; j < 4; ++j) dtab[kDs * nb + j] = vdupq_n_u32(0);
         const int64_t goff = goff_of(g), wstride = width;
-        const uint8_t* const* rp = lin;
+        const uint8_t* const* rp = linp;
         if constexpr (LB >= 3) {
           // Mips 0-1 (B / 2 >= 4 iterations a band): the band's step is loaded once, between
           // the bands (x30: its address), not in every iteration. q: iterations left in the band.
