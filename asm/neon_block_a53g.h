@@ -10,9 +10,9 @@
 // inside the row as width >= 16 F >= 2 G (F - 1) + 16 for F full groups. Its numerators are
 // row 0 weighed, its band steps rows 1.. weighed (one row a band, at the band's last pair).
 // The group loop keeps its state on the stack (A53Groups, copied there at entry): the group's
-// output, groups left, its table end (ete: one row past the last read, + 2 G g), its texel
-// offset goff (stepped by gstep, wrapped at gmod: asm/neon.cpp's goff_of), the table offset
-// each group starts from (-nb es) and the strip's texel runs (lin).
+// output and row 0 in T, groups left, the table offset each group starts from (-nb es), the
+// strip's texel runs (lin), and how goff steps (gstep, wrapped at gmod: asm/neon.cpp's
+// goff_of); in registers its table end (ete: one row past the last read, + 2 G g) and goff.
 #pragma once
 #include <arm_neon.h>
 
@@ -32,111 +32,107 @@ constexpr int kA53TableBytes = 16384;  // T: (nb + 3) width bytes at most (caps 
 
 struct A53Groups {
   uint8_t* d;                 // group 0's output (the strip's first row)
-  int64_t groups;             // full groups (>= 1)
-  const uint8_t* ete;         // group 0's table end
-  int64_t goff;               // group 0's texel offset in a run
+  const uint8_t* p0;          // group 0's row 0 in T
   int64_t off;                // -nb es: the table offset a group starts from
   const uint8_t* const* lin;  // the strip's texel runs
   int64_t gmod, gstep;        // goff += gstep, then -= gmod when >= gmod
+  int64_t groups;             // full groups (>= 1)
+  int64_t unused;
 };
-static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, groups) == 8 && offsetof(A53Groups, ete) == 16 &&
-                  offsetof(A53Groups, goff) == 24 && offsetof(A53Groups, off) == 32 &&
-                  offsetof(A53Groups, lin) == 40 && offsetof(A53Groups, gmod) == 48 &&
-                  offsetof(A53Groups, gstep) == 56 && sizeof(A53Groups) == 64,
+static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && offsetof(A53Groups, off) == 16 &&
+                  offsetof(A53Groups, lin) == 24 && offsetof(A53Groups, gmod) == 32 &&
+                  offsetof(A53Groups, gstep) == 40 && offsetof(A53Groups, groups) == 48 && sizeof(A53Groups) == 64,
               "the assembly reads A53Groups by these offsets");
 
-// The group loop around a strip's row loop (HEAD: the group's entry; OFF: its table offset
-// register; G2: 2 G, the table step a group).
+// The group loop around a strip's row loop (HEAD: the group's entry, x11 its row 0; OFF: its
+// table offset register; G2: 2 G, the table step a group). ete and goff stay in their
+// registers from group to group (the row loops only read them).
 #define SB_A53_GROUPS(OFF, HEAD, LOOP, G2) \
   "sub sp, sp, #64\n\t" \
   "ldp x0, x1, [%[q]]\n\t" \
   "ldp x2, x3, [%[q], #16]\n\t" \
   "ldp x4, x5, [%[q], #32]\n\t" \
-  "ldp x6, x7, [%[q], #48]\n\t" \
+  "ldr x6, [%[q], #48]\n\t" \
   "stp x0, x1, [sp]\n\t" \
   "stp x2, x3, [sp, #16]\n\t" \
   "stp x4, x5, [sp, #32]\n\t" \
-  "stp x6, x7, [sp, #48]\n\t" \
+  "str x6, [sp, #48]\n\t" \
   "mov x26, #0xffff\n" \
   "5:\n\t" \
-  "ldr %[d], [sp]\n\t" \
-  "ldp %[ete], %[goff], [sp, #16]\n\t" \
-  "ldp " OFF ", %[rp], [sp, #32]\n\t" HEAD \
+  "ldp %[d], x11, [sp]\n\t" \
+  "ldp " OFF ", %[rp], [sp, #16]\n\t" HEAD \
   "b 2f\n\t" \
   ".p2align 10\n" \
   "1:\n\t" LOOP \
   "stp d4, d5, [%[d]]\n\t" \
   "stp d6, d7, [x8]\n\t" \
   "ldp x0, x1, [sp]\n\t" \
-  "ldp x2, x3, [sp, #16]\n\t" \
-  "ldp x6, x7, [sp, #48]\n\t" \
+  "ldp x6, x7, [sp, #32]\n\t" \
+  "ldr x5, [sp, #48]\n\t" \
   "add x0, x0, #16\n\t" \
-  "add x2, x2, #" G2 "\n\t" \
-  "add x3, x3, x7\n\t" \
-  "cmp x3, x6\n\t" \
-  "sub x4, x3, x6\n\t" \
-  "csel x3, x4, x3, hs\n\t" \
-  "stp x2, x3, [sp, #16]\n\t" \
-  "subs x1, x1, #1\n\t" \
+  "add x1, x1, #" G2 "\n\t" \
+  "add %[ete], %[ete], #" G2 "\n\t" \
+  "add %[goff], %[goff], x7\n\t" \
+  "cmp %[goff], x6\n\t" \
+  "sub x4, %[goff], x6\n\t" \
+  "csel %[goff], x4, %[goff], hs\n\t" \
   "stp x0, x1, [sp]\n\t" \
+  "subs x5, x5, #1\n\t" \
+  "str x5, [sp, #48]\n\t" \
   "b.ne 5b\n\t" \
   "add sp, sp, #64\n\t"
 
-// Mips 0-1: numerators from row 0 (x11), the first band's step from row 1 (x10), row 2
+// Mips 0-1: numerators from row 0 (v0), the first band's step from row 1 (v8), row 2
 // preloaded (v8); x30 = the table offset (see SB_PAIR_LOOP_16W0).
 #define SB_A53_HEAD01(L0, L1, L4, SH) \
-  "add x9, %[ete], x30\n\t" \
-  "sub x10, x9, %[w], lsl #1\n\t" \
-  "sub x11, x10, %[w]\n\t" \
-  "sub x9, x9, %[w]\n\t" \
-  "ldr q8, [x11]\n\t" \
+  "ldr q0, [x11]\n\t" \
+  "add x10, x11, %[w]\n\t" \
   "ldr x8, [%[rp]]\n\t" \
+  "ldr q8, [x10]\n\t" \
+  "add x9, x10, %[w]\n\t" \
   "ldr q21, [x8, %[goff]]\n\t" \
   "ldr x8, [%[rp], #8]\n\t" \
   "ldr q26, [x8, %[goff]]\n\t" \
   "add %[rp], %[rp], #16\n\t" \
-  "smull v22.4s, %[wa].4h, v8.h[0]\n\t" \
-  "smull2 v23.4s, %[wa].8h, v8.h[0]\n\t" \
-  "smull v19.4s, %[wb].4h, v8.h[" L0 "]\n\t" \
-  "smull2 v20.4s, %[wb].8h, v8.h[" L0 "]\n\t" \
-  "smlal v22.4s, %[wc].4h, v8.h[" L1 "]\n\t" \
-  "smlal2 v23.4s, %[wc].8h, v8.h[" L1 "]\n\t" \
-  "smlal v19.4s, %[wd].4h, v8.h[" L4 "]\n\t" \
-  "smlal2 v20.4s, %[wd].8h, v8.h[" L4 "]\n\t" \
-  "ldr q8, [x10]\n\t" \
+  "mov %[q], %[hp1]\n\t" \
+  "sub %[d], %[d], %[w], lsl #1\n\t" \
+  "smull v22.4s, %[wa].4h, v0.h[0]\n\t" \
+  "smull2 v23.4s, %[wa].8h, v0.h[0]\n\t" \
+  "smull v19.4s, %[wb].4h, v0.h[" L0 "]\n\t" \
+  "smull2 v20.4s, %[wb].8h, v0.h[" L0 "]\n\t" \
+  "smlal v22.4s, %[wc].4h, v0.h[" L1 "]\n\t" \
+  "smlal2 v23.4s, %[wc].8h, v0.h[" L1 "]\n\t" \
+  "smlal v19.4s, %[wd].4h, v0.h[" L4 "]\n\t" \
+  "smlal2 v20.4s, %[wd].8h, v0.h[" L4 "]\n\t" SB_WEIGH01(L0, L1, L4) \
+  "ldr q8, [x9]\n\t" \
   "shl v22.4s, v22.4s, #" SH "\n\t" \
   "shl v23.4s, v23.4s, #" SH "\n\t" \
   "shl v19.4s, v19.4s, #" SH "\n\t" \
-  "shl v20.4s, v20.4s, #" SH "\n\t" SB_WEIGH01(L0, L1, L4) \
-  "ldr q8, [x9]\n\t" \
-  "mov %[q], %[hp1]\n\t" \
-  "sub %[d], %[d], %[w], lsl #1\n\t" SB_PAIR_LOOP_16_PRO
+  "shl v20.4s, v20.4s, #" SH "\n\t" SB_PAIR_LOOP_16_PRO
 
 // Mip 2: as above with q the table offset (see SB_PAIR16_A).
 #define SB_A53_HEAD2 \
-  "add x9, %[ete], %[q]\n\t" \
-  "sub x10, x9, %[w]\n\t" \
-  "sub x11, x10, %[w]\n\t" \
-  "ldr q8, [x11]\n\t" \
+  "ldr q0, [x11]\n\t" \
+  "add x10, x11, %[w]\n\t" \
   "ldr x8, [%[rp]]\n\t" \
+  "ldr q8, [x10]\n\t" \
   "ldr q21, [x8, %[goff]]\n\t" \
   "ldr x8, [%[rp], #8]\n\t" \
   "ldr q26, [x8, %[goff]]\n\t" \
   "add %[rp], %[rp], #16\n\t" \
-  "smull v22.4s, %[wt].4h, v8.h[0]\n\t" \
-  "smull v23.4s, %[wt].4h, v8.h[1]\n\t" \
-  "smull v19.4s, %[wt].4h, v8.h[2]\n\t" \
-  "smull v20.4s, %[wt].4h, v8.h[3]\n\t" \
-  "smlal2 v22.4s, %[wt].8h, v8.h[1]\n\t" \
-  "smlal2 v23.4s, %[wt].8h, v8.h[2]\n\t" \
-  "smlal2 v19.4s, %[wt].8h, v8.h[3]\n\t" \
-  "smlal2 v20.4s, %[wt].8h, v8.h[4]\n\t" \
-  "ldr q8, [x10]\n\t" \
+  "sub %[d], %[d], %[w], lsl #1\n\t" \
+  "smull v22.4s, %[wt].4h, v0.h[0]\n\t" \
+  "smull v23.4s, %[wt].4h, v0.h[1]\n\t" \
+  "smull v19.4s, %[wt].4h, v0.h[2]\n\t" \
+  "smull v20.4s, %[wt].4h, v0.h[3]\n\t" \
+  "smlal2 v22.4s, %[wt].8h, v0.h[1]\n\t" \
+  "smlal2 v23.4s, %[wt].8h, v0.h[2]\n\t" \
+  "smlal2 v19.4s, %[wt].8h, v0.h[3]\n\t" \
+  "smlal2 v20.4s, %[wt].8h, v0.h[4]\n\t" SB_WEIGH_STEP8 \
   "shl v22.4s, v22.4s, #2\n\t" \
   "shl v23.4s, v23.4s, #2\n\t" \
   "shl v19.4s, v19.4s, #2\n\t" \
-  "shl v20.4s, v20.4s, #2\n\t" SB_WEIGH_STEP8 \
-  "sub %[d], %[d], %[w], lsl #1\n\t"
+  "shl v20.4s, v20.4s, #2\n\t"
 
 // T (see above) for the strip's nb bands from grid row r (stride gw entries): entries
 // 0..ne - 1 of rows 0..nb (ne <= gw), es bytes a row.
@@ -208,21 +204,20 @@ inline void a53_table(const uint16_t* r, int gw, int nb, int ne, uint8_t* t, int
 }
 
 // Every full group (16 g + 16 <= width, F >= 1 of them) of the strip at out (nb bands from
-// grid row r): st's d, groups, goff, off, lin, gmod, gstep set by the caller; t: the table
+// grid row r): st's d, lin, gmod, gstep, groups set by the caller, goff group 0's; t: the table
 // buffer (kA53TableBytes, (nb + 3) width bytes used); J0, J1: the index lookups (kTix16).
 template <int kMip>
-inline void a53_full_groups(const uint16_t* r, int gw, int nb, int width, A53Groups st, uint8_t* t,
+inline void a53_full_groups(const uint16_t* r, int gw, int nb, int width, A53Groups st, int64_t goff, uint8_t* t,
                             const uint8_t* colormap, const uint16x8_t* BX1, const uint16x8_t* FX1, uint8x16_t J0,
                             uint8x16_t J1) {
   constexpr int B = 16 >> kMip, G = 16 / B;
   const int64_t es = width;
   a53_table<4 - kMip>(r, gw, nb, G * int(st.groups) + 1, t, es);
-  st.ete = t + (kMip == 2 ? nb + 2 : nb + 3) * es;
+  st.p0 = t;
   st.off = -int64_t(nb) * es;
   uint8_t* d = st.d;
   const uint8_t* const* rp = st.lin;
-  const uint8_t* ete = st.ete;
-  int64_t goff = st.goff;
+  const uint8_t* ete = t + (kMip == 2 ? nb + 2 : nb + 3) * es;
   int64_t q = reinterpret_cast<int64_t>(&st);
   const int64_t wstride = width;
   if constexpr (kMip <= 1) {
