@@ -178,6 +178,9 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // they are laid out once and the whole surface is one strip reading run[] cyclically from
   // t0. Else strips of as many bands as the buffer holds, their rows laid out per strip.
   const bool all_rows = th < height && th * stride <= kTileBytes && th <= kMaxRuns;
+#if defined(__aarch64__)
+  const bool run_ext = all_rows && kMip != 3 && th + height + 2 + 7 <= kMaxRuns + 3;  // (see below)
+#endif
   if (all_rows) {
     if (p16) {  // (rows left over, at the texture's end, laid out past the table's: t stride >= 16 t)
       int t = in_place(0) ? 0 : tile_rows16<kMip == 3>(texels, tw, th, period[0], buf, run);
@@ -186,11 +189,27 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
                                 buf + t * stride);
 #if defined(__aarch64__)
-    } else if (uplace) {
-      const uint8_t* p = texels;
-      for (int t = 0; t < th; ++t, p += tw) {
-        run[t] = p;
-        asm("" : "+r"(p));  // (else GCC vectorizes the loop: vector adds and stores stall in order)
+    } else if (uplace) {  // (and run_ext's continuation: th is a multiple of 4)
+      const int total = run_ext ? th + height + 2 : th;
+      for (int t = 0; t < total; t += th) {
+        const int n = total - t < th ? total - t : th;
+        const uint8_t *p0 = texels, *p1 = p0 + tw, *p2 = p1 + tw, *p3 = p2 + tw;
+        int i = 0;
+        if (n >= 8) {  // (eight a step: no reads)
+          const uint8_t *p4 = p3 + tw, *p5 = p4 + tw, *p6 = p5 + tw, *p7 = p6 + tw;
+          for (; i + 8 <= n; i += 8) {
+            run[t + i] = p0, run[t + i + 1] = p1, run[t + i + 2] = p2, run[t + i + 3] = p3;
+            run[t + i + 4] = p4, run[t + i + 5] = p5, run[t + i + 6] = p6, run[t + i + 7] = p7;
+            p0 += 8 * tw, p1 += 8 * tw, p2 += 8 * tw, p3 += 8 * tw, p4 += 8 * tw, p5 += 8 * tw, p6 += 8 * tw,
+                p7 += 8 * tw;
+            asm("" : "+r"(p0), "+r"(p1), "+r"(p2), "+r"(p3), "+r"(p4), "+r"(p5), "+r"(p6), "+r"(p7));
+          }
+        }
+        for (; i < n; i += 4) {  // (up to 3 past total)
+          run[t + i] = p0, run[t + i + 1] = p1, run[t + i + 2] = p2, run[t + i + 3] = p3;
+          p0 += 4 * tw, p1 += 4 * tw, p2 += 4 * tw, p3 += 4 * tw;
+          asm("" : "+r"(p0), "+r"(p1), "+r"(p2), "+r"(p3));  // (else GCC vectorizes: stalls in order)
+        }
       }
     } else if (umod) {
       for (int t = 0; t < th; ++t) run[t] = urun(t, buf + t * stride);
@@ -207,8 +226,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // All rows laid out and run[] long enough: run[] continued cyclically once (th + height + 2
   // entries, eight a step), so a strip's runs in row order are run + first (mip 3's loop
   // changes its copy).
-  const bool run_ext = all_rows && kMip != 3 && th + height + 2 + 7 <= kMaxRuns + 3;
-  if (run_ext) {
+  if (run_ext && !uplace) {
     for (int t = th; t < th + height + 2; t += 8) {  // (th >= 8: the reads precede the writes)
       if (th < 8) {
         for (int i = 0; i < 8; ++i) run[t + i] = run[t + i - th];

@@ -153,9 +153,11 @@
     "add x8, %[d], %[w]\n\t" \
     "b.ne 1b\n\t"
 
-// The band's last pair: the next band's step weighed after its NEON run from e, e1 (v8,
-// loaded a band ahead at x30 + 32; lanes 0 / 4 for quarters 0-1, 0 / 4 (mip 0) or 1 / 5
-// (mip 1) for quarters 2-3), then x30 moves to the next band's entry.
+// The band's last pair: the next band's step weighed after its NEON run from its grid row
+// differences (v8, loaded a band ahead: entries e[0..] of the group's first block, lanes 0 / 1
+// for quarters 0-1, 0 / 1 (mip 0) or 1 / 2 (mip 1) for quarters 2-3), then the one after
+// next loaded from ete + x30 (asm/neon_block_a53g.h's table) and x30 stepped a table row (w
+// bytes) towards 0, which ends the group.
 #define SB_PAIR_LOOP_16W0 \
     "stp d4, d5, [%[d]]\n\t" \
     "stp d6, d7, [x8]\n\t" \
@@ -402,19 +404,10 @@
     "ld1 {v6.b}[7], [x5]\n\t" \
     "b.ne 1b\n\t"
 
-#define SB_WEIGH01(L0, L1, L4) \
-  "smull v16.4s, %[wa].4h, v8.h[0]\n\t" \
-  "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
-  "smull v18.4s, %[wb].4h, v8.h[" L0 "]\n\t" \
-  "smull2 v29.4s, %[wb].8h, v8.h[" L0 "]\n\t" \
-  "smlal v16.4s, %[wc].4h, v8.h[" L1 "]\n\t" \
-  "smlal2 v17.4s, %[wc].8h, v8.h[" L1 "]\n\t" \
-  "smlal v18.4s, %[wd].4h, v8.h[" L4 "]\n\t" \
-  "smlal2 v29.4s, %[wd].8h, v8.h[" L4 "]\n\t"
-
-// Mip 2, in-order cores: the loop above, a band (two pairs) an iteration as in the
-// mip 2 loop below: the first pair loads the next band's e, e1 (v8, at x30 + 16),
-// the second weighs them into the step after its last use of the current one.
+// Mip 2, in-order cores: the loop above, a band (two pairs) an iteration: the first pair
+// loads the next band's grid row differences (v8, from ete + q: e[0..4] of the group's
+// blocks), the second weighs them into the step after its last use of the current one and
+// steps q a table row (w bytes) towards 0, which ends the group.
 #define SB_PAIR16_A \
     "stp d4, d5, [%[d]]\n\t" \
     "stp d6, d7, [x8]\n\t" \
@@ -650,13 +643,3 @@
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
     "b.ne 1b\n\t"
-
-#define SB_WEIGH_STEP8 \
-  "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
-  "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
-  "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
-  "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
-  "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
-  "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
-  "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
-  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t"

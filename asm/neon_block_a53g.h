@@ -82,8 +82,9 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "b.ne 5b\n\t" \
   "add sp, sp, #64\n\t"
 
-// Mips 0-1: numerators from row 0 (v0), the first band's step from row 1 (v8), row 2
-// preloaded (v8); x30 = the table offset (see SB_PAIR_LOOP_16W0).
+// Mips 0-1: numerators from row 0 (v0), the first band's step from row 1 (v8, SB_WEIGH01's
+// products interleaved: no accumulate waits on its product), row 2 preloaded (v8); x30 = the
+// table offset (see SB_PAIR_LOOP_16W0).
 #define SB_A53_HEAD01(L0, L1, L4, SH) \
   "ldr q0, [x11]\n\t" \
   "add x10, x11, %[w]\n\t" \
@@ -100,17 +101,26 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "smull2 v23.4s, %[wa].8h, v0.h[0]\n\t" \
   "smull v19.4s, %[wb].4h, v0.h[" L0 "]\n\t" \
   "smull2 v20.4s, %[wb].8h, v0.h[" L0 "]\n\t" \
+  "smull v16.4s, %[wa].4h, v8.h[0]\n\t" \
+  "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
+  "smull v18.4s, %[wb].4h, v8.h[" L0 "]\n\t" \
+  "smull2 v29.4s, %[wb].8h, v8.h[" L0 "]\n\t" \
   "smlal v22.4s, %[wc].4h, v0.h[" L1 "]\n\t" \
   "smlal2 v23.4s, %[wc].8h, v0.h[" L1 "]\n\t" \
   "smlal v19.4s, %[wd].4h, v0.h[" L4 "]\n\t" \
-  "smlal2 v20.4s, %[wd].8h, v0.h[" L4 "]\n\t" SB_WEIGH01(L0, L1, L4) \
-  "ldr q8, [x9]\n\t" \
+  "smlal2 v20.4s, %[wd].8h, v0.h[" L4 "]\n\t" \
+  "smlal v16.4s, %[wc].4h, v8.h[" L1 "]\n\t" \
+  "smlal2 v17.4s, %[wc].8h, v8.h[" L1 "]\n\t" \
   "shl v22.4s, v22.4s, #" SH "\n\t" \
   "shl v23.4s, v23.4s, #" SH "\n\t" \
+  "smlal v18.4s, %[wd].4h, v8.h[" L4 "]\n\t" \
+  "smlal2 v29.4s, %[wd].8h, v8.h[" L4 "]\n\t" \
   "shl v19.4s, v19.4s, #" SH "\n\t" \
-  "shl v20.4s, v20.4s, #" SH "\n\t" SB_PAIR_LOOP_16_PRO
+  "shl v20.4s, v20.4s, #" SH "\n\t" \
+  "ldr q8, [x9]\n\t" SB_PAIR_LOOP_16_PRO
 
-// Mip 2: as above with q the table offset (see SB_PAIR16_A).
+// Mip 2: as above (the step as SB_PAIR16_B weighs it) with q the table offset (see
+// SB_PAIR16_A).
 #define SB_A53_HEAD2 \
   "ldr q0, [x11]\n\t" \
   "add x10, x11, %[w]\n\t" \
@@ -125,12 +135,20 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "smull v23.4s, %[wt].4h, v0.h[1]\n\t" \
   "smull v19.4s, %[wt].4h, v0.h[2]\n\t" \
   "smull v20.4s, %[wt].4h, v0.h[3]\n\t" \
+  "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+  "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
+  "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
+  "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
   "smlal2 v22.4s, %[wt].8h, v0.h[1]\n\t" \
   "smlal2 v23.4s, %[wt].8h, v0.h[2]\n\t" \
   "smlal2 v19.4s, %[wt].8h, v0.h[3]\n\t" \
-  "smlal2 v20.4s, %[wt].8h, v0.h[4]\n\t" SB_WEIGH_STEP8 \
+  "smlal2 v20.4s, %[wt].8h, v0.h[4]\n\t" \
+  "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
+  "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
   "shl v22.4s, v22.4s, #2\n\t" \
   "shl v23.4s, v23.4s, #2\n\t" \
+  "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
+  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
   "shl v19.4s, v19.4s, #2\n\t" \
   "shl v20.4s, v20.4s, #2\n\t"
 
