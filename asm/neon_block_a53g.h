@@ -10,7 +10,7 @@
 // inside the row as width >= 16 F >= 2 G (F - 1) + 16 for F full groups. Its numerators are
 // row 0 weighed, its band steps rows 1.. weighed (one row a band, at the band's last pair).
 // The group loop keeps its state on the stack (A53Groups, copied there at entry): the group's
-// output and row 0 in T, groups left, the table offset each group starts from (-nb es), the
+// output and row 0 in T, the end of the outputs, the table offset each group starts from (-nb es), the
 // strip's texel runs (lin), and how goff steps (gstep, wrapped at gmod: asm/neon.cpp's
 // goff_of); in registers its table end (ete: one row past the last read, + 2 G g) and goff.
 #pragma once
@@ -36,17 +36,18 @@ struct A53Groups {
   int64_t off;                // -nb es: the table offset a group starts from
   const uint8_t* const* lin;  // the strip's texel runs
   int64_t gmod, gstep;        // goff += gstep, then -= gmod when >= gmod
-  int64_t groups;             // full groups (>= 1)
+  uint8_t* dend;              // one group past the last's output (groups: (dend - d) / 16 >= 1)
   int64_t unused;
 };
 static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && offsetof(A53Groups, off) == 16 &&
                   offsetof(A53Groups, lin) == 24 && offsetof(A53Groups, gmod) == 32 &&
-                  offsetof(A53Groups, gstep) == 40 && offsetof(A53Groups, groups) == 48 && sizeof(A53Groups) == 64,
+                  offsetof(A53Groups, gstep) == 40 && offsetof(A53Groups, dend) == 48 && sizeof(A53Groups) == 64,
               "the assembly reads A53Groups by these offsets");
 
 // The group loop around a strip's row loop (HEAD: the group's entry, x11 its row 0; OFF: its
 // table offset register; G2: 2 G, the table step a group). ete and goff stay in their
-// registers from group to group (the row loops only read them).
+// registers from group to group (the row loops only read them); the next group's output,
+// row 0, offset and runs are set before its entry (5:).
 #define SB_A53_GROUPS(OFF, HEAD, LOOP, G2) \
   "sub sp, sp, #64\n\t" \
   "ldp x0, x1, [%[q]]\n\t" \
@@ -58,27 +59,28 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "stp x4, x5, [sp, #32]\n\t" \
   "str x6, [sp, #48]\n\t" \
   "mov x26, #0xffff\n" \
-  "5:\n\t" \
   "ldp %[d], x11, [sp]\n\t" \
-  "ldp " OFF ", %[rp], [sp, #16]\n\t" HEAD \
+  "ldp " OFF ", %[rp], [sp, #16]\n" \
+  "5:\n\t" HEAD \
   "b 2f\n\t" \
   ".p2align 10\n" \
   "1:\n\t" LOOP \
   "stp d4, d5, [%[d]]\n\t" \
   "stp d6, d7, [x8]\n\t" \
-  "ldp x0, x1, [sp]\n\t" \
+  "ldp x0, x11, [sp]\n\t" \
   "ldp x6, x7, [sp, #32]\n\t" \
   "ldr x5, [sp, #48]\n\t" \
+  "ldp " OFF ", %[rp], [sp, #16]\n\t" \
   "add x0, x0, #16\n\t" \
-  "add x1, x1, #" G2 "\n\t" \
+  "add x11, x11, #" G2 "\n\t" \
   "add %[ete], %[ete], #" G2 "\n\t" \
   "add %[goff], %[goff], x7\n\t" \
   "cmp %[goff], x6\n\t" \
   "sub x4, %[goff], x6\n\t" \
   "csel %[goff], x4, %[goff], hs\n\t" \
-  "stp x0, x1, [sp]\n\t" \
-  "subs x5, x5, #1\n\t" \
-  "str x5, [sp, #48]\n\t" \
+  "stp x0, x11, [sp]\n\t" \
+  "mov %[d], x0\n\t" \
+  "cmp x0, x5\n\t" \
   "b.ne 5b\n\t" \
   "add sp, sp, #64\n\t"
 
@@ -222,7 +224,7 @@ inline void a53_table(const uint16_t* r, int gw, int nb, int ne, uint8_t* t, int
 }
 
 // Every full group (16 g + 16 <= width, F >= 1 of them) of the strip at out (nb bands from
-// grid row r): st's d, lin, gmod, gstep, groups set by the caller, goff group 0's; t: the table
+// grid row r): st's d, lin, gmod, gstep, dend set by the caller, goff group 0's; t: the table
 // buffer (kA53TableBytes, (nb + 3) width bytes used); J0, J1: the index lookups (kTix16).
 template <int kMip>
 inline void a53_full_groups(const uint16_t* r, int gw, int nb, int width, A53Groups st, int64_t goff, uint8_t* t,
@@ -230,7 +232,7 @@ inline void a53_full_groups(const uint16_t* r, int gw, int nb, int width, A53Gro
                             uint8x16_t J1) {
   constexpr int B = 16 >> kMip, G = 16 / B;
   const int64_t es = width;
-  a53_table<4 - kMip>(r, gw, nb, G * int(st.groups) + 1, t, es);
+  a53_table<4 - kMip>(r, gw, nb, G * int((st.dend - st.d) >> 4) + 1, t, es);
   st.p0 = t;
   st.off = -int64_t(nb) * es;
   uint8_t* d = st.d;
