@@ -189,30 +189,27 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                              : (tile_row(buf + t * stride, texels + t * tw, tw, c0, 16, tex_end, period, texels),
                                 buf + t * stride);
 #if defined(__aarch64__)
-    } else if (uplace) {  // (and run_ext's continuation: th is a multiple of 4)
-      const int total = run_ext ? th + height + 2 : th;
-      for (int t = 0; t < total; t += th) {
-        const int n = total - t < th ? total - t : th;
-        const uint8_t *p0 = texels, *p1 = p0 + tw, *p2 = p1 + tw, *p3 = p2 + tw;
-        int i = 0;
-        if (n >= 8) {  // (eight a step: no reads)
-          const uint8_t *p4 = p3 + tw, *p5 = p4 + tw, *p6 = p5 + tw, *p7 = p6 + tw;
-          for (; i + 8 <= n; i += 8) {
-            run[t + i] = p0, run[t + i + 1] = p1, run[t + i + 2] = p2, run[t + i + 3] = p3;
-            run[t + i + 4] = p4, run[t + i + 5] = p5, run[t + i + 6] = p6, run[t + i + 7] = p7;
-            p0 += 8 * tw, p1 += 8 * tw, p2 += 8 * tw, p3 += 8 * tw, p4 += 8 * tw, p5 += 8 * tw, p6 += 8 * tw,
-                p7 += 8 * tw;
-            asm("" : "+r"(p0), "+r"(p1), "+r"(p2), "+r"(p3), "+r"(p4), "+r"(p5), "+r"(p6), "+r"(p7));
-          }
+    } else if (umod) {  // rows in place or laid out at buf + t stride: run[] by pointer steps
+      if (uplace) {
+      } else if (tw == 32) {  // (the common width: both loads first)
+        const uint8_t* r = texels;
+        for (uint8_t* o = buf; o < buf + th * stride; o += stride, r += 32) {
+          uint8x16_t a = vld1q_u8(r), b = vld1q_u8(r + 16);
+          asm("" : "+w"(a), "+w"(b));
+          vst1q_u8(o, a);
+          vst1q_u8(o + 16, b);
+          vst1q_u8(o + 32, a);
         }
-        for (; i < n; i += 4) {  // (up to 3 past total)
-          run[t + i] = p0, run[t + i + 1] = p1, run[t + i + 2] = p2, run[t + i + 3] = p3;
-          p0 += 4 * tw, p1 += 4 * tw, p2 += 4 * tw, p3 += 4 * tw;
-          asm("" : "+r"(p0), "+r"(p1), "+r"(p2), "+r"(p3));  // (else GCC vectorizes: stalls in order)
-        }
+      } else {
+        for (int t = 0; t < th; ++t) tile_row_u(buf + t * stride, texels + t * tw, tw);
       }
-    } else if (umod) {
-      for (int t = 0; t < th; ++t) run[t] = urun(t, buf + t * stride);
+      const int step = uplace ? tw : stride;
+      const uint8_t *p0 = uplace ? texels : buf, *p1 = p0 + step, *p2 = p1 + step, *p3 = p2 + step;
+      for (int t = 0; t < th; t += 4) {  // (th is a multiple of 4)
+        run[t] = p0, run[t + 1] = p1, run[t + 2] = p2, run[t + 3] = p3;
+        p0 += 4 * step, p1 += 4 * step, p2 += 4 * step, p3 += 4 * step;
+        asm("" : "+r"(p0), "+r"(p1), "+r"(p2), "+r"(p3));  // (else GCC vectorizes: stalls in order)
+      }
 #endif
     } else {
       for (int t = 0; t < th; ++t)
@@ -226,7 +223,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // All rows laid out and run[] long enough: run[] continued cyclically once (th + height + 2
   // entries, eight a step), so a strip's runs in row order are run + first (mip 3's loop
   // changes its copy).
-  if (run_ext && !uplace) {
+  if (run_ext) {
     for (int t = th; t < th + height + 2; t += 8) {  // (th >= 8: the reads precede the writes)
       if (th < 8) {
         for (int i = 0; i < 8; ++i) run[t + i] = run[t + i - th];
