@@ -223,12 +223,10 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   // All rows laid out and run[] long enough: run[] continued cyclically once (th + height + 2
   // entries, eight a step), so a strip's runs in row order are run + first (mip 3's loop
   // changes its copy).
-  if (run_ext) {
+  if (run_ext && th < 8) {
+    for (int t = th; t < th + height + 2; ++t) run[t] = run[t - th];
+  } else if (run_ext) {
     for (int t = th; t < th + height + 2; t += 8) {  // (th >= 8: the reads precede the writes)
-      if (th < 8) {
-        for (int i = 0; i < 8; ++i) run[t + i] = run[t + i - th];
-        continue;
-      }
       const uint64_t* const src = reinterpret_cast<const uint64_t*>(run + t - th);
       uint64_t* const dst = reinterpret_cast<uint64_t*>(run + t);
       uint64x2_t v0 = vld1q_u64(src), v1 = vld1q_u64(src + 2), v2 = vld1q_u64(src + 4), v3 = vld1q_u64(src + 6);
