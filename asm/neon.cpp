@@ -55,8 +55,10 @@ inline uint32x4_t lanes4(uint32_t a, uint32_t d, uint32_t dd) {
 // two rows per iteration (see there; mip 3 keeps n >> 6 in 16-bit lanes, weighed from the
 // grid in the loop). The last, partial group of a row is C++.
 // neon_a53 (kInOrder, for in-order cores: Cortex-A53/A35/A55) keeps the rest but runs its own
-// row loops at mips 0-2: 16-bit indices, colormap bytes loaded straight into output lanes
-// (see there); mip 3 its own function (asm/neon_block_mip3.h, the shared loop as fallback).
+// row loops at mips 0-2, every full group of a strip in one call (asm/neon_block_a53g.h):
+// 16-bit indices, colormap bytes loaded straight into output lanes (asm/neon_block_a53.h);
+// mip 3 its own function (asm/neon_block_mip3.h, the shared loop as fallback). AArch64 keeps
+// rows of widths a multiple of 16 unrotated (group g at (c0 + 16 g) mod tw, see umod).
 // Texture rows are laid out wrapped first ("tiled": surface column x reads run[x]); rows that
 // need no wrap are read in place. Every texture row once per call when the texture is shorter
 // than the surface (rows repeat) and fits the buffer, else a strip of bands' rows at a time.
@@ -580,7 +582,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
         // numerators are the even row's plus the step); v16-v18, v29: the step; x8: texel run
         // (and step) addresses; x9-x12, x18 (and x30): high halves of the index pairs. The
         // scalar halves are ordered for llvm-mca's Cortex-A53 model (ALU before load in a cycle).
-        // dtab entries a band (mip 2 and the in-order mips 0-1: e, e1 in 16-bit lanes)
+        // dtab entries a band (mip 2: e, e1 in 16-bit lanes)
         constexpr int kDs = LB == 2 ? 1 : 4;
         if constexpr (LB == 1) {  // (mip 3: no table, see its loop)
         } else if (direct) {
