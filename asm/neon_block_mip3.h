@@ -519,10 +519,10 @@ __attribute__((always_inline)) inline void mip3_columns(const uint8_t* cm, uint8
       "str x12, [sp, #64]\n\t"
       "movi v31.8h, #0xff\n\t"
       "mov x27, #0xffff\n\t"
-      "3:\n\t"
       "ldp x6, x28, [sp, #16]\n\t"
       "ldp x10, x11, [sp, #56]\n\t"
-      "ldr x1, [sp]\n\t"
+      "ldr x1, [sp]\n"
+      "3:\n\t"  // (the next group enters with x1, x6, x28, x10, x11 set)
       "add x7, x6, x4\n\t"
       "ldr q16, [x6]\n\t"
       "add x8, x6, x10\n\t"
@@ -555,6 +555,7 @@ __attribute__((always_inline)) inline void mip3_columns(const uint8_t* cm, uint8
       "subs x10, x10, #1\n\t"
       "stp x1, x10, [sp]\n\t"
       "stp x6, x28, [sp, #16]\n\t"
+      "ldp x10, x11, [sp, #56]\n\t"
       "b.ne 3b\n\t"
       "add sp, sp, #80\n\t"
       : "+r"(x9)
