@@ -104,8 +104,9 @@ constexpr uint8_t kTix16[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6,
                                    {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
 #endif
 
-// kInOrder: the row loops scheduled for in-order cores (surface_block_neon_inorder).
-template <int kMip, bool kInOrder = false>
+// kInOrder: the row loops scheduled for in-order cores (surface_block_neon_inorder); kFull
+// (with it, mips 0-2): width a multiple of 16, no partial group (none of its set-up).
+template <int kMip, bool kInOrder = false, bool kFull = false>
 void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* texels, int tw, int th, int soff,
                           int toff, int width, int height, const uint8_t* __restrict colormap,
                           uint8_t* __restrict out) {
@@ -504,6 +505,7 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
                               vld1q_u8(kTix16[0]), vld1q_u8(kTix16[1]));
         g = width >> 4;
       }
+      if constexpr (kFull) continue;
     }
     for (; g < groups; ++g) {
 #endif
@@ -864,14 +866,14 @@ void surface_block_neon_inorder(const uint16_t* grid, int grid_width, const uint
                                 const uint8_t* colormap, uint8_t* out) {
   if (width > 0 && height > 0 && mip >= 0 && mip <= 3 && width / (16 >> mip) <= kMaxBlockColumns) {
     if (mip == 0)
-      return surface_block_groups<0, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
-                                           colormap, out);
+      return (width & 15 ? surface_block_groups<0, true> : surface_block_groups<0, true, true>)(
+          grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
     if (mip == 1)
-      return surface_block_groups<1, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
-                                           colormap, out);
+      return (width & 15 ? surface_block_groups<1, true> : surface_block_groups<1, true, true>)(
+          grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
     if (mip == 2)
-      return surface_block_groups<2, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
-                                           colormap, out);
+      return (width & 15 ? surface_block_groups<2, true> : surface_block_groups<2, true, true>)(
+          grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
     if (surface_block_mip3(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out))
       return;
     return surface_block_groups<3, true>(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
