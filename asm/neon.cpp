@@ -499,8 +499,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
     int g = 0;
     if constexpr (kInOrder && LB >= 2) {  // the full groups (asm/neon_block_a53g.h)
       if (width >= 16) {
-        const A53Groups st{strip, nullptr, 0, linp, umod ? umod : gper ? gper : int64_t(1) << 40, umod || gper ? 16 : gs,
-                           strip + 16 * (width >> 4), 0};
+        const int64_t gmod = umod ? umod : gper ? gper : int64_t(1) << 40;  // (goff_of's steps)
+        const A53Groups st{strip, nullptr, 0, linp, gmod, umod || gper ? 16 : gs, strip + 16 * (width >> 4), 0};
         a53_full_groups<kMip>(grid + by0 * grid_width, grid_width, nb, width, st, goff_of(0), a53t, colormap, BX1, FX1,
                               vld1q_u8(kTix16[0]), vld1q_u8(kTix16[1]));
         g = width >> 4;
