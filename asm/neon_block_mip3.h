@@ -637,11 +637,11 @@ __attribute__((always_inline)) inline bool surface_block_mip3(const uint16_t* gr
       };
       tile_run(0, t0, th - t0);
       if (t0) tile_run(th - t0, 0, t0);
-      uint64x2_t v = vaddq_u64(vdupq_n_u64(uint64_t(reinterpret_cast<uintptr_t>(buf))), vcombine_u64(vdup_n_u64(0), vdup_n_u64(16)));
-      const uint64x2_t step = vdupq_n_u64(32);
-      for (int y = 0; y < th; y += 2) {  // (an odd th writes rp[th]: rewritten below)
-        vst1q_u64(reinterpret_cast<uint64_t*>(rp + y), v);
-        v = vaddq_u64(v, step);
+      const uint8_t* p = buf;
+      for (int y = 0; y < th; y += 2, p += 32) {  // (th is even; pointer steps: vector adds stall in order)
+        rp[y] = p;
+        rp[y + 1] = p + 16;
+        asm("" : "+r"(p));
       }
     } else if (p16 && !flat) {
       for (int y = 0; y < used; ++y) {
@@ -665,6 +665,15 @@ __attribute__((always_inline)) inline bool surface_block_mip3(const uint16_t* gr
     }
     // Rows repeat every th (used = th here when height exceeds it): two pointers a step.
     int y = used;
+    for (; y + 7 < height + 2 && used >= 8; y += 8) {  // (eight a step: the loads first)
+      const uint64_t* const src = reinterpret_cast<const uint64_t*>(rp + y - used);
+      uint64x2_t a = vld1q_u64(src), b = vld1q_u64(src + 2), c = vld1q_u64(src + 4), e = vld1q_u64(src + 6);
+      asm("" : "+w"(a), "+w"(b), "+w"(c), "+w"(e));
+      vst1q_u64(reinterpret_cast<uint64_t*>(rp + y), a);
+      vst1q_u64(reinterpret_cast<uint64_t*>(rp + y + 2), b);
+      vst1q_u64(reinterpret_cast<uint64_t*>(rp + y + 4), c);
+      vst1q_u64(reinterpret_cast<uint64_t*>(rp + y + 6), e);
+    }
     for (; y + 3 < height + 2 && used >= 4; y += 4) {
       const uint64x2_t a = vld1q_u64(reinterpret_cast<const uint64_t*>(rp + y - used));
       const uint64x2_t b = vld1q_u64(reinterpret_cast<const uint64_t*>(rp + y - used + 2));
