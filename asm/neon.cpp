@@ -268,7 +268,8 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
   const uint8x16_t IDX[4] = {vld1q_u8(kIdx[0]), vld1q_u8(kIdx[1]), vld1q_u8(kIdx[2]), vld1q_u8(kIdx[3])};
   const uint8x16_t TIX[4] = {vld1q_u8(kTix[0]), vld1q_u8(kTix[1]), vld1q_u8(kIdx[2]), vld1q_u8(kTix[3])};
   const uint8_t* lin[kStripRows + 2 + 3];  // the strip's texel runs in row order, two rows beyond
-  uint32x4_t dtab[(kStripRows / B + 1) * 4];  // each band's row step, one more (unused)
+  // each band's row step, one more (unused); (the in-order mips 0-2 use a53t instead)
+  uint32x4_t dtab[kInOrder && LB >= 2 ? 1 : (kStripRows / B + 1) * 4];
   alignas(16) uint8_t a53t[kInOrder && LB >= 2 ? kA53TableBytes : 16];  // (asm/neon_block_a53g.h's table)
 #endif
   uint16_t pad[24];  // a last group's grid entries, zero padded (never read past a grid row)
