@@ -1,0 +1,351 @@
+// asm/span_persp_v7mid.h: the whole-span drawer's ARMv7 path for second-order spans of
+// 50 .. 64 pixels (asm/span_persp.h): four runs, the last of n - 48 = 2 .. 16 pixels.
+// Internal: included by asm/span_persp_fast.cpp only, after asm/span_persp_arm.h
+// (anonymous namespace).
+//
+// persp_fast computes a pass's samples beside the runs before it; for four runs that
+// pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers, no
+// copies) computes the five samples (the divides back to back, the other samples' work in
+// their latency) and run 0's ddf; runs 1 .. 3's ddf and the last run's quotients are issued
+// beside run 0's and run 1's pixels (stage slots); each run's pixels are one asm group
+// sequence (draw16_v7) whose values stay in registers. Every double operation is the
+// walker's (asm/span_walk.h), as persp_fast performs it:
+//   positions   P, P + 16, P + 32, (P + 16) + 32, ((P + 16) + 16) + (n - 33): the walker's
+//               accumulated run starts plus the sample offsets (persp_fast's pos0 .. pos4)
+//   depth       z = 1 / max(zrow + zix x, kMinZi) (fused, as compiled; vcmpe / vmovle)
+//   u           fix((urow + ux x) z) = usat32(trunc((urow + ux x) (z 2^16))), min umax:
+//               (t z) 2^16 = t (z 2^16) exactly (a power-of-two scaling commutes with
+//               rounding; when t z is subnormal both give |value| < 1, fix 0; overflow gives
+//               infinity either way; NaN -> 0 either way; z 2^16 <= 2^46 is exact and
+//               finite), so vcvt.u32.f64 (truncating, saturating, NaN -> 0) of that product
+//               is min_ufixed16 / cvt_ufixed16's value; v likewise; u, v side by side in one
+//               d register, clamped by one vmin.u32 against [umax, vmax]
+//   full runs   ddf = delta (zck (z_a + z_b)), zck = zix * -1/16 (persp_fast's argument:
+//               the walker's -2 (delta / 16 * curve), same bits), cvt_sat, steps16_dd
+//   last run    q = double(delta) / (n - 49) (last_quotient), curve = (zix * 0.5) (z_3 + z_4),
+//               last_ddi (cvt_sat(-2 (q curve)), the range test) and last_steps_i
+// delta: u_b - u_a in int32 (both in [0, 2^31)), converted exactly.
+#pragma once
+#include <cstddef>
+#include <utility>
+
+#include "asm/span_persp_arm.h"
+#include "asm/span_persp_run.h"
+
+namespace sb::simd {
+namespace {
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FEATURE_DSP) && \
+    defined(__ARM_FP) && (__ARM_FP & 8) && defined(__ARM_NEON)
+#define SB_V7_MID 1
+constexpr int kMidMin = 50, kMidMax = 64;
+static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, uz0) == 16 &&
+              offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
+              offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
+              "the prologue loads zi0 .. px0 with one vldmia, umax and vmax with one vldr");
+// kMinZi, 2^16, -1/16, 1/2: loaded together by the prologue.
+alignas(8) constexpr double kMidConsts[4] = {kMinZi, 65536.0, -0.0625, 0.5};
+
+// f(integral_constant<int, J>) for J = 0 .. N - 1, written out.
+template <int N, class F>
+SB_INLINE void unroll(F&& f) {
+  [&]<int... J>(std::integer_sequence<int, J...>) SB_LAMBDA_INLINE {
+    (f(std::integral_constant<int, J>{}), ...);
+  }(std::make_integer_sequence<int, N>{});
+}
+
+// cvt_sat (vcvt.s32.f64: truncating, saturating, NaN -> 0) with the result left in a single
+// register, read later (int_bits): the conversion's latency passes meanwhile.
+SB_INLINE float cvt_sat_s(double x) {
+  float r;
+  __asm__("vcvt.s32.f64 %0, %P1" : "=t"(r) : "w"(x));
+  return r;
+}
+SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
+// The two int32 lanes of a d register (one vmov r, r, d).
+SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
+  const uint64_t b = __builtin_bit_cast(uint64_t, x);
+  *lo = int32_t(uint32_t(b)), *hi = int32_t(uint32_t(b >> 32));
+}
+
+// One 16-pixel second-order run: surface_span's pixels (u_{k+1} = u_k + du_k,
+// du_{k+1} = du_k + ddu, likewise v; texel (v_k >> 16) w + (u_k >> 16)), as Run16's ARMv7
+// groups compute them (smulbt, uxtah: the contract keeps w <= 32767 and 0 <= v < 2^31), the
+// bytes gathered into four little-endian words (str: ARMv7 allows unaligned dest). Eight asm
+// groups of two pixels, stage(integral_constant<int, G>) after group G (VFP work for later
+// runs, issued beside the integer pixels); the run's values stay in registers throughout.
+#define SB_V7_PX(t)                       \
+  "smulbt " t ", %[w], %[v]\n\t"          \
+  "uxtah " t ", " t ", %[u], ror #16\n\t" \
+  "add %[u], %[u], %[du]\n\t"             \
+  "add %[v], %[v], %[dv]\n\t"             \
+  "add %[du], %[du], %[ddu]\n\t"          \
+  "add %[dv], %[dv], %[ddv]\n\t"          \
+  "ldrb " t ", [%[tx], " t "]\n\t"
+template <class Stage>
+SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, uint32_t u, uint32_t v, uint32_t du,
+                         uint32_t dv, uint32_t ddu, uint32_t ddv, Stage&& stage) {
+  uint32_t a, b;
+  auto group = [&](auto g) SB_LAMBDA_INLINE {
+    constexpr int G = decltype(g)::value;
+    if constexpr (G % 2 == 0) {  // pixels 2G, 2G + 1: the word's low half
+      __asm__ volatile(SB_V7_PX("%[a]") SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #8"
+                       : [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "=&r"(a), [b] "=&r"(b)
+                       : [ddu] "r"(ddu), [ddv] "r"(ddv), [w] "r"(w), [tx] "r"(texels)
+                       : "memory");
+    } else {  // its high half, then the store of pixels 2G - 2 .. 2G + 1
+      __asm__ volatile(SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #16\n\t" SB_V7_PX("%[b]")
+                       "orr %[a], %[a], %[b], lsl #24\n\t"
+                       "str %[a], %[m]"
+                       : [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "+&r"(a), [b] "=&r"(b),
+                         [m] "=m"(*reinterpret_cast<uint32_t*>(dest + 2 * G - 2))
+                       : [ddu] "r"(ddu), [ddv] "r"(ddv), [w] "r"(w), [tx] "r"(texels)
+                       : "memory");
+    }
+    stage(g);
+  };
+  unroll<8>(group);
+}
+#undef SB_V7_PX
+
+// The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax];
+// d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5 in d27).
+// Positions x0 .. x4 in d22, d30, d31, d29, d28; depths d5, d6, d7, d1, d16 (clamped, then
+// 1 / zi); t = urow + ux x, s = vrow + vx x in d17 / d24, d22 / d2, d30 / d3, d31 / d4,
+// d18 / d20 (samples 0 .. 4); depth sums z_0 + z_1 .. z_3 + z_4 in d19, d21, d28, d29, made
+// c_0, c_1, c_2 (times zck) and curve (times zh); z 2^16 in place; the products in place;
+// their conversions into s0 .. s9 (sample j's [u, v] in d_j), clamped by vmin.u32 with d23;
+// run 0's [u_1 - u_0, v_1 - v_0] in d5, converted (d17, d18), times c_0, cvt_sat into d5.
+// Outputs: d0 .. d4 the samples, d5 run 0's [iu, iv], d19 c_0 (unused), d21 c_1, d28 c_2,
+// d29 curve. A register is reused only after its value's last read (in order: each
+// vcvt into s_2j / s_2j+1 reads a product whose register is no longer needed).
+#define SB_V7_CLAMP(d) \
+  "vcmpe.f64 " d ", d24\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 " d ", d24\n\t"
+// r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
+SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
+  register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
+  register double o5 __asm__("d5"), o6 __asm__("d21"), o7 __asm__("d28"), o8 __asm__("d29");
+  __asm__ volatile(
+      "vldmia %[p], {d16-d22}\n\t"
+      "vldmia %[c], {d24-d27}\n\t"
+      "vmov.f64 d28, #16.0\n\t"
+      "vadd.f64 d29, d28, d28\n\t"  // 32
+      "vmov s0, %[nm33]\n\t"
+      "vadd.f64 d30, d22, d28\n\t"  // x1 = P + 16
+      "vldr d23, [%[p], #56]\n\t"
+      "vcvt.f64.s32 d0, s0\n\t"  // n - 33
+      "vadd.f64 d31, d22, d29\n\t"  // x2 = P + 32
+      "vmov.f64 d5, d16\n\t"
+      "vfma.f64 d5, d17, d22\n\t"  // zi0
+      "vadd.f64 d29, d30, d29\n\t"  // x3 = x1 + 32
+      "vadd.f64 d28, d30, d28\n\t"  // P2 = x1 + 16
+      "vmov.f64 d6, d16\n\t"
+      "vfma.f64 d6, d17, d30\n\t"  // zi1
+      "vmov.f64 d7, d16\n\t"
+      "vfma.f64 d7, d17, d31\n\t"  // zi2
+      "vadd.f64 d28, d28, d0\n\t"  // x4 = P2 + (n - 33)
+      "vmov.f64 d1, d16\n\t"
+      "vfma.f64 d1, d17, d29\n\t"  // zi3
+      "vmul.f64 d26, d17, d26\n\t"  // zck
+      "vmul.f64 d27, d17, d27\n\t"  // zh
+      "vfma.f64 d16, d17, d28\n\t"  // zi4 (zrow's register)
+      SB_V7_CLAMP("d5") SB_V7_CLAMP("d6") SB_V7_CLAMP("d7") SB_V7_CLAMP("d1") SB_V7_CLAMP("d16")
+      "vmov.f64 d17, #1.0\n\t"
+      "vdiv.f64 d5, d17, d5\n\t"
+      "vdiv.f64 d6, d17, d6\n\t"
+      "vdiv.f64 d7, d17, d7\n\t"
+      "vdiv.f64 d1, d17, d1\n\t"
+      "vdiv.f64 d16, d17, d16\n\t"
+      // Under the divides: t and s of every sample.
+      "vmov.f64 d17, d18\n\t"
+      "vmov.f64 d24, d20\n\t"
+      "vfma.f64 d17, d19, d22\n\t"
+      "vfma.f64 d24, d21, d22\n\t"
+      "vmov.f64 d22, d18\n\t"
+      "vmov.f64 d2, d20\n\t"
+      "vfma.f64 d22, d19, d30\n\t"
+      "vfma.f64 d2, d21, d30\n\t"
+      "vmov.f64 d30, d18\n\t"
+      "vmov.f64 d3, d20\n\t"
+      "vfma.f64 d30, d19, d31\n\t"
+      "vfma.f64 d3, d21, d31\n\t"
+      "vmov.f64 d31, d18\n\t"
+      "vmov.f64 d4, d20\n\t"
+      "vfma.f64 d31, d19, d29\n\t"
+      "vfma.f64 d4, d21, d29\n\t"
+      "vfma.f64 d18, d19, d28\n\t"
+      "vfma.f64 d20, d21, d28\n\t"
+      // Depth sums and curve factors, z 2^16, the products.
+      "vadd.f64 d19, d5, d6\n\t"
+      "vadd.f64 d21, d6, d7\n\t"
+      "vmul.f64 d5, d5, d25\n\t"
+      "vmul.f64 d6, d6, d25\n\t"
+      "vadd.f64 d28, d7, d1\n\t"
+      "vadd.f64 d29, d1, d16\n\t"
+      "vmul.f64 d7, d7, d25\n\t"
+      "vmul.f64 d1, d1, d25\n\t"
+      "vmul.f64 d16, d16, d25\n\t"
+      "vmul.f64 d17, d17, d5\n\t"
+      "vmul.f64 d24, d24, d5\n\t"
+      "vmul.f64 d22, d22, d6\n\t"
+      "vmul.f64 d2, d2, d6\n\t"
+      "vmul.f64 d30, d30, d7\n\t"
+      "vmul.f64 d3, d3, d7\n\t"
+      "vmul.f64 d31, d31, d1\n\t"
+      "vmul.f64 d4, d4, d1\n\t"
+      "vmul.f64 d18, d18, d16\n\t"
+      "vmul.f64 d20, d20, d16\n\t"
+      "vmul.f64 d19, d19, d26\n\t"  // c_0
+      "vmul.f64 d21, d21, d26\n\t"  // c_1
+      // The conversions (each product's register is dead once read; s_2j, s_2j+1 = d_j).
+      "vcvt.u32.f64 s0, d17\n\t"
+      "vcvt.u32.f64 s1, d24\n\t"
+      "vcvt.u32.f64 s2, d22\n\t"
+      "vcvt.u32.f64 s3, d2\n\t"
+      "vmul.f64 d28, d28, d26\n\t"  // c_2
+      "vmul.f64 d29, d29, d27\n\t"  // curve
+      "vmin.u32 d0, d0, d23\n\t"
+      "vmin.u32 d1, d1, d23\n\t"
+      "vcvt.u32.f64 s4, d30\n\t"
+      "vcvt.u32.f64 s5, d3\n\t"
+      "vsub.i32 d5, d1, d0\n\t"  // run 0's [du, dv]
+      "vcvt.u32.f64 s6, d31\n\t"
+      "vcvt.u32.f64 s7, d4\n\t"
+      "vcvt.f64.s32 d17, s10\n\t"
+      "vcvt.f64.s32 d24, s11\n\t"
+      "vcvt.u32.f64 s8, d18\n\t"
+      "vcvt.u32.f64 s9, d20\n\t"
+      "vmul.f64 d17, d17, d19\n\t"
+      "vmul.f64 d24, d24, d19\n\t"
+      "vmin.u32 d2, d2, d23\n\t"
+      "vmin.u32 d3, d3, d23\n\t"
+      "vmin.u32 d4, d4, d23\n\t"
+      "vcvt.s32.f64 s10, d17\n\t"
+      "vcvt.s32.f64 s11, d24"
+      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8)
+      : [p] "r"(&p), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p), "m"(kMidConsts)
+      : "cc", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d22", "d23", "d24", "d25", "d26",
+        "d27", "d30", "d31");
+  r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
+}
+#undef SB_V7_CLAMP
+
+// Two runs' deltas [u_b - u_a, v_b - v_a] (vsub.i32 on the packed samples), as doubles
+// (exact: |delta| < 2^31): d6, d7 as scratch.
+SB_INLINE void deltas2(double a, double b, double c, double* fu0, double* fv0, double* fu1, double* fv1) {
+  double x0, y0, x1, y1;
+  __asm__(
+      "vsub.i32 d6, %P[b], %P[a]\n\t"
+      "vsub.i32 d7, %P[c], %P[b]\n\t"
+      "vcvt.f64.s32 %P[x0], s12\n\t"
+      "vcvt.f64.s32 %P[y0], s13\n\t"
+      "vcvt.f64.s32 %P[x1], s14\n\t"
+      "vcvt.f64.s32 %P[y1], s15"
+      : [x0] "=&w"(x0), [y0] "=&w"(y0), [x1] "=&w"(x1), [y1] "=&w"(y1)
+      : [a] "w"(a), [b] "w"(b), [c] "w"(c)
+      : "s12", "s13", "s14", "s15");
+  *fu0 = x0, *fv0 = y0, *fu1 = x1, *fv1 = y1;
+}
+SB_INLINE void deltas1(double a, double b, double* fu, double* fv) {
+  double x, y;
+  __asm__(
+      "vsub.i32 d6, %P[b], %P[a]\n\t"
+      "vcvt.f64.s32 %P[x], s12\n\t"
+      "vcvt.f64.s32 %P[y], s13"
+      : [x] "=&w"(x), [y] "=&w"(y)
+      : [a] "w"(a), [b] "w"(b)
+      : "s12", "s13");
+  *fu = x, *fv = y;
+}
+
+SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  using std::integral_constant;
+  const uint32_t w = uint32_t(width);
+  const int steps = n - 49;  // the last run's (1 .. 15)
+  double r[9];
+  mid_prologue(p, n, r);
+  const double uv0 = r[0], uv1 = r[1], uv2 = r[2], uv3 = r[3], uv4 = r[4], c1 = r[6], c2 = r[7], curve = r[8];
+  int32_t u0, v0, u1, v1, iu0, iv0;
+  lanes(uv0, &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
+  group_end();
+  double fu1 = 0.0, fv1 = 0.0, fu2 = 0.0, fv2 = 0.0, qu = 0.0, qv = 0.0, sd = 0.0;
+  float iu1 = 0.0f, iv1 = 0.0f, iu2 = 0.0f, iv2 = 0.0f;
+  // Run 0; beside it runs 1 and 2's ddf and the last run's quotients (their divides then
+  // run under run 1).
+  {
+    RunSteps su, sv;
+    steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
+    draw16_v7(dest, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
+              uint32_t(sv.dd), [&](auto g) SB_LAMBDA_INLINE {
+                constexpr int G = decltype(g)::value;
+                if constexpr (G == 0) {
+                  deltas2(uv1, uv2, uv3, &fu1, &fv1, &fu2, &fv2);
+                  pin7(fu1), pin7(fv1), pin7(fu2), pin7(fv2);
+                } else if constexpr (G == 1) {
+                  sd = double(steps);
+                  deltas1(uv3, uv4, &qu, &qv);
+                  pin7(sd), pin7(qu), pin7(qv);
+                } else if constexpr (G == 2) {
+                  fu1 = fu1 * c1, fv1 = fv1 * c1, fu2 = fu2 * c2, fv2 = fv2 * c2;
+                  pin7(fu1), pin7(fv1), pin7(fu2), pin7(fv2);
+                } else if constexpr (G == 3) {
+                  qu = qu / sd, qv = qv / sd;  // last_quotient (steps >= 1)
+                  pin7(qu), pin7(qv);
+                } else if constexpr (G == 5) {
+                  iu1 = cvt_sat_s(fu1), iv1 = cvt_sat_s(fv1), iu2 = cvt_sat_s(fu2), iv2 = cvt_sat_s(fv2);
+                  pin7(iu1), pin7(iv1), pin7(iu2), pin7(iv2);
+                }
+              });
+  }
+  // Runs 1 and 2; beside run 1 the last run's ddf = -2 (q curve), its conversion (last_ddi's
+  // VFP part) and trunc(q) (the linear step: |q| < 2^31).
+  double hu = 0.0, hv = 0.0;
+  float ku = 0.0f, kv = 0.0f, lq_u = 0.0f, lq_v = 0.0f;
+  auto run12 = [&](auto rc) SB_LAMBDA_INLINE {
+    constexpr int R = decltype(rc)::value;
+    u0 = u1, v0 = v1;
+    lanes(R == 1 ? uv2 : uv3, &u1, &v1);
+    RunSteps su, sv;
+    steps16_dd_uv(u1 - u0, int_bits(R == 1 ? iu1 : iu2), v1 - v0, int_bits(R == 1 ? iv1 : iv2), &su, &sv);
+    draw16_v7(dest + 16 * R, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(su.d), uint32_t(sv.d),
+              uint32_t(su.dd), uint32_t(sv.dd), [&](auto g) SB_LAMBDA_INLINE {
+                constexpr int G = decltype(g)::value;
+                if constexpr (R == 1 && G == 1) {
+                  hu = qu * curve, hv = qv * curve;
+                  pin7(hu), pin7(hv);
+                } else if constexpr (R == 1 && G == 3) {
+                  hu = -2.0 * hu, hv = -2.0 * hv;
+                  pin7(hu), pin7(hv);
+                } else if constexpr (R == 1 && G == 5) {
+                  ku = cvt_sat_s(hu), kv = cvt_sat_s(hv), lq_u = cvt_sat_s(qu), lq_v = cvt_sat_s(qv);
+                  pin7(ku), pin7(kv), pin7(lq_u), pin7(lq_v);
+                }
+              });
+  };
+  run12(integral_constant<int, 1>{});
+  run12(integral_constant<int, 2>{});
+  // The last run (n - 48 pixels from sample 3 to sample 4): last_ddi's range test (as in
+  // span_persp_arm.h), then last_steps_i.
+  u0 = u1, v0 = v1;
+  int32_t u4, v4;
+  lanes(uv4, &u4, &v4);
+  auto ddi = [](float h) SB_LAMBDA_INLINE {
+    const int32_t i = int_bits(h);
+    return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0;
+  };
+  RunSteps lu, lv;
+  last_steps_i(steps, u4 - u0, v4 - v0, int_bits(lq_u), int_bits(lq_v), ddi(ku), ddi(kv), &lu, &lv);
+  if (n == 64) {
+    draw16_v7(dest + 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+              uint32_t(lv.dd), [](auto) {});
+  } else {
+    draw_run(dest + 48, n - 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d),
+             uint32_t(lu.dd), uint32_t(lv.dd));
+  }
+}
+#endif
+
+}  // namespace
+}  // namespace sb::simd
