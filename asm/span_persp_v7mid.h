@@ -67,12 +67,14 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
   *lo = int32_t(uint32_t(b)), *hi = int32_t(uint32_t(b >> 32));
 }
 
-// One 16-pixel second-order run: surface_span's pixels (u_{k+1} = u_k + du_k,
-// du_{k+1} = du_k + ddu, likewise v; texel (v_k >> 16) w + (u_k >> 16)), as Run16's ARMv7
-// groups compute them (smulbt, uxtah: the contract keeps w <= 32767 and 0 <= v < 2^31), the
-// bytes gathered into four little-endian words (str: ARMv7 allows unaligned dest). Eight asm
-// groups of two pixels, stage(integral_constant<int, G>) after group G (VFP work for later
-// runs, issued beside the integer pixels); the run's values stay in registers throughout.
+// One 16-pixel second-order run in one asm statement: surface_span's pixels
+// (u_{k+1} = u_k + du_k, du_{k+1} = du_k + ddu, likewise v; texel (v_k >> 16) w + (u_k >> 16)),
+// as Run16's ARMv7 groups compute them (smulbt, uxtah: the contract keeps w <= 32767 and
+// 0 <= v < 2^31), the bytes gathered into four little-endian words (str: ARMv7 allows an
+// unaligned dest). Eight groups of two pixels; F0 .. F7: VFP instructions placed after each
+// group (other runs' work, issued beside the integer pixels: the modelled Cortex-A9 dispatches
+// them with the integer instructions), with the caller's operands (named after the run's
+// eleven). One statement, so that the run's values stay in registers throughout.
 #define SB_V7_PX(t)                       \
   "smulbt " t ", %[w], %[v]\n\t"          \
   "uxtah " t ", " t ", %[u], ror #16\n\t" \
@@ -81,31 +83,27 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
   "add %[du], %[du], %[ddu]\n\t"          \
   "add %[dv], %[dv], %[ddv]\n\t"          \
   "ldrb " t ", [%[tx], " t "]\n\t"
-template <class Stage>
-SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, uint32_t u, uint32_t v, uint32_t du,
-                         uint32_t dv, uint32_t ddu, uint32_t ddv, Stage&& stage) {
-  uint32_t a, b;
-  auto group = [&](auto g) SB_LAMBDA_INLINE {
-    constexpr int G = decltype(g)::value;
-    if constexpr (G % 2 == 0) {  // pixels 2G, 2G + 1: the word's low half
-      __asm__ volatile(SB_V7_PX("%[a]") SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #8"
-                       : [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "=&r"(a), [b] "=&r"(b)
-                       : [ddu] "r"(ddu), [ddv] "r"(ddv), [w] "r"(w), [tx] "r"(texels)
-                       : "memory");
-    } else {  // its high half, then the store of pixels 2G - 2 .. 2G + 1
-      __asm__ volatile(SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #16\n\t" SB_V7_PX("%[b]")
-                       "orr %[a], %[a], %[b], lsl #24\n\t"
-                       "str %[a], %[m]"
-                       : [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "+&r"(a), [b] "=&r"(b),
-                         [m] "=m"(*reinterpret_cast<uint32_t*>(dest + 2 * G - 2))
-                       : [ddu] "r"(ddu), [ddv] "r"(ddv), [w] "r"(w), [tx] "r"(texels)
-                       : "memory");
-    }
-    stage(g);
-  };
-  unroll<8>(group);
+#define SB_V7_LO SB_V7_PX("%[a]") SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #8\n\t"
+#define SB_V7_HI(off) \
+  SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #16\n\t" SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #24\n\t" \
+  "str %[a], [%[d], #" off "]\n\t"
+#define SB_V7_RUN(F0, F1, F2, F3, F4, F5, F6, F7) \
+  SB_V7_LO F0 SB_V7_HI("0") F1 SB_V7_LO F2 SB_V7_HI("4") F3 SB_V7_LO F4 SB_V7_HI("8") F5 SB_V7_LO F6 SB_V7_HI("12") F7
+#define SB_V7_RUN_OPERANDS(dst)                                                               \
+  [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "=&r"(a), [b] "=&r"(b), \
+      "=m"(*reinterpret_cast<uint8_t(*)[16]>(dst))
+#define SB_V7_RUN_INPUTS(dst) [ddu] "r"(ddu), [ddv] "r"(ddv), [w] "r"(w), [tx] "r"(texels), [d] "r"(dst)
+struct RunRegs {
+  uint32_t u, v, du, dv, ddu, ddv;
+};
+SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRegs r) {
+  uint32_t u = r.u, v = r.v, du = r.du, dv = r.dv, a, b;
+  const uint32_t ddu = r.ddu, ddv = r.ddv;
+  __asm__ volatile(SB_V7_RUN("", "", "", "", "", "", "", "")
+                   : SB_V7_RUN_OPERANDS(dest)
+                   : SB_V7_RUN_INPUTS(dest)
+                   : "memory");
 }
-#undef SB_V7_PX
 
 // The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax];
 // d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5 in d27).
@@ -232,119 +230,113 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
 }
 #undef SB_V7_CLAMP
 
-// Two runs' deltas [u_b - u_a, v_b - v_a] (vsub.i32 on the packed samples), as doubles
-// (exact: |delta| < 2^31): d6, d7 as scratch.
-SB_INLINE void deltas2(double a, double b, double c, double* fu0, double* fv0, double* fu1, double* fv1) {
-  double x0, y0, x1, y1;
-  __asm__(
-      "vsub.i32 d6, %P[b], %P[a]\n\t"
-      "vsub.i32 d7, %P[c], %P[b]\n\t"
-      "vcvt.f64.s32 %P[x0], s12\n\t"
-      "vcvt.f64.s32 %P[y0], s13\n\t"
-      "vcvt.f64.s32 %P[x1], s14\n\t"
-      "vcvt.f64.s32 %P[y1], s15"
-      : [x0] "=&w"(x0), [y0] "=&w"(y0), [x1] "=&w"(x1), [y1] "=&w"(y1)
-      : [a] "w"(a), [b] "w"(b), [c] "w"(c)
-      : "s12", "s13", "s14", "s15");
-  *fu0 = x0, *fv0 = y0, *fu1 = x1, *fv1 = y1;
-}
-SB_INLINE void deltas1(double a, double b, double* fu, double* fv) {
-  double x, y;
-  __asm__(
-      "vsub.i32 d6, %P[b], %P[a]\n\t"
-      "vcvt.f64.s32 %P[x], s12\n\t"
-      "vcvt.f64.s32 %P[y], s13"
-      : [x] "=&w"(x), [y] "=&w"(y)
-      : [a] "w"(a), [b] "w"(b)
-      : "s12", "s13");
-  *fu = x, *fv = y;
+SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
+  return {uint32_t(u), uint32_t(v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd), uint32_t(sv.dd)};
 }
 
 SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
-  using std::integral_constant;
   const uint32_t w = uint32_t(width);
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
   mid_prologue(p, n, r);
-  const double uv0 = r[0], uv1 = r[1], uv2 = r[2], uv3 = r[3], uv4 = r[4], c1 = r[6], c2 = r[7], curve = r[8];
+  const double uv1 = r[1], uv2 = r[2], uv3 = r[3], uv4 = r[4], c1 = r[6], c2 = r[7], curve = r[8];
   int32_t u0, v0, u1, v1, iu0, iv0;
-  lanes(uv0, &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
-  group_end();
-  double fu1 = 0.0, fv1 = 0.0, fu2 = 0.0, fv2 = 0.0, qu = 0.0, qv = 0.0, sd = 0.0;
-  float iu1 = 0.0f, iv1 = 0.0f, iu2 = 0.0f, iv2 = 0.0f;
-  // Run 0; beside it runs 1 and 2's ddf and the last run's quotients (their divides then
-  // run under run 1).
+  lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
+  const double sd = double(steps);
+  RunSteps su, sv;
+  steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
+  // Run 0; beside it runs 1 and 2's ddf (deltas by vsub.i32 on the packed samples, exact as
+  // doubles), cvt_sat, and the last run's quotients q = double(delta) / steps (their divides
+  // then run under run 1). d6, d7, d16 .. d21: scratch.
+  float iu1, iv1, iu2, iv2;
+  double qu, qv;
   {
-    RunSteps su, sv;
-    steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
-    draw16_v7(dest, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
-              uint32_t(sv.dd), [&](auto g) SB_LAMBDA_INLINE {
-                constexpr int G = decltype(g)::value;
-                if constexpr (G == 0) {
-                  deltas2(uv1, uv2, uv3, &fu1, &fv1, &fu2, &fv2);
-                  pin7(fu1), pin7(fv1), pin7(fu2), pin7(fv2);
-                } else if constexpr (G == 1) {
-                  sd = double(steps);
-                  deltas1(uv3, uv4, &qu, &qv);
-                  pin7(sd), pin7(qu), pin7(qv);
-                } else if constexpr (G == 2) {
-                  fu1 = fu1 * c1, fv1 = fv1 * c1, fu2 = fu2 * c2, fv2 = fv2 * c2;
-                  pin7(fu1), pin7(fv1), pin7(fu2), pin7(fv2);
-                } else if constexpr (G == 3) {
-                  qu = qu / sd, qv = qv / sd;  // last_quotient (steps >= 1)
-                  pin7(qu), pin7(qv);
-                } else if constexpr (G == 5) {
-                  iu1 = cvt_sat_s(fu1), iv1 = cvt_sat_s(fv1), iu2 = cvt_sat_s(fu2), iv2 = cvt_sat_s(fv2);
-                  pin7(iu1), pin7(iv1), pin7(iu2), pin7(iv2);
-                }
-              });
+    RunRegs rr = run_regs(u0, v0, su, sv);
+    uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
+    const uint32_t ddu = rr.ddu, ddv = rr.ddv;
+    __asm__ volatile(SB_V7_RUN("vsub.i32 d6, %P[uv2], %P[uv1]\n\t"
+                               "vsub.i32 d7, %P[uv3], %P[uv2]\n\t",
+                               "vcvt.f64.s32 d16, s12\n\t"
+                               "vcvt.f64.s32 d17, s13\n\t"
+                               "vcvt.f64.s32 d18, s14\n\t"
+                               "vcvt.f64.s32 d19, s15\n\t"
+                               "vsub.i32 d6, %P[uv4], %P[uv3]\n\t",
+                               "vmul.f64 d16, d16, %P[c1]\n\t"
+                               "vmul.f64 d17, d17, %P[c1]\n\t"
+                               "vmul.f64 d18, d18, %P[c2]\n\t"
+                               "vmul.f64 d19, d19, %P[c2]\n\t"
+                               "vcvt.f64.s32 d20, s12\n\t"
+                               "vcvt.f64.s32 d21, s13\n\t",
+                               "vdiv.f64 %P[qu], d20, %P[sd]\n\t"
+                               "vdiv.f64 %P[qv], d21, %P[sd]\n\t",
+                               "vcvt.s32.f64 %[iu1], d16\n\t"
+                               "vcvt.s32.f64 %[iv1], d17\n\t"
+                               "vcvt.s32.f64 %[iu2], d18\n\t"
+                               "vcvt.s32.f64 %[iv2], d19\n\t",
+                               "", "", "")
+                     : SB_V7_RUN_OPERANDS(dest), [qu] "=&w"(qu), [qv] "=&w"(qv), [iu1] "=&t"(iu1), [iv1] "=&t"(iv1),
+                       [iu2] "=&t"(iu2), [iv2] "=&t"(iv2)
+                     : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [uv4] "w"(uv4),
+                       [c1] "w"(c1), [c2] "w"(c2), [sd] "w"(sd)
+                     : "memory", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21");
   }
-  // Runs 1 and 2; beside run 1 the last run's ddf = -2 (q curve), its conversion (last_ddi's
-  // VFP part) and trunc(q) (the linear step: |q| < 2^31).
-  double hu = 0.0, hv = 0.0;
-  float ku = 0.0f, kv = 0.0f, lq_u = 0.0f, lq_v = 0.0f;
-  auto run12 = [&](auto rc) SB_LAMBDA_INLINE {
-    constexpr int R = decltype(rc)::value;
-    u0 = u1, v0 = v1;
-    lanes(R == 1 ? uv2 : uv3, &u1, &v1);
-    RunSteps su, sv;
-    steps16_dd_uv(u1 - u0, int_bits(R == 1 ? iu1 : iu2), v1 - v0, int_bits(R == 1 ? iv1 : iv2), &su, &sv);
-    draw16_v7(dest + 16 * R, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(su.d), uint32_t(sv.d),
-              uint32_t(su.dd), uint32_t(sv.dd), [&](auto g) SB_LAMBDA_INLINE {
-                constexpr int G = decltype(g)::value;
-                if constexpr (R == 1 && G == 1) {
-                  hu = qu * curve, hv = qv * curve;
-                  pin7(hu), pin7(hv);
-                } else if constexpr (R == 1 && G == 3) {
-                  hu = -2.0 * hu, hv = -2.0 * hv;
-                  pin7(hu), pin7(hv);
-                } else if constexpr (R == 1 && G == 5) {
-                  ku = cvt_sat_s(hu), kv = cvt_sat_s(hv), lq_u = cvt_sat_s(qu), lq_v = cvt_sat_s(qv);
-                  pin7(ku), pin7(kv), pin7(lq_u), pin7(lq_v);
-                }
-              });
-  };
-  run12(integral_constant<int, 1>{});
-  run12(integral_constant<int, 2>{});
+  // Run 1; beside it the last run's ddf = -2 (q curve) and its conversion (last_ddi's VFP
+  // part), and trunc(q) (the linear step: |q| < 2^31).
+  float ku, kv, lq_u, lq_v;
+  u0 = u1, v0 = v1;
+  lanes(uv2, &u1, &v1);
+  steps16_dd_uv(u1 - u0, int_bits(iu1), v1 - v0, int_bits(iv1), &su, &sv);
+  {
+    RunRegs rr = run_regs(u0, v0, su, sv);
+    uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
+    const uint32_t ddu = rr.ddu, ddv = rr.ddv;
+    uint8_t* const d1 = dest + 16;
+    {
+      __asm__ volatile(SB_V7_RUN("",
+                                 "vmul.f64 d16, %P[qu], %P[cv]\n\t"
+                                 "vmul.f64 d17, %P[qv], %P[cv]\n\t"
+                                 "vmov.f64 d18, #-2.0\n\t",
+                                 "", "",
+                                 "vmul.f64 d16, d18, d16\n\t"
+                                 "vmul.f64 d17, d18, d17\n\t",
+                                 "", "",
+                                 "vcvt.s32.f64 %[ku], d16\n\t"
+                                 "vcvt.s32.f64 %[kv], d17\n\t"
+                                 "vcvt.s32.f64 %[lu], %P[qu]\n\t"
+                                 "vcvt.s32.f64 %[lv], %P[qv]\n\t")
+                       : SB_V7_RUN_OPERANDS(d1), [ku] "=&t"(ku), [kv] "=&t"(kv), [lu] "=&t"(lq_u), [lv] "=&t"(lq_v)
+                       : SB_V7_RUN_INPUTS(d1), [qu] "w"(qu), [qv] "w"(qv), [cv] "w"(curve)
+                       : "memory", "d16", "d17", "d18");
+    }
+  }
+  // Run 2.
+  u0 = u1, v0 = v1;
+  lanes(uv3, &u1, &v1);
+  steps16_dd_uv(u1 - u0, int_bits(iu2), v1 - v0, int_bits(iv2), &su, &sv);
+  draw16_v7(dest + 32, texels, w, run_regs(u0, v0, su, sv));
   // The last run (n - 48 pixels from sample 3 to sample 4): last_ddi's range test (as in
   // span_persp_arm.h), then last_steps_i.
   u0 = u1, v0 = v1;
-  int32_t u4, v4;
-  lanes(uv4, &u4, &v4);
+  lanes(uv4, &u1, &v1);
   auto ddi = [](float h) SB_LAMBDA_INLINE {
     const int32_t i = int_bits(h);
     return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0;
   };
   RunSteps lu, lv;
-  last_steps_i(steps, u4 - u0, v4 - v0, int_bits(lq_u), int_bits(lq_v), ddi(ku), ddi(kv), &lu, &lv);
+  last_steps_i(steps, u1 - u0, v1 - v0, int_bits(lq_u), int_bits(lq_v), ddi(ku), ddi(kv), &lu, &lv);
   if (n == 64) {
-    draw16_v7(dest + 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
-              uint32_t(lv.dd), [](auto) {});
+    draw16_v7(dest + 48, texels, w, run_regs(u0, v0, lu, lv));
   } else {
     draw_run(dest + 48, n - 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d),
              uint32_t(lu.dd), uint32_t(lv.dd));
   }
 }
+#undef SB_V7_RUN_INPUTS
+#undef SB_V7_RUN_OPERANDS
+#undef SB_V7_RUN
+#undef SB_V7_HI
+#undef SB_V7_LO
+#undef SB_V7_PX
 #endif
 
 }  // namespace
