@@ -242,14 +242,15 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   const double uv1 = r[1], uv2 = r[2], uv3 = r[3], uv4 = r[4], c1 = r[6], c2 = r[7], curve = r[8];
   int32_t u0, v0, u1, v1, iu0, iv0;
   lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
-  const double sd = double(steps);
   RunSteps su, sv;
   steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
-  // Run 0; beside it runs 1 and 2's ddf (deltas by vsub.i32 on the packed samples, exact as
-  // doubles), cvt_sat, and the last run's quotients q = double(delta) / steps (their divides
-  // then run under run 1). d6, d7, d16 .. d21: scratch.
-  float iu1, iv1, iu2, iv2;
-  double qu, qv;
+  // Run 0; beside it runs 1 and 2's steps: their deltas [du_1, dv_1, du_2, dv_2] (vsub.i32
+  // on the packed samples, exact as doubles), ddf = delta c_r, cvt_sat, then steps16_dd per
+  // lane in one q register (the 32-bit form: s = delta >> 31, pd = |delta|, pdd = dd
+  // mirrored; accepted iff 120 min(|dd|, 2^25) <= pd, as ssat(dd, 26) decides it there:
+  // |dd| >= 2^25 rejects either way; d = mirror((accepted ? pd - 120 pdd : pd) >> 4),
+  // dd = accepted ? dd : 0). Outputs: q12 = the four d, q11 = the four dd.
+  register double d1r __asm__("d24"), d2r __asm__("d25"), dd1r __asm__("d22"), dd2r __asm__("d23");
   {
     RunRegs rr = run_regs(u0, v0, su, sv);
     uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
@@ -259,61 +260,94 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                                "vcvt.f64.s32 d16, s12\n\t"
                                "vcvt.f64.s32 d17, s13\n\t"
                                "vcvt.f64.s32 d18, s14\n\t"
-                               "vcvt.f64.s32 d19, s15\n\t"
-                               "vsub.i32 d6, %P[uv4], %P[uv3]\n\t",
+                               "vcvt.f64.s32 d19, s15\n\t",
                                "vmul.f64 d16, d16, %P[c1]\n\t"
                                "vmul.f64 d17, d17, %P[c1]\n\t"
                                "vmul.f64 d18, d18, %P[c2]\n\t"
                                "vmul.f64 d19, d19, %P[c2]\n\t"
-                               "vcvt.f64.s32 d20, s12\n\t"
-                               "vcvt.f64.s32 d21, s13\n\t",
-                               "vdiv.f64 %P[qu], d20, %P[sd]\n\t"
-                               "vdiv.f64 %P[qv], d21, %P[sd]\n\t",
-                               "vcvt.s32.f64 %[iu1], d16\n\t"
-                               "vcvt.s32.f64 %[iv1], d17\n\t"
-                               "vcvt.s32.f64 %[iu2], d18\n\t"
-                               "vcvt.s32.f64 %[iv2], d19\n\t",
-                               "", "", "")
-                     : SB_V7_RUN_OPERANDS(dest), [qu] "=&w"(qu), [qv] "=&w"(qv), [iu1] "=&t"(iu1), [iv1] "=&t"(iv1),
-                       [iu2] "=&t"(iu2), [iv2] "=&t"(iv2)
-                     : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [uv4] "w"(uv4),
-                       [c1] "w"(c1), [c2] "w"(c2), [sd] "w"(sd)
-                     : "memory", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21");
+                               "vmov.i32 q10, #120\n\t",
+                               "vcvt.s32.f64 s4, d16\n\t"
+                               "vcvt.s32.f64 s5, d17\n\t"
+                               "vcvt.s32.f64 s6, d18\n\t"
+                               "vcvt.s32.f64 s7, d19\n\t"
+                               "vabs.s32 q8, q3\n\t"
+                               "vshr.s32 q9, q3, #31\n\t",
+                               "vabs.s32 q12, q1\n\t"
+                               "veor q13, q1, q9\n\t"
+                               "vmov.i32 q11, #0x2000000\n\t"
+                               "vsub.i32 q13, q13, q9\n\t"
+                               "vmin.u32 q12, q12, q11\n\t",
+                               "vmul.i32 q12, q12, q10\n\t"
+                               "vmul.i32 q13, q13, q10\n\t",
+                               "vcge.u32 q12, q8, q12\n\t"
+                               "vsub.i32 q13, q8, q13\n\t",
+                               "vand q11, q1, q12\n\t"
+                               "vbsl q12, q13, q8\n\t"
+                               "vshr.u32 q12, q12, #4\n\t"
+                               "veor q12, q12, q9\n\t"
+                               "vsub.i32 q12, q12, q9\n\t")
+                     : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), "=&w"(d2r), "=&w"(dd1r), "=&w"(dd2r)
+                     : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1),
+                       [c2] "w"(c2)
+                     : "memory", "s4", "s5", "s6", "s7", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20",
+                       "d21", "d26", "d27");
   }
-  // Run 1; beside it the last run's ddf = -2 (q curve) and its conversion (last_ddi's VFP
-  // part), and trunc(q) (the linear step: |q| < 2^31).
-  float ku, kv, lq_u, lq_v;
+  const double sd1 = d1r, sd2 = d2r, sdd1 = dd1r, sdd2 = dd2r;
+  auto steps_of = [](double d, double dd, RunSteps* ou, RunSteps* ov) SB_LAMBDA_INLINE {
+    int32_t a, b, c, e;
+    lanes(d, &a, &b), lanes(dd, &c, &e);
+    *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
+  };
+  // Run 1; beside it the last run's quotients q = double(delta) / steps (last_quotient; the
+  // divides then run under run 2).
+  double qu, qv;
   u0 = u1, v0 = v1;
   lanes(uv2, &u1, &v1);
-  steps16_dd_uv(u1 - u0, int_bits(iu1), v1 - v0, int_bits(iv1), &su, &sv);
+  steps_of(sd1, sdd1, &su, &sv);
   {
     RunRegs rr = run_regs(u0, v0, su, sv);
     uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
     const uint32_t ddu = rr.ddu, ddv = rr.ddv;
     uint8_t* const d1 = dest + 16;
-    {
-      __asm__ volatile(SB_V7_RUN("",
-                                 "vmul.f64 d16, %P[qu], %P[cv]\n\t"
-                                 "vmul.f64 d17, %P[qv], %P[cv]\n\t"
-                                 "vmov.f64 d18, #-2.0\n\t",
-                                 "", "",
-                                 "vmul.f64 d16, d18, d16\n\t"
-                                 "vmul.f64 d17, d18, d17\n\t",
-                                 "", "",
-                                 "vcvt.s32.f64 %[ku], d16\n\t"
-                                 "vcvt.s32.f64 %[kv], d17\n\t"
-                                 "vcvt.s32.f64 %[lu], %P[qu]\n\t"
-                                 "vcvt.s32.f64 %[lv], %P[qv]\n\t")
-                       : SB_V7_RUN_OPERANDS(d1), [ku] "=&t"(ku), [kv] "=&t"(kv), [lu] "=&t"(lq_u), [lv] "=&t"(lq_v)
-                       : SB_V7_RUN_INPUTS(d1), [qu] "w"(qu), [qv] "w"(qv), [cv] "w"(curve)
-                       : "memory", "d16", "d17", "d18");
-    }
+    __asm__ volatile(SB_V7_RUN("vsub.i32 d0, %P[uv4], %P[uv3]\n\t"
+                               "vmov s2, %[st]\n\t",
+                               "vcvt.f64.s32 d16, s0\n\t"
+                               "vcvt.f64.s32 d17, s1\n\t"
+                               "vcvt.f64.s32 d18, s2\n\t",
+                               "vdiv.f64 %P[qu], d16, d18\n\t"
+                               "vdiv.f64 %P[qv], d17, d18\n\t",
+                               "", "", "", "", "")
+                     : SB_V7_RUN_OPERANDS(d1), [qu] "=&w"(qu), [qv] "=&w"(qv)
+                     : SB_V7_RUN_INPUTS(d1), [uv3] "w"(uv3), [uv4] "w"(uv4), [st] "r"(steps)
+                     : "memory", "s0", "s1", "s2", "s3", "d16", "d17", "d18");
   }
-  // Run 2.
+  // Run 2; beside it the last run's ddf = -2 (q curve), its conversion (last_ddi's VFP part)
+  // and trunc(q) (the linear step: |q| < 2^31).
+  float ku, kv, lq_u, lq_v;
   u0 = u1, v0 = v1;
   lanes(uv3, &u1, &v1);
-  steps16_dd_uv(u1 - u0, int_bits(iu2), v1 - v0, int_bits(iv2), &su, &sv);
-  draw16_v7(dest + 32, texels, w, run_regs(u0, v0, su, sv));
+  steps_of(sd2, sdd2, &su, &sv);
+  {
+    RunRegs rr = run_regs(u0, v0, su, sv);
+    uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
+    const uint32_t ddu = rr.ddu, ddv = rr.ddv;
+    uint8_t* const d2 = dest + 32;
+    __asm__ volatile(SB_V7_RUN("vmul.f64 d16, %P[qu], %P[cv]\n\t"
+                               "vmul.f64 d17, %P[qv], %P[cv]\n\t"
+                               "vmov.f64 d18, #-2.0\n\t",
+                               "",
+                               "vmul.f64 d16, d18, d16\n\t"
+                               "vmul.f64 d17, d18, d17\n\t",
+                               "",
+                               "vcvt.s32.f64 %[ku], d16\n\t"
+                               "vcvt.s32.f64 %[kv], d17\n\t"
+                               "vcvt.s32.f64 %[lu], %P[qu]\n\t"
+                               "vcvt.s32.f64 %[lv], %P[qv]\n\t",
+                               "", "", "")
+                     : SB_V7_RUN_OPERANDS(d2), [ku] "=&t"(ku), [kv] "=&t"(kv), [lu] "=&t"(lq_u), [lv] "=&t"(lq_v)
+                     : SB_V7_RUN_INPUTS(d2), [qu] "w"(qu), [qv] "w"(qv), [cv] "w"(curve)
+                     : "memory", "d16", "d17", "d18");
+  }
   // The last run (n - 48 pixels from sample 3 to sample 4): last_ddi's range test (as in
   // span_persp_arm.h), then last_steps_i.
   u0 = u1, v0 = v1;
