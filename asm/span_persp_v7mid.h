@@ -124,15 +124,15 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
 SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
-  register double o5 __asm__("d5"), o6 __asm__("d21"), o7 __asm__("d28"), o8 __asm__("d29");
+  register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   __asm__ volatile(
-      "vldmia %[p], {d16-d22}\n\t"
-      "vldmia %[c], {d24-d27}\n\t"
+      "vld1.64 {d16-d19}, [%[p]]\n\t"
+      "vld1.64 {d24-d27}, [%[c]]\n\t"
+      "vld1.64 {d20-d23}, [%[p2]]\n\t"
       "vmov.f64 d28, #16.0\n\t"
       "vadd.f64 d29, d28, d28\n\t"  // 32
       "vmov s0, %[nm33]\n\t"
       "vadd.f64 d30, d22, d28\n\t"  // x1 = P + 16
-      "vldr d23, [%[p], #56]\n\t"
       "vcvt.f64.s32 d0, s0\n\t"  // n - 33
       "vadd.f64 d31, d22, d29\n\t"  // x2 = P + 32
       "vmov.f64 d5, d16\n\t"
@@ -196,23 +196,24 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
       "vmul.f64 d18, d18, d16\n\t"
       "vmul.f64 d20, d20, d16\n\t"
       "vmul.f64 d19, d19, d26\n\t"  // c_0
-      "vmul.f64 d21, d21, d26\n\t"  // c_1
+      "vmul.f64 d21, d21, d26\n\t"  // c_1 (moved to d28 below)
       // The conversions (each product's register is dead once read; s_2j, s_2j+1 = d_j).
       "vcvt.u32.f64 s0, d17\n\t"
       "vcvt.u32.f64 s1, d24\n\t"
       "vcvt.u32.f64 s2, d22\n\t"
       "vcvt.u32.f64 s3, d2\n\t"
-      "vmul.f64 d28, d28, d26\n\t"  // c_2
-      "vmul.f64 d29, d29, d27\n\t"  // curve
+      "vmul.f64 d5, d29, d27\n\t"  // curve
+      "vmul.f64 d29, d28, d26\n\t"  // c_2
       "vmin.u32 d0, d0, d23\n\t"
       "vmin.u32 d1, d1, d23\n\t"
       "vcvt.u32.f64 s4, d30\n\t"
       "vcvt.u32.f64 s5, d3\n\t"
-      "vsub.i32 d5, d1, d0\n\t"  // run 0's [du, dv]
+      "vsub.i32 d6, d1, d0\n\t"  // run 0's [du, dv]
       "vcvt.u32.f64 s6, d31\n\t"
       "vcvt.u32.f64 s7, d4\n\t"
-      "vcvt.f64.s32 d17, s10\n\t"
-      "vcvt.f64.s32 d24, s11\n\t"
+      "vcvt.f64.s32 d17, s12\n\t"
+      "vcvt.f64.s32 d24, s13\n\t"
+      "vmov.f64 d28, d21\n\t"
       "vcvt.u32.f64 s8, d18\n\t"
       "vcvt.u32.f64 s9, d20\n\t"
       "vmul.f64 d17, d17, d19\n\t"
@@ -220,12 +221,12 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
       "vmin.u32 d2, d2, d23\n\t"
       "vmin.u32 d3, d3, d23\n\t"
       "vmin.u32 d4, d4, d23\n\t"
-      "vcvt.s32.f64 s10, d17\n\t"
-      "vcvt.s32.f64 s11, d24"
+      "vcvt.s32.f64 s12, d17\n\t"
+      "vcvt.s32.f64 s13, d24"
       : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8)
-      : [p] "r"(&p), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p), "m"(kMidConsts)
-      : "cc", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d22", "d23", "d24", "d25", "d26",
-        "d27", "d30", "d31");
+      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p), "m"(kMidConsts)
+      : "cc", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
+        "d30", "d31");
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
 }
 #undef SB_V7_CLAMP
@@ -256,41 +257,41 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
     const uint32_t ddu = rr.ddu, ddv = rr.ddv;
     __asm__ volatile(SB_V7_RUN("vsub.i32 d6, %P[uv2], %P[uv1]\n\t"
-                               "vsub.i32 d7, %P[uv3], %P[uv2]\n\t",
+                               "vsub.i32 d7, %P[uv3], %P[uv2]\n\t"
+                               "vmov.i32 q10, #120\n\t",
                                "vcvt.f64.s32 d16, s12\n\t"
                                "vcvt.f64.s32 d17, s13\n\t"
                                "vcvt.f64.s32 d18, s14\n\t"
-                               "vcvt.f64.s32 d19, s15\n\t",
+                               "vcvt.f64.s32 d19, s15\n\t"
+                               "vabs.s32 q13, q3\n\t"
+                               "vshr.s32 q15, q3, #31\n\t",
                                "vmul.f64 d16, d16, %P[c1]\n\t"
                                "vmul.f64 d17, d17, %P[c1]\n\t"
                                "vmul.f64 d18, d18, %P[c2]\n\t"
                                "vmul.f64 d19, d19, %P[c2]\n\t"
-                               "vmov.i32 q10, #120\n\t",
-                               "vcvt.s32.f64 s4, d16\n\t"
-                               "vcvt.s32.f64 s5, d17\n\t"
-                               "vcvt.s32.f64 s6, d18\n\t"
-                               "vcvt.s32.f64 s7, d19\n\t"
-                               "vabs.s32 q8, q3\n\t"
-                               "vshr.s32 q9, q3, #31\n\t",
-                               "vabs.s32 q12, q1\n\t"
-                               "veor q13, q1, q9\n\t"
-                               "vmov.i32 q11, #0x2000000\n\t"
-                               "vsub.i32 q13, q13, q9\n\t"
+                               "vmov.i32 q11, #0x2000000\n\t",
+                               "vcvt.s32.f64 s12, d16\n\t"
+                               "vcvt.s32.f64 s13, d17\n\t"
+                               "vcvt.s32.f64 s14, d18\n\t"
+                               "vcvt.s32.f64 s15, d19\n\t",
+                               "vabs.s32 q12, q3\n\t"
+                               "veor q9, q3, q15\n\t"
+                               "vsub.i32 q9, q9, q15\n\t"
                                "vmin.u32 q12, q12, q11\n\t",
                                "vmul.i32 q12, q12, q10\n\t"
-                               "vmul.i32 q13, q13, q10\n\t",
-                               "vcge.u32 q12, q8, q12\n\t"
-                               "vsub.i32 q13, q8, q13\n\t",
-                               "vand q11, q1, q12\n\t"
-                               "vbsl q12, q13, q8\n\t"
+                               "vmul.i32 q9, q9, q10\n\t",
+                               "vcge.u32 q12, q13, q12\n\t"
+                               "vsub.i32 q9, q13, q9\n\t",
+                               "vand q11, q3, q12\n\t"
+                               "vbsl q12, q9, q13\n\t"
                                "vshr.u32 q12, q12, #4\n\t"
-                               "veor q12, q12, q9\n\t"
-                               "vsub.i32 q12, q12, q9\n\t")
+                               "veor q12, q12, q15\n\t"
+                               "vsub.i32 q12, q12, q15\n\t")
                      : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), "=&w"(d2r), "=&w"(dd1r), "=&w"(dd2r)
                      : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1),
                        [c2] "w"(c2)
-                     : "memory", "s4", "s5", "s6", "s7", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20",
-                       "d21", "d26", "d27");
+                     : "memory", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21", "d26", "d27",
+                       "d30", "d31");
   }
   const double sd1 = d1r, sd2 = d2r, sdd1 = dd1r, sdd2 = dd2r;
   auto steps_of = [](double d, double dd, RunSteps* ou, RunSteps* ov) SB_LAMBDA_INLINE {
