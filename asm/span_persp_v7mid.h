@@ -240,7 +240,14 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
   mid_prologue(p, n, r);
-  const double uv1 = r[1], uv2 = r[2], uv3 = r[3], uv4 = r[4], c1 = r[6], c2 = r[7], curve = r[8];
+  // The prologue's registers kept (asm operands bound to them: no copies or spills).
+  register double uv1 __asm__("d1") = r[1];
+  register double uv2 __asm__("d2") = r[2];
+  register double uv3 __asm__("d3") = r[3];
+  register double uv4 __asm__("d4") = r[4];
+  register double curve __asm__("d5") = r[8];
+  register double c1 __asm__("d28") = r[6];
+  register double c2 __asm__("d29") = r[7];
   int32_t u0, v0, u1, v1, iu0, iv0;
   lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
   RunSteps su, sv;
