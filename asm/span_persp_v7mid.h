@@ -63,8 +63,9 @@ SB_INLINE float cvt_sat_s(double x) {
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
 // The two int32 lanes of a d register (one vmov r, r, d).
 SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
-  const uint64_t b = __builtin_bit_cast(uint64_t, x);
-  *lo = int32_t(uint32_t(b)), *hi = int32_t(uint32_t(b >> 32));
+  int32_t a, b;
+  __asm__("vmov %0, %1, %P2" : "=r"(a), "=r"(b) : "w"(x));
+  *lo = a, *hi = b;
 }
 
 // One 16-pixel second-order run in one asm statement: surface_span's pixels
@@ -308,7 +309,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   };
   // Run 1; beside it the last run's quotients q = double(delta) / steps (last_quotient; the
   // divides then run under run 2).
-  double qu, qv;
+  register double qu __asm__("d19"), qv __asm__("d20");
   u0 = u1, v0 = v1;
   lanes(uv2, &u1, &v1);
   steps_of(sd1, sdd1, &su, &sv);
@@ -325,7 +326,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                                "vdiv.f64 %P[qu], d16, d18\n\t"
                                "vdiv.f64 %P[qv], d17, d18\n\t",
                                "", "", "", "", "")
-                     : SB_V7_RUN_OPERANDS(d1), [qu] "=&w"(qu), [qv] "=&w"(qv)
+                     : SB_V7_RUN_OPERANDS(d1), [qu] "=w"(qu), [qv] "=w"(qv)
                      : SB_V7_RUN_INPUTS(d1), [uv3] "w"(uv3), [uv4] "w"(uv4), [st] "r"(steps)
                      : "memory", "s0", "s1", "s2", "s3", "d16", "d17", "d18");
   }
