@@ -6,10 +6,12 @@
 // persp_fast computes a pass's samples beside the runs before it; for four runs that
 // pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers, no
 // copies) computes the five samples (the divides back to back, the other samples' work in
-// their latency) and run 0's ddf; runs 1 .. 3's ddf and the last run's quotients are issued
-// beside run 0's and run 1's pixels (stage slots); each run's pixels are one asm group
-// sequence (draw16_v7) whose values stay in registers. Every double operation is the
-// walker's (asm/span_walk.h), as persp_fast performs it:
+// their latency) and run 0's ddf; runs 1 and 2's steps (ddf and steps16_dd in NEON lanes)
+// are computed beside run 0's pixels, the last run's quotients beside run 1's, its ddf
+// conversion beside run 2's (each run one asm statement whose values stay in registers,
+// with VFP / NEON work between its pixel groups); the last run's integer steps as
+// last_steps_i. Every double operation is the walker's (asm/span_walk.h), as persp_fast
+// performs it:
 //   positions   P, P + 16, P + 32, (P + 16) + 32, ((P + 16) + 16) + (n - 33): the walker's
 //               accumulated run starts plus the sample offsets (persp_fast's pos0 .. pos4)
 //   depth       z = 1 / max(zrow + zix x, kMinZi) (fused, as compiled; vcmpe / vmovle)
@@ -27,7 +29,6 @@
 // delta: u_b - u_a in int32 (both in [0, 2^31)), converted exactly.
 #pragma once
 #include <cstddef>
-#include <utility>
 
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
@@ -41,25 +42,11 @@ constexpr int kMidMin = 50, kMidMax = 64;
 static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, uz0) == 16 &&
               offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
               offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
-              "the prologue loads zi0 .. px0 with one vldmia, umax and vmax with one vldr");
+              "the prologue loads zi0 .. vmax with two vld1.64 (d16 .. d23)");
 // kMinZi, 2^16, -1/16, 1/2: loaded together by the prologue.
 alignas(8) constexpr double kMidConsts[4] = {kMinZi, 65536.0, -0.0625, 0.5};
 
-// f(integral_constant<int, J>) for J = 0 .. N - 1, written out.
-template <int N, class F>
-SB_INLINE void unroll(F&& f) {
-  [&]<int... J>(std::integer_sequence<int, J...>) SB_LAMBDA_INLINE {
-    (f(std::integral_constant<int, J>{}), ...);
-  }(std::make_integer_sequence<int, N>{});
-}
-
-// cvt_sat (vcvt.s32.f64: truncating, saturating, NaN -> 0) with the result left in a single
-// register, read later (int_bits): the conversion's latency passes meanwhile.
-SB_INLINE float cvt_sat_s(double x) {
-  float r;
-  __asm__("vcvt.s32.f64 %0, %P1" : "=t"(r) : "w"(x));
-  return r;
-}
+// The int32 a conversion (vcvt.s32.f64) left in a single register.
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
 // The two int32 lanes of a d register (one vmov r, r, d).
 SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
@@ -106,17 +93,18 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
                    : "memory");
 }
 
-// The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax];
-// d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5 in d27).
-// Positions x0 .. x4 in d22, d30, d31, d29, d28; depths d5, d6, d7, d1, d16 (clamped, then
-// 1 / zi); t = urow + ux x, s = vrow + vx x in d17 / d24, d22 / d2, d30 / d3, d31 / d4,
-// d18 / d20 (samples 0 .. 4); depth sums z_0 + z_1 .. z_3 + z_4 in d19, d21, d28, d29, made
-// c_0, c_1, c_2 (times zck) and curve (times zh); z 2^16 in place; the products in place;
-// their conversions into s0 .. s9 (sample j's [u, v] in d_j), clamped by vmin.u32 with d23;
-// run 0's [u_1 - u_0, v_1 - v_0] in d5, converted (d17, d18), times c_0, cvt_sat into d5.
-// Outputs: d0 .. d4 the samples, d5 run 0's [iu, iv], d19 c_0 (unused), d21 c_1, d28 c_2,
-// d29 curve. A register is reused only after its value's last read (in order: each
-// vcvt into s_2j / s_2j+1 reads a product whose register is no longer needed).
+// The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax] (two
+// vld1.64 from p); d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5
+// in d27). Positions x0 .. x4 in d22, d30, d31, d29, d28; depths d5, d6, d7, d1, d16
+// (clamped, then 1 / zi); t = urow + ux x, s = vrow + vx x in d17 / d24, d22 / d2, d30 / d3,
+// d31 / d4, d18 / d20 (samples 0 .. 4); depth sums z_0 + z_1 .. z_3 + z_4 in d19, d21, d28,
+// d29, made c_0, c_1, c_2 (times zck) and curve (times zh); z 2^16 in place; the products
+// in place; their conversions into s0 .. s9 (sample j's [u, v] in d_j), clamped by vmin.u32
+// with d23; run 0's [u_1 - u_0, v_1 - v_0] in d6, converted (d17, d24), times c_0, cvt_sat
+// into d6. Outputs: d0 .. d4 the samples, d6 run 0's [iu, iv], d28 c_1, d29 c_2, d5 curve.
+// A register is reused only after its value's last read (in order: each vcvt into s_2j /
+// s_2j+1 reads a product whose register is no longer needed). The multiply-adds are fused,
+// as the compiled walker's are (GCC contracts them; the tests compare bit for bit).
 #define SB_V7_CLAMP(d) \
   "vcmpe.f64 " d ", d24\n\t" \
   "vmrs APSR_nzcv, fpscr\n\t" \
