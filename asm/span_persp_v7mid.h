@@ -6,12 +6,11 @@
 // persp_fast computes a pass's samples beside the runs before it; for four runs that
 // pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers, no
 // copies) computes the five samples (the divides back to back, the other samples' work in
-// their latency) and run 0's ddf; runs 1 and 2's steps (ddf and steps16_dd in NEON lanes)
-// are computed beside run 0's pixels, the last run's quotients beside run 1's, its ddf
-// conversion beside run 2's (each run one asm statement whose values stay in registers,
-// with VFP / NEON work between its pixel groups); the last run's integer steps as
-// last_steps_i. Every double operation is the walker's (asm/span_walk.h), as persp_fast
-// performs it:
+// their latency), run 0's ddf and the last run's quotients; runs 1 and 2's steps (ddf and
+// steps16_dd in NEON lanes) are computed beside run 0's pixels, the last run's (last_ddi,
+// last_dd in NEON lanes) beside run 1's and run 2's (each run one asm statement whose
+// values stay in registers, with VFP / NEON work between its pixel groups). Every double
+// operation is the walker's (asm/span_walk.h), as persp_fast performs it:
 //   positions   P, P + 16, P + 32, (P + 16) + 32, ((P + 16) + 16) + (n - 33): the walker's
 //               accumulated run starts plus the sample offsets (persp_fast's pos0 .. pos4)
 //   depth       z = 1 / max(zrow + zix x, kMinZi) (fused, as compiled; vcmpe / vmovle)
@@ -25,7 +24,7 @@
 //   full runs   ddf = delta (zck (z_a + z_b)), zck = zix * -1/16 (persp_fast's argument:
 //               the walker's -2 (delta / 16 * curve), same bits), cvt_sat, steps16_dd
 //   last run    q = double(delta) / (n - 49) (last_quotient), curve = (zix * 0.5) (z_3 + z_4),
-//               last_ddi (cvt_sat(-2 (q curve)), the range test) and last_steps_i
+//               last_ddi (cvt_sat(-2 (q curve)), the range test) and last_steps_i's test
 // delta: u_b - u_a in int32 (both in [0, 2^31)), converted exactly.
 #pragma once
 #include <cstddef>
@@ -48,6 +47,21 @@ alignas(8) constexpr double kMidConsts[4] = {kMinZi, 65536.0, -0.0625, 0.5};
 
 // The int32 a conversion (vcvt.s32.f64) left in a single register.
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
+// Per last-run step count s (1 .. 15): [s, s], [1e9, 1e9] (last_ddi's bound), [s - 1, s - 1],
+// [T, T] with T = s (s - 1) / 2, as the last run's NEON steps load them.
+constexpr auto kMidLast = [] {
+  struct Table {
+    alignas(8) uint32_t row[16][8];
+    constexpr const uint32_t* operator[](int s) const { return row[s]; }
+  } t{};
+  for (uint32_t s = 1; s < 16; ++s) {
+    const uint32_t r[8] = {s, s, 1000000000u, 1000000000u, s - 1, s - 1, s * (s - 1) / 2, s * (s - 1) / 2};
+    for (int i = 0; i < 8; ++i) t.row[s][i] = r[i];
+  }
+  return t;
+}();
+// A NEON quad register's worth (two d registers), for asm operands.
+typedef int32_t V4 __attribute__((vector_size(16)));
 // The two int32 lanes of a d register (one vmov r, r, d).
 SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
   int32_t a, b;
@@ -111,9 +125,10 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
   "it le\n\t" \
   "vmovle.f64 " d ", d24\n\t"
 // r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
-SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
+SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
+  register V4 o9 __asm__("d8");
   __asm__ volatile(
       "vld1.64 {d16-d19}, [%[p]]\n\t"
       "vld1.64 {d24-d27}, [%[c]]\n\t"
@@ -187,6 +202,8 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
       "vmul.f64 d19, d19, d26\n\t"  // c_0
       "vmul.f64 d21, d21, d26\n\t"  // c_1 (moved to d28 below)
       // The conversions (each product's register is dead once read; s_2j, s_2j+1 = d_j).
+      "vmov s14, %[st]\n\t"
+      "vcvt.f64.s32 d10, s14\n\t"  // steps
       "vcvt.u32.f64 s0, d17\n\t"
       "vcvt.u32.f64 s1, d24\n\t"
       "vcvt.u32.f64 s2, d22\n\t"
@@ -211,12 +228,20 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9]) {
       "vmin.u32 d3, d3, d23\n\t"
       "vmin.u32 d4, d4, d23\n\t"
       "vcvt.s32.f64 s12, d17\n\t"
-      "vcvt.s32.f64 s13, d24"
-      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8)
-      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p), "m"(kMidConsts)
-      : "cc", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
+      "vcvt.s32.f64 s13, d24\n\t"
+      // The last run's q = double(delta) / steps (last_quotient), delta = sample 4 - sample 3.
+      "vsub.i32 d7, d4, d3\n\t"
+      "vcvt.f64.s32 d8, s14\n\t"
+      "vcvt.f64.s32 d9, s15\n\t"
+      "vdiv.f64 d8, d8, d10\n\t"
+      "vdiv.f64 d9, d9, d10"
+      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
+      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), [st] "r"(n - 49), "m"(p),
+        "m"(kMidConsts)
+      : "cc", "s14", "s15", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
         "d30", "d31");
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
+  *q89 = o9;
 }
 #undef SB_V7_CLAMP
 
@@ -228,7 +253,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   const uint32_t w = uint32_t(width);
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
-  mid_prologue(p, n, r);
+  V4 q89;
+  mid_prologue(p, n, r, &q89);
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
@@ -295,9 +321,23 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     lanes(d, &a, &b), lanes(dd, &c, &e);
     *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
   };
-  // Run 1; beside it the last run's quotients q = double(delta) / steps (last_quotient; the
-  // divides then run under run 2).
-  register double qu __asm__("d19"), qv __asm__("d20");
+  // d8, d9: the last run's quotients [qu, qv] (then d8: its ddf, converted); d10: trunc(q).
+  register V4 qq __asm__("d8") = q89;
+  register double sdr __asm__("d10");
+  // The last run's steps (last_ddi, last_steps_i: last_dd per lane, u and v in one d
+  // register), beside runs 1 and 2: ddf = -2 (q curve) converted (cvt_sat) and kept if
+  // |i| < 1e9 (and steps > 1), linear = trunc(q) (|q| < 2^31), delta [du, dv] (vsub.i32);
+  // sg = delta >> 31, pd = |delta|, Q = |linear| (linear has delta's sign or is 0),
+  // r = pd - s Q, m = (s - 1) pdd (pdd = dd mirrored by sg; masking and mirroring commute
+  // with the product), d0 = Q - (m >> 1) - (m & 1 and s > 2 r), mirrored; rejected iff
+  // T |dd| > pd (T = s (s - 1) / 2; the 64-bit product minus pd, saturating, is not 0): then
+  // linear and 0, else d0 and dd. Handed from run 1 to run 2 in fixed registers: d8 = I
+  // (ranged), d10 = L, d31 = |I| ranged, d27 = T, d19 = m (masked), d21 = sg, d22 = pd,
+  // d23 = Q, d24 = S, d28 = r, d29 = [1, 1]. The results leave through a, b (d) and du, dv
+  // (dd), free once the pixels are drawn.
+  // Hand-off quads (d18 .. d31 in pairs; only the named halves carry values).
+  register V4 h9 __asm__("d18"), h10 __asm__("d20"), h11 __asm__("d22"), h12 __asm__("d24");
+  register V4 h13 __asm__("d26"), h14 __asm__("d28"), h15 __asm__("d30");
   u0 = u1, v0 = v1;
   lanes(uv2, &u1, &v1);
   steps_of(sd1, sdd1, &su, &sv);
@@ -306,55 +346,74 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
     const uint32_t ddu = rr.ddu, ddv = rr.ddv;
     uint8_t* const d1 = dest + 16;
-    __asm__ volatile(SB_V7_RUN("vsub.i32 d0, %P[uv4], %P[uv3]\n\t"
-                               "vmov s2, %[st]\n\t",
-                               "vcvt.f64.s32 d16, s0\n\t"
-                               "vcvt.f64.s32 d17, s1\n\t"
-                               "vcvt.f64.s32 d18, s2\n\t",
-                               "vdiv.f64 %P[qu], d16, d18\n\t"
-                               "vdiv.f64 %P[qv], d17, d18\n\t",
-                               "", "", "", "", "")
-                     : SB_V7_RUN_OPERANDS(d1), [qu] "=w"(qu), [qv] "=w"(qv)
-                     : SB_V7_RUN_INPUTS(d1), [uv3] "w"(uv3), [uv4] "w"(uv4), [st] "r"(steps)
-                     : "memory", "s0", "s1", "s2", "s3", "d16", "d17", "d18");
+    const uint32_t* const kk = kMidLast[steps];
+    __asm__ volatile(SB_V7_RUN("vmul.f64 d16, d8, %P[cv]\n\t"
+                               "vmul.f64 d17, d9, %P[cv]\n\t"
+                               "vmov.f64 d18, #-2.0\n\t"
+                               "vcvt.s32.f64 s20, d8\n\t"
+                               "vcvt.s32.f64 s21, d9\n\t",
+                               "vmul.f64 d16, d18, d16\n\t"
+                               "vmul.f64 d17, d18, d17\n\t"
+                               "vsub.i32 d9, %P[uv4], %P[uv3]\n\t"
+                               "vld1.32 {d24-d27}, [%[k]]\n\t",
+                               "vcvt.s32.f64 s16, d16\n\t"
+                               "vcvt.s32.f64 s17, d17\n\t"
+                               "vshr.s32 d21, d9, #31\n\t"
+                               "vabs.s32 d22, d9\n\t"
+                               "vabs.s32 d23, %P[sd]\n\t"
+                               "vmov.i32 d29, #1\n\t",
+                               "vmul.i32 d28, d23, d24\n\t"
+                               "vcgt.u32 d18, d24, d29\n\t",
+                               "vabs.s32 d30, d8\n\t"
+                               "vmul.i32 d19, d8, d26\n\t",
+                               "vcgt.u32 d20, d25, d30\n\t"
+                               "vsub.i32 d28, d22, d28\n\t",
+                               "vand d20, d20, d18\n\t",
+                               "vand d8, d8, d20\n\t"
+                               "vand d31, d30, d20\n\t"
+                               "vand d19, d19, d20\n\t")
+                     : SB_V7_RUN_OPERANDS(d1), [qq] "+w"(qq), [sd] "=w"(sdr), "=w"(h9), "=w"(h10), "=w"(h11),
+                       "=w"(h12), "=w"(h13), "=w"(h14), "=w"(h15)
+                     : SB_V7_RUN_INPUTS(d1), [cv] "w"(curve), [uv3] "w"(uv3), [uv4] "w"(uv4), [k] "r"(kk)
+                     : "memory", "d16", "d17");
   }
-  // Run 2; beside it the last run's ddf = -2 (q curve), its conversion (last_ddi's VFP part)
-  // and trunc(q) (the linear step: |q| < 2^31).
-  float ku, kv, lq_u, lq_v;
+  // Run 2; beside it the rest of the last run's steps.
   u0 = u1, v0 = v1;
   lanes(uv3, &u1, &v1);
   steps_of(sd2, sdd2, &su, &sv);
+  RunSteps lu, lv;
   {
     RunRegs rr = run_regs(u0, v0, su, sv);
     uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
     const uint32_t ddu = rr.ddu, ddv = rr.ddv;
     uint8_t* const d2 = dest + 32;
-    __asm__ volatile(SB_V7_RUN("vmul.f64 d16, %P[qu], %P[cv]\n\t"
-                               "vmul.f64 d17, %P[qv], %P[cv]\n\t"
-                               "vmov.f64 d18, #-2.0\n\t",
-                               "",
-                               "vmul.f64 d16, d18, d16\n\t"
-                               "vmul.f64 d17, d18, d17\n\t",
-                               "",
-                               "vcvt.s32.f64 %[ku], d16\n\t"
-                               "vcvt.s32.f64 %[kv], d17\n\t"
-                               "vcvt.s32.f64 %[lu], %P[qu]\n\t"
-                               "vcvt.s32.f64 %[lv], %P[qv]\n\t",
-                               "", "", "")
-                     : SB_V7_RUN_OPERANDS(d2), [ku] "=&t"(ku), [kv] "=&t"(kv), [lu] "=&t"(lq_u), [lv] "=&t"(lq_v)
-                     : SB_V7_RUN_INPUTS(d2), [qu] "w"(qu), [qv] "w"(qv), [cv] "w"(curve)
-                     : "memory", "d16", "d17", "d18");
+    __asm__ volatile(SB_V7_RUN("vmull.u32 q8, d31, d27\n\t"
+                               "veor d19, d19, d21\n\t"
+                               "vshl.i32 d28, d28, #1\n\t",
+                               "vmovl.u32 q15, d22\n\t"
+                               "vsub.i32 d19, d19, d21\n\t"
+                               "vcgt.u32 d28, d24, d28\n\t",
+                               "vqsub.u64 q8, q8, q15\n\t"
+                               "vshr.s32 d25, d19, #1\n\t"
+                               "vand d9, d19, d28\n\t",
+                               "vqmovn.u64 d16, q8\n\t"
+                               "vsub.i32 d25, d23, d25\n\t"
+                               "vand d9, d9, d29\n\t",
+                               "vtst.32 d16, d16, d16\n\t"  // rejected
+                               "vsub.i32 d25, d25, d9\n\t",
+                               "veor d25, d25, d21\n\t"
+                               "vbic d8, d8, d16\n\t",
+                               "vsub.i32 d25, d25, d21\n\t",
+                               "vbsl d16, %P[L], d25\n\t"
+                               "vmov %[a], %[b], d16\n\t"
+                               "vmov %[du], %[dv], d8\n\t")
+                     : SB_V7_RUN_OPERANDS(d2), [qq] "+w"(qq), "+w"(h9), "+w"(h12), "+w"(h14), "+w"(h15)
+                     : SB_V7_RUN_INPUTS(d2), [L] "w"(sdr), "w"(h10), "w"(h11), "w"(h13)
+                     : "memory", "d16", "d17");
+    lu = RunSteps{int32_t(a), int32_t(du)}, lv = RunSteps{int32_t(b), int32_t(dv)};
   }
-  // The last run (n - 48 pixels from sample 3 to sample 4): last_ddi's range test (as in
-  // span_persp_arm.h), then last_steps_i.
+  // The last run (n - 48 pixels from sample 3 to sample 4).
   u0 = u1, v0 = v1;
-  lanes(uv4, &u1, &v1);
-  auto ddi = [](float h) SB_LAMBDA_INLINE {
-    const int32_t i = int_bits(h);
-    return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0;
-  };
-  RunSteps lu, lv;
-  last_steps_i(steps, u1 - u0, v1 - v0, int_bits(lq_u), int_bits(lq_v), ddi(ku), ddi(kv), &lu, &lv);
   if (n == 64) {
     draw16_v7(dest + 48, texels, w, run_regs(u0, v0, lu, lv));
   } else {
