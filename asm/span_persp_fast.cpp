@@ -7,6 +7,7 @@
 
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
+#include "asm/span_persp_v7mid.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -641,6 +642,9 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
     return persp_fast<false>(dest, n, texels, width, p);
   }
   if (is_short) return persp_short_inl<true>(dest, n, texels, width, p);
+#if defined(SB_V7_MID)
+  if (n >= kMidMin && n <= kMidMax) return persp_mid_v7(dest, n, texels, width, p);  // ARMv7, four runs
+#endif
   persp_fast<true>(dest, n, texels, width, p);
 }
 

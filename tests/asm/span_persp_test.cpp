@@ -512,6 +512,48 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
 // NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
 // scalar reference on every target: random walks (linear and second order) that stay
 // inside the surface, every length that splits differently into runs of 16.
+// Second-order spans of four runs (49 .. 65 pixels: the ARMv7 path for 50 .. 64 and its
+// neighbours) against the reference on gradients spread over many magnitudes: depths near
+// and below the 1/z clamp, u and v past both clamps and saturating, curves whose run steps
+// are rejected (|dd| large) or accepted, and the non-finite values; no byte outside the span
+// is written.
+TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeGradients) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double odd[] = {0.0, -0.0, 1e-9, 1e-12, 1e-300, -1e300, 1e300, inf, -inf, nan};
+  std::mt19937 rng(64);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const int sw = 300, sh = 200;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  std::vector<uint8_t> ref(64 + 65 + 64), got(ref.size());
+  int cases = 0;
+  for (int i = 0; i < 20000; ++i) {
+    sb::simd::PerspSpan p{};
+    p.zi0 = rng() % 8 ? std::ldexp(unit(rng) + 1.0, -int(rng() % 32)) : odd[rng() % 10];
+    p.dzi = rng() % 8 ? p.zi0 * std::ldexp(unit(rng), -int(rng() % 12)) : odd[rng() % 10];
+    p.uz0 = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 20) * p.zi0 * sw : odd[rng() % 10];
+    p.duz = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 26) * sw : odd[rng() % 10];
+    p.vz0 = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 20) * p.zi0 * sh : odd[rng() % 10];
+    p.dvz = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 26) * sh : odd[rng() % 10];
+    p.px0 = double(rng() % 2000) + 0.5;
+    p.umax = int32_t((uint32_t(sw) << 16) - 1 - (rng() % 3 == 0 ? rng() % 65536 : 0));
+    p.vmax = int32_t((uint32_t(sh) << 16) - 1 - (rng() % 3 == 0 ? rng() % 65536 : 0));
+    p.second_order = true;
+    const int n = 49 + int(rng() % 17);
+    std::fill(ref.begin(), ref.end(), 0xa5);
+    sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
+    for (int v = 0; v < sb::simd::variant_count(); ++v) {
+      const sb::simd::Variant var = sb::simd::variant(v);
+      if (!var.kernels || !var.supported) continue;
+      std::fill(got.begin(), got.end(), 0xa5);
+      var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
+      ASSERT_EQ(ref, got) << var.kernels->name << " case " << i << " n " << n;
+    }
+    ++cases;
+  }
+  std::printf("[ asm      ] span_persp: %d four-run second-order spans, every variant identical\n", cases);
+}
+
 TEST(AsmSpanPersp, SurfaceSpanFastMatchesScalar) {
   std::mt19937 rng(4242);
   const int lengths[] = {0, 1, 2, 3, 15, 16, 17, 31, 32, 33, 47, 48, 49, 320, 1919, 1920};

@@ -1,0 +1,433 @@
+// asm/span_persp_v7mid.h: the whole-span drawer's ARMv7 path for second-order spans of
+// 50 .. 64 pixels (asm/span_persp.h): four runs, the last of n - 48 = 2 .. 16 pixels.
+// Internal: included by asm/span_persp_fast.cpp only, after asm/span_persp_arm.h
+// (anonymous namespace).
+//
+// persp_fast computes a pass's samples beside the runs before it; for four runs that
+// pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers, no
+// copies) computes the five samples (the divides back to back, the other samples' work in
+// their latency), run 0's ddf and the last run's quotients; runs 1 and 2's steps (ddf and
+// steps16_dd in NEON lanes) are computed beside run 0's pixels, the last run's (last_ddi,
+// last_dd in NEON lanes) beside run 1's and run 2's (each run one asm statement whose
+// values stay in registers, with VFP / NEON work between its pixel groups). Every double
+// operation is the walker's (asm/span_walk.h), as persp_fast performs it:
+//   positions   P, P + 16, P + 32, (P + 16) + 32, ((P + 16) + 16) + (n - 33): the walker's
+//               accumulated run starts plus the sample offsets (persp_fast's pos0 .. pos4)
+//   depth       z = 1 / max(zrow + zix x, kMinZi) (fused, as compiled; vcmpe / vmovle)
+//   u           fix((urow + ux x) z) = usat32(trunc((urow + ux x) (z 2^16))), min umax:
+//               (t z) 2^16 = t (z 2^16) exactly (a power-of-two scaling commutes with
+//               rounding; when t z is subnormal both give |value| < 1, fix 0; overflow gives
+//               infinity either way; NaN -> 0 either way; z 2^16 <= 2^46 is exact and
+//               finite), so vcvt.u32.f64 (truncating, saturating, NaN -> 0) of that product
+//               is min_ufixed16 / cvt_ufixed16's value; v likewise; u, v side by side in one
+//               d register, clamped by one vmin.u32 against [umax, vmax]
+//   full runs   ddf = delta (zck (z_a + z_b)), zck = zix * -1/16 (persp_fast's argument:
+//               the walker's -2 (delta / 16 * curve), same bits), cvt_sat, steps16_dd
+//   last run    q = double(delta) / (n - 49) (last_quotient), curve = (zix * 0.5) (z_3 + z_4),
+//               last_ddi (cvt_sat(-2 (q curve)), the range test) and last_steps_i's test
+// delta: u_b - u_a in int32 (both in [0, 2^31)), converted exactly.
+#pragma once
+#include <cstddef>
+
+#include "asm/span_persp_arm.h"
+#include "asm/span_persp_run.h"
+
+namespace sb::simd {
+namespace {
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_FEATURE_DSP) && \
+    defined(__ARM_FP) && (__ARM_FP & 8) && defined(__ARM_NEON)
+#define SB_V7_MID 1
+constexpr int kMidMin = 50, kMidMax = 64;
+static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, uz0) == 16 &&
+              offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
+              offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
+              "the prologue loads zi0 .. vmax with two vld1.64 (d16 .. d23)");
+// kMinZi, 2^16, -1/16, 1/2: loaded together by the prologue.
+alignas(8) constexpr double kMidConsts[4] = {kMinZi, 65536.0, -0.0625, 0.5};
+
+// The int32 a conversion (vcvt.s32.f64) left in a single register.
+SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
+// Per last-run step count s (1 .. 15): [s, s], [1e9, 1e9] (last_ddi's bound), [s - 1, s - 1],
+// [T, T] with T = s (s - 1) / 2, as the last run's NEON steps load them.
+constexpr auto kMidLast = [] {
+  struct Table {
+    alignas(8) uint32_t row[16][8];
+    constexpr const uint32_t* operator[](int s) const { return row[s]; }
+  } t{};
+  for (uint32_t s = 1; s < 16; ++s) {
+    const uint32_t r[8] = {s, s, 1000000000u, 1000000000u, s - 1, s - 1, s * (s - 1) / 2, s * (s - 1) / 2};
+    for (int i = 0; i < 8; ++i) t.row[s][i] = r[i];
+  }
+  return t;
+}();
+// A NEON quad register's worth (two d registers), for asm operands.
+typedef int32_t V4 __attribute__((vector_size(16)));
+// The two int32 lanes of a d register (one vmov r, r, d).
+SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
+  int32_t a, b;
+  __asm__("vmov %0, %1, %P2" : "=r"(a), "=r"(b) : "w"(x));
+  *lo = a, *hi = b;
+}
+
+// One 16-pixel second-order run in one asm statement: surface_span's pixels
+// (u_{k+1} = u_k + du_k, du_{k+1} = du_k + ddu, likewise v; texel (v_k >> 16) w + (u_k >> 16)),
+// as Run16's ARMv7 groups compute them (smulbt, uxtah: the contract keeps w <= 32767 and
+// 0 <= v < 2^31), the bytes gathered into four little-endian words (str: ARMv7 allows an
+// unaligned dest). Eight groups of two pixels; F0 .. F7: VFP instructions placed after each
+// group (other runs' work, issued beside the integer pixels: the modelled Cortex-A9 dispatches
+// them with the integer instructions), with the caller's operands (named after the run's
+// eleven). One statement, so that the run's values stay in registers throughout.
+#define SB_V7_PX(t)                       \
+  "smulbt " t ", %[w], %[v]\n\t"          \
+  "uxtah " t ", " t ", %[u], ror #16\n\t" \
+  "add %[u], %[u], %[du]\n\t"             \
+  "add %[v], %[v], %[dv]\n\t"             \
+  "add %[du], %[du], %[ddu]\n\t"          \
+  "add %[dv], %[dv], %[ddv]\n\t"          \
+  "ldrb " t ", [%[tx], " t "]\n\t"
+#define SB_V7_LO SB_V7_PX("%[a]") SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #8\n\t"
+#define SB_V7_HI(off) \
+  SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #16\n\t" SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #24\n\t" \
+  "str %[a], [%[d], #" off "]\n\t"
+#define SB_V7_RUN(F0, F1, F2, F3, F4, F5, F6, F7) \
+  SB_V7_LO F0 SB_V7_HI("0") F1 SB_V7_LO F2 SB_V7_HI("4") F3 SB_V7_LO F4 SB_V7_HI("8") F5 SB_V7_LO F6 SB_V7_HI("12") F7
+#define SB_V7_RUN_OPERANDS(dst)                                                               \
+  [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "=&r"(a), [b] "=&r"(b), \
+      "=m"(*reinterpret_cast<uint8_t(*)[16]>(dst))
+#define SB_V7_RUN_INPUTS(dst) [ddu] "r"(ddu), [ddv] "r"(ddv), [w] "r"(w), [tx] "r"(texels), [d] "r"(dst)
+struct RunRegs {
+  uint32_t u, v, du, dv, ddu, ddv;
+};
+SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRegs r) {
+  uint32_t u = r.u, v = r.v, du = r.du, dv = r.dv, a, b;
+  const uint32_t ddu = r.ddu, ddv = r.ddv;
+  __asm__ volatile(SB_V7_RUN("", "", "", "", "", "", "", "")
+                   : SB_V7_RUN_OPERANDS(dest)
+                   : SB_V7_RUN_INPUTS(dest)
+                   : "memory");
+}
+
+// The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax] (two
+// vld1.64 from p); d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5
+// in d27). Positions x0 .. x4 in d22, d30, d31, d29, d28; depths d5, d6, d7, d1, d16
+// (clamped, then 1 / zi); t = urow + ux x, s = vrow + vx x in d17 / d24, d22 / d2, d30 / d3,
+// d31 / d4, d18 / d20 (samples 0 .. 4); depth sums z_0 + z_1 .. z_3 + z_4 in d19, d21, d28,
+// d29, made c_0, c_1, c_2 (times zck) and curve (times zh); z 2^16 in place; the products
+// in place; their conversions into s0 .. s9 (sample j's [u, v] in d_j), clamped by vmin.u32
+// with d23; run 0's [u_1 - u_0, v_1 - v_0] in d6, converted (d17, d24), times c_0, cvt_sat
+// into d6. Outputs: d0 .. d4 the samples, d6 run 0's [iu, iv], d28 c_1, d29 c_2, d5 curve.
+// A register is reused only after its value's last read (in order: each vcvt into s_2j /
+// s_2j+1 reads a product whose register is no longer needed). The multiply-adds are fused,
+// as the compiled walker's are (GCC contracts them; the tests compare bit for bit).
+#define SB_V7_CLAMP(d) \
+  "vcmpe.f64 " d ", d24\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 " d ", d24\n\t"
+// r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
+SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
+  register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
+  register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
+  register V4 o9 __asm__("d8");
+  __asm__ volatile(
+      "vld1.64 {d16-d19}, [%[p]]\n\t"
+      "vld1.64 {d24-d27}, [%[c]]\n\t"
+      "vld1.64 {d20-d23}, [%[p2]]\n\t"
+      "vmov.f64 d28, #16.0\n\t"
+      "vadd.f64 d29, d28, d28\n\t"  // 32
+      "vmov s0, %[nm33]\n\t"
+      "vadd.f64 d30, d22, d28\n\t"  // x1 = P + 16
+      "vcvt.f64.s32 d0, s0\n\t"  // n - 33
+      "vadd.f64 d31, d22, d29\n\t"  // x2 = P + 32
+      "vmov.f64 d5, d16\n\t"
+      "vfma.f64 d5, d17, d22\n\t"  // zi0
+      "vadd.f64 d29, d30, d29\n\t"  // x3 = x1 + 32
+      "vadd.f64 d28, d30, d28\n\t"  // P2 = x1 + 16
+      "vmov.f64 d6, d16\n\t"
+      "vfma.f64 d6, d17, d30\n\t"  // zi1
+      "vmov.f64 d7, d16\n\t"
+      "vfma.f64 d7, d17, d31\n\t"  // zi2
+      "vadd.f64 d28, d28, d0\n\t"  // x4 = P2 + (n - 33)
+      "vmov.f64 d1, d16\n\t"
+      "vfma.f64 d1, d17, d29\n\t"  // zi3
+      "vmul.f64 d26, d17, d26\n\t"  // zck
+      "vmul.f64 d27, d17, d27\n\t"  // zh
+      "vfma.f64 d16, d17, d28\n\t"  // zi4 (zrow's register)
+      SB_V7_CLAMP("d5") SB_V7_CLAMP("d6") SB_V7_CLAMP("d7") SB_V7_CLAMP("d1") SB_V7_CLAMP("d16")
+      "vmov.f64 d17, #1.0\n\t"
+      "vdiv.f64 d5, d17, d5\n\t"
+      "vdiv.f64 d6, d17, d6\n\t"
+      "vdiv.f64 d7, d17, d7\n\t"
+      "vdiv.f64 d1, d17, d1\n\t"
+      "vdiv.f64 d16, d17, d16\n\t"
+      // Under the divides: t and s of every sample.
+      "vmov.f64 d17, d18\n\t"
+      "vmov.f64 d24, d20\n\t"
+      "vfma.f64 d17, d19, d22\n\t"
+      "vfma.f64 d24, d21, d22\n\t"
+      "vmov.f64 d22, d18\n\t"
+      "vmov.f64 d2, d20\n\t"
+      "vfma.f64 d22, d19, d30\n\t"
+      "vfma.f64 d2, d21, d30\n\t"
+      "vmov.f64 d30, d18\n\t"
+      "vmov.f64 d3, d20\n\t"
+      "vfma.f64 d30, d19, d31\n\t"
+      "vfma.f64 d3, d21, d31\n\t"
+      "vmov.f64 d31, d18\n\t"
+      "vmov.f64 d4, d20\n\t"
+      "vfma.f64 d31, d19, d29\n\t"
+      "vfma.f64 d4, d21, d29\n\t"
+      "vfma.f64 d18, d19, d28\n\t"
+      "vfma.f64 d20, d21, d28\n\t"
+      // Depth sums and curve factors, z 2^16, the products.
+      "vadd.f64 d19, d5, d6\n\t"
+      "vadd.f64 d21, d6, d7\n\t"
+      "vmul.f64 d5, d5, d25\n\t"
+      "vmul.f64 d6, d6, d25\n\t"
+      "vadd.f64 d28, d7, d1\n\t"
+      "vadd.f64 d29, d1, d16\n\t"
+      "vmul.f64 d7, d7, d25\n\t"
+      "vmul.f64 d1, d1, d25\n\t"
+      "vmul.f64 d16, d16, d25\n\t"
+      "vmul.f64 d17, d17, d5\n\t"
+      "vmul.f64 d24, d24, d5\n\t"
+      "vmul.f64 d22, d22, d6\n\t"
+      "vmul.f64 d2, d2, d6\n\t"
+      "vmul.f64 d30, d30, d7\n\t"
+      "vmul.f64 d3, d3, d7\n\t"
+      "vmul.f64 d31, d31, d1\n\t"
+      "vmul.f64 d4, d4, d1\n\t"
+      "vmul.f64 d18, d18, d16\n\t"
+      "vmul.f64 d20, d20, d16\n\t"
+      "vmul.f64 d19, d19, d26\n\t"  // c_0
+      "vmul.f64 d21, d21, d26\n\t"  // c_1 (moved to d28 below)
+      // The conversions (each product's register is dead once read; s_2j, s_2j+1 = d_j).
+      "vmov s14, %[st]\n\t"
+      "vcvt.f64.s32 d10, s14\n\t"  // steps
+      "vcvt.u32.f64 s0, d17\n\t"
+      "vcvt.u32.f64 s1, d24\n\t"
+      "vcvt.u32.f64 s2, d22\n\t"
+      "vcvt.u32.f64 s3, d2\n\t"
+      "vmul.f64 d5, d29, d27\n\t"  // curve
+      "vmul.f64 d29, d28, d26\n\t"  // c_2
+      "vmin.u32 d0, d0, d23\n\t"
+      "vmin.u32 d1, d1, d23\n\t"
+      "vcvt.u32.f64 s4, d30\n\t"
+      "vcvt.u32.f64 s5, d3\n\t"
+      "vsub.i32 d6, d1, d0\n\t"  // run 0's [du, dv]
+      "vcvt.u32.f64 s6, d31\n\t"
+      "vcvt.u32.f64 s7, d4\n\t"
+      "vcvt.f64.s32 d17, s12\n\t"
+      "vcvt.f64.s32 d24, s13\n\t"
+      "vmov.f64 d28, d21\n\t"
+      "vcvt.u32.f64 s8, d18\n\t"
+      "vcvt.u32.f64 s9, d20\n\t"
+      "vmul.f64 d17, d17, d19\n\t"
+      "vmul.f64 d24, d24, d19\n\t"
+      "vmin.u32 d2, d2, d23\n\t"
+      "vmin.u32 d3, d3, d23\n\t"
+      "vmin.u32 d4, d4, d23\n\t"
+      "vcvt.s32.f64 s12, d17\n\t"
+      "vcvt.s32.f64 s13, d24\n\t"
+      // The last run's q = double(delta) / steps (last_quotient), delta = sample 4 - sample 3.
+      "vsub.i32 d7, d4, d3\n\t"
+      "vcvt.f64.s32 d8, s14\n\t"
+      "vcvt.f64.s32 d9, s15\n\t"
+      "vdiv.f64 d8, d8, d10\n\t"
+      "vdiv.f64 d9, d9, d10"
+      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
+      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), [st] "r"(n - 49), "m"(p),
+        "m"(kMidConsts)
+      : "cc", "s14", "s15", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
+        "d30", "d31");
+  r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
+  *q89 = o9;
+}
+#undef SB_V7_CLAMP
+
+SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
+  return {uint32_t(u), uint32_t(v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd), uint32_t(sv.dd)};
+}
+
+SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const uint32_t w = uint32_t(width);
+  const int steps = n - 49;  // the last run's (1 .. 15)
+  double r[9];
+  V4 q89;
+  mid_prologue(p, n, r, &q89);
+  // The prologue's registers kept (asm operands bound to them: no copies or spills).
+  register double uv1 __asm__("d1") = r[1];
+  register double uv2 __asm__("d2") = r[2];
+  register double uv3 __asm__("d3") = r[3];
+  register double uv4 __asm__("d4") = r[4];
+  register double curve __asm__("d5") = r[8];
+  register double c1 __asm__("d28") = r[6];
+  register double c2 __asm__("d29") = r[7];
+  int32_t u0, v0, u1, v1, iu0, iv0;
+  lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
+  RunSteps su, sv;
+  steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
+  // Run 0; beside it runs 1 and 2's steps: their deltas [du_1, dv_1, du_2, dv_2] (vsub.i32
+  // on the packed samples, exact as doubles), ddf = delta c_r, cvt_sat, then steps16_dd per
+  // lane in one q register (the 32-bit form: s = delta >> 31, pd = |delta|, pdd = dd
+  // mirrored; accepted iff 120 min(|dd|, 2^25) <= pd, as ssat(dd, 26) decides it there:
+  // |dd| >= 2^25 rejects either way; d = mirror((accepted ? pd - 120 pdd : pd) >> 4),
+  // dd = accepted ? dd : 0). Outputs: q12 = the four d, q11 = the four dd.
+  register double d1r __asm__("d24"), d2r __asm__("d25"), dd1r __asm__("d22"), dd2r __asm__("d23");
+  {
+    RunRegs rr = run_regs(u0, v0, su, sv);
+    uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
+    const uint32_t ddu = rr.ddu, ddv = rr.ddv;
+    __asm__ volatile(SB_V7_RUN("vsub.i32 d6, %P[uv2], %P[uv1]\n\t"
+                               "vsub.i32 d7, %P[uv3], %P[uv2]\n\t"
+                               "vmov.i32 q10, #120\n\t",
+                               "vcvt.f64.s32 d16, s12\n\t"
+                               "vcvt.f64.s32 d17, s13\n\t"
+                               "vcvt.f64.s32 d18, s14\n\t"
+                               "vcvt.f64.s32 d19, s15\n\t"
+                               "vabs.s32 q13, q3\n\t"
+                               "vshr.s32 q15, q3, #31\n\t",
+                               "vmul.f64 d16, d16, %P[c1]\n\t"
+                               "vmul.f64 d17, d17, %P[c1]\n\t"
+                               "vmul.f64 d18, d18, %P[c2]\n\t"
+                               "vmul.f64 d19, d19, %P[c2]\n\t"
+                               "vmov.i32 q11, #0x2000000\n\t",
+                               "vcvt.s32.f64 s12, d16\n\t"
+                               "vcvt.s32.f64 s13, d17\n\t"
+                               "vcvt.s32.f64 s14, d18\n\t"
+                               "vcvt.s32.f64 s15, d19\n\t",
+                               "vabs.s32 q12, q3\n\t"
+                               "veor q9, q3, q15\n\t"
+                               "vsub.i32 q9, q9, q15\n\t"
+                               "vmin.u32 q12, q12, q11\n\t",
+                               "vmul.i32 q12, q12, q10\n\t"
+                               "vmul.i32 q9, q9, q10\n\t",
+                               "vcge.u32 q12, q13, q12\n\t"
+                               "vsub.i32 q9, q13, q9\n\t",
+                               "vand q11, q3, q12\n\t"
+                               "vbsl q12, q9, q13\n\t"
+                               "vshr.u32 q12, q12, #4\n\t"
+                               "veor q12, q12, q15\n\t"
+                               "vsub.i32 q12, q12, q15\n\t")
+                     : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), "=&w"(d2r), "=&w"(dd1r), "=&w"(dd2r)
+                     : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1),
+                       [c2] "w"(c2)
+                     : "memory", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21", "d26", "d27",
+                       "d30", "d31");
+  }
+  const double sd1 = d1r, sd2 = d2r, sdd1 = dd1r, sdd2 = dd2r;
+  auto steps_of = [](double d, double dd, RunSteps* ou, RunSteps* ov) SB_LAMBDA_INLINE {
+    int32_t a, b, c, e;
+    lanes(d, &a, &b), lanes(dd, &c, &e);
+    *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
+  };
+  // d8, d9: the last run's quotients [qu, qv] (then d8: its ddf, converted); d10: trunc(q).
+  register V4 qq __asm__("d8") = q89;
+  register double sdr __asm__("d10");
+  // The last run's steps (last_ddi, last_steps_i: last_dd per lane, u and v in one d
+  // register), beside runs 1 and 2: ddf = -2 (q curve) converted (cvt_sat) and kept if
+  // |i| < 1e9 (and steps > 1), linear = trunc(q) (|q| < 2^31), delta [du, dv] (vsub.i32);
+  // sg = delta >> 31, pd = |delta|, Q = |linear| (linear has delta's sign or is 0),
+  // r = pd - s Q, m = (s - 1) pdd (pdd = dd mirrored by sg; masking and mirroring commute
+  // with the product), d0 = Q - (m >> 1) - (m & 1 and s > 2 r), mirrored; rejected iff
+  // T |dd| > pd (T = s (s - 1) / 2; the 64-bit product minus pd, saturating, is not 0): then
+  // linear and 0, else d0 and dd. Handed from run 1 to run 2 in fixed registers: d8 = I
+  // (ranged), d10 = L, d31 = |I| ranged, d27 = T, d19 = m (masked), d21 = sg, d22 = pd,
+  // d23 = Q, d24 = S, d28 = r, d29 = [1, 1]. The results leave through a, b (d) and du, dv
+  // (dd), free once the pixels are drawn.
+  // Hand-off quads (d18 .. d31 in pairs; only the named halves carry values).
+  register V4 h9 __asm__("d18"), h10 __asm__("d20"), h11 __asm__("d22"), h12 __asm__("d24");
+  register V4 h13 __asm__("d26"), h14 __asm__("d28"), h15 __asm__("d30");
+  u0 = u1, v0 = v1;
+  lanes(uv2, &u1, &v1);
+  steps_of(sd1, sdd1, &su, &sv);
+  {
+    RunRegs rr = run_regs(u0, v0, su, sv);
+    uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
+    const uint32_t ddu = rr.ddu, ddv = rr.ddv;
+    uint8_t* const d1 = dest + 16;
+    const uint32_t* const kk = kMidLast[steps];
+    __asm__ volatile(SB_V7_RUN("vmul.f64 d16, d8, %P[cv]\n\t"
+                               "vmul.f64 d17, d9, %P[cv]\n\t"
+                               "vmov.f64 d18, #-2.0\n\t"
+                               "vcvt.s32.f64 s20, d8\n\t"
+                               "vcvt.s32.f64 s21, d9\n\t",
+                               "vmul.f64 d16, d18, d16\n\t"
+                               "vmul.f64 d17, d18, d17\n\t"
+                               "vsub.i32 d9, %P[uv4], %P[uv3]\n\t"
+                               "vld1.32 {d24-d27}, [%[k]]\n\t",
+                               "vcvt.s32.f64 s16, d16\n\t"
+                               "vcvt.s32.f64 s17, d17\n\t"
+                               "vshr.s32 d21, d9, #31\n\t"
+                               "vabs.s32 d22, d9\n\t"
+                               "vabs.s32 d23, %P[sd]\n\t"
+                               "vmov.i32 d29, #1\n\t",
+                               "vmul.i32 d28, d23, d24\n\t"
+                               "vcgt.u32 d18, d24, d29\n\t",
+                               "vabs.s32 d30, d8\n\t"
+                               "vmul.i32 d19, d8, d26\n\t",
+                               "vcgt.u32 d20, d25, d30\n\t"
+                               "vsub.i32 d28, d22, d28\n\t",
+                               "vand d20, d20, d18\n\t",
+                               "vand d8, d8, d20\n\t"
+                               "vand d31, d30, d20\n\t"
+                               "vand d19, d19, d20\n\t")
+                     : SB_V7_RUN_OPERANDS(d1), [qq] "+w"(qq), [sd] "=w"(sdr), "=w"(h9), "=w"(h10), "=w"(h11),
+                       "=w"(h12), "=w"(h13), "=w"(h14), "=w"(h15)
+                     : SB_V7_RUN_INPUTS(d1), [cv] "w"(curve), [uv3] "w"(uv3), [uv4] "w"(uv4), [k] "r"(kk)
+                     : "memory", "d16", "d17");
+  }
+  // Run 2; beside it the rest of the last run's steps.
+  u0 = u1, v0 = v1;
+  lanes(uv3, &u1, &v1);
+  steps_of(sd2, sdd2, &su, &sv);
+  RunSteps lu, lv;
+  {
+    RunRegs rr = run_regs(u0, v0, su, sv);
+    uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
+    const uint32_t ddu = rr.ddu, ddv = rr.ddv;
+    uint8_t* const d2 = dest + 32;
+    __asm__ volatile(SB_V7_RUN("vmull.u32 q8, d31, d27\n\t"
+                               "veor d19, d19, d21\n\t"
+                               "vshl.i32 d28, d28, #1\n\t",
+                               "vmovl.u32 q15, d22\n\t"
+                               "vsub.i32 d19, d19, d21\n\t"
+                               "vcgt.u32 d28, d24, d28\n\t",
+                               "vqsub.u64 q8, q8, q15\n\t"
+                               "vshr.s32 d25, d19, #1\n\t"
+                               "vand d9, d19, d28\n\t",
+                               "vqmovn.u64 d16, q8\n\t"
+                               "vsub.i32 d25, d23, d25\n\t"
+                               "vand d9, d9, d29\n\t",
+                               "vtst.32 d16, d16, d16\n\t"  // rejected
+                               "vsub.i32 d25, d25, d9\n\t",
+                               "veor d25, d25, d21\n\t"
+                               "vbic d8, d8, d16\n\t",
+                               "vsub.i32 d25, d25, d21\n\t",
+                               "vbsl d16, %P[L], d25\n\t"
+                               "vmov %[a], %[b], d16\n\t"
+                               "vmov %[du], %[dv], d8\n\t")
+                     : SB_V7_RUN_OPERANDS(d2), [qq] "+w"(qq), "+w"(h9), "+w"(h12), "+w"(h14), "+w"(h15)
+                     : SB_V7_RUN_INPUTS(d2), [L] "w"(sdr), "w"(h10), "w"(h11), "w"(h13)
+                     : "memory", "d16", "d17");
+    lu = RunSteps{int32_t(a), int32_t(du)}, lv = RunSteps{int32_t(b), int32_t(dv)};
+  }
+  // The last run (n - 48 pixels from sample 3 to sample 4).
+  u0 = u1, v0 = v1;
+  if (n == 64) {
+    draw16_v7(dest + 48, texels, w, run_regs(u0, v0, lu, lv));
+  } else {
+    draw_run(dest + 48, n - 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d),
+             uint32_t(lu.dd), uint32_t(lv.dd));
+  }
+}
+#undef SB_V7_RUN_INPUTS
+#undef SB_V7_RUN_OPERANDS
+#undef SB_V7_RUN
+#undef SB_V7_HI
+#undef SB_V7_LO
+#undef SB_V7_PX
+#endif
+
+}  // namespace
+}  // namespace sb::simd
