@@ -58,6 +58,8 @@ namespace {
 // AsmSpanPersp.ShortSpansDivideWhereTheReciprocalCannot (the fallback).
 constexpr int kShortMax = 64;
 alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
+constexpr uint64_t kBiasBits = 0x4338000000000000;  // 2^52 + 2^51 (the deltas' double bias)
+constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zc = p.second_order ? p.dzi : 0.0;
@@ -76,13 +78,17 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
   // in order, so each latency gap holds work of the same or shorter latency); the
   // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
   // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
-  float64x2_t zA, zB, zC;
+  // Second order: the sums of neighbouring samples' z, zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
+  // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
+  // (the full runs' curve factors), also in the block (the conversions' latency gaps).
+  float64x2_t zs01 = vdupq_n_f64(0.0), zs23 = zs01, c01 = zs01, c23 = zs01;
   int32x4_t S01, S23, S44;
   double zck = 0.0;  // zc * -1/16 (second order: the runs' steps below), in the block's spare slots
   if constexpr (kCurve) {
-    register float64x2_t rzA __asm__("v2");
-    register float64x2_t rzB __asm__("v6");
-    register float64x2_t rzC __asm__("v4");
+    register float64x2_t rzs01 __asm__("v0");
+    register float64x2_t rzs23 __asm__("v1");
+    register float64x2_t rc01 __asm__("v3");
+    register float64x2_t rc23 __asm__("v16");
     register int32x4_t rS01 __asm__("v5");
     register int32x4_t rS23 __asm__("v19");
     register int32x4_t rS44 __asm__("v7");
@@ -207,28 +213,32 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
         "fmul v22.2d, v22.2d, v6.d[0]\n\t"
         "fmul v24.2d, v24.2d, v6.d[1]\n\t"
         "fmul v29.2d, v29.2d, v4.d[0]\n\t"
+        "ext v0.16b, v2.16b, v6.16b, #8\n\t"
+        "ext v1.16b, v6.16b, v4.16b, #8\n\t"
         "fcvtzu v18.2d, v18.2d, #16\n\t"
         "fcvtzu v20.2d, v20.2d, #16\n\t"
         "fcvtzu v22.2d, v22.2d, #16\n\t"
         "fcvtzu v24.2d, v24.2d, #16\n\t"
         "fcvtzu v29.2d, v29.2d, #16\n\t"
+        "fadd v0.2d, v2.2d, v0.2d\n\t"
+        "fadd v1.2d, v6.2d, v1.2d\n\t"
         "uqxtn v5.2s, v18.2d\n\t"
         "uqxtn v19.2s, v22.2d\n\t"
         "uqxtn v7.2s, v29.2d\n\t"
-        "dup v4.2d, v4.d[0]\n\t"
         "uqxtn2 v5.4s, v20.2d\n\t"
         "uqxtn2 v19.4s, v24.2d\n\t"
         "uqxtn2 v7.4s, v29.2d\n\t"
+        "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
+        "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
         "umin v5.4s, v5.4s, v31.4s\n\t"
         "umin v19.4s, v19.4s, v31.4s\n\t"
         "umin v7.4s, v7.4s, v31.4s"
-        : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t1] "=&r"(t1),
-          [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
+        : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
+          [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
         : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(kCurve ? zc : 0.0), "m"(p), "m"(kMinZi)
-        : "cc", "v0", "v1", "v3", "v16", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
-          "v28", "v29", "v30", "v31");
-
-    zA = rzA, zB = rzB, zC = rzC;
+        : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
+          "v29", "v30", "v31");
+    zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
     S01 = rS01, S23 = rS23, S44 = rS44;
   } else {
     // Linear steps: the divides (the reciprocals' test costs the in-order A53 more than
@@ -312,83 +322,250 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
         : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
         : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
           "v28", "v29", "v30", "v31");
-    zA = rzA, zB = rzB, zC = rzC;
     S01 = rS01, S23 = rS23, S44 = rS44;
   }
-  // Sums of neighbouring samples' z: [z_0 + z_1, z_1 + z_2], [z_2 + z_3, z_3 + z_4] (the
-  // curve factors' and the last run's z_k + z_{k+1}).
-  const float64x2_t zs01 = vaddq_f64(zA, vextq_f64(zA, zB, 1)), zs23 = vaddq_f64(zB, vextq_f64(zB, zC, 1));
-  using L0 = std::integral_constant<int, 0>;
-  using L1 = std::integral_constant<int, 1>;
-  const int32x4_t kZero = vdupq_n_s32(0);
   // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
   // picked without an index. The branch also ends the code block holding the asm block
   // soon after it (under 128 micro-ops: the A72 model's reorder buffer then holds the next
   // span's positions while the divides run).
   auto rest = [&](auto kc) SB_LAMBDA_INLINE {
     constexpr int k = decltype(kc)::value;
-    // Full runs 0, 1, 2: deltas [du_0, dv_0, du_1, dv_1], [du_2, dv_2, -, -].
-    const int32x4_t D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
-    const int32x4_t D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
-    int32x4_t d01, d23, dd01 = kZero, dd23 = kZero;
+    // Full runs 0, 1, 2: deltas D01 = [du_0, dv_0, du_1, dv_1], D23 = [du_2, dv_2, du_3, dv_3]
+    // (run 3 only as the last run), and the full runs' packed steps dlo (runs 0, 1), dhi
+    // (runs 2, 3), ddlo, ddhi (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64).
+    int32x4_t D01, D23;
+    int64x2_t dlo, dhi, ddlo, ddhi;
+    int64x2_t lin3 = vdupq_n_s64(0), dd3 = lin3;  // k = 3: the last run's last_steps vector results
     // Deltas as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x (saddw,
     // |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus 2^52 + 2^51
     // it is x exactly (x = 0: +0, as scvtf).
     const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
-    // [120 x 4], [2^25 x 4] by one ldp (the load pipe; movi takes FP-pipe slots).
-    uint32x4_t k120, k2p25;
-    __asm__("ldp %q[k], %q[m], [%[c]]" : [k] "=w"(k120), [m] "=w"(k2p25) : [c] "r"(kShortConsts), "m"(kShortConsts));
     auto unbias = [&](int64x2_t b) SB_LAMBDA_INLINE {
       return vsubq_f64(vreinterpretq_f64_s64(b), vreinterpretq_f64_s64(kBias));
     };
     if constexpr (kCurve) {
-      // ddf = delta (zck (z_a + z_b)), zck = zc * -1/16: steps16_sel's bits (see persp_fast);
-      // cvt_sat as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same int32).
-
-      const float64x2_t c01 = vmulq_n_f64(zs01, zck);
-      const float64x2_t c23 = vmulq_n_f64(zs23, zck);
-      auto ddf = [&](int64x2_t b, float64x2_t c, auto lane) SB_LAMBDA_INLINE {
-        return vcvtq_s64_f64(vmulq_laneq_f64(unbias(b), c, decltype(lane)::value));
-      };
-      const int32x4_t i01 = vqmovn_high_s64(vqmovn_s64(ddf(vaddw_s32(kBias, vget_low_s32(D01)), c01, L0{})),
-                                            ddf(vaddw_high_s32(kBias, D01), c01, L1{}));
-      const int32x4_t i23 =
-          vcombine_s32(vqmovn_s64(ddf(vaddw_s32(kBias, vget_low_s32(D23)), c23, L0{})), vdup_n_s32(0));
-      // steps16_dd (the 32-bit form) per lane; 120 |dd| <= pd tested as min(|dd|, 2^25) 120
-      // <= pd in uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as
-      // 120 2^25 > 2^31 > pd).
-      auto steps_dd = [&](int32x4_t delta, int32x4_t dd, int32x4_t* d_out, int32x4_t* dd_out) SB_LAMBDA_INLINE {
-        const uint32x4_t s = vreinterpretq_u32_s32(vshrq_n_s32(delta, 31));
-        // |x| as (x ^ s) - s (s = x >> 31) is abs (wrapping: INT_MIN stays 0x80000000).
-        const uint32x4_t pd = vreinterpretq_u32_s32(vabsq_s32(delta));
-        const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(dd), s), s);
-        const uint32x4_t add = vreinterpretq_u32_s32(vabsq_s32(dd));
-        const uint32x4_t accept = vcleq_u32(vmulq_u32(vminq_u32(add, k2p25), k120), pd);
-        // (pd - 120 pdd) >> 4 or pd >> 4: picked, then shifted (the same logical shift).
-        const uint32x4_t pick = vshrq_n_u32(vbslq_u32(accept, vmlsq_laneq_u32(pd, pdd, k120, 0), pd), 4);
-        *d_out = vreinterpretq_s32_u32(vsubq_u32(veorq_u32(pick, s), s));
-        *dd_out = vreinterpretq_s32_u32(vandq_u32(vreinterpretq_u32_s32(dd), accept));
-      };
-      steps_dd(D01, i01, &d01, &dd01);
-      steps_dd(D23, i23, &d23, &dd23);
+      // One asm block, the two vectors' chains interleaved for the in-order A53, per lane:
+      // ddf = delta (zck (z_a + z_b)) (c01, c23 above; steps16_sel's bits, see persp_fast),
+      // dd = cvt_sat(ddf) as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same
+      // int32; [du_3, dv_3]'s dd 0), then steps16_dd's 32-bit form: s = delta >> 31, pd =
+      // |delta|, pdd = dd mirrored ((dd ^ s) - s); accept = min(|dd|, 2^25) 120 <= pd in
+      // uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as 120 2^25 >
+      // 2^31 > pd); d = accept ? mirror((pd - 120 pdd) >> 4) : mirror(pd >> 4) (both
+      // computed, then picked by bit: the pick waits on the test only), dd & accept. Packed:
+      // (x & (2^64 - 2^32)) + (x << 32 >> 32, arithmetic) of each 64-bit lane x = [du, dv].
+      if constexpr (k == 3) {
+        // Four runs: the same with the last run's vector part of last_steps (its deltas
+        // [du_3, dv_3] unbiased, div_steps' quotient q, lin = trunc(q), ddf = (q curve) -2,
+        // dd = trunc(ddf) & (|ddf| < 1e9)) interleaved, fixed registers; the order from
+        // bench/mca_a53_persp/order_search.py on short_steps_k3.s (this block, written by
+        // to_inline.py). curve = (zc / 2) (z_3 + z_4) as the walker's zc * 0.5 * zmk.
+        const int s = last > 2 ? last - 1 : 1;
+        register int32x4_t rD01 __asm__("v0");
+        register int32x4_t rD23 __asm__("v7") = S44;
+        register int32x4_t rS01 __asm__("v5") = S01;
+        register int32x4_t rS23 __asm__("v19") = S23;
+        register float64x2_t rc01 __asm__("v3") = c01;
+        register float64x2_t rc23 __asm__("v16") = c23;
+        register float64x2_t rzs __asm__("v1") = zs23;
+        register double rsd __asm__("v30") = double(s);
+        register double rzc __asm__("v31") = zc * 0.5;
+        register int64x2_t rddhi __asm__("v2");
+        register int64x2_t rlin __asm__("v4");
+        register int64x2_t rdd __asm__("v6");
+        __asm__(
+// BEGIN short_steps_k3
+          "ext v0.16b, v5.16b, v19.16b, #8\n\t"
+          "ld1r {v6.2d}, [%[y]]\n\t"
+          "ext v7.16b, v19.16b, v7.16b, #8\n\t"
+          "ld1r {v17.2d}, [%[kb]]\n\t"
+          "ldp q18, q20, [%[kc]]\n\t"
+          "sub v0.4s, v0.4s, v5.4s\n\t"
+          "sub v7.4s, v7.4s, v19.4s\n\t"
+          "saddw v21.2d, v17.2d, v0.2s\n\t"
+          "saddw2 v22.2d, v17.2d, v0.4s\n\t"
+          "saddw2 v4.2d, v17.2d, v7.4s\n\t"
+          "ld1r {v2.2d}, [%[k1e9]]\n\t"
+          "saddw v23.2d, v17.2d, v7.2s\n\t"
+          "fsub v21.2d, v21.2d, v17.2d\n\t"
+          "fsub v22.2d, v22.2d, v17.2d\n\t"
+          "fsub v4.2d, v4.2d, v17.2d\n\t"
+          "fmul d31, d31, v1.d[1]\n\t"
+          "fsub v23.2d, v23.2d, v17.2d\n\t"
+          "sshr v24.4s, v0.4s, #31\n\t"
+          "fmul v21.2d, v21.2d, v3.d[0]\n\t"
+          "abs v27.4s, v7.4s\n\t"
+          "fmul v1.2d, v4.2d, v6.2d\n\t"
+          "fmul v22.2d, v22.2d, v3.d[1]\n\t"
+          "sshr v25.4s, v7.4s, #31\n\t"
+          "fmul v23.2d, v23.2d, v16.d[0]\n\t"
+          "fcvtzs v21.2d, v21.2d\n\t"
+          "abs v26.4s, v0.4s\n\t"
+          "fmls v4.2d, v1.2d, v30.d[0]\n\t"
+          "fcvtzs v22.2d, v22.2d\n\t"
+          "mov v3.16b, v26.16b\n\t"
+          "ushr v28.4s, v27.4s, #4\n\t"
+          "ushr v17.4s, v26.4s, #4\n\t"
+          "fcvtzs v23.2d, v23.2d\n\t"
+          "sqxtn v21.2s, v21.2d\n\t"
+          "fmla v1.2d, v4.2d, v6.2d\n\t"
+          "fmov v6.2d, #-2.0\n\t"
+          "sqxtn v23.2s, v23.2d\n\t"
+          "sqxtn2 v21.4s, v22.2d\n\t"
+          "eor v17.16b, v17.16b, v24.16b\n\t"
+          "eor v28.16b, v28.16b, v25.16b\n\t"
+          "mov v16.16b, v27.16b\n\t"
+          "fcvtzs v4.2d, v1.2d\n\t"
+          "abs v29.4s, v23.4s\n\t"
+          "fmul v1.2d, v1.2d, v31.d[0]\n\t"
+          "eor v30.16b, v21.16b, v24.16b\n\t"
+          "eor v31.16b, v23.16b, v25.16b\n\t"
+          "abs v22.4s, v21.4s\n\t"
+          "sub v17.4s, v17.4s, v24.4s\n\t"
+          "umin v29.4s, v29.4s, v20.4s\n\t"
+          "fmul v1.2d, v1.2d, v6.2d\n\t"
+          "sub v31.4s, v31.4s, v25.4s\n\t"
+          "sub v30.4s, v30.4s, v24.4s\n\t"
+          "umin v22.4s, v22.4s, v20.4s\n\t"
+          "mul v29.4s, v29.4s, v18.4s\n\t"
+          "facgt v6.2d, v2.2d, v1.2d\n\t"
+          "fcvtzs v1.2d, v1.2d\n\t"
+          "mls v16.4s, v31.4s, v18.s[0]\n\t"
+          "mls v3.4s, v30.4s, v18.s[0]\n\t"
+          "mul v22.4s, v22.4s, v18.4s\n\t"
+          "cmhs v29.4s, v27.4s, v29.4s\n\t"
+          "and v6.16b, v1.16b, v6.16b\n\t"
+          "ushr v16.4s, v16.4s, #4\n\t"
+          "ushr v3.4s, v3.4s, #4\n\t"
+          "cmhs v22.4s, v26.4s, v22.4s\n\t"
+          "movi v26.2d, #0xffffffff00000000\n\t"
+          "sub v28.4s, v28.4s, v25.4s\n\t"
+          "eor v16.16b, v16.16b, v25.16b\n\t"
+          "eor v3.16b, v3.16b, v24.16b\n\t"
+          "and v21.16b, v21.16b, v22.16b\n\t"
+          "and v23.16b, v23.16b, v29.16b\n\t"
+          "sub v16.4s, v16.4s, v25.4s\n\t"
+          "sub v3.4s, v3.4s, v24.4s\n\t"
+          "and v2.16b, v23.16b, v26.16b\n\t"
+          "shl v27.2d, v23.2d, #32\n\t"
+          "shl v24.2d, v21.2d, #32\n\t"
+          "bit v28.16b, v16.16b, v29.16b\n\t"
+          "bit v17.16b, v3.16b, v22.16b\n\t"
+          "and v16.16b, v21.16b, v26.16b\n\t"
+          "shl v25.2d, v28.2d, #32\n\t"
+          "and v3.16b, v17.16b, v26.16b\n\t"
+          "ssra v16.2d, v24.2d, #32\n\t"
+          "shl v24.2d, v17.2d, #32\n\t"
+          "and v1.16b, v28.16b, v26.16b\n\t"
+          "ssra v2.2d, v27.2d, #32\n\t"
+          "ssra v3.2d, v24.2d, #32\n\t"
+          "ssra v1.2d, v25.2d, #32"
+// END short_steps_k3
+            : "=&w"(rD01), "+&w"(rD23), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rsd), "+&w"(rzc), "=&w"(rddhi),
+              "=&w"(rlin), "=&w"(rdd)
+            : "w"(rS01), "w"(rS23), [kb] "r"(&kBiasBits), [kc] "r"(kShortConsts), [y] "r"(&kRecipSteps[s]),
+              [k1e9] "r"(&kOneE9), "m"(kBiasBits), "m"(kShortConsts), "m"(kRecipSteps), "m"(kOneE9)
+            : "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29");
+        D01 = rD01, D23 = rD23;
+        dlo = vreinterpretq_s64_f64(rc01), ddlo = vreinterpretq_s64_f64(rc23);
+        dhi = vreinterpretq_s64_f64(rzs), ddhi = rddhi;
+        lin3 = rlin, dd3 = rdd;
+      } else {
+      D23 = S44;
+      int64x2_t c01b = vreinterpretq_s64_f64(c01), c23b = vreinterpretq_s64_f64(c23);
+      __asm__(
+          "ld1r {v17.2d}, [%[kb]]\n\t"
+          "ext %[d01].16b, %[s01].16b, %[s23].16b, #8\n\t"
+          "ext %[d23].16b, %[s23].16b, %[d23].16b, #8\n\t"
+          "ldp q18, q20, [%[kc]]\n\t"
+          "sub %[d01].4s, %[d01].4s, %[s01].4s\n\t"
+          "sub %[d23].4s, %[d23].4s, %[s23].4s\n\t"
+          "saddw v21.2d, v17.2d, %[d01].2s\n\t"
+          "saddw2 v22.2d, v17.2d, %[d01].4s\n\t"
+          "saddw v23.2d, v17.2d, %[d23].2s\n\t"
+          "sshr v24.4s, %[d01].4s, #31\n\t"
+          "sshr v25.4s, %[d23].4s, #31\n\t"
+          "fsub v21.2d, v21.2d, v17.2d\n\t"
+          "fsub v22.2d, v22.2d, v17.2d\n\t"
+          "fsub v23.2d, v23.2d, v17.2d\n\t"
+          "abs v26.4s, %[d01].4s\n\t"
+          "abs v27.4s, %[d23].4s\n\t"
+          "fmul v21.2d, v21.2d, %[dlo].d[0]\n\t"
+          "fmul v22.2d, v22.2d, %[dlo].d[1]\n\t"
+          "fmul v23.2d, v23.2d, %[ddlo].d[0]\n\t"
+          "ushr v17.4s, v26.4s, #4\n\t"
+          "ushr v28.4s, v27.4s, #4\n\t"
+          "fcvtzs v21.2d, v21.2d\n\t"
+          "fcvtzs v22.2d, v22.2d\n\t"
+          "fcvtzs v23.2d, v23.2d\n\t"
+          "eor v17.16b, v17.16b, v24.16b\n\t"
+          "eor v28.16b, v28.16b, v25.16b\n\t"
+          "sqxtn v21.2s, v21.2d\n\t"
+          "sqxtn v23.2s, v23.2d\n\t"
+          "sub v17.4s, v17.4s, v24.4s\n\t"
+          "sub v28.4s, v28.4s, v25.4s\n\t"
+          "sqxtn2 v21.4s, v22.2d\n\t"
+          "abs v29.4s, v23.4s\n\t"
+          "eor v31.16b, v23.16b, v25.16b\n\t"
+          "abs v22.4s, v21.4s\n\t"
+          "eor v30.16b, v21.16b, v24.16b\n\t"
+          "umin v29.4s, v29.4s, v20.4s\n\t"
+          "sub v31.4s, v31.4s, v25.4s\n\t"
+          "umin v22.4s, v22.4s, v20.4s\n\t"
+          "sub v30.4s, v30.4s, v24.4s\n\t"
+          "mul v29.4s, v29.4s, v18.4s\n\t"
+          "mov %[dlo].16b, v26.16b\n\t"
+          "mul v22.4s, v22.4s, v18.4s\n\t"
+          "mov %[ddlo].16b, v27.16b\n\t"
+          "mls %[ddlo].4s, v31.4s, v18.s[0]\n\t"
+          "mls %[dlo].4s, v30.4s, v18.s[0]\n\t"
+          "cmhs v29.4s, v27.4s, v29.4s\n\t"
+          "cmhs v22.4s, v26.4s, v22.4s\n\t"
+          "ushr %[ddlo].4s, %[ddlo].4s, #4\n\t"
+          "ushr %[dlo].4s, %[dlo].4s, #4\n\t"
+          "and v23.16b, v23.16b, v29.16b\n\t"
+          "and v21.16b, v21.16b, v22.16b\n\t"
+          "eor %[ddlo].16b, %[ddlo].16b, v25.16b\n\t"
+          "eor %[dlo].16b, %[dlo].16b, v24.16b\n\t"
+          "movi v26.2d, #0xffffffff00000000\n\t"
+          "shl v27.2d, v23.2d, #32\n\t"
+          "sub %[ddlo].4s, %[ddlo].4s, v25.4s\n\t"
+          "sub %[dlo].4s, %[dlo].4s, v24.4s\n\t"
+          "shl v24.2d, v21.2d, #32\n\t"
+          "and %[ddhi].16b, v23.16b, v26.16b\n\t"
+          "bit v28.16b, %[ddlo].16b, v29.16b\n\t"
+          "bit v17.16b, %[dlo].16b, v22.16b\n\t"
+          "and %[ddlo].16b, v21.16b, v26.16b\n\t"
+          "ssra %[ddhi].2d, v27.2d, #32\n\t"
+          "shl v25.2d, v28.2d, #32\n\t"
+          "ssra %[ddlo].2d, v24.2d, #32\n\t"
+          "shl v24.2d, v17.2d, #32\n\t"
+          "and %[dhi].16b, v28.16b, v26.16b\n\t"
+          "and %[dlo].16b, v17.16b, v26.16b\n\t"
+          "ssra %[dhi].2d, v25.2d, #32\n\t"
+          "ssra %[dlo].2d, v24.2d, #32"
+          : [d01] "=&w"(D01), [d23] "+&w"(D23), [dlo] "+&w"(c01b), [ddlo] "+&w"(c23b), [dhi] "=&w"(dhi),
+            [ddhi] "=&w"(ddhi)
+          : [s01] "w"(S01), [s23] "w"(S23), [kb] "r"(&kBiasBits), [kc] "r"(kShortConsts), "m"(kBiasBits),
+            "m"(kShortConsts)
+          : "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30", "v31");
+      dlo = c01b, ddlo = c23b;
+      }
     } else {
+      D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
+      D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
       // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
       auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
         return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
                                                              vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
       };
-      d01 = div16(D01), d23 = div16(D23);
+      const int32x4_t d01 = div16(D01), d23 = div16(D23);
+      // The full runs' packed steps, for runs 0, 1 and 2, 3.
+      const int32x4_t U = vuzp1q_s32(d01, d23), V = vuzp2q_s32(d01, d23);
+      dlo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
+      dhi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
+      ddlo = ddhi = vdupq_n_s64(0);
     }
-    // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u) and steps
-    // (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64), for runs 0, 1 and 2, 3.
-    auto packs = [](int32x4_t x01, int32x4_t x23, int64x2_t* lo, int64x2_t* hi) SB_LAMBDA_INLINE {
-      const int32x4_t U = vuzp1q_s32(x01, x23), V = vuzp2q_s32(x01, x23);
-      *lo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
-      *hi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
-    };
-    int64x2_t dlo, dhi, ddlo, ddhi;
-    packs(d01, d23, &dlo, &dhi);
-    packs(dd01, dd23, &ddlo, &ddhi);
+    // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u).
     const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
     // The last run's start (sample k: one 64-bit lane, v 2^32 + u) and z_k + z_{k+1}.
     const uint64_t xk = vgetq_lane_u64(k < 2 ? st01 : st23, k & 1);
@@ -400,7 +577,9 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
-    if constexpr (kCurve) {
+    if constexpr (kCurve && k == 3) {
+      last_steps_dd(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), lin3, dd3, &lu, &lv);
+    } else if constexpr (kCurve) {
       last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zmk, &lu, &lv);
     } else {
       // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one

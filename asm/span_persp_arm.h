@@ -355,6 +355,10 @@ SB_INLINE void last_steps_i(int steps, int32_t du, int32_t dv, int32_t lu, int32
 }
 #endif
 #if defined(__aarch64__)
+// last_steps' integer part, from lin = [linear_u, linear_v] and dd = [ddi_u, ddi_v] (int64
+// lanes: trunc(q), and trunc(ddf) masked by |ddf| < 1e9) as last_steps computes them.
+SB_INLINE void last_steps_dd(int steps, int32_t du, int32_t dv, int64x2_t lin, int64x2_t dd, RunSteps* su,
+                             RunSteps* sv);
 // du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as doubles [du, dv].
 SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, float64x2_t duv, double curve, RunSteps* su,
                           RunSteps* sv) {
@@ -364,14 +368,18 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
 }
 #endif
 #if defined(__aarch64__)
-  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
-  const uint32_t two = steps > 1 ? ~0u : 0u;
-  const float64x2_t q = div_steps(duv, s);
+  const float64x2_t q = div_steps(duv, uint32_t(steps > 1 ? steps : 1));
   const int64x2_t lin = vcvtq_s64_f64(q);
   const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, curve), -2.0);
   // -1e9 < ddf < 1e9 as |ddf| < 1e9 (facgt; false for NaN, as both compares).
   const uint64x2_t ok = vcaltq_f64(ddf, vdupq_n_f64(1e9));
   const int64x2_t dd = vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(ok));
+  last_steps_dd(steps, du, dv, lin, dd, su, sv);
+}
+SB_INLINE void last_steps_dd(int steps, int32_t du, int32_t dv, int64x2_t lin, int64x2_t dd, RunSteps* su,
+                             RunSteps* sv) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const uint32_t two = steps > 1 ? ~0u : 0u;
   const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
   const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
   // last_dd for u and v in one asm block, the two chains interleaved (the compiler runs
