@@ -2,7 +2,7 @@
 # bench/mca_a53_persp/order_search.py: bench/mca_a53_block/order_search.py for straight-line
 # NEON blocks: an order of one block (AArch64, operands as plain registers; a last line that
 # is a branch stays last) against llvm-mca, Cortex-A53 cycles first, Cortex-A57 to break ties.
-# Also treats the accumulating NEON ops (fmla, fmls, mls, bit, bif, bsl, ssra, usra, sqxtn2,
+# Every register of a multi-register load (ld2 {a, b}) is written. Also treats the accumulating NEON ops (fmla, fmls, mls, bit, bif, bsl, ssra, usra, sqxtn2,
 # uqxtn2) as reading their destination.
 #
 #   order_search.py IN.s OUT.s [--evals=N] [--head=K] [--seed=S]
@@ -42,7 +42,7 @@ def parse(l):
         store = True
         if post:
             writes.add(reg(mem[-1].group(1).split(",")[0]))
-    elif op in ("ldp", "ldr", "ldrb", "ldur", "ld1"):
+    elif op.startswith("ld"):  # ldp, ldr, ldrb, ld1, ld1r, ld2, ld2r ...: every listed register written
         addr = [r for r in (reg(t) for t in re.findall(r"[a-z]+\d+", mem[-1].group(1))) if r]
         dst = rs[:len(rs) - len(addr)]
         reads |= set(addr)
