@@ -2,7 +2,8 @@
 # bench/mca_a53_persp/order_search.py: bench/mca_a53_block/order_search.py for straight-line
 # NEON blocks: an order of one block (AArch64, operands as plain registers; a last line that
 # is a branch stays last) against llvm-mca, Cortex-A53 cycles first, Cortex-A57 to break ties.
-# Every register of a multi-register load (ld2 {a, b}) is written. Also treats the accumulating NEON ops (fmla, fmls, mls, bit, bif, bsl, ssra, usra, sqxtn2,
+# Every register of a multi-register load (ld2 {a, b}) is written; conditional selects read
+# the flags. Also treats the accumulating NEON ops (fmla, fmls, mls, bit, bif, bsl, ssra, usra, sqxtn2,
 # uqxtn2) as reading their destination.
 #
 #   order_search.py IN.s OUT.s [--evals=N] [--head=K] [--seed=S]
@@ -64,6 +65,8 @@ def parse(l):
             reads.add(rs[0])
         if op in ("adds", "subs", "ands"):
             writes.add("nzcv")
+        if op in ("csel", "csinc", "csinv", "csneg", "cset", "csetm", "cinc", "cneg", "adc", "sbc"):
+            reads.add("nzcv")
     return reads, writes, store
 
 
