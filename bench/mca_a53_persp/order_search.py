@@ -6,7 +6,7 @@
 # the flags. Also treats the accumulating NEON ops (fmla, fmls, mls, bit, bif, bsl, ssra, usra, sqxtn2,
 # uqxtn2) as reading their destination.
 #
-#   order_search.py IN.s OUT.s [--evals=N] [--head=K] [--seed=S]
+#   order_search.py IN.s OUT.s [--evals=N] [--head=K] [--seed=S] [--a57=W]
 #
 # Moves keep every register, flag and store order (a lane load ld1 {vN.b}[k] reads and writes
 # vN). --head=K pins the first K lines (e.g. stores a loop entry label must follow). Each step
@@ -87,8 +87,11 @@ def cycles(orders, cpu):
     return [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
 
 
+W57 = float(opt.get("a57", 0))  # --a57=W: score A53 + W A57 (0: A57 breaks ties only)
+
+
 def score(orders):
-    return [a * 100000 + b for a, b in zip(cycles(orders, "cortex-a53"), cycles(orders, "cortex-a57"))]
+    return [int((a + W57 * b) * 100000 + b) for a, b in zip(cycles(orders, "cortex-a53"), cycles(orders, "cortex-a57"))]
 
 
 def window(order, i):
@@ -107,7 +110,8 @@ def moved(order, i, j):
 
 
 def show(s):
-    return f"A53 {s // 100000 / ITER:.2f} A57 {s % 100000 / ITER:.2f}"
+    b = s % 100000
+    return f"A53 {(s // 100000 - W57 * b) / ITER:.2f} A57 {b / ITER:.2f}"
 
 
 last = len(lines) - 1 if re.fullmatch(r"b(\..*)?|c?bn?z|tbn?z", lines[-1].split()[0]) else len(lines)  # a branch stays last
