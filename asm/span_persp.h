@@ -62,7 +62,7 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // ARM second-order last runs branch-free, from the quotient of one divide; on aarch64 that
 // quotient correctly rounded from a table of 1 / steps and two fused multiply-adds).
 // aarch64, spans of 17 .. 64 pixels: every sample's reciprocal first (second order: Newton
-// steps from frecpe, correctly rounded, proof in asm/span_persp_arm.h; linear: divides), then
+// steps from frecpe, correctly rounded, proof in asm/span_persp_a64short.h; linear: divides), then
 // the conversions (and second-order steps) in vectors, linear steps in integer registers,
 // then the runs (pairs as one fixed-register asm pass). Longer spans (linear over 48
 // pixels, second-order over 80): each pass of 32 pixels one pipeline of eight 4-pixel groups

@@ -1,0 +1,710 @@
+// asm/span_persp_a64short.h: the whole-span drawer's aarch64 short-span path (asm/span_persp.h):
+// persp_short_inl / persp_short for spans of 17 .. kShortMax pixels, and kShortMax (16
+// elsewhere: the long-span code). Internal: included at the end of asm/span_persp_arm.h
+// (it uses that file's last_steps and asm/span_persp_run.h's runs), which
+// asm/span_persp_fast.cpp includes (anonymous namespace: internal linkage).
+#pragma once
+#include <cstdint>
+#include <type_traits>
+
+#include "asm/span_persp.h"
+#include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include "asm/span_persp_a64pass.h"
+#endif
+
+namespace sb::simd {
+namespace {
+
+#if defined(__aarch64__)
+// aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position, depth
+// and reciprocal first (two 2-lane and one scalar; second order without a divide, linear steps
+// by fdiv: there the test below costs the A53 more than it saves), the conversions in
+// vectors; second order: the full runs' steps in vectors, the last run's by last_steps;
+// linear: every run's step in integer registers (steps16_packed, the last run's delta /
+// steps); all branch-free, then the runs drawn straight (pairs of runs as one short_pass,
+// asm/span_persp_a64pass.h). Positions as the walker computes
+// them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1, sample j + 2 at
+// P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j). Samples past the
+// last one (j > runs) are computed but unused; for a one-pixel last run the last sample is
+// unused too (steps 0 whatever the samples: run_steps). Each lane is the long-span vector
+// code's operation (see persp_fast): the same bits.
+//
+// The reciprocals 1 / zi without a divide (fdiv blocks an in-order core for ~30 cycles): for
+// b = max(zi, kMinZi) in [2^-30, 2^1000) every value below is normal, so each operation
+// rounds with relative error <= u = 2^-53 and everything scales with b's exponent: take b
+// in [1, 2), 1/b in (1/2, 1]. Round to nearest (the default FPCR, as the engine runs).
+//   y0 = frecpe(b): |b y0 - 1| = e0 < 2^-8.44 (ARM's 256-entry table; the test checks both
+//        ends of every interval at every exponent).
+//   y <- y frecps(b, y), twice (frecps = RN(2 - b y), fused): with b y = 1 + e the new
+//        e' = (1 - e^2)(1 + d1)(1 + d2) - 1, |e'| <= e^2 + 2.01 u: e1 < 2^-16.8, e2 < 2^-33.5.
+//   y3 = RN(v), v = y2 + y2 RN(1 - b y2) = (1/b)(1 - e2^2 - e2 d3 (1 + e2)): |v b - 1| <
+//        2^-66, so y3 is RN(1/b) or, when a rounding midpoint lies between v and 1/b, the
+//        other neighbour of that midpoint.
+//   z = RN(y3 + y3 r3), r3 = 1 - b y3 exact (fma: b y3 is a multiple of 2^-105 within 2^-52
+//        of 1), and y3 + y3 r3 = 1/b - b eps^2 with eps = 1/b - y3.
+// Midpoints in (1/2, 1) are odd multiples of 2^-54 and never 1/b (b m = 1 needs two powers
+// of two): |1/b - m| = j 2^-106 / b with j >= 1 an integer; below 1/2 they are 2^-55 from
+// it. z = RN(1/b) unless a midpoint lies in [1/b - b eps^2, 1/b):
+//   y3 = RN(1/b): |eps| <= 2^-54 and b eps^2 <= 2^-108 b < 2^-106 / b (b < 2): none.
+//   y3 above 1/b: z moves away from the midpoint between them, the next one is 2^-53 lower.
+//   y3 below 1/b = m + j 2^-106 / b (eps = 2^-54 + j 2^-106 / b, j < 2^40 as |v b - 1| <
+//        2^-66): none iff b eps < sqrt(j) 2^-53, i.e. b / 2 + j 2^-53 < sqrt(j): true for
+//        j >= 2, and for j = 1 unless b = 2 - 2^-52, a significand of all ones.
+// So the block divides when some zi has a significand of all ones ((bits + 1) << 12 = 0)
+// or zi >= 2^1000 (its bits compared; +inf too; fmaxnm already made NaN kMinZi): one
+// branch, almost never taken. Tests: AsmSpanPersp.ReciprocalWithoutDivide (the same
+// operations on 12M inputs: the hard cases next to midpoints, the frecpe table, random) and
+// AsmSpanPersp.ShortSpansDivideWhereTheReciprocalCannot (the fallback).
+constexpr int kShortMax = 64;
+alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
+constexpr uint64_t kBiasBits = 0x4338000000000000;  // 2^52 + 2^51 (the deltas' double bias)
+constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
+// Four runs (second order): the full runs' steps as above (D01, D23, dlo, dhi, ddlo, ddhi)
+// with the last run's vector part of last_steps interleaved: [du_3, dv_3] unbiased, div_steps'
+// quotient q (s = max(steps, 1), 1 <= s <= 16), lin = trunc(q), ddf = (q curve) -2, dd =
+// trunc(ddf) & (|ddf| < 1e9), curve = (zc / 2) (z_3 + z_4) as the walker's zc * 0.5 * zmk
+// (zs23 = [z_2 + z_3, z_3 + z_4]). One asm block, fixed registers, the order from
+// bench/mca_a53_persp/order_search.py on short_steps_k3.s (written here by to_inline.py).
+// AsmSpanPersp.ShortStepsK3MatchTheWalker checks it against steps16_dd and last_steps.
+struct ShortStepsK3 {
+  int32x4_t D01, D23;
+  int64x2_t dlo, dhi, ddlo, ddhi, lin, dd;
+};
+SB_INLINE ShortStepsK3 short_steps_k3(int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
+                                      float64x2_t zs23, int s, double zc) {
+    register int32x4_t rD01 __asm__("v0");
+    register int32x4_t rD23 __asm__("v7") = S44;
+    register int32x4_t rS01 __asm__("v5") = S01;
+    register int32x4_t rS23 __asm__("v19") = S23;
+    register float64x2_t rc01 __asm__("v3") = c01;
+    register float64x2_t rc23 __asm__("v16") = c23;
+    register float64x2_t rzs __asm__("v1") = zs23;
+    register double rsd __asm__("v30") = double(s);
+    register double rzc __asm__("v31") = zc * 0.5;
+    register int64x2_t rddhi __asm__("v2");
+    register int64x2_t rlin __asm__("v4");
+    register int64x2_t rdd __asm__("v6");
+    __asm__(
+// BEGIN short_steps_k3
+      "ext v0.16b, v5.16b, v19.16b, #8\n\t"
+      "ld1r {v6.2d}, [%[y]]\n\t"
+      "ext v7.16b, v19.16b, v7.16b, #8\n\t"
+      "ld1r {v17.2d}, [%[kb]]\n\t"
+      "sub v0.4s, v0.4s, v5.4s\n\t"
+      "sub v7.4s, v7.4s, v19.4s\n\t"
+      "ld1r {v2.2d}, [%[k1e9]]\n\t"
+      "ldp q18, q20, [%[kc]]\n\t"
+      "saddw v21.2d, v17.2d, v0.2s\n\t"
+      "saddw2 v22.2d, v17.2d, v0.4s\n\t"
+      "saddw2 v4.2d, v17.2d, v7.4s\n\t"
+      "saddw v23.2d, v17.2d, v7.2s\n\t"
+      "fsub v21.2d, v21.2d, v17.2d\n\t"
+      "fsub v22.2d, v22.2d, v17.2d\n\t"
+      "fsub v4.2d, v4.2d, v17.2d\n\t"
+      "fmul d31, d31, v1.d[1]\n\t"
+      "fsub v23.2d, v23.2d, v17.2d\n\t"
+      "abs v26.4s, v0.4s\n\t"
+      "fmul v21.2d, v21.2d, v3.d[0]\n\t"
+      "abs v27.4s, v7.4s\n\t"
+      "fmul v1.2d, v4.2d, v6.2d\n\t"
+      "sshr v24.4s, v0.4s, #31\n\t"
+      "sshr v25.4s, v7.4s, #31\n\t"
+      "fmul v23.2d, v23.2d, v16.d[0]\n\t"
+      "fcvtzs v21.2d, v21.2d\n\t"
+      "fmul v22.2d, v22.2d, v3.d[1]\n\t"
+      "fmls v4.2d, v1.2d, v30.d[0]\n\t"
+      "ushr v28.4s, v27.4s, #4\n\t"
+      "sqxtn v21.2s, v21.2d\n\t"
+      "fcvtzs v22.2d, v22.2d\n\t"
+      "ushr v17.4s, v26.4s, #4\n\t"
+      "fcvtzs v23.2d, v23.2d\n\t"
+      "fmla v1.2d, v4.2d, v6.2d\n\t"
+      "sqxtn v23.2s, v23.2d\n\t"
+      "eor v17.16b, v17.16b, v24.16b\n\t"
+      "sqxtn2 v21.4s, v22.2d\n\t"
+      "mov v3.16b, v26.16b\n\t"
+      "fmov v6.2d, #-2.0\n\t"
+      "mov v16.16b, v27.16b\n\t"
+      "abs v29.4s, v23.4s\n\t"
+      "fcvtzs v4.2d, v1.2d\n\t"
+      "fmul v1.2d, v1.2d, v31.d[0]\n\t"
+      "eor v31.16b, v23.16b, v25.16b\n\t"
+      "eor v30.16b, v21.16b, v24.16b\n\t"
+      "abs v22.4s, v21.4s\n\t"
+      "umin v29.4s, v29.4s, v20.4s\n\t"
+      "fmul v1.2d, v1.2d, v6.2d\n\t"
+      "sub v31.4s, v31.4s, v25.4s\n\t"
+      "sub v30.4s, v30.4s, v24.4s\n\t"
+      "sub v17.4s, v17.4s, v24.4s\n\t"
+      "mul v29.4s, v29.4s, v18.4s\n\t"
+      "umin v22.4s, v22.4s, v20.4s\n\t"
+      "facgt v6.2d, v2.2d, v1.2d\n\t"
+      "mls v16.4s, v31.4s, v18.s[0]\n\t"
+      "mls v3.4s, v30.4s, v18.s[0]\n\t"
+      "fcvtzs v1.2d, v1.2d\n\t"
+      "cmhs v29.4s, v27.4s, v29.4s\n\t"
+      "mul v22.4s, v22.4s, v18.4s\n\t"
+      "ushr v16.4s, v16.4s, #4\n\t"
+      "ushr v3.4s, v3.4s, #4\n\t"
+      "and v6.16b, v1.16b, v6.16b\n\t"
+      "eor v28.16b, v28.16b, v25.16b\n\t"
+      "cmhs v22.4s, v26.4s, v22.4s\n\t"
+      "and v23.16b, v23.16b, v29.16b\n\t"
+      "eor v16.16b, v16.16b, v25.16b\n\t"
+      "eor v3.16b, v3.16b, v24.16b\n\t"
+      "movi v26.2d, #0xffffffff00000000\n\t"
+      "sub v28.4s, v28.4s, v25.4s\n\t"
+      "and v21.16b, v21.16b, v22.16b\n\t"
+      "sub v16.4s, v16.4s, v25.4s\n\t"
+      "sub v3.4s, v3.4s, v24.4s\n\t"
+      "shl v24.2d, v21.2d, #32\n\t"
+      "shl v27.2d, v23.2d, #32\n\t"
+      "bit v28.16b, v16.16b, v29.16b\n\t"
+      "bit v17.16b, v3.16b, v22.16b\n\t"
+      "and v16.16b, v21.16b, v26.16b\n\t"
+      "and v2.16b, v23.16b, v26.16b\n\t"
+      "shl v25.2d, v28.2d, #32\n\t"
+      "and v3.16b, v17.16b, v26.16b\n\t"
+      "ssra v16.2d, v24.2d, #32\n\t"
+      "shl v24.2d, v17.2d, #32\n\t"
+      "and v1.16b, v28.16b, v26.16b\n\t"
+      "ssra v2.2d, v27.2d, #32\n\t"
+      "ssra v3.2d, v24.2d, #32\n\t"
+      "ssra v1.2d, v25.2d, #32"
+// END short_steps_k3
+        : "=&w"(rD01), "+&w"(rD23), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rsd), "+&w"(rzc), "=&w"(rddhi),
+          "=&w"(rlin), "=&w"(rdd)
+        : "w"(rS01), "w"(rS23), [kb] "r"(&kBiasBits), [kc] "r"(kShortConsts), [y] "r"(&kRecipSteps[s]),
+          [k1e9] "r"(&kOneE9), "m"(kBiasBits), "m"(kShortConsts), "m"(kRecipSteps), "m"(kOneE9)
+        : "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29");
+  return ShortStepsK3{rD01, rD23, vreinterpretq_s64_f64(rc01), vreinterpretq_s64_f64(rzs), vreinterpretq_s64_f64(rc23),
+                     rddhi, rlin, rdd};
+}
+template <bool kCurve>
+SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const double zc = p.second_order ? p.dzi : 0.0;
+  const uint32_t w = uint32_t(width);
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  // One asm block, each operation the vector code's lane operation (the same bits):
+  // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
+  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
+  // [u, v] products uvrow + uvx pos beside the depth chains; the reciprocals 1 / max(zi,
+  // kMinZi) (above: zA, zB in 2 lanes, zC scalar, the three chains level by level, the
+  // range and all-ones test in their latency gaps; the divides only on the branch), then
+  // the samples: to_fixed as fcvtzu #16 of (uv z), uqxtn, umin with [umax, vmax] (the
+  // clamp at 0 folded into the unsigned conversion; AsmSpanPersp.UnsignedFixedPoint...).
+  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
+  // for the in-order A53 (a consumer after its producer's latency; its model also completes
+  // in order, so each latency gap holds work of the same or shorter latency); the
+  // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
+  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
+  // Second order: the sums of neighbouring samples' z, zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
+  // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
+  // (the full runs' curve factors), also in the block (the conversions' latency gaps).
+  float64x2_t zs01 = vdupq_n_f64(0.0), zs23 = zs01, c01 = zs01, c23 = zs01;
+  int32x4_t S01, S23, S44;
+  double zck = 0.0;  // zc * -1/16 (second order: the runs' steps below), in the block's spare slots
+  if constexpr (kCurve) {
+    register float64x2_t rzs01 __asm__("v0");
+    register float64x2_t rzs23 __asm__("v1");
+    register float64x2_t rc01 __asm__("v3");
+    register float64x2_t rc23 __asm__("v16");
+    register int32x4_t rS01 __asm__("v5");
+    register int32x4_t rS23 __asm__("v19");
+    register int32x4_t rS44 __asm__("v7");
+    uint64_t t0, t1, t2, t5, t6, t7;
+    __asm__ volatile(
+        "sub %w[t5], %w[n], #1\n\t"
+        "cmp %w[t5], #32\n\t"
+        "mov %w[t7], #32\n\t"
+        "sub %w[t6], %w[n], #17\n\t"
+        "fmov d1, #16.0\n\t"
+        "ldr d0, [%[p], #48]\n\t"
+        "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+        "cmp %w[t6], #32\n\t"
+        "add %[t0], %[p], #16\n\t"
+        "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+        "ld1r {v26.2d}, [%[p]]\n\t"
+        "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+        "fadd d2, d0, d1\n\t"
+        "sub %w[t7], %w[n], #33\n\t"
+        "scvtf d5, %w[t6]\n\t"
+        "scvtf d4, %w[t5]\n\t"
+        "ld1r {v27.2d}, [%[p]]\n\t"
+        "trn1 v0.2d, v0.2d, v2.2d\n\t"
+        "fadd d3, d2, d1\n\t"
+        "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+        "fmov v1.2d, #1.0\n\t"
+        "scvtf d6, %w[t7]\n\t"
+        "trn1 v4.2d, v4.2d, v5.2d\n\t"
+        "ld1r {v31.2d}, [%[km]]\n\t"
+        "fmla v26.2d, v17.2d, v0.2d\n\t"
+        "fadd v7.2d, v0.2d, v4.2d\n\t"
+        "fadd d3, d3, d6\n\t"
+        "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+        "mov %[t5], #0xbfb0000000000000\n\t"
+        "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+        "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+        "fmla v27.2d, v17.2d, v7.2d\n\t"
+        "fmadd d28, d17, d3, d16\n\t"
+        "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+        "frecpe v2.2d, v26.2d\n\t"
+        "mov %[t2], v26.d[1]\n\t"
+        "fmov %d[zck], %[t5]\n\t"
+        "fmov %[t1], d26\n\t"
+        "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+        "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+        "fmaxnm d28, d28, d31\n\t"
+        "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+        "frecps v5.2d, v26.2d, v2.2d\n\t"
+        "frecpe v6.2d, v27.2d\n\t"
+        "frecpe d4, d28\n\t"
+        "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+        "fmax v31.2d, v26.2d, v27.2d\n\t"
+        "fmov %[t0], d28\n\t"
+        "fmov %[t7], d27\n\t"
+        "fmul v2.2d, v2.2d, v5.2d\n\t"
+        "frecps v16.2d, v27.2d, v6.2d\n\t"
+        "frecps d17, d28, d4\n\t"
+        "mov %[t6], v27.d[1]\n\t"
+        "fmaxp d31, v31.2d\n\t"
+        "add %[t1], %[t1], #1\n\t"
+        "add %[t0], %[t0], #1\n\t"
+        "lsl %[t1], %[t1], #12\n\t"
+        "lsl %[t0], %[t0], #12\n\t"
+        "add %[t6], %[t6], #1\n\t"
+        "frecps v5.2d, v26.2d, v2.2d\n\t"
+        "fmul d4, d4, d17\n\t"
+        "fmax d31, d31, d28\n\t"
+        "fmul v6.2d, v6.2d, v16.2d\n\t"
+        "add %[t2], %[t2], #1\n\t"
+        "add %[t7], %[t7], #1\n\t"
+        "lsl %[t2], %[t2], #12\n\t"
+        "lsl %[t6], %[t6], #12\n\t"
+        "lsl %[t7], %[t7], #12\n\t"
+        "frecps d17, d28, d4\n\t"
+        "frecps v16.2d, v27.2d, v6.2d\n\t"
+        "clz %[t1], %[t1]\n\t"
+        "clz %[t7], %[t7]\n\t"
+        "clz %[t6], %[t6]\n\t"
+        "fmul v2.2d, v2.2d, v5.2d\n\t"
+        "mov v5.16b, v1.16b\n\t"
+        "fmul %d[zck], %d[zc], %d[zck]\n\t"
+        "fmul d4, d4, d17\n\t"
+        "fmul v6.2d, v6.2d, v16.2d\n\t"
+        "mov v16.16b, v1.16b\n\t"
+        "fmov %[t5], d31\n\t"
+        "orr %[t7], %[t7], %[t6]\n\t"
+        "clz %[t2], %[t2]\n\t"
+        "orr %[t1], %[t1], %[t2]\n\t"
+        "fmsub d17, d28, d4, d1\n\t"
+        "fmls v5.2d, v26.2d, v2.2d\n\t"
+        "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+        "fmls v16.2d, v27.2d, v6.2d\n\t"
+        "orr %[t1], %[t1], %[t7]\n\t"
+        "clz %[t0], %[t0]\n\t"
+        "lsr %[t5], %[t5], #52\n\t"
+        "fmla v2.2d, v2.2d, v5.2d\n\t"
+        "fmadd d4, d4, d17, d4\n\t"
+        "fmla v6.2d, v6.2d, v16.2d\n\t"
+        "mov v5.16b, v1.16b\n\t"
+        "mov v16.16b, v1.16b\n\t"
+        "add %[t5], %[t5], #0x19\n\t"
+        "orr %[t1], %[t1], %[t0]\n\t"
+        "lsr %[t5], %[t5], #5\n\t"
+        "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+        "fmls v5.2d, v26.2d, v2.2d\n\t"
+        "fmls v16.2d, v27.2d, v6.2d\n\t"
+        "fmsub d17, d28, d4, d1\n\t"
+        "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+        "orr %[t1], %[t1], %[t5]\n\t"
+        "fmla v2.2d, v2.2d, v5.2d\n\t"
+        "fmla v6.2d, v6.2d, v16.2d\n\t"
+        "fmadd d4, d4, d17, d4\n\t"
+        "tbz %[t1], #6, 2f\n\t"
+        "fdiv v2.2d, v1.2d, v26.2d\n\t"
+        "fdiv v6.2d, v1.2d, v27.2d\n\t"
+        "fdiv d4, d1, d28\n\t"
+        "2:\n\t"
+        "ext v1.16b, v6.16b, v4.16b, #8\n\t"
+        "fmul v22.2d, v22.2d, v6.d[0]\n\t"
+        "fmul v18.2d, v18.2d, v2.d[0]\n\t"
+        "fmul v24.2d, v24.2d, v6.d[1]\n\t"
+        "fmul v29.2d, v29.2d, v4.d[0]\n\t"
+        "fmul v20.2d, v20.2d, v2.d[1]\n\t"
+        "add %[t0], %[p], #56\n\t"
+        "fcvtzu v18.2d, v18.2d, #16\n\t"
+        "ext v0.16b, v2.16b, v6.16b, #8\n\t"
+        "fcvtzu v22.2d, v22.2d, #16\n\t"
+        "fcvtzu v29.2d, v29.2d, #16\n\t"
+        "fcvtzu v20.2d, v20.2d, #16\n\t"
+        "fcvtzu v24.2d, v24.2d, #16\n\t"
+        "uqxtn v5.2s, v18.2d\n\t"
+        "fadd v0.2d, v2.2d, v0.2d\n\t"
+        "uqxtn v19.2s, v22.2d\n\t"
+        "uqxtn v7.2s, v29.2d\n\t"
+        "fadd v1.2d, v6.2d, v1.2d\n\t"
+        "ld1r {v31.2d}, [%[t0]]\n\t"
+        "uqxtn2 v5.4s, v20.2d\n\t"
+        "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
+        "uqxtn2 v19.4s, v24.2d\n\t"
+        "uqxtn2 v7.4s, v29.2d\n\t"
+        "umin v5.4s, v5.4s, v31.4s\n\t"
+        "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
+        "umin v19.4s, v19.4s, v31.4s\n\t"
+        "umin v7.4s, v7.4s, v31.4s"
+        : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
+          [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
+        : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(kCurve ? zc : 0.0), "m"(p), "m"(kMinZi)
+        : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
+          "v29", "v30", "v31");
+    zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
+    S01 = rS01, S23 = rS23, S44 = rS44;
+  } else {
+    // Linear steps: the divides (the reciprocals' test costs the in-order A53 more than
+    // they save here: no multiply for zck to hide).
+    register float64x2_t rzA __asm__("v26");
+    register float64x2_t rzB __asm__("v27");
+    register float64x2_t rzC __asm__("v4");
+    register int32x4_t rS01 __asm__("v5");
+    register int32x4_t rS23 __asm__("v6");
+    register int32x4_t rS44 __asm__("v7");
+    uint64_t t0, t5, t6, t7;
+    __asm__ volatile(
+        "fmov d1, #16.0\n\t"
+        "ldr d0, [%[p], #48]\n\t"
+        "sub %w[t5], %w[n], #1\n\t"
+        "sub %w[t6], %w[n], #17\n\t"
+        "cmp %w[t5], #32\n\t"
+        "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+        "mov %w[t7], #32\n\t"
+        "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+        "cmp %w[t6], #32\n\t"
+        "fadd d2, d0, d1\n\t"
+        "ld1r {v26.2d}, [%[p]]\n\t"
+        "add %[t0], %[p], #16\n\t"
+        "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+        "ld1r {v27.2d}, [%[p]]\n\t"
+        "sub %w[t7], %w[n], #33\n\t"
+        "scvtf d4, %w[t5]\n\t"
+        "scvtf d5, %w[t6]\n\t"
+        "fadd d3, d2, d1\n\t"
+        "trn1 v0.2d, v0.2d, v2.2d\n\t"
+        "scvtf d6, %w[t7]\n\t"
+        "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+        "trn1 v4.2d, v4.2d, v5.2d\n\t"
+        "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+        "fadd d3, d3, d6\n\t"
+        "ld1r {v31.2d}, [%[km]]\n\t"
+        "fadd v7.2d, v0.2d, v4.2d\n\t"
+        "fmla v26.2d, v17.2d, v0.2d\n\t"
+        "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+        "fmov v1.2d, #1.0\n\t"
+        "fmadd d28, d17, d3, d16\n\t"
+        "fmla v27.2d, v17.2d, v7.2d\n\t"
+        "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+        "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+        "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+        "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+        "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+        "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+        "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+        "fdiv v26.2d, v1.2d, v26.2d\n\t"
+        "fmaxnm d28, d28, d31\n\t"
+        "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+        "fdiv v27.2d, v1.2d, v27.2d\n\t"
+        "fmul v18.2d, v18.2d, v26.d[0]\n\t"
+        "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+        "fdiv d28, d1, d28\n\t"
+        "fmul v24.2d, v24.2d, v27.d[1]\n\t"
+        "fmul v22.2d, v22.2d, v27.d[0]\n\t"
+        "fmul v20.2d, v20.2d, v26.d[1]\n\t"
+        "add %[t0], %[p], #56\n\t"
+        "fmul v29.2d, v29.2d, v28.d[0]\n\t"
+        "fcvtzu v18.2d, v18.2d, #16\n\t"
+        "fcvtzu v22.2d, v22.2d, #16\n\t"
+        "fcvtzu v29.2d, v29.2d, #16\n\t"
+        "uqxtn v5.2s, v18.2d\n\t"
+        "uqxtn v6.2s, v22.2d\n\t"
+        "fcvtzu v24.2d, v24.2d, #16\n\t"
+        "fcvtzu v20.2d, v20.2d, #16\n\t"
+        "uqxtn v7.2s, v29.2d\n\t"
+        "ld1r {v31.2d}, [%[t0]]\n\t"
+        "uqxtn2 v5.4s, v20.2d\n\t"
+        "uqxtn2 v6.4s, v24.2d\n\t"
+        "uqxtn2 v7.4s, v29.2d\n\t"
+        "umin v5.4s, v5.4s, v31.4s\n\t"
+        "umin v6.4s, v6.4s, v31.4s\n\t"
+        "umin v7.4s, v7.4s, v31.4s"
+        : "=&w"(rzA), "=&w"(rzB), "=&w"(rzC), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t5] "=&r"(t5),
+          [t6] "=&r"(t6), [t7] "=&r"(t7)
+        : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
+        : "cc", "v0", "v1", "v2", "v3", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
+          "v28", "v29", "v30", "v31");
+    S01 = rS01, S23 = rS23, S44 = rS44;
+  }
+  // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
+  // picked without an index. The branch also ends the code block holding the asm block
+  // soon after it (under 128 micro-ops: the A72 model's reorder buffer then holds the next
+  // span's positions while the divides run).
+  auto rest = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    // Full runs 0, 1, 2: deltas D01 = [du_0, dv_0, du_1, dv_1], D23 = [du_2, dv_2, du_3, dv_3]
+    // (run 3 only as the last run), and the full runs' packed steps dlo (runs 0, 1), dhi
+    // (runs 2, 3), ddlo, ddhi (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64).
+    int32x4_t D01, D23;
+    int64x2_t dlo, dhi, ddlo, ddhi;
+    int64x2_t lin3 = vdupq_n_s64(0), dd3 = lin3;  // k = 3: the last run's last_steps vector results
+    // Deltas as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x (saddw,
+    // |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus 2^52 + 2^51
+    // it is x exactly (x = 0: +0, as scvtf).
+    const int64x2_t kBias = vdupq_n_s64(0x4338000000000000);
+    auto unbias = [&](int64x2_t b) SB_LAMBDA_INLINE {
+      return vsubq_f64(vreinterpretq_f64_s64(b), vreinterpretq_f64_s64(kBias));
+    };
+    if constexpr (kCurve) {
+      // One asm block, the two vectors' chains interleaved for the in-order A53, per lane:
+      // ddf = delta (zck (z_a + z_b)) (c01, c23 above; steps16_sel's bits, see persp_fast),
+      // dd = cvt_sat(ddf) as fcvtzs to int64 then sqxtn (both saturating, NaN -> 0: the same
+      // int32; [du_3, dv_3]'s dd 0), then steps16_dd's 32-bit form: s = delta >> 31, pd =
+      // |delta|, pdd = dd mirrored ((dd ^ s) - s); accept = min(|dd|, 2^25) 120 <= pd in
+      // uint32 (no wrap: 120 2^25 < 2^32; |dd| >= 2^25 rejects either way, as 120 2^25 >
+      // 2^31 > pd); d = accept ? mirror((pd - 120 pdd) >> 4) : mirror(pd >> 4) (both
+      // computed, then picked by bit: the pick waits on the test only), dd & accept. Packed:
+      // (x & (2^64 - 2^32)) + (x << 32 >> 32, arithmetic) of each 64-bit lane x = [du, dv].
+      if constexpr (k == 3) {
+        // Four runs: the same with the last run's last_steps vector part (short_steps_k3).
+        const ShortStepsK3 r = short_steps_k3(S01, S23, S44, c01, c23, zs23, last > 2 ? last - 1 : 1, zc);
+        D01 = r.D01, D23 = r.D23, dlo = r.dlo, dhi = r.dhi, ddlo = r.ddlo, ddhi = r.ddhi;
+        lin3 = r.lin, dd3 = r.dd;
+      } else {
+      D23 = S44;
+      int64x2_t c01b = vreinterpretq_s64_f64(c01), c23b = vreinterpretq_s64_f64(c23);
+      __asm__(
+          "ld1r {v17.2d}, [%[kb]]\n\t"
+          "ext %[d01].16b, %[s01].16b, %[s23].16b, #8\n\t"
+          "ext %[d23].16b, %[s23].16b, %[d23].16b, #8\n\t"
+          "ldp q18, q20, [%[kc]]\n\t"
+          "sub %[d01].4s, %[d01].4s, %[s01].4s\n\t"
+          "sub %[d23].4s, %[d23].4s, %[s23].4s\n\t"
+          "saddw v21.2d, v17.2d, %[d01].2s\n\t"
+          "saddw2 v22.2d, v17.2d, %[d01].4s\n\t"
+          "saddw v23.2d, v17.2d, %[d23].2s\n\t"
+          "sshr v24.4s, %[d01].4s, #31\n\t"
+          "sshr v25.4s, %[d23].4s, #31\n\t"
+          "fsub v21.2d, v21.2d, v17.2d\n\t"
+          "fsub v22.2d, v22.2d, v17.2d\n\t"
+          "fsub v23.2d, v23.2d, v17.2d\n\t"
+          "abs v26.4s, %[d01].4s\n\t"
+          "abs v27.4s, %[d23].4s\n\t"
+          "fmul v21.2d, v21.2d, %[dlo].d[0]\n\t"
+          "fmul v22.2d, v22.2d, %[dlo].d[1]\n\t"
+          "fmul v23.2d, v23.2d, %[ddlo].d[0]\n\t"
+          "ushr v17.4s, v26.4s, #4\n\t"
+          "ushr v28.4s, v27.4s, #4\n\t"
+          "fcvtzs v21.2d, v21.2d\n\t"
+          "fcvtzs v22.2d, v22.2d\n\t"
+          "fcvtzs v23.2d, v23.2d\n\t"
+          "eor v17.16b, v17.16b, v24.16b\n\t"
+          "eor v28.16b, v28.16b, v25.16b\n\t"
+          "sqxtn v21.2s, v21.2d\n\t"
+          "sqxtn v23.2s, v23.2d\n\t"
+          "sub v17.4s, v17.4s, v24.4s\n\t"
+          "sub v28.4s, v28.4s, v25.4s\n\t"
+          "sqxtn2 v21.4s, v22.2d\n\t"
+          "abs v29.4s, v23.4s\n\t"
+          "eor v31.16b, v23.16b, v25.16b\n\t"
+          "abs v22.4s, v21.4s\n\t"
+          "eor v30.16b, v21.16b, v24.16b\n\t"
+          "umin v29.4s, v29.4s, v20.4s\n\t"
+          "sub v31.4s, v31.4s, v25.4s\n\t"
+          "umin v22.4s, v22.4s, v20.4s\n\t"
+          "sub v30.4s, v30.4s, v24.4s\n\t"
+          "mul v29.4s, v29.4s, v18.4s\n\t"
+          "mov %[dlo].16b, v26.16b\n\t"
+          "mul v22.4s, v22.4s, v18.4s\n\t"
+          "mov %[ddlo].16b, v27.16b\n\t"
+          "mls %[ddlo].4s, v31.4s, v18.s[0]\n\t"
+          "mls %[dlo].4s, v30.4s, v18.s[0]\n\t"
+          "cmhs v29.4s, v27.4s, v29.4s\n\t"
+          "cmhs v22.4s, v26.4s, v22.4s\n\t"
+          "ushr %[ddlo].4s, %[ddlo].4s, #4\n\t"
+          "ushr %[dlo].4s, %[dlo].4s, #4\n\t"
+          "and v23.16b, v23.16b, v29.16b\n\t"
+          "and v21.16b, v21.16b, v22.16b\n\t"
+          "eor %[ddlo].16b, %[ddlo].16b, v25.16b\n\t"
+          "eor %[dlo].16b, %[dlo].16b, v24.16b\n\t"
+          "movi v26.2d, #0xffffffff00000000\n\t"
+          "shl v27.2d, v23.2d, #32\n\t"
+          "sub %[ddlo].4s, %[ddlo].4s, v25.4s\n\t"
+          "sub %[dlo].4s, %[dlo].4s, v24.4s\n\t"
+          "shl v24.2d, v21.2d, #32\n\t"
+          "and %[ddhi].16b, v23.16b, v26.16b\n\t"
+          "bit v28.16b, %[ddlo].16b, v29.16b\n\t"
+          "bit v17.16b, %[dlo].16b, v22.16b\n\t"
+          "and %[ddlo].16b, v21.16b, v26.16b\n\t"
+          "ssra %[ddhi].2d, v27.2d, #32\n\t"
+          "shl v25.2d, v28.2d, #32\n\t"
+          "ssra %[ddlo].2d, v24.2d, #32\n\t"
+          "shl v24.2d, v17.2d, #32\n\t"
+          "and %[dhi].16b, v28.16b, v26.16b\n\t"
+          "and %[dlo].16b, v17.16b, v26.16b\n\t"
+          "ssra %[dhi].2d, v25.2d, #32\n\t"
+          "ssra %[dlo].2d, v24.2d, #32"
+          : [d01] "=&w"(D01), [d23] "+&w"(D23), [dlo] "+&w"(c01b), [ddlo] "+&w"(c23b), [dhi] "=&w"(dhi),
+            [ddhi] "=&w"(ddhi)
+          : [s01] "w"(S01), [s23] "w"(S23), [kb] "r"(&kBiasBits), [kc] "r"(kShortConsts), "m"(kBiasBits),
+            "m"(kShortConsts)
+          : "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30", "v31");
+      dlo = c01b, ddlo = c23b;
+      }
+    } else {
+      D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
+      D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
+      // delta / 16 truncated: (delta + (delta < 0 ? 15 : 0)) >> 4.
+      auto div16 = [](int32x4_t x) SB_LAMBDA_INLINE {
+        return vshrq_n_s32(vreinterpretq_s32_u32(vsraq_n_u32(vreinterpretq_u32_s32(x),
+                                                             vreinterpretq_u32_s32(vshrq_n_s32(x, 31)), 28)), 4);
+      };
+      const int32x4_t d01 = div16(D01), d23 = div16(D23);
+      // The full runs' packed steps, for runs 0, 1 and 2, 3.
+      const int32x4_t U = vuzp1q_s32(d01, d23), V = vuzp2q_s32(d01, d23);
+      dlo = vaddq_s64(vmovl_s32(vget_low_s32(U)), vshll_n_s32(vget_low_s32(V), 32));
+      dhi = vaddq_s64(vmovl_high_s32(U), vshll_high_n_s32(V, 32));
+      ddlo = ddhi = vdupq_n_s64(0);
+    }
+    // The full runs' packed starts (a sample's [u, v] lane pair is v 2^32 + u).
+    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+    // The last run's start (sample k: one 64-bit lane, v 2^32 + u) and z_k + z_{k+1}.
+    const uint64_t xk = vgetq_lane_u64(k < 2 ? st01 : st23, k & 1);
+    const int32_t au = int32_t(uint32_t(xk)), av = int32_t(xk >> 32);
+    const double zmk = vgetq_lane_f64(k < 2 ? zs01 : zs23, k & 1);
+    RunSteps lu, lv;
+    // The last run's deltas from D01, D23 (lanes 2 k - 2, 2 k - 1 of the pair) as doubles
+    // (unbias) and as integers: one 64-bit lane move (dv 2^32 + du), split in the integer unit.
+    const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
+                                         : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
+    const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
+    if constexpr (kCurve && k == 3) {
+      last_steps_dd(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), lin3, dd3, &lu, &lv);
+    } else if constexpr (kCurve) {
+      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zmk, &lu, &lv);
+    } else {
+      // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one
+      // 32-bit divide each; steps 0 (a one-pixel last run) draws no step: any divisor.
+      const int32_t s = last > 2 ? last - 1 : 1;
+      lu = RunSteps{int32_t(uint32_t(dk)) / s, 0};
+      lv = RunSteps{int32_t(dk >> 32) / s, 0};
+    }
+    auto full = [&](auto jc) SB_LAMBDA_INLINE {
+      constexpr int j = decltype(jc)::value, l = j & 1;
+      const uint64_t a0 = vgetq_lane_u64(j < 2 ? st01 : st23, l);
+      const uint64_t d0 = uint64_t(vgetq_lane_s64(j < 2 ? dlo : dhi, l));
+      const uint64_t dd = uint64_t(vgetq_lane_s64(j < 2 ? ddlo : ddhi, l));
+      Run16<kCurve> run(a0, d0, dd, typename Run16<kCurve>::Packed{});
+      run.draw(dest + 16 * j, texels, w);
+    };
+    // Two 16-pixel runs as one pass: the long spans' pipeline without stage work, in one asm
+    // block (asm/span_persp_a64pass.h).
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t a_dd, uint64_t b_uv, uint64_t b_d,
+                    uint64_t b_dd) SB_LAMBDA_INLINE {
+      short_pass<kCurve>(d, texels, uint64_t(width), a_uv, a_d, a_dd, b_uv, b_d, b_dd);
+    };
+    auto packed = [](const RunSteps& su, const RunSteps& sv) {
+      return (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
+    };
+    const uint64_t luv = xk;
+    const uint64_t ld = packed(lu, lv), ldd = (uint64_t(uint32_t(lv.dd)) << 32) + uint64_t(int64_t(lu.dd));
+    if (k == 1) {
+      full(std::integral_constant<int, 0>{});
+    } else {
+      pass(dest, vgetq_lane_u64(st01, 0), uint64_t(vgetq_lane_s64(dlo, 0)), uint64_t(vgetq_lane_s64(ddlo, 0)),
+           vgetq_lane_u64(st01, 1), uint64_t(vgetq_lane_s64(dlo, 1)), uint64_t(vgetq_lane_s64(ddlo, 1)));
+      if (k == 3 && last == 16) {
+        pass(dest + 32, vgetq_lane_u64(st23, 0), uint64_t(vgetq_lane_s64(dhi, 0)), uint64_t(vgetq_lane_s64(ddhi, 0)),
+             luv, ld, ldd);
+        return;
+      }
+      if (k > 2) full(std::integral_constant<int, 2>{});
+    }
+    dest += 16 * k;
+    if (last == 16) {
+      draw16<kCurve>(dest, texels, w, au, av, lu, lv);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+               uint32_t(lv.dd));
+    }
+  };
+  // Linear steps: the samples' packed [u, v] (v 2^32 + u, clamped: 0 <= u, v < 2^31) moved
+  // to integer registers, each full run's step steps16_packed's delta / 16, the last run's
+  // delta / steps (32-bit divides; steps 0, a one-pixel last run, draws no step): in the
+  // integer unit, not a chain of vector ops (the A53 waits out each one's latency).
+  auto rest_lin = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
+    const uint64_t x[5] = {vgetq_lane_u64(st01, 0), vgetq_lane_u64(st01, 1), vgetq_lane_u64(st23, 0),
+                           vgetq_lane_u64(st23, 1), vgetq_lane_u64(vreinterpretq_u64_s32(S44), 0)};
+    const uint64_t xa = x[k], xb = x[k + 1];
+    const int32_t s = last > 2 ? last - 1 : 1;
+    const int32_t ldu = (int32_t(uint32_t(xb)) - int32_t(uint32_t(xa))) / s;
+    const int32_t ldv = (int32_t(xb >> 32) - int32_t(xa >> 32)) / s;
+    const uint64_t ld = (uint64_t(uint32_t(ldv)) << 32) + uint64_t(int64_t(ldu));
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
+      short_pass<false>(d, texels, uint64_t(width), a_uv, a_d, 0, b_uv, b_d, 0);
+    };
+    if (k == 1) {
+      Run16<false> run(x[0], steps16_packed(x[0], x[1]), 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      const uint64_t d1 = steps16_packed(x[1], x[2]);
+      if (k == 3 && last == 16) {
+        pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
+        pass(dest + 32, x[2], steps16_packed(x[2], x[3]), x[3], ld);
+        return;
+      }
+      pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
+      if (k > 2) {
+        Run16<false> run(x[2], steps16_packed(x[2], x[3]), 0, typename Run16<false>::Packed{});
+        run.draw(dest + 32, texels, w);
+      }
+    }
+    dest += 16 * k;
+    if (last == 16) {
+      Run16<false> run(xa, ld, 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), uint32_t(ldu), uint32_t(ldv), 0, 0);
+    }
+  };
+  auto go = [&](auto kc) SB_LAMBDA_INLINE {
+    if constexpr (kCurve) {
+      rest(kc);
+    } else {
+      rest_lin(kc);
+    }
+  };
+  if (runs == 2) {
+    go(std::integral_constant<int, 1>{});
+  } else if (runs == 3) {
+    go(std::integral_constant<int, 2>{});
+  } else {
+    go(std::integral_constant<int, 3>{});
+  }
+}
+// The same, out of line (persp_fast's linear instance keeps a call to it); the
+// dispatcher (surface_span_persp_fast) inlines persp_short_inl.
+template <bool kCurve>
+void persp_short(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  persp_short_inl<kCurve>(dest, n, texels, width, p);
+}
+#else
+constexpr int kShortMax = 16;  // elsewhere the long-span code (its overlap wins there)
+template <bool kCurve>
+void persp_short(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+template <bool kCurve>
+void persp_short_inl(uint8_t*, int, const uint8_t*, int, const PerspSpan&) {}
+#endif
+
+}  // namespace
+}  // namespace sb::simd
