@@ -1,0 +1,151 @@
+// asm/neon_block_mip3l.h: the mip-3 surface block builder's lean path on AArch64 (the
+// neon_a53 variant): textures whose width divides 16 (a power of two <= 16: mip 3 of the
+// 64- and 128-wide textures) and whose height is a power of two <= 64, surfaces whose width
+// is a multiple of 16. Only asm/neon.cpp includes this (after asm/neon_block_mip3.h, whose
+// band loop it shares).
+//
+// Every group reads the same 16 laid-out bytes of a texture row (byte k: texel (c0 + k) mod
+// tw), so the th rows are laid out once, in texture order, 16 bytes each: buf + 16 t holds
+// texture row t, buf aligned to twice the buffer's size P = 16 th. The band loop reads its
+// two texel rows at x5 and x5 + 16 and steps x5 by 32 and back by P at the end (x5 & ~P: the
+// rows start at an even row, so a band's pair never straddles the end): no row pointers, no
+// per-row tiling. One 16-byte load covers 16 / tw texture rows, each laid out by one table
+// lookup (indices (c0 + k) mod tw + j tw): every read stays inside the texture.
+#pragma once
+#include <arm_neon.h>
+
+#include <cstdint>
+
+#include "asm/neon_block_mip3.h"
+#include "asm/variants.h"
+
+namespace sb::simd::detail {
+namespace {
+
+#if defined(__aarch64__)
+
+// The band macros' texel-row hooks (asm/neon_block_mip3.h): rows at x5, x5 + 16; x5 += 32,
+// wrapped by x28 = ~P.
+#define SB_MIP3_TP ""
+#define SB_MIP3_TA "ldr q24, [x5]\n\t"
+#define SB_MIP3_TB "ldr q25, [x5, #16]\n\t"
+#define SB_MIP3_TC "add x5, x5, #32\n\t"
+#define SB_MIP3_TD "and x5, x5, x28\n\t"
+
+// The column loop over n >= 1 groups (16 texels wide, bh >= 1 bands): group k writes d + 16 k
+// (row stride w) from grid entries 8 k.. of rows g0 + 16 k bytes (row stride gst), texel rows
+// from t0 (buf + 16 t0 = surface row 0's, x28 = ~P: above). x0-x30 all serve the band loop:
+// the groups' state lives in a stack frame: [sp] output, groups left, grid row 0, t0, bands,
+// (unused), rows 2 and 3's offsets (clamped to bh).
+__attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, uint8_t* d, int64_t w,
+                                                            const uint16_t* g0, int64_t gst, int64_t bh,
+                                                            const uint8_t* t0, int64_t notp, int64_t n) {
+  register const uint8_t* x0 asm("x0") = cm;
+  register uint8_t* x1 asm("x1") = d;
+  register int64_t x2 asm("x2") = w;
+  register int64_t x4 asm("x4") = gst;
+  register const uint16_t* x6 asm("x6") = g0;
+  register int64_t x10 asm("x10") = n;
+  register int64_t x11 asm("x11") = (bh < 3 ? bh : 3) * gst;
+  register const uint8_t* x12 asm("x12") = t0;
+  register int64_t x28 asm("x28") = notp;
+  register int64_t x13 asm("x13") = bh;
+  register int64_t x14 asm("x14") = (bh < 2 ? bh : 2) * gst;
+  asm volatile(
+      "sub sp, sp, #64\n\t"
+      "stp x1, x10, [sp]\n\t"
+      "stp x6, x12, [sp, #16]\n\t"
+      "str x13, [sp, #32]\n\t"
+      "stp x14, x11, [sp, #48]\n\t"
+      "mov x10, x14\n\t"
+      "movi v31.8h, #0xff\n\t"
+      "mov x27, #0xffff\n"
+      "3:\n\t"  // (a group enters with x1, x6, x10, x11 set)
+      "add x7, x6, x4\n\t"
+      "ldr q16, [x6]\n\t"
+      "add x8, x6, x10\n\t"
+      "ldur q22, [x6, #2]\n\t"
+      "add x3, x6, x11\n\t"
+      "ldr q17, [x7]\n\t"
+      "ldur q23, [x7, #2]\n\t"
+      "ldr q18, [x8]\n\t"
+      "add v19.8h, v16.8h, v22.8h\n\t"
+      "ldur q22, [x8, #2]\n\t"
+      "add v20.8h, v17.8h, v23.8h\n\t"
+      "ldp x5, x30, [sp, #24]\n\t"
+      "ldr q24, [x5]\n\t"
+      "ldr q25, [x5, #16]\n\t"
+      "add x5, x5, #32\n\t"
+      "and x5, x5, x28\n\t"
+      SB_MIP3_ENTRY "b.eq 9f\n\t"
+      "b 1f\n\t"
+      ".p2align 11\n\t"  // (the band loop, about 1.3 KiB, then never straddles a page)
+      "1:\n\t" SB_MIP3_BAND1 "b.eq 9f\n\t" SB_MIP3_BAND2 "b.eq 9f\n\t" SB_MIP3_BAND0 "b.ne 1b\n\t"
+      "9:\n\t"
+      "stp d4, d5, [x1]\n\t"
+      "add x1, x1, x2\n\t"
+      "stp d6, d7, [x1]\n\t"
+      "ldp x1, x10, [sp]\n\t"
+      "ldr x6, [sp, #16]\n\t"
+      "add x1, x1, #16\n\t"
+      "add x6, x6, #16\n\t"
+      "subs x10, x10, #1\n\t"
+      "stp x1, x10, [sp]\n\t"
+      "str x6, [sp, #16]\n\t"
+      "ldp x10, x11, [sp, #48]\n\t"
+      "b.ne 3b\n\t"
+      "add sp, sp, #64\n\t"
+      : "+r"(x1), "+r"(x6), "+r"(x10), "+r"(x11), "+r"(x12), "+r"(x13), "+r"(x14)
+      : "r"(x0), "r"(x2), "r"(x4), "r"(x28)
+      : "x3", "x5", "x7", "x8", "x9", "x15", "x16", "x17", "x18", "x19", "x20", "x21", "x22", "x23", "x24", "x25",
+        "x26", "x27", "x30", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20",
+        "v21", "v22", "v23", "v24", "v25", "v31", "cc", "memory");
+}
+
+#undef SB_MIP3_TP
+#undef SB_MIP3_TA
+#undef SB_MIP3_TB
+#undef SB_MIP3_TC
+#undef SB_MIP3_TD
+
+// The shapes the lean builder takes (the rest go to surface_block_mip3).
+inline bool mip3_p16_fits(int tw, int th, int width) {
+  return tw <= 16 && (tw & (tw - 1)) == 0 && th >= 2 && th <= 64 && (th & (th - 1)) == 0 && tw * th >= 16 &&
+         (width & 15) == 0;
+}
+
+// Lays out the texture's th rows (16 / K wide: K rows a 16-byte load) at buf.
+template <int K>
+__attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint8_t* texels, int th, uint8x16_t period) {
+  uint8x16_t idx[K];
+#pragma GCC unroll 8
+  for (int j = 0; j < K; ++j) idx[j] = vaddq_u8(period, vdupq_n_u8(uint8_t(j * (16 / K))));
+  const uint8_t* const end = texels + 16 / K * th;
+  for (const uint8_t* r = texels; r != end; r += 16, buf += 16 * K) {
+    const uint8x16_t v = vld1q_u8(r);
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * j, vqtbl1q_u8(v, idx[j]));
+  }
+}
+
+// The lean mip-3 builder (asm/surface_block.h's contract at mip 3, width > 0, height > 0,
+// mip3_p16_fits(tw, th, width)).
+__attribute__((noinline)) void surface_block_mip3_p16(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
+                                                      int th, int soff, int toff, int width, int height,
+                                                      const uint8_t* colormap, uint8_t* out) {
+  alignas(2048) uint8_t buf[1024];
+  const uint8x16_t period = vandq_u8(vaddq_u8(vld1q_u8(kMip3Iota), vdupq_n_u8(uint8_t(soff))), vdupq_n_u8(uint8_t(tw - 1)));
+  switch (tw) {
+    case 2: mip3_lay_p16<8>(buf, texels, th, period); break;
+    case 4: mip3_lay_p16<4>(buf, texels, th, period); break;
+    case 8: mip3_lay_p16<2>(buf, texels, th, period); break;
+    default: mip3_lay_p16<1>(buf, texels, th, period); break;
+  }
+  mip3_columns_p16(colormap, out, width, grid, 2 * int64_t(gw), height >> 1, buf + 16 * (toff & (th - 1)),
+                   ~int64_t(16 * th), width >> 4);
+}
+
+#endif  // __aarch64__
+
+}  // namespace
+}  // namespace sb::simd::detail
