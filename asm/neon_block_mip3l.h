@@ -34,9 +34,9 @@ namespace {
 
 // The column loop over n >= 1 groups (16 texels wide, bh >= 1 bands): group k writes d + 16 k
 // (row stride w) from grid entries 8 k.. of rows g0 + 16 k bytes (row stride gst), texel rows
-// from t0 (buf + 16 t0 = surface row 0's, x28 = ~P: above). x0-x30 all serve the band loop:
-// the groups' state lives in a stack frame: [sp] output, groups left, grid row 0, t0, bands,
-// (unused), rows 2 and 3's offsets (clamped to bh).
+// from t0 (buf + 16 t0 = surface row 0's, x28 = ~P: above). The bands leave x6 (grid row 0)
+// and x7 (groups left) alone; the rest of the groups' state lives in a stack frame: [sp]
+// output, (unused x2), t0, bands, (unused), rows 2 and 3's offsets (clamped to bh).
 __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, uint8_t* d, int64_t w,
                                                             const uint16_t* g0, int64_t gst, int64_t bh,
                                                             const uint8_t* t0, int64_t notp, int64_t n) {
@@ -53,21 +53,21 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
   register int64_t x14 asm("x14") = (bh < 2 ? bh : 2) * gst;
   asm volatile(
       "sub sp, sp, #64\n\t"
-      "stp x1, x10, [sp]\n\t"
-      "stp x6, x12, [sp, #16]\n\t"
-      "str x13, [sp, #32]\n\t"
+      "str x1, [sp]\n\t"
+      "stp x12, x13, [sp, #24]\n\t"
       "stp x14, x11, [sp, #48]\n\t"
+      "mov x7, x10\n\t"
       "mov x10, x14\n\t"
       "movi v31.8h, #0xff\n\t"
       "mov x27, #0xffff\n"
-      "3:\n\t"  // (a group enters with x1, x6, x10, x11 set)
-      "add x7, x6, x4\n\t"
+      "3:\n\t"  // (a group enters with x1, x6, x7, x10, x11 set; the bands keep x6, x7)
+      "add x9, x6, x4\n\t"
       "ldr q16, [x6]\n\t"
       "add x8, x6, x10\n\t"
       "ldur q22, [x6, #2]\n\t"
       "add x3, x6, x11\n\t"
-      "ldr q17, [x7]\n\t"
-      "ldur q23, [x7, #2]\n\t"
+      "ldr q17, [x9]\n\t"
+      "ldur q23, [x9, #2]\n\t"
       "ldr q18, [x8]\n\t"
       "add v19.8h, v16.8h, v22.8h\n\t"
       "ldur q22, [x8, #2]\n\t"
@@ -85,13 +85,11 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
       "stp d4, d5, [x1]\n\t"
       "add x1, x1, x2\n\t"
       "stp d6, d7, [x1]\n\t"
-      "ldp x1, x10, [sp]\n\t"
-      "ldr x6, [sp, #16]\n\t"
-      "add x1, x1, #16\n\t"
+      "ldr x1, [sp]\n\t"
       "add x6, x6, #16\n\t"
-      "subs x10, x10, #1\n\t"
-      "stp x1, x10, [sp]\n\t"
-      "str x6, [sp, #16]\n\t"
+      "subs x7, x7, #1\n\t"
+      "add x1, x1, #16\n\t"
+      "str x1, [sp]\n\t"
       "ldp x10, x11, [sp, #48]\n\t"
       "b.ne 3b\n\t"
       "add sp, sp, #64\n\t"
@@ -114,17 +112,28 @@ inline bool mip3_p16_fits(int tw, int th, int width) {
          (width & 15) == 0;
 }
 
-// Lays out the texture's th rows (16 / K wide: K rows a 16-byte load) at buf.
+// Lays out the texture's th rows (16 / K wide: K rows a 16-byte load) at buf: 32 bytes of
+// texels a step (the texture's tw th bytes are 16 or a multiple of 32), loads first.
 template <int K>
 __attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint8_t* texels, int th, uint8x16_t period) {
   uint8x16_t idx[K];
 #pragma GCC unroll 8
   for (int j = 0; j < K; ++j) idx[j] = vaddq_u8(period, vdupq_n_u8(uint8_t(j * (16 / K))));
-  const uint8_t* const end = texels + 16 / K * th;
-  for (const uint8_t* r = texels; r != end; r += 16, buf += 16 * K) {
-    const uint8x16_t v = vld1q_u8(r);
+  const int bytes = 16 / K * th;
+  if (bytes == 16) {
+    const uint8x16_t v = vld1q_u8(texels);
 #pragma GCC unroll 8
     for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * j, vqtbl1q_u8(v, idx[j]));
+    return;
+  }
+  const uint8_t* const end = texels + bytes;
+  for (const uint8_t* r = texels; r != end; r += 32, buf += 32 * K) {
+    uint8x16_t a = vld1q_u8(r), b = vld1q_u8(r + 16);
+    asm("" : "+w"(a), "+w"(b));
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * j, vqtbl1q_u8(a, idx[j]));
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * (K + j), vqtbl1q_u8(b, idx[j]));
   }
 }
 
