@@ -114,8 +114,8 @@ inline bool mip3_p16_fits(int tw, int th, int width) {
          (width & 15) == 0;
 }
 
-// Lays out the texture's th rows (16 / K wide: K rows a 16-byte load) at buf: 32 bytes of
-// texels a step (the texture's tw th bytes are 16 or a multiple of 32), loads first.
+// Lays out the texture's th rows (16 / K wide: K rows a 16-byte load) at buf: the texture's
+// tw th bytes (a power of two >= 16) 16, 32, then 64 a step, loads first.
 template <int K>
 __attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint8_t* texels, int th, uint8x16_t period) {
   uint8x16_t idx[K];
@@ -129,13 +129,27 @@ __attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint
     return;
   }
   const uint8_t* const end = texels + bytes;
-  for (const uint8_t* r = texels; r != end; r += 32, buf += 32 * K) {
+  const uint8_t* r = texels;
+  if (bytes & 32) {
     uint8x16_t a = vld1q_u8(r), b = vld1q_u8(r + 16);
     asm("" : "+w"(a), "+w"(b));
 #pragma GCC unroll 8
     for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * j, vqtbl1q_u8(a, idx[j]));
 #pragma GCC unroll 8
     for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * (K + j), vqtbl1q_u8(b, idx[j]));
+    r += 32, buf += 32 * K;
+  }
+  for (; r != end; r += 64, buf += 64 * K) {  // (64 bytes a step: the table lookups' results wait less)
+    uint8x16_t a = vld1q_u8(r), b = vld1q_u8(r + 16), c = vld1q_u8(r + 32), e = vld1q_u8(r + 48);
+    asm("" : "+w"(a), "+w"(b), "+w"(c), "+w"(e));
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * j, vqtbl1q_u8(a, idx[j]));
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * (K + j), vqtbl1q_u8(b, idx[j]));
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * (2 * K + j), vqtbl1q_u8(c, idx[j]));
+#pragma GCC unroll 8
+    for (int j = 0; j < K; ++j) vst1q_u8(buf + 16 * (3 * K + j), vqtbl1q_u8(e, idx[j]));
   }
 }
 
