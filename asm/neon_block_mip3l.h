@@ -46,11 +46,12 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
   register int64_t x4 asm("x4") = gst;
   register const uint16_t* x6 asm("x6") = g0;
   register int64_t x10 asm("x10") = n;
-  register int64_t x11 asm("x11") = (bh < 3 ? bh : 3) * gst;
+  const int64_t r2 = bh >= 2 ? 2 * gst : gst;  // (bh >= 1; selects, not multiplies)
+  register int64_t x11 asm("x11") = bh >= 3 ? r2 + gst : r2;
   register const uint8_t* x12 asm("x12") = t0;
   register int64_t x28 asm("x28") = notp;
   register int64_t x13 asm("x13") = bh;
-  register int64_t x14 asm("x14") = (bh < 2 ? bh : 2) * gst;
+  register int64_t x14 asm("x14") = r2;
   asm volatile(
       "sub sp, sp, #64\n\t"
       "str x1, [sp]\n\t"

@@ -49,7 +49,7 @@ def parse(l):
             reads |= set(dst)
         if post:
             writes.add(addr[0])
-    elif op.startswith("b"):
+    elif op in ("b", "cbz", "cbnz", "tbz", "tbnz") or op.startswith("b."):  # (not bif, bit, bsl)
         reads.add("nzcv")
     elif op in ("cmp", "cmn", "tst"):
         reads |= set(rs)
