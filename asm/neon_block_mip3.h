@@ -42,17 +42,13 @@ namespace {
 
 #if defined(__aarch64__)
 
-// The texel-row hooks (SB_MIP3_TP .. TD: defined by each user of the band macros before its
-// body, undefined after): TP loads the next band's row pointers, TA / TB its two texel rows
-// into v24 / v25, TC (after the last lane loads but five) and TD (three instructions later,
-// no flags) step a row pointer.
 #define SB_MIP3_BAND0 \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
   "add v3.8h, v19.8h, v20.8h\n\t" \
   "stp d4, d5, [x1]\n\t" \
   "add x1, x1, x2\n\t" \
-  SB_MIP3_TP \
+  "ldp x6, x7, [x5], #16\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
@@ -74,9 +70,9 @@ namespace {
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  SB_MIP3_TA \
+  "ldr q24, [x6, x28]\n\t" \
   "add x18, x0, w9, uxth\n\t" \
-  SB_MIP3_TB \
+  "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
@@ -145,11 +141,9 @@ namespace {
   "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
   "ld1 {v6.b}[6], [x21]\n\t" \
-  SB_MIP3_TC \
   "ld1 {v5.b}[6], [x22]\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
   "cmp x30, #4\n\t" \
-  SB_MIP3_TD \
   "ld1 {v7.b}[6], [x23]\n\t" \
   "add x17, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[7], [x24]\n\t" \
@@ -166,7 +160,7 @@ namespace {
   "add v3.8h, v20.8h, v21.8h\n\t" \
   "stp d4, d5, [x1]\n\t" \
   "add x1, x1, x2\n\t" \
-  SB_MIP3_TP \
+  "ldp x6, x7, [x5], #16\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
@@ -188,9 +182,9 @@ namespace {
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  SB_MIP3_TA \
+  "ldr q24, [x6, x28]\n\t" \
   "add x18, x0, w9, uxth\n\t" \
-  SB_MIP3_TB \
+  "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
@@ -259,11 +253,9 @@ namespace {
   "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
   "ld1 {v6.b}[6], [x21]\n\t" \
-  SB_MIP3_TC \
   "ld1 {v5.b}[6], [x22]\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
   "cmp x30, #4\n\t" \
-  SB_MIP3_TD \
   "ld1 {v7.b}[6], [x23]\n\t" \
   "add x17, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[7], [x24]\n\t" \
@@ -280,7 +272,7 @@ namespace {
   "add v3.8h, v21.8h, v19.8h\n\t" \
   "stp d4, d5, [x1]\n\t" \
   "add x1, x1, x2\n\t" \
-  SB_MIP3_TP \
+  "ldp x6, x7, [x5], #16\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
@@ -302,9 +294,9 @@ namespace {
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  SB_MIP3_TA \
+  "ldr q24, [x6, x28]\n\t" \
   "add x18, x0, w9, uxth\n\t" \
-  SB_MIP3_TB \
+  "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
@@ -373,11 +365,9 @@ namespace {
   "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
   "ld1 {v6.b}[6], [x21]\n\t" \
-  SB_MIP3_TC \
   "ld1 {v5.b}[6], [x22]\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
   "cmp x30, #4\n\t" \
-  SB_MIP3_TD \
   "ld1 {v7.b}[6], [x23]\n\t" \
   "add x17, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[7], [x24]\n\t" \
@@ -392,7 +382,7 @@ namespace {
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
   "add v3.8h, v19.8h, v20.8h\n\t" \
-  SB_MIP3_TP \
+  "ldp x6, x7, [x5], #16\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
@@ -412,9 +402,9 @@ namespace {
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  SB_MIP3_TA \
+  "ldr q24, [x6, x28]\n\t" \
   "add x18, x0, w9, uxth\n\t" \
-  SB_MIP3_TB \
+  "ldr q25, [x7, x28]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
@@ -483,11 +473,9 @@ namespace {
   "ld1 {v4.b}[6], [x20]\n\t" \
   "add x16, x0, x11, lsr #48\n\t" \
   "ld1 {v6.b}[6], [x21]\n\t" \
-  SB_MIP3_TC \
   "ld1 {v5.b}[6], [x22]\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
   "cmp x30, #4\n\t" \
-  SB_MIP3_TD \
   "ld1 {v7.b}[6], [x23]\n\t" \
   "add x17, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[7], [x24]\n\t" \
@@ -508,11 +496,6 @@ constexpr int kMip3TileBytes = 32768;    // laid-out (wrapped) texture rows, n16
 // and texel rows rp[y] + goff + k gs (rp: rows 0..2 bh + 1). One assembly block: the columns'
 // state lives in a stack frame (x0-x30 all serve the band loop): [sp] output, groups left,
 // grid row 0, texel offset, gs, rp + 2, bands, then rows 2 and 3's offsets (clamped to bh).
-#define SB_MIP3_TP "ldp x6, x7, [x5], #16\n\t"
-#define SB_MIP3_TA "ldr q24, [x6, x28]\n\t"
-#define SB_MIP3_TB "ldr q25, [x7, x28]\n\t"
-#define SB_MIP3_TC ""
-#define SB_MIP3_TD ""
 __attribute__((always_inline)) inline void mip3_columns(const uint8_t* cm, uint8_t* d, int64_t w, const uint16_t* g0,
                                                         int64_t gst, int bh, const uint8_t* const* rp, int64_t goff,
                                                         int64_t gs, int64_t n) {
@@ -581,11 +564,6 @@ __attribute__((always_inline)) inline void mip3_columns(const uint8_t* cm, uint8
         "x20", "x21", "x22", "x23", "x24", "x25", "x26", "x27", "x28", "x30", "v0", "v1", "v2", "v3", "v4", "v5",
         "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v31", "cc", "memory");
 }
-#undef SB_MIP3_TP
-#undef SB_MIP3_TA
-#undef SB_MIP3_TB
-#undef SB_MIP3_TC
-#undef SB_MIP3_TD
 
 // A p16 row's 16 laid-out bytes (period[0]: byte k is (c0 + k) mod tw): one table lookup of
 // the row's first 16 bytes, or of the texture's last 16 at its end (writes 32 bytes when the

@@ -2,7 +2,7 @@
 // neon_a53 variant): textures whose width divides 16 (a power of two <= 16: mip 3 of the
 // 64- and 128-wide textures) and whose height is a power of two <= 64, surfaces whose width
 // is a multiple of 16. Only asm/neon.cpp includes this (after asm/neon_block_mip3.h, whose
-// band loop it shares).
+// band loop it runs, reordered, with its own texel row reads).
 //
 // Every group reads the same 16 laid-out bytes of a texture row (byte k: texel (c0 + k) mod
 // tw), so the th rows are laid out once, in texture order, 16 bytes each: buf + 16 t holds
@@ -24,13 +24,457 @@ namespace {
 
 #if defined(__aarch64__)
 
-// The band macros' texel-row hooks (asm/neon_block_mip3.h): rows at x5, x5 + 16; x5 += 32,
-// wrapped by x28 = ~P.
-#define SB_MIP3_TP ""
-#define SB_MIP3_TA "ldr q24, [x5]\n\t"
-#define SB_MIP3_TB "ldr q25, [x5, #16]\n\t"
-#define SB_MIP3_TC "add x5, x5, #32\n\t"
-#define SB_MIP3_TD "and x5, x5, x28\n\t"
+// The band loop (asm/neon_block_mip3.h's SB_MIP3_BAND0..2 and SB_MIP3_ENTRY, same
+// registers and method) with the texel rows read at x5 and x5 + 16, x5 += 32 wrapped by
+// x28 = ~P, reordered by bench/mca_a53_block/order_search.py (Cortex-A53 model: 72 -> 70
+// cycles a band); the entry copy is band 0 without the previous band's stores.
+#define SB_MIP3L_BAND0 \
+  "uhadd v2.8h, v16.8h, v17.8h\n\t" \
+  "ushr v1.8h, v19.8h, #1\n\t" \
+  "add v3.8h, v19.8h, v20.8h\n\t" \
+  "stp d4, d5, [x1]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "bif v24.16b, v16.16b, v31.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
+  "ldr q16, [x3]\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x10, d1\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x12, d2\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x5]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x24, x0, x24\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x16, x0, x16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x22, x0, x22\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x5, x5, #32\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "cmp x30, #4\n\t" \
+  "and x5, x5, x28\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "add x3, x3, x26\n\t" \
+
+#define SB_MIP3L_BAND1 \
+  "uhadd v2.8h, v17.8h, v18.8h\n\t" \
+  "ushr v1.8h, v20.8h, #1\n\t" \
+  "add v3.8h, v20.8h, v21.8h\n\t" \
+  "stp d4, d5, [x1]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "bif v24.16b, v17.16b, v31.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
+  "ldr q17, [x3]\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x10, d1\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x12, d2\n\t" \
+  "add v19.8h, v16.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x5]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x24, x0, x24\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x16, x0, x16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x22, x0, x22\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x5, x5, #32\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "cmp x30, #4\n\t" \
+  "and x5, x5, x28\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "add x3, x3, x26\n\t" \
+
+#define SB_MIP3L_BAND2 \
+  "uhadd v2.8h, v18.8h, v16.8h\n\t" \
+  "ushr v1.8h, v21.8h, #1\n\t" \
+  "add v3.8h, v21.8h, v19.8h\n\t" \
+  "stp d4, d5, [x1]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "bif v24.16b, v18.16b, v31.16b\n\t" \
+  "stp d6, d7, [x1]\n\t" \
+  "ldr q18, [x3]\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x10, d1\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x12, d2\n\t" \
+  "add v20.8h, v17.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x5]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x24, x0, x24\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x16, x0, x16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x22, x0, x22\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x5, x5, #32\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "cmp x30, #4\n\t" \
+  "and x5, x5, x28\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "add x3, x3, x26\n\t" \
+
+#define SB_MIP3L_ENTRY \
+  "uhadd v2.8h, v16.8h, v17.8h\n\t" \
+  "ushr v1.8h, v19.8h, #1\n\t" \
+  "add v3.8h, v19.8h, v20.8h\n\t" \
+  "bit v2.16b, v25.16b, v31.16b\n\t" \
+  "trn2 v1.16b, v24.16b, v1.16b\n\t" \
+  "ushr v3.16b, v3.16b, #2\n\t" \
+  "bif v24.16b, v16.16b, v31.16b\n\t" \
+  "ldr q16, [x3]\n\t" \
+  "fmov x13, v2.d[1]\n\t" \
+  "fmov x10, d1\n\t" \
+  "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
+  "fmov x12, d2\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
+  "fmov x14, d3\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "ldr q24, [x5]\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x19, x0, w13, uxth\n\t" \
+  "ld1 {v4.b}[0], [x16]\n\t" \
+  "add x21, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x17]\n\t" \
+  "and x24, x27, x8, lsr #16\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "and x16, x27, x9, lsr #16\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x24, x0, x24\n\t" \
+  "and x20, x27, x11, lsr #16\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "and x25, x27, x12, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x16, x0, x16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "add x17, x0, x17\n\t" \
+  "ld1 {v5.b}[1], [x22]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x18, x0, x18\n\t" \
+  "ld1 {v4.b}[2], [x24]\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x20, x0, x20\n\t" \
+  "ld1 {v5.b}[2], [x16]\n\t" \
+  "add x21, x0, x21\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "and x24, x27, x9, lsr #32\n\t" \
+  "ld1 {v4.b}[3], [x18]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "and x23, x27, x12, lsr #32\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
+  "add x23, x0, x23\n\t" \
+  "add x25, x0, x25\n\t" \
+  "add x22, x0, x22\n\t" \
+  "add x24, x0, x24\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "and x17, x27, x14, lsr #32\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
+  "and x16, x27, x10, lsr #32\n\t" \
+  "ld1 {v7.b}[3], [x21]\n\t" \
+  "and x18, x27, x11, lsr #32\n\t" \
+  "ld1 {v4.b}[4], [x22]\n\t" \
+  "and x19, x27, x15, lsr #32\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
+  "add x16, x0, x16\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
+  "add x17, x0, x17\n\t" \
+  "add x18, x0, x18\n\t" \
+  "add x19, x0, x19\n\t" \
+  "ld1 {v7.b}[4], [x25]\n\t" \
+  "add x20, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x16]\n\t" \
+  "add x21, x0, x12, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x17]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v7.b}[5], [x19]\n\t" \
+  "add x23, x0, x13, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x20]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x21]\n\t" \
+  "add x5, x5, #32\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x25, x0, x14, lsr #48\n\t" \
+  "cmp x30, #4\n\t" \
+  "and x5, x5, x28\n\t" \
+  "ld1 {v7.b}[6], [x23]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x24]\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "ld1 {v6.b}[7], [x25]\n\t" \
+  "ld1 {v7.b}[7], [x17]\n\t" \
+  "add x3, x3, x26\n\t" \
 
 // The column loop over n >= 1 groups (16 texels wide, bh >= 1 bands): group k writes d + 16 k
 // (row stride w) from grid entries 8 k.. of rows g0 + 16 k bytes (row stride gst), texel rows
@@ -63,7 +507,7 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
       "mov x27, #0xffff\n\t"
       "b 3f\n\t"
       ".p2align 11\n\t"  // (band loop, group exit and entry: about 1.9 KiB, then never straddle a page)
-      "1:\n\t" SB_MIP3_BAND1 "b.eq 9f\n\t" SB_MIP3_BAND2 "b.eq 9f\n\t" SB_MIP3_BAND0 "b.ne 1b\n\t"
+      "1:\n\t" SB_MIP3L_BAND1 "b.eq 9f\n\t" SB_MIP3L_BAND2 "b.eq 9f\n\t" SB_MIP3L_BAND0 "b.ne 1b\n\t"
       "9:\n\t"
       "stp d4, d5, [x1]\n\t"
       "add x1, x1, x2\n\t"
@@ -92,7 +536,7 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
       "ldr q25, [x5, #16]\n\t"
       "add x5, x5, #32\n\t"
       "and x5, x5, x28\n\t"
-      SB_MIP3_ENTRY "b.ne 1b\n\t"
+      SB_MIP3L_ENTRY "b.ne 1b\n\t"
       "b 9b\n"
       "8:\n\t"
       "add sp, sp, #64\n\t"
@@ -103,11 +547,10 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
         "v21", "v22", "v23", "v24", "v25", "v31", "cc", "memory");
 }
 
-#undef SB_MIP3_TP
-#undef SB_MIP3_TA
-#undef SB_MIP3_TB
-#undef SB_MIP3_TC
-#undef SB_MIP3_TD
+#undef SB_MIP3L_BAND0
+#undef SB_MIP3L_BAND1
+#undef SB_MIP3L_BAND2
+#undef SB_MIP3L_ENTRY
 
 // The shapes the lean builder takes (the rest go to surface_block_mip3).
 inline bool mip3_p16_fits(int tw, int th, int width) {
