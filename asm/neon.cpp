@@ -865,7 +865,7 @@ void surface_block_neon(const uint16_t* grid, int grid_width, const uint8_t* tex
 // The in-order variant (Cortex-A53/A55/A35): its own row loops at every mip (the lean mip-3
 // path first, without this function's frame).
 namespace {
-__attribute__((noinline)) void surface_block_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels,
+__attribute__((noipa)) void surface_block_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels,
                                                      int tex_width, int tex_height, int mip, int soff, int toff,
                                                      int width, int height, const uint8_t* colormap, uint8_t* out) {
   if (width > 0 && height > 0 && mip >= 0 && mip <= 3 && width / (16 >> mip) <= kMaxBlockColumns) {
@@ -890,11 +890,13 @@ __attribute__((noinline)) void surface_block_inorder(const uint16_t* grid, int g
 void surface_block_neon_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width,
                                 int tex_height, int mip, int soff, int toff, int width, int height,
                                 const uint8_t* colormap, uint8_t* out) {
-  if (mip == 3 && width > 0 && height > 0 && width <= 2 * kMaxBlockColumns &&
-      mip3_p16_fits(tex_width, tex_height, width))
-    return surface_block_mip3_p16(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap,
-                                  out);
-  surface_block_inorder(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height, colormap, out);
+  if (mip != 3)  // (mips 0-2: a branch, then the tail call)
+    return surface_block_inorder(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height,
+                                 colormap, out);
+  if (width <= 0 || height <= 0 || width > 2 * kMaxBlockColumns || !mip3_p16_fits(tex_width, tex_height, width))
+    return surface_block_inorder(grid, grid_width, texels, tex_width, tex_height, mip, soff, toff, width, height,
+                                 colormap, out);
+  surface_block_mip3_p16(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
 }
 #endif
 

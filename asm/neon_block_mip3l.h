@@ -27,7 +27,10 @@ namespace {
 // The band loop (asm/neon_block_mip3.h's SB_MIP3_BAND0..2 and SB_MIP3_ENTRY, same
 // registers and method) with the texel rows read at x5 and x5 + 16, x5 += 32 wrapped by
 // x28 = ~P, reordered by bench/mca_a53_block/order_search.py (Cortex-A53 model: 72 -> 70
-// cycles a band); the entry copy is band 0 without the previous band's stores.
+// cycles a band); the entry copy is band 0 without the previous band's stores, after the
+// group's grid rows 0-2 (v16-v18, v19 = g + g1 of row 0, v20 of row 1, v22 = row 2's entries
+// 1..8, x3 = row 3), the first texel rows (v24, v25 at t0, x5 = the next band's) and the
+// band count x30 from the frame, the whole reordered the same way (87 -> 82 cycles).
 #define SB_MIP3L_BAND0 \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
@@ -368,9 +371,26 @@ namespace {
   "add x3, x3, x26\n\t" \
 
 #define SB_MIP3L_ENTRY \
+  "add x9, x6, x4\n\t" \
+  "ldr q16, [x6]\n\t" \
+  "add x8, x6, x10\n\t" \
+  "ldur q22, [x6, #2]\n\t" \
+  "ldr q17, [x9]\n\t" \
+  "ldur q23, [x9, #2]\n\t" \
+  "ldr q18, [x8]\n\t" \
+  "ldp x5, x30, [sp, #24]\n\t" \
+  "add v19.8h, v16.8h, v22.8h\n\t" \
+  "add v20.8h, v17.8h, v23.8h\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "cmp x30, #4\n\t" \
+  "ldr q24, [x5]\n\t" \
+  "add x5, x5, #32\n\t" \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
   "add v3.8h, v19.8h, v20.8h\n\t" \
+  "ldur q22, [x8, #2]\n\t" \
+  "and x5, x5, x28\n\t" \
+  "add x3, x6, x11\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
@@ -379,16 +399,16 @@ namespace {
   "fmov x13, v2.d[1]\n\t" \
   "fmov x10, d1\n\t" \
   "trn2 v3.16b, v25.16b, v3.16b\n\t" \
-  "fmov x8, d24\n\t" \
-  "fmov x11, v1.d[1]\n\t" \
-  "fmov x12, d2\n\t" \
   "add v21.8h, v18.8h, v22.8h\n\t" \
   "fmov x9, v24.d[1]\n\t" \
-  "fmov x15, v3.d[1]\n\t" \
+  "fmov x12, d2\n\t" \
+  "fmov x8, d24\n\t" \
+  "fmov x11, v1.d[1]\n\t" \
   "fmov x14, d3\n\t" \
+  "fmov x15, v3.d[1]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
   "ldr q24, [x5]\n\t" \
   "add x18, x0, w9, uxth\n\t" \
@@ -401,24 +421,24 @@ namespace {
   "ld1 {v5.b}[0], [x18]\n\t" \
   "and x16, x27, x9, lsr #16\n\t" \
   "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
   "add x24, x0, x24\n\t" \
+  "add x22, x0, w11, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[1], [x20]\n\t" \
   "and x20, x27, x11, lsr #16\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
   "and x25, x27, x12, lsr #16\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x16, x0, x16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "add x17, x0, x17\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
+  "and x18, x27, x10, lsr #16\n\t" \
+  "add x16, x0, x16\n\t" \
+  "and x21, x27, x15, lsr #16\n\t" \
+  "and x17, x27, x13, lsr #16\n\t" \
+  "add x25, x0, x25\n\t" \
   "ld1 {v7.b}[1], [x23]\n\t" \
-  "add x18, x0, x18\n\t" \
+  "add x17, x0, x17\n\t" \
   "ld1 {v4.b}[2], [x24]\n\t" \
+  "and x19, x27, x14, lsr #16\n\t" \
+  "add x18, x0, x18\n\t" \
   "add x19, x0, x19\n\t" \
   "ld1 {v6.b}[2], [x25]\n\t" \
   "add x20, x0, x20\n\t" \
@@ -427,26 +447,26 @@ namespace {
   "ld1 {v7.b}[2], [x17]\n\t" \
   "and x24, x27, x9, lsr #32\n\t" \
   "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
   "and x23, x27, x12, lsr #32\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
+  "ld1 {v6.b}[3], [x19]\n\t" \
+  "and x22, x27, x8, lsr #32\n\t" \
+  "ld1 {v5.b}[3], [x20]\n\t" \
   "add x23, x0, x23\n\t" \
-  "add x25, x0, x25\n\t" \
   "add x22, x0, x22\n\t" \
   "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
+  "and x25, x27, x13, lsr #32\n\t" \
   "and x17, x27, x14, lsr #32\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
+  "add x25, x0, x25\n\t" \
   "and x16, x27, x10, lsr #32\n\t" \
   "ld1 {v7.b}[3], [x21]\n\t" \
   "and x18, x27, x11, lsr #32\n\t" \
   "ld1 {v4.b}[4], [x22]\n\t" \
   "and x19, x27, x15, lsr #32\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
   "add x16, x0, x16\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
   "add x17, x0, x17\n\t" \
+  "ld1 {v6.b}[4], [x23]\n\t" \
   "add x18, x0, x18\n\t" \
+  "ld1 {v5.b}[4], [x24]\n\t" \
   "add x19, x0, x19\n\t" \
   "ld1 {v7.b}[4], [x25]\n\t" \
   "add x20, x0, x8, lsr #48\n\t" \
@@ -462,19 +482,18 @@ namespace {
   "add x16, x0, x11, lsr #48\n\t" \
   "ld1 {v6.b}[6], [x21]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
   "add x25, x0, x14, lsr #48\n\t" \
-  "cmp x30, #4\n\t" \
+  "ld1 {v5.b}[6], [x22]\n\t" \
   "and x5, x5, x28\n\t" \
   "ld1 {v7.b}[6], [x23]\n\t" \
   "add x17, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[7], [x24]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
-  "subs x30, x30, #1\n\t" \
   "ld1 {v6.b}[7], [x25]\n\t" \
+  "subs x30, x30, #1\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
   "ld1 {v7.b}[7], [x17]\n\t" \
-  "add x3, x3, x26\n\t" \
+  "add x3, x3, x26\n\t"
 
 // The column loop over n >= 1 groups (16 texels wide, bh >= 1 bands): group k writes d + 16 k
 // (row stride w) from grid entries 8 k.. of rows g0 + 16 k bytes (row stride gst), texel rows
@@ -520,22 +539,6 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
       "ldp x10, x11, [sp, #48]\n\t"
       "b.eq 8f\n"
       "3:\n\t"  // (a group enters with x1, x6, x7, x10, x11 set; the bands keep x6, x7)
-      "add x9, x6, x4\n\t"
-      "ldr q16, [x6]\n\t"
-      "add x8, x6, x10\n\t"
-      "ldur q22, [x6, #2]\n\t"
-      "add x3, x6, x11\n\t"
-      "ldr q17, [x9]\n\t"
-      "ldur q23, [x9, #2]\n\t"
-      "ldr q18, [x8]\n\t"
-      "add v19.8h, v16.8h, v22.8h\n\t"
-      "ldur q22, [x8, #2]\n\t"
-      "add v20.8h, v17.8h, v23.8h\n\t"
-      "ldp x5, x30, [sp, #24]\n\t"
-      "ldr q24, [x5]\n\t"
-      "ldr q25, [x5, #16]\n\t"
-      "add x5, x5, #32\n\t"
-      "and x5, x5, x28\n\t"
       SB_MIP3L_ENTRY "b.ne 1b\n\t"
       "b 9b\n"
       "8:\n\t"
@@ -599,7 +602,7 @@ __attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint
 
 // The lean mip-3 builder (asm/surface_block.h's contract at mip 3, width > 0, height > 0,
 // mip3_p16_fits(tw, th, width)).
-__attribute__((noinline)) void surface_block_mip3_p16(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
+__attribute__((noipa)) void surface_block_mip3_p16(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
                                                       int th, int soff, int toff, int width, int height,
                                                       const uint8_t* colormap, uint8_t* out) {
   alignas(2048) uint8_t buf[1024];
