@@ -603,8 +603,8 @@ __attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint
 // The lean mip-3 builder (asm/surface_block.h's contract at mip 3, width > 0, height > 0,
 // mip3_p16_fits(tw, th, width)).
 __attribute__((noipa)) void surface_block_mip3_p16(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
-                                                      int th, int soff, int toff, int width, int height,
-                                                      const uint8_t* colormap, uint8_t* out) {
+                                                   int th, int /*mip*/, int soff, int toff, int width, int height,
+                                                   const uint8_t* colormap, uint8_t* out) {
   alignas(2048) uint8_t buf[1024];
   const uint8x16_t period = vandq_u8(vaddq_u8(vld1q_u8(kMip3Iota), vdupq_n_u8(uint8_t(soff))), vdupq_n_u8(uint8_t(tw - 1)));
   switch (tw) {
