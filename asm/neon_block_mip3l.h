@@ -564,7 +564,8 @@ inline bool mip3_p16_fits(int tw, int th, int width) {
 // Lays out the texture's th rows (16 / K wide: K rows a 16-byte load) at buf: the texture's
 // tw th bytes (a power of two >= 16) 16, 32, then 64 a step, loads first.
 template <int K>
-__attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint8_t* texels, int th, uint8x16_t period) {
+__attribute__((always_inline)) inline void mip3_lay_p16(uint8_t* buf, const uint8_t* texels, int th,
+                                                        uint8x16_t period) {
   uint8x16_t idx[K];
 #pragma GCC unroll 8
   for (int j = 0; j < K; ++j) idx[j] = vaddq_u8(period, vdupq_n_u8(uint8_t(j * (16 / K))));
@@ -606,7 +607,8 @@ __attribute__((noipa)) void surface_block_mip3_p16(const uint16_t* grid, int gw,
                                                    int th, int /*mip*/, int soff, int toff, int width, int height,
                                                    const uint8_t* colormap, uint8_t* out) {
   alignas(2048) uint8_t buf[1024];
-  const uint8x16_t period = vandq_u8(vaddq_u8(vld1q_u8(kMip3Iota), vdupq_n_u8(uint8_t(soff))), vdupq_n_u8(uint8_t(tw - 1)));
+  const uint8x16_t period =
+      vandq_u8(vaddq_u8(vld1q_u8(kMip3Iota), vdupq_n_u8(uint8_t(soff))), vdupq_n_u8(uint8_t(tw - 1)));
   switch (tw) {
     case 2: mip3_lay_p16<8>(buf, texels, th, period); break;
     case 4: mip3_lay_p16<4>(buf, texels, th, period); break;
