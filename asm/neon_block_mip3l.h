@@ -497,9 +497,10 @@ namespace {
 
 // The column loop over n >= 1 groups (16 texels wide, bh >= 1 bands): group k writes d + 16 k
 // (row stride w) from grid entries 8 k.. of rows g0 + 16 k bytes (row stride gst), texel rows
-// from t0 (buf + 16 t0 = surface row 0's, x28 = ~P: above). The bands leave x6 (grid row 0)
-// and x7 (groups left) alone; the rest of the groups' state lives in a stack frame: [sp]
-// output, (unused x2), t0, bands, (unused), rows 2 and 3's offsets (clamped to bh).
+// from t0 (buf + 16 t0 = surface row 0's, x28 = ~P: above). The bands leave x6 (grid row 0),
+// x7 (groups left) and x29 (saved, then (2 bh - 1) w - 16: the next group's output from the
+// last row's) alone; the rest of the groups' state lives in a stack frame: [sp] the saved
+// x29, (unused), t0, bands, (unused), rows 2 and 3's offsets (clamped to bh).
 __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, uint8_t* d, int64_t w,
                                                             const uint16_t* g0, int64_t gst, int64_t bh,
                                                             const uint8_t* t0, int64_t notp, int64_t n) {
@@ -517,7 +518,11 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
   register int64_t x14 asm("x14") = r2;
   asm volatile(
       "sub sp, sp, #64\n\t"
-      "str x1, [sp]\n\t"
+      "str x29, [sp]\n\t"
+      "lsl x29, x13, #1\n\t"
+      "sub x29, x29, #1\n\t"
+      "mul x29, x29, x2\n\t"
+      "sub x29, x29, #16\n\t"
       "stp x12, x13, [sp, #24]\n\t"
       "stp x14, x11, [sp, #48]\n\t"
       "mov x7, x10\n\t"
@@ -531,17 +536,16 @@ __attribute__((always_inline)) inline void mip3_columns_p16(const uint8_t* cm, u
       "stp d4, d5, [x1]\n\t"
       "add x1, x1, x2\n\t"
       "stp d6, d7, [x1]\n\t"
-      "ldr x1, [sp]\n\t"
+      "sub x1, x1, x29\n\t"
       "add x6, x6, #16\n\t"
       "subs x7, x7, #1\n\t"
-      "add x1, x1, #16\n\t"
-      "str x1, [sp]\n\t"
       "ldp x10, x11, [sp, #48]\n\t"
       "b.eq 8f\n"
-      "3:\n\t"  // (a group enters with x1, x6, x7, x10, x11 set; the bands keep x6, x7)
+      "3:\n\t"  // (a group enters with x1, x6, x7, x10, x11 set; the bands keep x6, x7, x29)
       SB_MIP3L_ENTRY "b.ne 1b\n\t"
       "b 9b\n"
       "8:\n\t"
+      "ldr x29, [sp]\n\t"
       "add sp, sp, #64\n\t"
       : "+r"(x1), "+r"(x6), "+r"(x10), "+r"(x11), "+r"(x12), "+r"(x13), "+r"(x14)
       : "r"(x0), "r"(x2), "r"(x4), "r"(x28)
