@@ -49,7 +49,7 @@ def parse(l):
             reads |= set(dst)
         if post:
             writes.add(addr[0])
-    elif op.startswith("b"):
+    elif op in ("b", "cbz", "cbnz", "tbz", "tbnz") or op.startswith("b."):  # (not bif, bit, bsl)
         reads.add("nzcv")
     elif op in ("cmp", "cmn", "tst"):
         reads |= set(rs)
@@ -57,10 +57,12 @@ def parse(l):
     else:
         writes.add(rs[0])
         reads |= set(rs[1:])
-        if op in ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "sri"):
+        if op in ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "sri", "bif", "bit", "bsl"):
             reads.add(rs[0])
         if op in ("adds", "subs", "ands"):
             writes.add("nzcv")
+        if op in ("csel", "csinc", "csinv", "csneg", "cset", "csetm", "cinc", "adc", "sbc"):
+            reads.add("nzcv")
     return reads, writes, store
 
 

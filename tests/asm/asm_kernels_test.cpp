@@ -350,6 +350,37 @@ TEST(AsmSurfaceBlock, Mip3EdgeShapes) {
   std::printf("[ asm      ] surface_block mip 3: %d cases compared\n", cases);
 }
 
+// AArch64 neon_a53's lean mip-3 path (asm/neon_block_mip3l.h): texture widths 2..16 and
+// heights 2..64 powers of two (the rows laid out once, the band loop's row offset wrapping at
+// the texture's end, started at any row), surface widths a multiple of 16 (one group and
+// several), band counts around the loop's three copies and taller than the texture; and the
+// shapes just outside it (texture of 8 texels, 128 rows, 12 rows, 6 wide).
+TEST(AsmSurfaceBlock, Mip3PowerOfTwoTextures) {
+  std::mt19937 rng(8088);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int tw : {2, 4, 8, 16}) {
+      for (int th : {2, 4, 8, 16, 32, 64}) {
+        for (int w : {16, 32, 48, 512}) {
+          for (int h : {2, 4, 6, 8, 14, 16, 34, 130}) {
+            if (rng() % 3 && h > 8 && w > 32) continue;
+            const int soff = 2 * (int(rng() % 129) - 64), toff = 2 * (int(rng() % 129) - 64);
+            check_block(k, rng, BlockCase{3, w, h, tw, th, soff, toff, w / 2 + 1 + int(rng() % 2)}, Light(rng() % 6),
+                        false);
+            ++cases;
+          }
+        }
+      }
+    }
+    check_block(k, rng, BlockCase{3, 32, 32, 2, 4, 2, -2, 17}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{3, 32, 40, 8, 128, -6, 90, 17}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{3, 48, 40, 8, 12, 6, -10, 25}, Light::kSmooth, false);
+    check_block(k, rng, BlockCase{3, 32, 20, 6, 8, 4, 2, 17}, Light::kAlternating, false);
+    cases += 4;
+  }
+  std::printf("[ asm      ] surface_block mip 3, power-of-two textures: %d cases compared\n", cases);
+}
+
 // ---------------------------------------------------------------- z span
 
 TEST(AsmZSpan, EveryVariantMatchesScalar) {
