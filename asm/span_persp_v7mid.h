@@ -139,6 +139,7 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
       "vadd.f64 d30, d22, d28\n\t"  // x1 = P + 16
       "vcvt.f64.s32 d0, s0\n\t"  // n - 33
       "vadd.f64 d31, d22, d29\n\t"  // x2 = P + 32
+      "vsub.f64 d10, d0, d28\n\t"  // steps n - 49 = (n - 33) - 16 (exact)
       "vmov.f64 d5, d16\n\t"
       "vfma.f64 d5, d17, d22\n\t"  // zi0
       "vadd.f64 d29, d30, d29\n\t"  // x3 = x1 + 32
@@ -200,10 +201,7 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
       "vmul.f64 d18, d18, d16\n\t"
       "vmul.f64 d20, d20, d16\n\t"
       "vmul.f64 d19, d19, d26\n\t"  // c_0
-      "vmul.f64 d21, d21, d26\n\t"  // c_1 (moved to d28 below)
       // The conversions (each product's register is dead once read; s_2j, s_2j+1 = d_j).
-      "vmov s14, %[st]\n\t"
-      "vcvt.f64.s32 d10, s14\n\t"  // steps
       "vcvt.u32.f64 s0, d17\n\t"
       "vcvt.u32.f64 s1, d24\n\t"
       "vcvt.u32.f64 s2, d22\n\t"
@@ -219,7 +217,7 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
       "vcvt.u32.f64 s7, d4\n\t"
       "vcvt.f64.s32 d17, s12\n\t"
       "vcvt.f64.s32 d24, s13\n\t"
-      "vmov.f64 d28, d21\n\t"
+      "vmul.f64 d28, d21, d26\n\t"  // c_1
       "vcvt.u32.f64 s8, d18\n\t"
       "vcvt.u32.f64 s9, d20\n\t"
       "vmul.f64 d17, d17, d19\n\t"
@@ -236,7 +234,7 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
       "vdiv.f64 d8, d8, d10\n\t"
       "vdiv.f64 d9, d9, d10"
       : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
-      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), [st] "r"(n - 49), "m"(p),
+      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p),
         "m"(kMidConsts)
       : "cc", "s14", "s15", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
         "d30", "d31");
