@@ -18,9 +18,9 @@ namespace {
 
 #if defined(__aarch64__)
 // aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position, depth
-// and reciprocal first (two 2-lane and one scalar; second order without a divide, linear steps
-// by fdiv: there the test below costs the A53 more than it saves), the conversions in
-// vectors; second order: the full runs' steps in vectors, the last run's by last_steps;
+// and reciprocal first (two 2-lane and one scalar, without a divide: below; the linear block
+// is the second-order one without zck and the z sums), the conversions in vectors; second
+// order: the full runs' steps in vectors, the last run's by last_steps;
 // linear: every run's step in integer registers (steps16_packed, the last run's delta /
 // steps); all branch-free, then the runs drawn straight (pairs of runs as one short_pass,
 // asm/span_persp_a64pass.h). Positions as the walker computes
