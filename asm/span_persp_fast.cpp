@@ -7,6 +7,7 @@
 
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
+#include "asm/span_persp_a64long.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -213,7 +214,53 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
 #if defined(__aarch64__) && defined(__GNUC__)
-  {
+  if constexpr (kCurve) {
+    // aarch64 second order: the passes as one asm loop (asm/span_persp_a64long.h), for spans
+    // of two passes or more; its state set up here from samples 0 .. 3 (the vector loop's
+    // below, lane for lane) and read back for the tail.
+    if (left > 80) {
+      auto packed = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+      auto lanes = [](int32x2_t x) { return vget_lane_u64(vreinterpret_u64_s32(x), 0); };
+      LongPass st;
+      st.kZrow = vdupq_n_f64(zrow), st.kZix = vdupq_n_f64(zix), st.kMin = vdupq_n_f64(kMinZi);
+      st.kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
+      st.kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
+      st.k16 = vdupq_n_f64(16.0), st.k32 = vdupq_n_f64(32.0), st.kOne = vdupq_n_f64(1.0), st.kZck = vdupq_n_f64(zck);
+      const uint32x2_t m2 = vcreate_u32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
+      st.kMax4 = vcombine_u32(m2, m2);
+      const int32x2_t kMax = vreinterpret_s32_u32(m2), kZero = vdup_n_s32(0);
+      const double P2i = (P + double(16)) + double(16);
+      st.pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
+      st.ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
+      st.z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
+      st.zsn = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
+      st.cc = vmulq_n_f64(vaddq_f64(st.zsn, st.z23), zck);
+      st.pos45 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
+      int32x2_t n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
+      int32x2_t n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
+      n2 = vmin_s32(vmax_s32(n2, kZero), kMax), n3 = vmin_s32(vmax_s32(n3, kZero), kMax);
+      st.nA = packed(s1.v, s1.u), st.nB = lanes(n2), st.nC = lanes(n3);
+      lin_start2(st.c0, st.c1, st.e0, st.e1, st.dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u),
+                 packed(sv.d, su.d), packed(sv.dd, su.dd));
+      st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
+      st.lim = st.d + uint64_t(left - 48);
+      long_passes2(st);
+      uint8_t* const d0 = dest;
+      dest = reinterpret_cast<uint8_t*>(st.d);
+      left -= int(dest - d0);
+      // The tail's state (it reads no position from P, nor s0.z): run r's steps from its chains
+      // (c1 - c0 = its packed step, dd4 = 4 times its packed second step, |parts| < 2^31).
+      const uint64_t dp = st.c1 - st.c0;
+      const int64_t ddp = int64_t(st.dd4) >> 2;
+      s0 = Sample{int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), 0.0};
+      s1 = Sample{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
+      su = RunSteps{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
+      sv = RunSteps{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
+                    int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+      z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
+      pos2 = vgetq_lane_f64(st.pos45, 0), pos3 = vgetq_lane_f64(st.pos45, 1);
+    }
+  } else {
     // aarch64: the passes drawn by lin_slot (above); the samples' double arithmetic in
     // 2-lane vectors, each lane the scalar operation above (same bits): [u, v] of
     // one sample per vector, positions, depths and divides as [sample 4, sample 5], the
