@@ -58,22 +58,23 @@ def word(J):
 
 
 def steps(delta, dd, dout, ddout, t):
-    """steps16_dd(delta, dd) (delta, dd int32 in w registers): accept iff 120 |dd| <= |delta|
-    (steps16_dd's test, see asm/span_persp_run.h); d = trunc((delta - 120 ddo) / 16), ddo = dd or 0.
-    dout: the step sign-extended to 64 bits; ddout: ddo in a w register (upper half 0)."""
+    """steps16_dd(delta, dd): delta sign-extended in an x register (|delta| < 2^31), dd an
+    int32 in a w register. Accept iff 120 |dd| <= |delta| (steps16_dd's test, the form proved
+    in asm/span_persp_run.h); d = trunc((delta - 120 dd') / 16), dd' = dd accepted, else 0
+    (|delta - 120 dd'| <= 2 |delta|: 64-bit). dout: d, 64-bit; ddout: dd' in a w register."""
     y, pd, s, x, u = (f"{t}y", f"{t}pd", f"{t}s", f"{t}x", f"{t}u")
     return [f"sbfiz {{X:{y}}}, {{X:{dd}}}, #7, #32",
             f"sub {{X:{y}}}, {{X:{y}}}, {{W:{dd}}}, sxtw #3",          # 120 dd, 64-bit
-            f"cmp {{W:{delta}}}, #0",
-            f"cneg {{W:{pd}}}, {{W:{delta}}}, lt",                      # |delta|
+            f"cmp {{X:{delta}}}, #0",
+            f"cneg {{X:{pd}}}, {{X:{delta}}}, lt",                      # |delta|
             f"add {{X:{s}}}, {{X:{y}}}, {{X:{pd}}}",                    # 120 dd + |delta|
             f"cmp {{X:{s}}}, {{X:{pd}}}, lsl #1",                       # <= 2 |delta| unsigned
             f"csel {{W:{ddout}}}, {{W:{dd}}}, wzr, ls",
-            f"csel {{W:{y}}}, {{W:{y}}}, wzr, ls",
-            f"sub {{W:{x}}}, {{W:{delta}}}, {{W:{y}}}",
-            f"asr {{W:{u}}}, {{W:{x}}}, #31",
-            f"add {{W:{x}}}, {{W:{x}}}, {{W:{u}}}, lsr #28",
-            f"sbfx {{X:{dout}}}, {{X:{x}}}, #4, #28"]
+            f"csel {{X:{y}}}, {{X:{y}}}, xzr, ls",
+            f"sub {{X:{x}}}, {{X:{delta}}}, {{X:{y}}}",
+            f"asr {{X:{u}}}, {{X:{x}}}, #63",
+            f"add {{X:{x}}}, {{X:{x}}}, {{X:{u}}}, lsr #60",
+            f"asr {{X:{dout}}}, {{X:{x}}}, #4"]
 
 
 def start(uv, dpk, ddpk, c1, e0, e1, dd4):
@@ -110,14 +111,15 @@ def stage(G):
     elif G == 6:
         s += ["fcvtzs {W:iu1}, {D:fu1}", "fcvtzs {W:iv1}, {D:fv1}", "fmaxnm {V:zi}.2d, {V:zi}.2d, {V:kMin}.2d"]
     elif G == 7:  # run r + 1's steps, its chains (run b: c0 = nA itself)
-        s += ["sub {W:du1}, {W:nB}, {W:nA}", "lsr {X:tvB}, {X:nB}, #32", "sub {X:dv1}, {X:tvB}, {X:nA}, lsr #32"]
+        s += ["sub {W:du1}, {W:nB}, {W:nA}", "sxtw {X:du1}, {W:du1}",
+              "lsr {X:tvB}, {X:nB}, #32", "sub {X:dv1}, {X:tvB}, {X:nA}, lsr #32"]
         s += steps("du1", "iu1", "su1", "sdu1", "ta") + steps("dv1", "iv1", "sv1", "sdv1", "tb")
         s += pack("su1", "sv1", "sdu1", "sdv1", "bd", "bdd")
         s += start("nA", "bd", "bdd", "c1", "e0", "e1", "dd4")
     elif G == 8:
         s += ["fcvtzs {W:iu2}, {D:fu2}", "fcvtzs {W:iv2}, {D:fv2}", "fdiv {V:z45}.2d, {V:kOne}.2d, {V:zi}.2d"]
     elif G == 9:
-        s += ["sub {W:du2}, {W:nC}, {W:nB}"]
+        s += ["sub {W:du2}, {W:nC}, {W:nB}", "sxtw {X:du2}, {W:du2}"]
         s += steps("du2", "iu2", "su2", "sdu2", "tc")
     elif G == 10:
         s += ["fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d", "fsub {V:ll}.2d, {V:ll}.2d, {V:k32}.2d",

@@ -508,6 +508,47 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
   std::printf("[ asm      ] span_persp: %d odd-gradient cases, every variant identical\n", cases);
 }
 
+// Long second-order spans (persp_fast's pass loop: aarch64 asm/span_persp_a64long.h) on a
+// texture 32767 texels wide, so that clamped samples swing between 0 and umax (deltas near
+// +-2^31, |delta - 120 dd| up to 2^32) under strong curvature; lengths at each pass boundary
+// (the loop runs while more than 48 pixels are left, two runs a pass) and random ones.
+TEST(AsmSpanPersp, LongSpansMatchOnExtremeSteps) {
+  std::mt19937 rng(11);
+  const int sw = 32767, sh = 3;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  const int lengths[] = {65, 79, 80, 81, 82, 95, 96, 97, 112, 113, 127, 128, 129, 144, 145, 160, 161, 176, 177, 1920};
+  std::vector<uint8_t> ref(64 + 2000 + 64), got(ref.size());
+  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
+    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
+    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
+  };
+  int cases = 0;
+  for (int i = 0; i < 6000; ++i) {
+    sb::simd::PerspSpan p{};
+    p.zi0 = std::fabs(logu(-4, 0));
+    p.dzi = logu(-7, -3);
+    p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
+    p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
+    p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
+    p.umax = int32_t((uint32_t(sw) << 16) - 1);
+    p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = true;
+    const int n = i < 2000 ? lengths[i % 20] : 65 + int(rng() % 1936);
+    std::fill(ref.begin(), ref.end(), 0xa5);
+    sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
+    for (int v = 0; v < sb::simd::variant_count(); ++v) {
+      const sb::simd::Variant var = sb::simd::variant(v);
+      if (!var.kernels || !var.supported) continue;
+      std::fill(got.begin(), got.end(), 0xa5);
+      var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
+      ASSERT_EQ(ref, got) << var.kernels->name << " case " << i << " n " << n;
+    }
+    ++cases;
+  }
+  std::printf("[ asm      ] span_persp: %d long extreme-step spans, every variant identical\n", cases);
+}
+
 // surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
 // NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
 // scalar reference on every target: random walks (linear and second order) that stay
