@@ -231,7 +231,10 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
       const int32x2_t kMax = vreinterpret_s32_u32(m2), kZero = vdup_n_s32(0);
       const double P2i = (P + double(16)) + double(16);
       st.pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
-      st.ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
+      // Full passes (left >= 81: both offsets 32) while d < lim, then one with left' = 49 .. 80.
+      const int full = (left - 81) / 32 + 1, lastl = left - 32 * full;
+      st.offl = vcombine_f64(vdup_n_f64(double(lastl - 33 < 32 ? lastl - 33 : 32)),
+                             vdup_n_f64(double(lastl - 49 < 32 ? lastl - 49 : 32)));
       st.z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
       st.zsn = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
       st.cc = vmulq_n_f64(vaddq_f64(st.zsn, st.z23), zck);
@@ -243,7 +246,7 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
       lin_start2(st.c0, st.c1, st.e0, st.e1, st.dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u),
                  packed(sv.d, su.d), packed(sv.dd, su.dd));
       st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
-      st.lim = st.d + uint64_t(left - 48);
+      st.lim = st.d + uint64_t(32 * full);
       long_passes2(st);
       uint8_t* const d0 = dest;
       dest = reinterpret_cast<uint8_t*>(st.d);

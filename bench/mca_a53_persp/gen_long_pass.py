@@ -13,7 +13,7 @@ import re, sys
 PIN = dict(d="x0", tx="x23", w="x24", c0="x13", c1="x14", e0="x17", e1="x19", dd4="x20",
            nA="x25", nB="x26", nC="x27",
            kZix="v16", kUVx="v17", k16="v18", k32="v19", kOne="v20", kMin="v21", kMax4="v22",
-           kZck="v23", pp="v24", ll="v25", z23="v26", cc="v27", pos45="v28", zsn="v29")
+           kZck="v23", pp="v24", z23="v26", cc="v27", pos45="v28", zsn="v29")
 GPR = ["x%d" % i for i in list(range(0, 18)) + list(range(19, 29)) + [30, 18]]
 VEC = ["v%d" % i for i in range(32)]
 
@@ -94,14 +94,13 @@ def pack(du, dv, ddu, ddv, dpk, ddpk):
 def stage(G):
     s = []
     if G == 0:
-        s += ["fminnm {V:off}.2d, {V:ll}.2d, {V:k32}.2d",
-              "ldr {Q:zi}, [sp]", "ldr {Q:ts4}, [sp, #16]", "ldr {Q:ts5}, [sp, #16]"]
+        s += ["ldr {Q:zi}, [sp]", "ldr {Q:ts4}, [sp, #16]", "ldr {Q:ts5}, [sp, #16]"]
     elif G == 1:  # the deltas of runs r + 1 (samples A, B) and r + 2 (B, C)
         s += ["sub {W:fdu1}, {W:nB}, {W:nA}", "sub {W:fdu2}, {W:nC}, {W:nB}",
               "lsr {X:ftvA}, {X:nA}, #32", "lsr {X:ftvB}, {X:nB}, #32", "lsr {X:ftvC}, {X:nC}, #32",
               "sub {W:fdv1}, {W:ftvB}, {W:ftvA}", "sub {W:fdv2}, {W:ftvC}, {W:ftvB}"]
     elif G == 2:
-        s += ["fadd {V:pos45}.2d, {V:pp}.2d, {V:off}.2d",
+        s += ["fadd {V:pos45}.2d, {V:pp}.2d, {V:k32}.2d",
               "scvtf {D:fu1}, {W:fdu1}", "scvtf {D:fv1}, {W:fdv1}", "scvtf {D:fu2}, {W:fdu2}", "scvtf {D:fv2}, {W:fdv2}"]
     elif G == 4:
         s += ["fmul {D:fu1}, {D:fu1}, {V:cc}.d[0]", "fmul {D:fv1}, {D:fv1}, {V:cc}.d[0]",
@@ -122,7 +121,7 @@ def stage(G):
         s += ["sub {W:du2}, {W:nC}, {W:nB}", "sxtw {X:du2}, {W:du2}"]
         s += steps("du2", "iu2", "su2", "sdu2", "tc")
     elif G == 10:
-        s += ["fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d", "fsub {V:ll}.2d, {V:ll}.2d, {V:k32}.2d",
+        s += ["fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d",
               "fmul {V:ts4}.2d, {V:ts4}.2d, {V:z45}.d[0]", "fmul {V:ts5}.2d, {V:ts5}.2d, {V:z45}.d[1]"]
     elif G == 11:
         s += ["lsr {X:tvC}, {X:nC}, #32", "sub {X:dv2}, {X:tvC}, {X:nB}, lsr #32"]
@@ -225,9 +224,9 @@ if __name__ == "__main__":
 # 64-bit fields first, then 16-byte ones; the header static_asserts every offset.
 X_FIELDS = ["d", "tx", "w", "lim", "c0", "c1", "e0", "e1", "dd4", "nA", "nB", "nC"]
 V_FIELDS = ["kZrow", "kUVrow", "kZix", "kUVx", "k16", "k32", "kOne", "kMin", "kZck", "kMax4",
-            "pp", "ll", "z23", "cc", "pos45", "zsn"]
+            "offl", "pp", "z23", "cc", "pos45", "zsn"]
 OUT_X = ["d", "c0", "c1", "e0", "e1", "dd4", "nA", "nB", "nC"]
-OUT_V = ["pp", "ll", "z23", "cc", "pos45", "zsn"]
+OUT_V = ["pp", "z23", "cc", "pos45", "zsn"]
 OFF = {n: 8 * i for i, n in enumerate(X_FIELDS)}
 OFF.update({n: 8 * len(X_FIELDS) + 16 * i for i, n in enumerate(V_FIELDS)})
 
@@ -243,13 +242,15 @@ HEADER = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-order
 // = 0 draws runs r, r + 1 at d, 32 pixels a pass:
 //   c0, c1, e0, e1, dd4   run r's chains (lin_start2 of its packed start, step and second step);
 //   nA, nB, nC            samples r + 1, r + 2, r + 3 packed (v 2^32 + u, clamped to [0, max]);
-//   pp = [P_{r+2}, P_{r+2} + 16], ll = [left - 33, left - 49] (doubles); z23 = [z_{r+2}, z_{r+3}];
+//   pp = [P_{r+2}, P_{r+2} + 16] (doubles); z23 = [z_{r+2}, z_{r+3}];
 //   cc = zck (z_{r+1} + z_{r+2}, z_{r+2} + z_{r+3}) with zck = zc * -1/16 (steps16_sel's ddf =
-//        delta cc, see persp_fast); lim = d + left - 48 (the loop runs while d < lim: left > 48
-//        with left - 32 a pass); tx, w the texels and their row length; constants kZrow =
+//        delta cc, see persp_fast); lim = d + 32 k with k >= 1 the number of full passes (left
+//        >= 81: both sample offsets 32; the loop runs while d < lim), offl = [min(left' - 33,
+//        32), min(left' - 49, 32)] for the one pass after them (left' = left - 32 k in 49 .. 80);
+//        tx, w the texels and their row length; constants kZrow =
 //        [zrow, zrow], kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32, kOne, kMin =
 //        [kMinZi, kMinZi], kMax4 = [umax, vmax, umax, vmax] (uint32), kZck = [zck, zck].
-// A pass: samples r + 4, r + 5 at pos45 = pp + min(ll, 32), zi = max(zrow + zix pos, kMinZi)
+// A pass: samples r + 4, r + 5 at pos45 = pp + 32 (the last pass: pp + offl), zi = max(zrow + zix pos, kMinZi)
 // (fmla, fmaxnm), z = 1 / zi (fdiv), [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16,
 // uqxtn, umin (to_fixed, see persp_fast); the steps of runs r + 1, r + 2 from the packed
 // samples: dd = fcvtzs(double(delta) c) and steps16_dd's test as 120 |dd| <= |delta| (the
@@ -257,7 +258,7 @@ HEADER = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-order
 // = dd accepted, else 0 (the same d: delta - 120 dd' has delta's sign or is 0). On exit the
 // state names the next pass's (r advanced by 2): c0 = sample r packed, c1 - c0 its run's
 // packed step, dd4 4 times its packed second step, nA sample r + 1, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}], pos45 = [pos_{r+2}, pos_{r+3}]. Uses 48 bytes below sp.
+// [z_{r+2}, z_{r+3}], pos45 = [pos_{r+2}, pos_{r+3}]. Uses 64 bytes below sp.
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -294,9 +295,10 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
 def emit_header(ins, outh):
     lines = [l.strip() for l in open(ins) if l.strip() and not l.strip().endswith(":")]
     lines = [l.replace("b.lo .Lloop", "b.lo 1b") for l in lines]
-    pro = ["sub sp, sp, #48", "str x0, [sp, #40]",
+    pro = ["sub sp, sp, #64", "str x0, [sp, #40]",
            f"ldr q0, [x0, #{OFF['kZrow']}]", f"ldr q1, [x0, #{OFF['kUVrow']}]", f"ldr x1, [x0, #{OFF['lim']}]",
-           "str q0, [sp]", "str q1, [sp, #16]", "str x1, [sp, #32]"]
+           f"ldr q2, [x0, #{OFF['offl']}]",
+           "str q0, [sp]", "str q1, [sp, #16]", "str x1, [sp, #32]", "str q2, [sp, #48]"]
     for n in X_FIELDS:
         if n in PIN and n != "d":
             pro.append(f"ldr {PIN[n]}, [x0, #{OFF[n]}]")
@@ -309,15 +311,38 @@ def emit_header(ins, outh):
         epi.append(f"str {PIN[n]}, [x1, #{OFF[n]}]")
     for n in OUT_V:
         epi.append(f"str q{PIN[n][1:]}, [x1, #{OFF[n]}]")
-    epi += ["mov x0, x1", "add sp, sp, #48"]
-    allx = pro + ["1:"] + lines + epi
+    epi += ["mov x0, x1", "add sp, sp, #64"]
+    # the last pass: the full one with pos45 = pp + offl, no loop branch
+    last = []
+    for l in lines[:-1]:
+        m = re.fullmatch(r"fadd (v\d+)\.2d, (v\d+)\.2d, v%s\.2d" % PIN["k32"][1:], l)
+        if m and m.group(1) == PIN["pos45"]:
+            last += ["ldr q30, [sp, #48]", f"fadd {m.group(1)}.2d, {m.group(2)}.2d, v30.2d"]
+        else:
+            last.append(l)
+    assert len(last) == len(lines)
+    allx = pro + ["1:"] + lines + last + epi
     used = set()
     for l in allx:
         for m in re.finditer(r"\b([xwvqd])(\d+)\b", l):
             used.add(("v" if m.group(1) in "vqd" else "x") + m.group(2))
     clob = [r for r in GPR + VEC if r in used and r != "x0"]
-    body = "\n".join(f'      "{l}\\n\\t"' if l != "1:" else f'      "{l}\\n\\t"' for l in allx)
-    body = body[:-5] + '"'  # no separator after the last line
+    # four instructions a source line (every file stays under 1000 lines)
+    rows, cur = [], []
+    for l in allx:
+        cur.append(l)
+        if l.endswith(":") or len(cur) == 4:
+            rows.append(cur)
+            cur = []
+    if cur:
+        rows.append(cur)
+    out = []
+    for i, r in enumerate(rows):
+        t = " ".join(f'"{l}\\n\\t"' for l in r)
+        if i == len(rows) - 1:
+            t = t[:-5] + '"'
+        out.append("      " + t)
+    body = "\n".join(out)
     asserts = "\n".join(f"static_assert(offsetof(LongPass, {n}) == {OFF[n]});" for n in X_FIELDS + V_FIELDS)
     vf = V_FIELDS[:V_FIELDS.index("kMax4")]
     sf = V_FIELDS[V_FIELDS.index("kMax4") + 1:]

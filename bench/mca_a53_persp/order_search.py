@@ -18,7 +18,7 @@ opt = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--"))
 inp, outp = args
 evals, head = int(opt.get("evals", 20000)), int(opt.get("head", 0))
 random.seed(int(opt.get("seed", 1)))
-ITER = 60
+ITER = int(opt.get("iter", 60))
 lines = [l.strip() for l in open(inp) if l.strip() and not l.strip().startswith("//")]
 
 
@@ -33,6 +33,11 @@ def reg(tok):
 def parse(l):
     if l.endswith(":"):  # a label (pin it with --head)
         return set(), set(), False
+    if "// !" in l:  # a branch to code that writes the first listed register (and returns)
+        regs = [reg(t) for t in l.split("// !")[1].split()]
+        own = [r for r in (reg(t) for t in re.findall(r"[a-z]+\d+", l.split("//")[0])) if r]
+        return set(regs) | set(own) | {"nzcv"}, {regs[0]}, False
+    l = l.split("//")[0].strip()
     op, _, rest = l.partition(" ")
     rs = [r for r in (reg(t) for t in re.findall(r"[a-z]+\d+(?:\.\w+)?(?:\[\d+\])?", rest)) if r]
     reads, writes, store = set(), set(), False
@@ -57,7 +62,7 @@ def parse(l):
     elif op in ("cmp", "cmn", "tst"):
         reads |= set(rs)
         writes.add("nzcv")
-    elif op == "ccmp":
+    elif op in ("ccmp", "ccmn"):
         reads |= set(rs) | {"nzcv"}
         writes.add("nzcv")
     else:
