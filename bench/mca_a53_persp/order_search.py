@@ -135,7 +135,7 @@ while done < evals:
     stall = stall + 1 if m >= cur else 0
     if stall > 150:
         order = list(best_order)
-        for _ in range(4):
+        for _ in range(int(opt.get("kick", 4))):
             k = random.randrange(head, last)
             lo, hi = window(order, k)
             order = moved(order, k, random.randint(lo, hi))
