@@ -638,11 +638,8 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 // conversion, fcvtzu #16, uqxtn, umin); the tail after the passes as persp_fast's.
 void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
-  const double umaxd = double(p.umax), vmaxd = double(p.vmax), zc = zix;
+  const double zc = zix;
   const uint32_t w = uint32_t(width);
-  auto sample = [&](double px, double z) {
-    return Sample{to_fixed_sel((urow + ux * px) * z, umaxd), to_fixed_sel((vrow + vx * px) * z, vmaxd), z};
-  };
   auto lanes = [](uint32x2_t x) { return vget_lane_u64(vreinterpret_u64_u32(x), 0); };
   const double zck = zc * -0.0625;  // see persp_fast
   LongPass st;
@@ -695,22 +692,24 @@ void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, cons
   su = RunSteps{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
   sv = RunSteps{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
                 int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
-  double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
-  double pos2 = vgetq_lane_f64(st.pos45, 0), pos3 = vgetq_lane_f64(st.pos45, 1);
-  // The tail (left = 17 .. 48), persp_fast's.
+  const double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
+  // The tail (left = 17 .. 48), persp_fast's; samples r + 2, r + 3 (sample(pos2, z2),
+  // sample(pos3, z3)) as the last pass converted them (nB, nC: to_fixed, see persp_fast).
+  Sample sB{int32_t(uint32_t(st.nB)), int32_t(uint32_t(st.nB >> 32)), z2};
+  const Sample sC{int32_t(uint32_t(st.nC)), int32_t(uint32_t(st.nC >> 32)), z3};
   if (left > 32) {
-    const Sample s2 = sample(pos2, z2);
+    const Sample s2 = sB;
     const double c1 = zc * 0.5 * (s1.z + s2.z);
     const RunSteps u1 = steps16<true>(s1.u, s2.u, c1), v1 = steps16<true>(s1.v, s2.v, c1);
     draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
     dest += 16;
     left -= 16;
-    s0 = s1, s1 = s2, su = u1, sv = v1, z2 = z3, pos2 = pos3;
+    s0 = s1, s1 = s2, su = u1, sv = v1, sB = sC;
   }
   draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
-  const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
+  const Sample s2 = steps > 0 ? sB : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
   if constexpr (kLastSteps) {
