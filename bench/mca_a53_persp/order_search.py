@@ -87,12 +87,24 @@ def dep(a, b):  # must a stay before b?
     return bool(wa & rb or wa & wb or ra & wb) or (sa and sb)
 
 
+CUTS = [int(c) for c in opt["cuts"].split(",")] if "cuts" in opt else []
+
+
 def cycles(orders, cpu):
-    text = "".join(f"# LLVM-MCA-BEGIN r{k}\n" + "\n".join(lines[i] for i in o) + "\n# LLVM-MCA-END\n"
-                   for k, o in enumerate(orders))
+    """Cycles of each order, or with --cuts=A,B,... (body line indexes, the label not counted)
+    the sum over the blocks cut there (as qemu's translation blocks are timed)."""
+    def blocks(o):
+        body = [lines[i] for i in o if not lines[i].endswith(":")]
+        b = [0] + CUTS + [len(body)]
+        return [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+    parts = [blocks(o) if CUTS else [[lines[i] for i in o]] for o in orders]
+    text = "".join(f"# LLVM-MCA-BEGIN r{k}_{j}\n" + "\n".join(l.split("//")[0] for l in blk) + "\n# LLVM-MCA-END\n"
+                   for k, p in enumerate(parts) for j, blk in enumerate(p))
     r = subprocess.run(["llvm-mca-14", "-mtriple=aarch64", f"-mcpu={cpu}", f"-iterations={ITER}"], input=text,
                        capture_output=True, text=True)
-    return [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
+    c = [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
+    n = len(parts[0])
+    return [sum(c[k * n:(k + 1) * n]) for k in range(len(orders))]
 
 
 def score(orders):
