@@ -16,7 +16,7 @@
 // NEON run); the loop is entered at 2: after SB_PAIR_LOOP_16_PRO, the instructions before
 // it but the stores. Numerators {N2, N3, T, N0, N1}: v19-v23 (even row), v24-v28 (odd);
 // steps v16-v18, v29 as in the loop below; x26 = 0xffff. (Orders from
-// bench/mca_a53_block/order_search.py, every loop of this file.)
+// bench/order_search.py, every loop of this file.)
 #define SB_PAIR_LOOP_16_PRO \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "add v27.4s, v22.4s, v16.4s\n\t" \

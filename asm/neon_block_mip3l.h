@@ -26,7 +26,7 @@ namespace {
 
 // The band loop (asm/neon_block_mip3.h's SB_MIP3_BAND0..2 and SB_MIP3_ENTRY, same
 // registers and method) with the texel rows read at x5 and x5 + 16, x5 += 32 wrapped by
-// x28 = ~P, reordered by bench/mca_a53_block/order_search.py (Cortex-A53 model: 72 -> 70
+// x28 = ~P, reordered by bench/order_search.py (Cortex-A53 model: 72 -> 70
 // cycles a band); the entry copy is band 0 without the previous band's stores, after the
 // group's grid rows 0-2 (v16-v18, v19 = g + g1 of row 0, v20 of row 1, v22 = row 2's entries
 // 1..8, x3 = row 3), the first texel rows (v24, v25 at t0, x5 = the next band's) and the

@@ -7,6 +7,7 @@
 
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
+#include "asm/span_persp_a64long.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/surface_span.h"
 
@@ -629,6 +630,102 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   }
 #endif
 }
+#if defined(__aarch64__) && defined(__GNUC__)
+// aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
+// samples, steps and runs with its passes as one asm loop (asm/span_persp_a64long.h). The
+// first samples in 2-lane vectors, each lane persp_fast's scalar operation (the same bits:
+// positions P_0, P_1 = P_0 + 16, sample j + 2 at P_j + 32; zrow + zix pos and uvrow + uvx pos
+// fused as there; 1 / max(zi, kMinZi) as recip2; to_fixed as the vector loop's unsigned
+// conversion, fcvtzu #16, uqxtn, umin); the tail after the passes as persp_fast's.
+void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
+  const double zc = zix;
+  const uint32_t w = uint32_t(width);
+  auto lanes = [](uint32x2_t x) { return vget_lane_u64(vreinterpret_u64_u32(x), 0); };
+  const double zck = zc * -0.0625;  // see persp_fast
+  LongPass st;
+  st.kZrow = vdupq_n_f64(zrow), st.kZix = vdupq_n_f64(zix), st.kMin = vdupq_n_f64(kMinZi);
+  st.kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
+  st.kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
+  st.k16 = vdupq_n_f64(16.0), st.k32 = vdupq_n_f64(32.0), st.kOne = vdupq_n_f64(1.0), st.kZck = vdupq_n_f64(zck);
+  const uint32x2_t m2 = vcreate_u32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
+  st.kMax4 = vcombine_u32(m2, m2);
+  const double P = p.px0, P1 = P + double(16);
+  const float64x2_t pA = vcombine_f64(vdup_n_f64(P), vdup_n_f64(P1)), pB = vaddq_f64(pA, st.k32);
+  const float64x2_t zA = vdivq_f64(st.kOne, vmaxnmq_f64(vfmaq_f64(st.kZrow, st.kZix, pA), st.kMin));
+  const float64x2_t zB = vdivq_f64(st.kOne, vmaxnmq_f64(vfmaq_f64(st.kZrow, st.kZix, pB), st.kMin));
+  auto fix = [&](float64x2_t pos, int lane, float64x2_t z, int zlane) {  // sample()'s [u, v], clamped
+    const float64x2_t t = lane ? vfmaq_laneq_f64(st.kUVrow, st.kUVx, pos, 1) : vfmaq_laneq_f64(st.kUVrow, st.kUVx, pos, 0);
+    const float64x2_t q = zlane ? vmulq_laneq_f64(t, z, 1) : vmulq_laneq_f64(t, z, 0);
+    return lanes(vmin_u32(vqmovn_u64(vcvtq_n_u64_f64(q, 16)), m2));
+  };
+  const uint64_t n0 = fix(pA, 0, zA, 0), n1 = fix(pA, 1, zA, 1), n2 = fix(pB, 0, zB, 0), n3 = fix(pB, 1, zB, 1);
+  const double z0 = vgetq_lane_f64(zA, 0), z1 = vgetq_lane_f64(zA, 1);
+  Sample s0{int32_t(uint32_t(n0)), int32_t(uint32_t(n0 >> 32)), z0};
+  Sample s1{int32_t(uint32_t(n1)), int32_t(uint32_t(n1 >> 32)), z1};
+  RunSteps su = steps16<true>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
+  RunSteps sv = steps16<true>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+  auto packed = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+  const double P2i = P1 + double(16);
+  st.pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
+  // Full passes (left >= 81: both offsets 32) while d < lim, then one with left' = 49 .. 80.
+  int left = n;
+  const int full = (left - 81) / 32 + 1, lastl = left - 32 * full;
+  st.offl = vcombine_f64(vdup_n_f64(double(lastl - 33 < 32 ? lastl - 33 : 32)),
+                         vdup_n_f64(double(lastl - 49 < 32 ? lastl - 49 : 32)));
+  st.z23 = zB;
+  st.zsn = vextq_f64(zA, zB, 1);  // [z_1, z_2]
+  st.cc = vmulq_n_f64(vaddq_f64(st.zsn, st.z23), zck);
+  st.pos45 = pB;
+  st.nA = n1, st.nB = n2, st.nC = n3;
+  lin_start2(st.c0, st.c1, st.e0, st.e1, st.dd4, n0, packed(sv.d, su.d), packed(sv.dd, su.dd));
+  st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
+  st.lim = st.d + uint64_t(32 * full);
+  long_passes2(st);
+  left -= int(reinterpret_cast<uint8_t*>(st.d) - dest);
+  dest = reinterpret_cast<uint8_t*>(st.d);
+  // Run r's steps from its chains (c1 - c0 = its packed step, dd4 = 4 times its packed second
+  // step, |parts| < 2^31); s0.z is not read below.
+  const uint64_t dp = st.c1 - st.c0;
+  const int64_t ddp = int64_t(st.dd4) >> 2;
+  s0 = Sample{int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), 0.0};
+  s1 = Sample{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
+  su = RunSteps{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
+  sv = RunSteps{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
+                int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+  const double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
+  // The tail (left = 17 .. 48), persp_fast's; samples r + 2, r + 3 (sample(pos2, z2),
+  // sample(pos3, z3)) as the last pass converted them (nB, nC: to_fixed, see persp_fast).
+  Sample sB{int32_t(uint32_t(st.nB)), int32_t(uint32_t(st.nB >> 32)), z2};
+  const Sample sC{int32_t(uint32_t(st.nC)), int32_t(uint32_t(st.nC >> 32)), z3};
+  if (left > 32) {
+    const Sample s2 = sB;
+    const double c1 = zc * 0.5 * (s1.z + s2.z);
+    const RunSteps u1 = steps16<true>(s1.u, s2.u, c1), v1 = steps16<true>(s1.v, s2.v, c1);
+    draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
+    dest += 16;
+    left -= 16;
+    s0 = s1, s1 = s2, su = u1, sv = v1, sB = sC;
+  }
+  draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
+  dest += 16;
+  const int last = left - 16, steps = last - 1;
+  const Sample s2 = steps > 0 ? sB : s1;
+  const double curve = zc * 0.5 * (s1.z + s2.z);
+  RunSteps lu, lv;
+  if constexpr (kLastSteps) {
+    last_steps(steps, s1, s2, curve, &lu, &lv);
+  } else {
+    run_steps_uv(steps, s1, s2, curve, &lu, &lv);
+  }
+  if (last == 16) {
+    draw16<true>(dest, texels, w, s1.u, s1.v, lu, lv);
+  } else {
+    draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+             uint32_t(lv.dd));
+  }
+}
+#endif
 }  // namespace
 
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
@@ -644,6 +741,9 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   if (is_short) return persp_short_inl<true>(dest, n, texels, width, p);
 #if defined(SB_V7_MID)
   if (n >= kMidMin && n <= kMidMax) return persp_mid_v7(dest, n, texels, width, p);  // ARMv7, four runs
+#endif
+#if defined(__aarch64__) && defined(__GNUC__)
+  if (n > 80) return persp_long_a64(dest, n, texels, width, p);
 #endif
   persp_fast<true>(dest, n, texels, width, p);
 }

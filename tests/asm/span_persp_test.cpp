@@ -587,6 +587,88 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
   std::printf("[ asm      ] span_persp: %d odd-gradient cases, every variant identical\n", cases);
 }
 
+// Long second-order spans (persp_fast's pass loop: aarch64 asm/span_persp_a64long.h) on a
+// texture 32767 texels wide, so that clamped samples swing between 0 and umax (deltas near
+// +-2^31, |delta - 120 dd| up to 2^32) under strong curvature; lengths at each pass boundary
+// (the loop runs while more than 48 pixels are left, two runs a pass) and random ones.
+TEST(AsmSpanPersp, LongSpansMatchOnExtremeSteps) {
+  std::mt19937 rng(11);
+  const int sw = 32767, sh = 3;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  const int lengths[] = {65, 79, 80, 81, 82, 95, 96, 97, 112, 113, 127, 128, 129, 144, 145, 160, 161, 176, 177, 1920};
+  std::vector<uint8_t> ref(64 + 2000 + 64), got(ref.size());
+  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
+    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
+    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
+  };
+  int cases = 0;
+  for (int i = 0; i < 6000; ++i) {
+    sb::simd::PerspSpan p{};
+    p.zi0 = std::fabs(logu(-4, 0));
+    p.dzi = logu(-7, -3);
+    p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
+    p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
+    p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
+    p.umax = int32_t((uint32_t(sw) << 16) - 1);
+    p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = true;
+    const int n = i < 2000 ? lengths[i % 20] : 65 + int(rng() % 1936);
+    std::fill(ref.begin(), ref.end(), 0xa5);
+    sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
+    for (int v = 0; v < sb::simd::variant_count(); ++v) {
+      const sb::simd::Variant var = sb::simd::variant(v);
+      if (!var.kernels || !var.supported) continue;
+      std::fill(got.begin(), got.end(), 0xa5);
+      var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
+      ASSERT_EQ(ref, got) << var.kernels->name << " case " << i << " n " << n;
+    }
+    ++cases;
+  }
+  std::printf("[ asm      ] span_persp: %d long extreme-step spans, every variant identical\n", cases);
+}
+
+// The same depths on long second-order spans (the aarch64 pass loop's reciprocals, computed
+// a pass ahead without a divide, take its divide branch there): every sample sits next to a
+// texel boundary that a reciprocal one ulp off would cross.
+TEST(AsmSpanPersp, LongSpansDivideWhereTheReciprocalCannot) {
+  std::mt19937 rng(7);
+  const int sw = 37, sh = 19;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i);
+  std::vector<uint8_t> ref(2000), got(2000);
+  const int lengths[] = {81, 96, 97, 113, 128, 129, 160, 161, 300, 1920};
+  int cases = 0;
+  for (int k : {-29, -3, 0, 1, 7, 40, 300, 999, 1000, 1010, 1022}) {
+    for (int c : {3, 5, 7, 11, 13}) {
+      const double m = double(c) * 65536.0, a = std::nextafter(m, 0.0);
+      sb::simd::PerspSpan p{};
+      p.zi0 = k < 1000 ? std::ldexp(2.0 - 0x1p-52, k) : std::ldexp(1.5, k);
+      p.dzi = std::ldexp(rng() & 1 ? 1.0 : -1.0, k - 80);  // second order; zi still rounds to zi0
+      p.uz0 = k < 1000 ? std::ldexp(a, k + 1 - 16) : 0.0;
+      p.px0 = double(rng() % 100) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1);
+      p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+      p.second_order = true;
+      const int n = lengths[cases % 10];
+      sb::simd::surface_span_persp_scalar(ref.data(), n, surf.data(), sw, sh, p);
+      for (int v = 0; v < sb::simd::variant_count(); ++v) {
+        const sb::simd::Variant var = sb::simd::variant(v);
+        if (!var.kernels || !var.supported) continue;
+        std::fill(got.begin(), got.end(), 0);
+        var.kernels->surface_span_persp(got.data(), n, surf.data(), sw, sh, p);
+        ASSERT_TRUE(std::equal(ref.begin(), ref.begin() + n, got.begin()))
+            << var.kernels->name << " k " << k << " n " << n;
+      }
+      if (k < 1000) {
+        EXPECT_EQ(ref[n - 1], uint8_t(c)) << k;  // the case is the sensitive one
+      }
+      ++cases;
+    }
+  }
+  std::printf("[ asm      ] span_persp: %d long spans at all-ones and huge depths, every variant identical\n", cases);
+}
+
 // surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
 // NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
 // scalar reference on every target: random walks (linear and second order) that stay

@@ -1,0 +1,401 @@
+#!/usr/bin/env python3
+# bench/mca_a53_persp/gen_long_pass.py: generates persp_fast's aarch64 second-order long-span
+# pass (asm/span_persp_a64long.h): one loop iteration = two 16-pixel runs + the stage work
+# (steps of runs r + 1, r + 2; samples r + 4, r + 5 with their divide), written with value
+# names, registers allocated by a linear scan over the chosen order.
+#
+#   gen_long_pass.py body OUT.s          the body in its slot order (for order_search.py)
+#   gen_long_pass.py header IN.s OUT.h   the header from a (searched) body
+# The body's last line is the loop branch; order_search keeps register, flag and store order.
+import re, sys
+
+# Loop-carried values and their registers (the C++ wrapper binds them).
+PIN = dict(d="x0", tx="x23", w="x24", c0="x13", c1="x14", e0="x17", e1="x19", dd4="x20",
+           nA="x25", nB="x26", nC="x27",
+           kZix="v16", kUVx="v17", k16="v18", k32="v19", kOne="v20", kMin="v21", kMax4="v22",
+           kZck="v23", pp="v24", z45="v25", z23="v26", cc="v27", pos45="v28", zsn="v29")
+GPR = ["x%d" % i for i in list(range(0, 18)) + list(range(19, 29)) + [30, 18]]
+VEC = ["v%d" % i for i in range(32)]
+
+body = []   # (slot G, text)
+
+
+def E(g, *lines):
+    for l in lines:
+        body.append((g, l))
+
+
+def group(J, ca, cb, ea, eb, ddv, last):
+    """Shifts and chain steps of pixel group J (4 pixels) from chains ca (pixel k), cb (k + 1)."""
+    h = ["{X:h%d_%d}" % (J, i) for i in range(4)]
+    l = ["{W:l%d_%d}" % (J, i) for i in range(4)]
+    out = [f"lsr {h[0]}, {{X:{ca}}}, #48", f"lsr {l[0]}, {{W:{ca}}}, #16",
+           f"lsr {h[1]}, {{X:{cb}}}, #48", f"lsr {l[1]}, {{W:{cb}}}, #16",
+           f"add {{X:{ca}}}, {{X:{ca}}}, {{X:{ea}}}", f"add {{X:{cb}}}, {{X:{cb}}}, {{X:{eb}}}",
+           f"add {{X:{ea}}}, {{X:{ea}}}, {{X:{ddv}}}", f"add {{X:{eb}}}, {{X:{eb}}}, {{X:{ddv}}}",
+           f"lsr {h[2]}, {{X:{ca}}}, #48", f"lsr {l[2]}, {{W:{ca}}}, #16",
+           f"lsr {h[3]}, {{X:{cb}}}, #48", f"lsr {l[3]}, {{W:{cb}}}, #16"]
+    if not last:
+        out += [f"add {{X:{ca}}}, {{X:{ca}}}, {{X:{ea}}}", f"add {{X:{cb}}}, {{X:{cb}}}, {{X:{eb}}}",
+                f"add {{X:{ea}}}, {{X:{ea}}}, {{X:{ddv}}}", f"add {{X:{eb}}}, {{X:{eb}}}, {{X:{ddv}}}"]
+    return out
+
+
+def madd(J):
+    return [f"madd {{W:h{J}_{i}}}, {{W:h{J}_{i}}}, {{W:w}}, {{W:l{J}_{i}}}" for i in range(4)]
+
+
+def loads(J):
+    return [f"ldrb {{W:h{J}_{i}}}, [{{X:tx}}, {{W:h{J}_{i}}}, uxtw]" for i in range(4)]
+
+
+def pairs(J):
+    return [f"orr {{X:p{J}_0}}, {{X:h{J}_0}}, {{X:h{J}_1}}, lsl #8", f"orr {{X:p{J}_1}}, {{X:h{J}_2}}, {{X:h{J}_3}}, lsl #8"]
+
+
+def word(J):
+    return [f"orr {{X:q{J}}}, {{X:p{J}_0}}, {{X:p{J}_1}}, lsl #16", f"str {{W:q{J}}}, [{{X:d}}, #{4 * J}]"]
+
+
+def steps(delta, dd, dout, ddout, t):
+    """steps16_dd(delta, dd): delta sign-extended in an x register (|delta| < 2^31), dd an
+    int32 in a w register. Accept iff 120 |dd| <= |delta| (steps16_dd's test, the form proved
+    in asm/span_persp_run.h); d = trunc((delta - 120 dd') / 16), dd' = dd accepted, else 0
+    (|delta - 120 dd'| <= 2 |delta|: 64-bit). dout: d, 64-bit; ddout: dd' in a w register."""
+    y, pd, s, x, u = (f"{t}y", f"{t}pd", f"{t}s", f"{t}x", f"{t}u")
+    return [f"sbfiz {{X:{y}}}, {{X:{dd}}}, #7, #32",
+            f"sub {{X:{y}}}, {{X:{y}}}, {{W:{dd}}}, sxtw #3",          # 120 dd, 64-bit
+            f"cmp {{X:{delta}}}, #0",
+            f"cneg {{X:{pd}}}, {{X:{delta}}}, lt",                      # |delta|
+            f"add {{X:{s}}}, {{X:{y}}}, {{X:{pd}}}",                    # 120 dd + |delta|
+            f"cmp {{X:{s}}}, {{X:{pd}}}, lsl #1",                       # <= 2 |delta| unsigned
+            f"csel {{W:{ddout}}}, {{W:{dd}}}, wzr, ls",
+            f"csel {{X:{y}}}, {{X:{y}}}, xzr, ls",
+            f"sub {{X:{x}}}, {{X:{delta}}}, {{X:{y}}}",
+            f"asr {{X:{u}}}, {{X:{x}}}, #63",
+            f"add {{X:{x}}}, {{X:{x}}}, {{X:{u}}}, lsr #60",
+            f"asr {{X:{dout}}}, {{X:{x}}}, #4"]
+
+
+def start(uv, dpk, ddpk, c1, e0, e1, dd4):
+    """lin_start2 from packed d, dd (c0 = uv itself)."""
+    return [f"add {{X:{c1}}}, {{X:{uv}}}, {{X:{dpk}}}",
+            f"add {{X:{e0}}}, {{X:{ddpk}}}, {{X:{dpk}}}, lsl #1",
+            f"add {{X:{e1}}}, {{X:{e0}}}, {{X:{ddpk}}}, lsl #1",
+            f"lsl {{X:{dd4}}}, {{X:{ddpk}}}, #2"]
+
+
+def pack(du, dv, ddu, ddv, dpk, ddpk):
+    return [f"add {{X:{dpk}}}, {{X:{du}}}, {{X:{dv}}}, lsl #32",
+            f"lsl {{X:{ddpk}}}, {{X:{ddv}}}, #32",
+            f"add {{X:{ddpk}}}, {{X:{ddpk}}}, {{W:{ddu}}}, sxtw"]
+
+
+# "@" marks the reciprocal work for the next pass (samples r + 6, r + 7: positions, depths,
+# Newton steps, its check and branch); the last pass drops it, the one before it takes its
+# positions from offl. "!" marks the check's branch (to the divide, see the header).
+def stage(G):
+    s = []
+    if G == 0:
+        s += ["ldr {Q:ts4}, [sp, #16]", "ldr {Q:ts5}, [sp, #16]", "@ldr {Q:zi}, [sp]",
+              "fmla {V:ts4}.2d, {V:kUVx}.2d, {V:pos45}.d[0]", "fmla {V:ts5}.2d, {V:kUVx}.2d, {V:pos45}.d[1]",
+              "@fadd {V:pos45}.2d, {V:pp}.2d, {V:k32}.2d"]
+    elif G == 1:  # the deltas of runs r + 1 (samples A, B) and r + 2 (B, C)
+        s += ["sub {W:fdu1}, {W:nB}, {W:nA}", "sub {W:fdu2}, {W:nC}, {W:nB}",
+              "lsr {X:ftvA}, {X:nA}, #32", "lsr {X:ftvB}, {X:nB}, #32", "lsr {X:ftvC}, {X:nC}, #32",
+              "sub {W:fdv1}, {W:ftvB}, {W:ftvA}", "sub {W:fdv2}, {W:ftvC}, {W:ftvB}"]
+    elif G == 2:
+        s += ["scvtf {D:fu1}, {W:fdu1}", "scvtf {D:fv1}, {W:fdv1}", "scvtf {D:fu2}, {W:fdu2}", "scvtf {D:fv2}, {W:fdv2}",
+              "ext {V:zsn}.16b, {V:z23}.16b, {V:z45}.16b, #8", "@fmla {V:zi}.2d, {V:kZix}.2d, {V:pos45}.2d"]
+    elif G == 4:
+        s += ["fmul {D:fu1}, {D:fu1}, {V:cc}.d[0]", "fmul {D:fv1}, {D:fv1}, {V:cc}.d[0]",
+              "fmul {D:fu2}, {D:fu2}, {V:cc}.d[1]", "fmul {D:fv2}, {D:fv2}, {V:cc}.d[1]",
+              "fmul {V:ts4}.2d, {V:ts4}.2d, {V:z45}.d[0]", "fmul {V:ts5}.2d, {V:ts5}.2d, {V:z45}.d[1]",
+              "fadd {V:zsn2}.2d, {V:zsn}.2d, {V:z45}.2d", "mov {V:z23}.16b, {V:z45}.16b",
+              "@fmaxnm {V:zi}.2d, {V:zi}.2d, {V:kMin}.2d"]
+    elif G == 6:
+        s += ["fcvtzs {W:iu1}, {D:fu1}", "fcvtzs {W:iv1}, {D:fv1}",
+              "fcvtzu {V:ts4}.2d, {V:ts4}.2d, #16", "fcvtzu {V:ts5}.2d, {V:ts5}.2d, #16",
+              "fmul {V:cc}.2d, {V:zsn2}.2d, {V:kZck}.d[0]", "@frecpe {V:y}.2d, {V:zi}.2d"]
+    elif G == 7:  # run r + 1's steps, its chains (run b: c0 = nA itself)
+        s += ["sub {W:du1}, {W:nB}, {W:nA}", "sxtw {X:du1}, {W:du1}",
+              "lsr {X:tvB}, {X:nB}, #32", "sub {X:dv1}, {X:tvB}, {X:nA}, lsr #32"]
+        s += steps("du1", "iu1", "su1", "sdu1", "ta") + steps("dv1", "iv1", "sv1", "sdv1", "tb")
+        s += pack("su1", "sv1", "sdu1", "sdv1", "bd", "bdd")
+        s += start("nA", "bd", "bdd", "c1", "e0", "e1", "dd4")
+    elif G == 8:
+        s += ["fcvtzs {W:iu2}, {D:fu2}", "fcvtzs {W:iv2}, {D:fv2}",
+              "uqxtn {V:n45}.2s, {V:ts4}.2d", "@frecps {V:rs}.2d, {V:zi}.2d, {V:y}.2d"]
+    elif G == 9:
+        s += ["sub {W:du2}, {W:nC}, {W:nB}", "sxtw {X:du2}, {W:du2}"]
+        s += steps("du2", "iu2", "su2", "sdu2", "tc")
+    elif G == 10:
+        s += ["@fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d", "uqxtn2 {V:n45}.4s, {V:ts5}.2d",
+              "@fmul {V:y}.2d, {V:y}.2d, {V:rs}.2d"]
+    elif G == 11:
+        s += ["lsr {X:tvC}, {X:nC}, #32", "sub {X:dv2}, {X:tvC}, {X:nB}, lsr #32"]
+        s += steps("dv2", "iv2", "sv2", "sdv2", "td")
+        s += pack("su2", "sv2", "sdu2", "sdv2", "ad", "add")
+    elif G == 12:
+        s += ["@fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d", "umin {V:n45}.4s, {V:n45}.4s, {V:kMax4}.4s",
+              "@frecps {V:rs}.2d, {V:zi}.2d, {V:y}.2d"]
+    elif G == 14:
+        s += ["@fmul {V:y}.2d, {V:y}.2d, {V:rs}.2d", "@ldr {Q:re}, [sp, #64]", "@ldr {Q:re2}, [sp, #64]",
+              "@fmov {X:zb0}, {D:zi}", "@mov {X:zb1}, {V:zi}.d[1]"]
+    elif G == 15:  # the next pass's first run r + 2 (sample B)
+        s += ["mov {X:c0}, {X:nB}"] + start("nB", "ad", "add", "c1", "e0", "e1", "dd4")
+        # the check (see persp_short_inl): bit 6 of clz((bits + 1) << 12) (all-ones significand)
+        # or of ((bits >> 52) + 25) >> 5 (exponent >= 2023: b >= 2^1000), either lane
+        s += ["@add {X:zt0}, {X:zb0}, #1", "@add {X:zt1}, {X:zb1}, #1", "@lsl {X:zt0}, {X:zt0}, #12",
+              "@lsl {X:zt1}, {X:zt1}, #12", "@clz {X:zt0}, {X:zt0}", "@clz {X:zt1}, {X:zt1}",
+              "@lsr {X:ze0}, {X:zb0}, #52", "@lsr {X:ze1}, {X:zb1}, #52", "@add {X:ze0}, {X:ze0}, #25",
+              "@add {X:ze1}, {X:ze1}, #25", "@orr {X:zt0}, {X:zt0}, {X:zt1}", "@orr {X:ze0}, {X:ze0}, {X:ze1}",
+              "@orr {X:zt0}, {X:zt0}, {X:ze0}, lsr #5"]
+    elif G == 16:
+        s += ["@fmls {V:re}.2d, {V:zi}.2d, {V:y}.2d"]
+    elif G == 17:
+        s += ["@fmla {V:y}.2d, {V:y}.2d, {V:re}.2d"]
+    elif G == 18:
+        s += ["mov {X:nA}, {X:nC}", "fmov {X:nB}, {D:n45}", "mov {X:nC}, {V:n45}.d[1]",
+              "@fmls {V:re2}.2d, {V:zi}.2d, {V:y}.2d", "@fmla {V:y}.2d, {V:y}.2d, {V:re2}.2d",
+              "@!tbnz {X:zt0}, #6, .Lloop // {V:y} {V:zi}", "@mov {V:z45}.16b, {V:y}.16b"]
+    elif G == 19:
+        s += ["add {X:d}, {X:d}, #32", "ldr {X:lim}, [sp, #32]", "cmp {X:d}, {X:lim}", "b.lo .Lloop"]
+    return s
+
+
+def build():
+    for J in range(10):
+        if J >= 3:
+            E(2 * J, f"orr {{X:q{J - 3}}}, {{X:p{J - 3}_0}}, {{X:p{J - 3}_1}}, lsl #16")
+        if J >= 2:
+            E(2 * J, *pairs(J - 2))
+        if J < 4:
+            E(2 * J, *group(J, "c0", "c1", "e0", "e1", "dd4", J == 3))
+        elif J < 8:
+            E(2 * J, *group(J, "nA", "c1", "e0", "e1", "dd4", J == 7))
+        E(2 * J, *stage(2 * J))
+        if J < 8:
+            m = madd(J)
+            ld = loads(J - 1) if J >= 1 else []
+            for i in range(4):
+                E(2 * J, m[i])
+                if ld:
+                    E(2 * J, ld[i])
+        elif J == 8:
+            E(2 * J, *loads(7))
+        if J >= 3:
+            E(2 * J, f"str {{W:q{J - 3}}}, [{{X:d}}, #{4 * (J - 3)}]")
+        if J == 9:
+            E(2 * J, *word(7))
+        if J != 9:
+            E(2 * J + 1, *stage(2 * J + 1))
+    E(19, *stage(19))
+    out = []
+    for _, t in body:
+        if t.startswith("@!"):
+            op, _, regs = t[2:].partition(" // ")
+            out.append(f"{op} // ! {regs}")
+        elif t.startswith("@"):
+            out.append(t[1:] + " // @")
+        else:
+            out.append(t)
+    return out
+
+
+TOK = re.compile(r"\{([XWVDQ]):(\w+)\}")
+
+
+def allocate(lines):
+    first, lastuse = {}, {}
+    for i, l in enumerate(lines):
+        for _, n in TOK.findall(l):
+            first.setdefault(n, i)
+            lastuse[n] = i
+    reg = {}
+    for n in first:
+        if n in PIN:
+            reg[n] = PIN[n]
+    pinned = set(PIN.values())
+    free_at = {}  # register -> index after which it is free
+    names = sorted((n for n in first if n not in PIN), key=lambda n: first[n])
+    for n in names:
+        kind = "v" if any(k in "VDQ" for k, m in TOK.findall("".join(lines)) if m == n) else "x"
+        pool = VEC if kind == "v" else GPR
+        for r in pool:
+            if r in pinned:
+                continue
+            if free_at.get(r, -1) < first[n]:
+                reg[n] = r
+                free_at[r] = lastuse[n]
+                break
+        else:
+            live = [m for m in reg if m not in PIN and first[m] <= first[n] <= lastuse[m]]
+            raise SystemExit(f"out of {kind} registers for {n} at line {first[n]}: {lines[first[n]]}; live {live}")
+    def sub(m):
+        k, n = m.group(1), m.group(2)
+        num = reg[n][1:]
+        return {"X": "x", "W": "w", "V": "v", "D": "d", "Q": "q"}[k] + num
+    return [TOK.sub(sub, l) for l in lines], reg
+
+
+if __name__ == "__main__":
+    if sys.argv[1] == "body":
+        out, reg = allocate(build())
+        used = sorted(set(reg.values()))
+        sys.stderr.write("registers: " + " ".join(used) + "\n")
+        open(sys.argv[2], "w").write(".Lloop:\n" + "\n".join(out) + "\n")
+
+
+# The state block the asm loads on entry and stores back on exit (fewer than 30 asm operands):
+# 64-bit fields first, then 16-byte ones; the header static_asserts every offset.
+X_FIELDS = ["d", "tx", "w", "lim", "c0", "c1", "e0", "e1", "dd4", "nA", "nB", "nC"]
+V_FIELDS = ["kZrow", "kUVrow", "kZix", "kUVx", "k16", "k32", "kOne", "kMin", "kZck", "kMax4",
+            "offl", "pp", "z23", "z45", "cc", "pos45", "zsn"]
+OUT_X = ["d", "c0", "c1", "e0", "e1", "dd4", "nA", "nB", "nC"]
+OUT_V = ["z23", "pos45", "zsn"]
+OFF = {n: 8 * i for i, n in enumerate(X_FIELDS)}
+OFF.update({n: 8 * len(X_FIELDS) + 16 * i for i, n in enumerate(V_FIELDS)})
+
+HEADER = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-order long-span passes (two
+// 16-pixel runs a pass, while more than 48 pixels are left) as one asm loop with fixed
+// registers: the drawing (asm/span_persp_arm.h's lin_slot pipeline) and the stage work of
+// persp_fast's vector loop (steps of runs r + 1, r + 2; samples r + 4, r + 5), each operation
+// that loop's (the same bits). Generated by bench/mca_a53_persp/gen_long_pass.py (order from
+// bench/order_search.py, scored by llvm-mca Cortex-A53 then Cortex-A57): do not
+// edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
+//
+// Contract (long_passes2, state in LongPass, read on entry and written back on exit): pass k
+// = 0 draws runs r, r + 1 at d, 32 pixels a pass:
+//   c0, c1, e0, e1, dd4   run r's chains (lin_start2 of its packed start, step and second step);
+//   nA, nB, nC            samples r + 1, r + 2, r + 3 packed (v 2^32 + u, clamped to [0, max]);
+//   pp = [P_{r+2}, P_{r+2} + 16] (doubles); z23 = [z_{r+2}, z_{r+3}];
+//   cc = zck (z_{r+1} + z_{r+2}, z_{r+2} + z_{r+3}) with zck = zc * -1/16 (steps16_sel's ddf =
+//        delta cc, see persp_fast); lim = d + 32 k with k >= 1 the number of full passes (left
+//        >= 81: both sample offsets 32; the loop runs while d < lim), offl = [min(left' - 33,
+//        32), min(left' - 49, 32)] for the one pass after them (left' = left - 32 k in 49 .. 80);
+//        tx, w the texels and their row length; constants kZrow =
+//        [zrow, zrow], kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32, kOne, kMin =
+//        [kMinZi, kMinZi], kMax4 = [umax, vmax, umax, vmax] (uint32), kZck = [zck, zck].
+// A pass: samples r + 4, r + 5 at pos45 = pp + 32 (the last pass: pp + offl), zi = max(zrow + zix pos, kMinZi)
+// (fmla, fmaxnm), z = 1 / zi (fdiv), [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16,
+// uqxtn, umin (to_fixed, see persp_fast); the steps of runs r + 1, r + 2 from the packed
+// samples: dd = fcvtzs(double(delta) c) and steps16_dd's test as 120 |dd| <= |delta| (the
+// equivalent form proved in asm/span_persp_run.h), d = trunc((delta - 120 dd') / 16) with dd'
+// = dd accepted, else 0 (the same d: delta - 120 dd' has delta's sign or is 0). On exit the
+// state names the next pass's (r advanced by 2): c0 = sample r packed, c1 - c0 its run's
+// packed step, dd4 4 times its packed second step, nA sample r + 1, zsn[0] = z_{r+1}, z23 =
+// [z_{r+2}, z_{r+3}], pos45 = [pos_{r+2}, pos_{r+3}]. Uses 64 bytes below sp.
+#pragma once
+#include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include <arm_neon.h>
+
+#include <cstddef>
+
+namespace sb::simd {
+namespace {
+
+struct alignas(16) LongPass {
+  uint64_t %(xfields)s;
+  float64x2_t %(vfields)s;
+  uint32x4_t kMax4;
+  float64x2_t %(sfields)s;
+};
+%(asserts)s
+
+inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
+  register LongPass* r_st __asm__("x0") = &st;
+  __asm__ volatile(
+%(body)s
+      : "+r"(r_st)
+      :
+      : %(clob)s, "cc", "memory");
+}
+
+}  // namespace
+}  // namespace sb::simd
+#endif
+"""
+
+
+def emit_header(ins, outh):
+    lines = [l.strip() for l in open(ins) if l.strip() and not l.strip().endswith(":")]
+    assert lines[-1] == "b.lo .Lloop"
+    pro = ["sub sp, sp, #80", "str x0, [sp, #40]",
+           f"ldr q0, [x0, #{OFF['kZrow']}]", f"ldr q1, [x0, #{OFF['kUVrow']}]", f"ldr x1, [x0, #{OFF['lim']}]",
+           f"ldr q2, [x0, #{OFF['offl']}]", f"ldr q3, [x0, #{OFF['kOne']}]",
+           "str q0, [sp]", "str q1, [sp, #16]", "str x1, [sp, #32]", "str q2, [sp, #48]", "str q3, [sp, #64]"]
+    for n in X_FIELDS:
+        if n in PIN and n != "d":
+            pro.append(f"ldr {PIN[n]}, [x0, #{OFF[n]}]")
+    for n in V_FIELDS:
+        if n in PIN:
+            pro.append(f"ldr q{PIN[n][1:]}, [x0, #{OFF[n]}]")
+    pro += [f"ldr x0, [x0, #{OFF['d']}]", "cmp x0, x1", "b.hs 5f"]
+    epi = ["ldr x1, [sp, #40]"]
+    for n in OUT_X:
+        epi.append(f"str {PIN[n]}, [x1, #{OFF[n]}]")
+    for n in OUT_V:
+        epi.append(f"str q{PIN[n][1:]}, [x1, #{OFF[n]}]")
+    epi += ["mov x0, x1", "add sp, sp, #80", "b 9f"]
+    lim = [l for l in lines if re.fullmatch(r"ldr x\d+, \[sp, #32\]", l)]
+    assert len(lim) == 1
+    looponly = {lim[0], lines[-1]} | {l for l in lines if re.fullmatch(r"cmp x0, x\d+", l)}
+
+    def copy(k, mode):
+        """Pass copy k: mode "loop" (the loop body), "offl" (next positions pp + offl), "last"
+        (no next-pass reciprocal work). The check's branch goes to 2k: (the divide), back to 3k:."""
+        out, fix = [], []
+        for l in lines:
+            if mode != "loop" and l in looponly:
+                continue
+            if mode == "last" and (l.endswith("// @") or "// !" in l):
+                continue
+            if "// !" in l:
+                z, zi = l.split("// !")[1].split()
+                out += [l.split("//")[0].strip().replace(".Lloop", f"2{k}f"), f"3{k}:"]
+                fix = [f"2{k}:", f"fdiv {z}.2d, {PIN['kOne']}.2d, {zi}.2d", f"b 3{k}b"]
+                continue
+            l = l.split("//")[0].strip()
+            m = re.fullmatch(r"fadd (v\d+)\.2d, (v\d+)\.2d, v%s\.2d" % PIN["k32"][1:], l)
+            if mode == "offl" and m and m.group(1) == PIN["pos45"]:
+                out += ["ldr q30, [sp, #48]", f"fadd {m.group(1)}.2d, {m.group(2)}.2d, v30.2d"]
+                continue
+            out.append(l.replace("b.lo .Lloop", "b.lo 1b"))
+        return out, fix
+
+    c0, f0 = copy(0, "loop")
+    c1, f1 = copy(1, "offl")
+    c2, f2 = copy(2, "last")
+    allx = pro + ["1:"] + c0 + ["5:"] + c1 + c2 + epi + f0 + f1 + f2 + ["9:"]
+    used = set()
+    for l in allx:
+        for m in re.finditer(r"\b([xwvqd])(\d+)\b", l):
+            used.add(("v" if m.group(1) in "vqd" else "x") + m.group(2))
+    clob = [r for r in GPR + VEC if r in used and r != "x0"]
+    # four instructions a source line (every file stays under 1000 lines)
+    rows, cur = [], []
+    for l in allx:
+        cur.append(l)
+        if l.endswith(":") or len(cur) == 4:
+            rows.append(cur)
+            cur = []
+    if cur:
+        rows.append(cur)
+    body = []
+    for i, r in enumerate(rows):
+        t = " ".join(f'"{l}\\n\\t"' for l in r)
+        if i == len(rows) - 1:
+            t = t[:-5] + '"'
+        body.append("      " + t)
+    asserts = "\n".join(f"static_assert(offsetof(LongPass, {n}) == {OFF[n]});" for n in X_FIELDS + V_FIELDS)
+    vf = V_FIELDS[:V_FIELDS.index("kMax4")]
+    sf = V_FIELDS[V_FIELDS.index("kMax4") + 1:]
+    text = HEADER % dict(xfields=", ".join(X_FIELDS), vfields=", ".join(vf), sfields=", ".join(sf), asserts=asserts,
+                         body="\n".join(body), clob=", ".join(f'"{c}"' for c in clob))
+    open(outh, "w").write(text)
+
+
+if __name__ == "__main__" and sys.argv[1] == "header":
+    emit_header(sys.argv[2], sys.argv[3])
