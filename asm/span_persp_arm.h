@@ -359,6 +359,9 @@ SB_INLINE void last_steps_i(int steps, int32_t du, int32_t dv, int32_t lu, int32
 // lanes: trunc(q), and trunc(ddf) masked by |ddf| < 1e9) as last_steps computes them.
 SB_INLINE void last_steps_dd(int steps, int32_t du, int32_t dv, int64x2_t lin, int64x2_t dd, RunSteps* su,
                              RunSteps* sv);
+// The same from the lanes as 32-bit core values (lu, lv: trunc(q); du2, dv2: the masked dd).
+SB_INLINE void last_steps_ddi(int steps, int32_t du, int32_t dv, int32_t lu, int32_t lv, int32_t du2, int32_t dv2,
+                              RunSteps* su, RunSteps* sv);
 // du = b.u - a.u, dv = b.v - a.v (0 <= u, v < 2^31: no overflow), also as doubles [du, dv].
 SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, float64x2_t duv, double curve, RunSteps* su,
                           RunSteps* sv) {
@@ -378,10 +381,13 @@ SB_INLINE void last_steps(int steps, int32_t du, int32_t dv, double curve, RunSt
 }
 SB_INLINE void last_steps_dd(int steps, int32_t du, int32_t dv, int64x2_t lin, int64x2_t dd, RunSteps* su,
                              RunSteps* sv) {
+  last_steps_ddi(steps, du, dv, int32_t(vgetq_lane_s64(lin, 0)), int32_t(vgetq_lane_s64(lin, 1)),
+                 int32_t(vgetq_lane_s64(dd, 0)), int32_t(vgetq_lane_s64(dd, 1)), su, sv);
+}
+SB_INLINE void last_steps_ddi(int steps, int32_t du, int32_t dv, int32_t lu, int32_t lv, int32_t du2, int32_t dv2,
+                              RunSteps* su, RunSteps* sv) {
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
   const uint32_t two = steps > 1 ? ~0u : 0u;
-  const int32_t lu = int32_t(vgetq_lane_s64(lin, 0)), lv = int32_t(vgetq_lane_s64(lin, 1));
-  const int32_t du2 = int32_t(vgetq_lane_s64(dd, 0)), dv2 = int32_t(vgetq_lane_s64(dd, 1));
   // last_dd for u and v in one asm block, the two chains interleaved (the compiler runs
   // them one after the other; on an in-order core each step waits for the previous one).
   // Per lane, as last_dd: sg, pd, add, Q, pdd; acc = pd - add T (umsubl, 64-bit), rejected
