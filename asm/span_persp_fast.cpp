@@ -707,61 +707,69 @@ void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, cons
     left -= 16;
     s0 = s1, s1 = s2, su = u1, sv = v1, sB = sC;
   }
-  // Run r with the last run's steps in its stage slots, one dependent step a group. They are
-  // last_steps' (the same results) with scalar operations, u and v two interleaved chains
-  // (fewer dependent NEON levels: on the modelled Cortex-A53 each stalls the core
-  // instructions after it): q = div_steps' operations on du, dv; lin = trunc(q) straight to
-  // a core register (|q| < 2^31); ddf = q (-2 curve) = -2 (q curve) where |ddf| < 1e9 (scaling
-  // by -2 commutes with rounding; where either form overflows, underflows or is NaN both give
-  // dd = 0); dd = cvt_sat(ddf) kept iff |dd| < 1e9, which is |ddf| < 1e9 (last_ddi).
+  // The last run's steps are last_steps' (the same results) with scalar operations, u and v
+  // two interleaved chains (fewer dependent NEON levels: on the modelled Cortex-A53 each
+  // stalls the core instructions after it): q = div_steps' operations on du, dv; lin =
+  // trunc(q) straight to a core register (|q| < 2^31); ddf = q (-2 curve) = -2 (q curve)
+  // where |ddf| < 1e9 (scaling by -2 commutes with rounding; where either form overflows,
+  // underflows or is NaN both give dd = 0); dd = cvt_sat(ddf) kept iff |dd| < 1e9, which is
+  // |ddf| < 1e9 (last_ddi). In steps (step<0> .. step<6>, each depending on the one before).
   const int last = left - 16, steps = last - 1;
   const Sample s2 = steps > 0 ? sB : s1;
   RunSteps lu, lv;
-  {
-    const int32_t du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
-    const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
-    float64x1_t au, av, y, sf, qu, qv, tu, tv, c2;
-    int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
-    Run16<true> run(s0.u, s0.v, su, sv);
-    run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
-      constexpr int G = decltype(g)::value;
-      if constexpr (G == 0) {
-        au = vdup_n_f64(double(du)), av = vdup_n_f64(double(dv));
-        y = vld1_f64(&kRecipSteps[sd]), sf = vdup_n_f64(double(sd));
-        c2 = vdup_n_f64(-2.0 * (zc * 0.5 * (s1.z + s2.z)));
-        pin(au), pin(av), pin(y), pin(sf), pin(c2);
-      } else if constexpr (G == 1) {
-        qu = vmul_f64(au, y), qv = vmul_f64(av, y);
-        pin(qu), pin(qv);
-      } else if constexpr (G == 2) {
-        tu = vfms_f64(au, qu, sf), tv = vfms_f64(av, qv, sf);
-        pin(tu), pin(tv);
-      } else if constexpr (G == 3) {
-        qu = vfma_f64(qu, tu, y), qv = vfma_f64(qv, tv, y);
-        pin(qu), pin(qv);
-      } else if constexpr (G == 4) {
-        lnu = cvt_sat(vget_lane_f64(qu, 0)), lnv = cvt_sat(vget_lane_f64(qv, 0));
-        tu = vmul_f64(qu, c2), tv = vmul_f64(qv, c2);
-        pin(lnu), pin(lnv), pin(tu), pin(tv);
-      } else if constexpr (G == 5) {
-        ddu = cvt_sat(vget_lane_f64(tu, 0)), ddv = cvt_sat(vget_lane_f64(tv, 0));
-        pin(ddu), pin(ddv);
-      } else if constexpr (G == 6) {
-        ddu = (uint32_t(ddu) + 999999999u < 1999999999u) ? ddu : 0;
-        ddv = (uint32_t(ddv) + 999999999u < 1999999999u) ? ddv : 0;
-        pin(ddu), pin(ddv);
-      } else if constexpr (G == 9) {
-        last_steps_ddi(steps, du, dv, lnu, lnv, ddu, ddv, &lu, &lv);
-      }
-    });
-  }
-  dest += 16;
+  const int32_t du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
+  const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
+  float64x1_t au, av, y, sf, qu, qv, tu, tv, c2;
+  int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
+  auto step = [&](auto g) SB_LAMBDA_INLINE {
+    constexpr int G = decltype(g)::value;
+    if constexpr (G == 0) {
+      au = vdup_n_f64(double(du)), av = vdup_n_f64(double(dv));
+      y = vld1_f64(&kRecipSteps[sd]), sf = vdup_n_f64(double(sd));
+      c2 = vdup_n_f64(-2.0 * (zc * 0.5 * (s1.z + s2.z)));
+      pin(au), pin(av), pin(y), pin(sf), pin(c2);
+    } else if constexpr (G == 1) {
+      qu = vmul_f64(au, y), qv = vmul_f64(av, y);  // div_steps
+      pin(qu), pin(qv);
+    } else if constexpr (G == 2) {
+      tu = vfms_f64(au, qu, sf), tv = vfms_f64(av, qv, sf);
+      pin(tu), pin(tv);
+    } else if constexpr (G == 3) {
+      qu = vfma_f64(qu, tu, y), qv = vfma_f64(qv, tv, y);
+      pin(qu), pin(qv);
+    } else if constexpr (G == 4) {
+      lnu = cvt_sat(vget_lane_f64(qu, 0)), lnv = cvt_sat(vget_lane_f64(qv, 0));
+      tu = vmul_f64(qu, c2), tv = vmul_f64(qv, c2);
+      pin(lnu), pin(lnv), pin(tu), pin(tv);
+    } else if constexpr (G == 5) {
+      ddu = cvt_sat(vget_lane_f64(tu, 0)), ddv = cvt_sat(vget_lane_f64(tv, 0));
+      pin(ddu), pin(ddv);
+    } else if constexpr (G == 6) {
+      ddu = (uint32_t(ddu) + 999999999u < 1999999999u) ? ddu : 0;
+      ddv = (uint32_t(ddv) + 999999999u < 1999999999u) ? ddv : 0;
+      pin(ddu), pin(ddv);
+    } else if constexpr (G == 9) {
+      last_steps_ddi(steps, du, dv, lnu, lnv, ddu, ddv, &lu, &lv);
+    }
+  };
+  using std::integral_constant;
   if (last == 16) {
-    draw16<true>(dest, texels, w, s1.u, s1.v, lu, lv);
-  } else {
-    draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
-             uint32_t(lv.dd));
+    // Two full runs left: the steps first, then both runs as one short_pass.
+    step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
+    step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
+    step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
+    auto pk = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+    short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u), pk(sv.d, su.d),
+                     pk(sv.dd, su.dd), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pk(lv.d, lu.d),
+                     pk(lv.dd, lu.dd));
+    return;
   }
+  // Otherwise run r with the steps in its stage slots, one a group.
+  Run16<true> run(s0.u, s0.v, su, sv);
+  run.draw(dest, texels, w, step);
+  dest += 16;
+  draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+           uint32_t(lv.dd));
 }
 #endif
 }  // namespace
