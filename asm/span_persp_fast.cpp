@@ -663,8 +663,20 @@ void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, cons
   const double z0 = vgetq_lane_f64(zA, 0), z1 = vgetq_lane_f64(zA, 1);
   Sample s0{int32_t(uint32_t(n0)), int32_t(uint32_t(n0 >> 32)), z0};
   Sample s1{int32_t(uint32_t(n1)), int32_t(uint32_t(n1 >> 32)), z1};
-  RunSteps su = steps16<true>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
-  RunSteps sv = steps16<true>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
+  // Run 0's steps: steps16_sel's operations for u and v, the two chains interleaved one
+  // operation at a time (pinned: the compiler would run one behind the other).
+  RunSteps su, sv;
+  {
+    const int32_t du = s1.u - s0.u, dv = s1.v - s0.v;
+    const double curve = zc * 0.5 * (s0.z + s1.z);
+    double cu = double(du), cv = double(dv);
+    pin(cu), pin(cv);
+    cu = cu / 16, cv = cv / 16;
+    cu = cu * curve, cv = cv * curve;
+    cu = -2.0 * cu, cv = -2.0 * cv;
+    const int32_t iu = cvt_sat(cu), iv = cvt_sat(cv);
+    su = steps16_dd(du, iu), sv = steps16_dd(dv, iv);
+  }
   auto packed = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
   const double P2i = P1 + double(16);
   st.pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
