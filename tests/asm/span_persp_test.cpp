@@ -81,6 +81,36 @@ void expect_same(const std::vector<Span>& spans, const SpanGradients& g, const u
   ASSERT_EQ(a.z, b.z) << what;
 }
 
+// Draws span p (n pixels) with the reference and with every supported variant, each into a
+// buffer with 64 guard bytes (0xa5) on both sides: a failure, naming the variant and the
+// first differing byte, unless every variant wrote exactly the reference's bytes and nothing
+// outside the span. ref_out, if given, receives the reference's n bytes.
+::testing::AssertionResult variants_match(int n, const uint8_t* surf, int sw, int sh, const sb::simd::PerspSpan& p,
+                                          std::vector<uint8_t>* ref_out = nullptr) {
+  constexpr int kGuard = 64;
+  std::vector<uint8_t> ref(size_t(n) + 2 * kGuard, 0xa5), got(ref.size());
+  sb::simd::surface_span_persp_scalar(ref.data() + kGuard, n, surf, sw, sh, p);
+  auto guard_intact = [&](const std::vector<uint8_t>& b) {
+    auto is_guard = [](uint8_t x) { return x == 0xa5; };
+    return std::all_of(b.begin(), b.begin() + kGuard, is_guard) && std::all_of(b.end() - kGuard, b.end(), is_guard);
+  };
+  if (!guard_intact(ref)) return ::testing::AssertionFailure() << "the reference wrote outside its span of " << n;
+  for (int v = 0; v < sb::simd::variant_count(); ++v) {
+    const sb::simd::Variant var = sb::simd::variant(v);
+    if (!var.kernels || !var.supported) continue;
+    std::fill(got.begin(), got.end(), 0xa5);
+    var.kernels->surface_span_persp(got.data() + kGuard, n, surf, sw, sh, p);
+    const auto d = std::mismatch(ref.begin(), ref.end(), got.begin());
+    if (d.first != ref.end()) {
+      return ::testing::AssertionFailure() << var.kernels->name << " wrote " << int(*d.second) << " for "
+                                           << int(*d.first) << " at byte " << (d.first - ref.begin()) - kGuard
+                                           << " of a span of " << n;
+    }
+  }
+  if (ref_out) ref_out->assign(ref.begin() + kGuard, ref.begin() + kGuard + n);
+  return ::testing::AssertionSuccess();
+}
+
 TEST(AsmSpanPersp, MatchesTheRunWalkerOnRandomGradients) {
   std::mt19937 rng(99);
   const int W = 1920, H = 24;
@@ -518,7 +548,7 @@ TEST(AsmSpanPersp, ShortSpansDivideWhereTheReciprocalCannot) {
   const int sw = 37, sh = 19;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i);  // every texel of a row differs
-  std::vector<uint8_t> ref(64), got(64);
+  std::vector<uint8_t> ref;
   int cases = 0;
   std::vector<int> ks;
   for (int k = -29; k < 60; ++k) ks.push_back(k);
@@ -536,14 +566,7 @@ TEST(AsmSpanPersp, ShortSpansDivideWhereTheReciprocalCannot) {
       p.vmax = int32_t((uint32_t(sh) << 16) - 1);
       p.second_order = true;
       const int n = 17 + int(rng() % 48);
-      sb::simd::surface_span_persp_scalar(ref.data(), n, surf.data(), sw, sh, p);
-      for (int v = 0; v < sb::simd::variant_count(); ++v) {
-        const sb::simd::Variant var = sb::simd::variant(v);
-        if (!var.kernels || !var.supported) continue;
-        std::fill(got.begin(), got.end(), 0);
-        var.kernels->surface_span_persp(got.data(), n, surf.data(), sw, sh, p);
-        ASSERT_TRUE(std::equal(ref.begin(), ref.begin() + n, got.begin())) << var.kernels->name << " k " << k;
-      }
+      ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p, &ref)) << " k " << k;
       if (k < 1000) {
         EXPECT_EQ(ref[0], uint8_t(c)) << k;  // the case is the sensitive one
       }
@@ -561,7 +584,6 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
   const int sw = 37, sh = 19;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
-  std::vector<uint8_t> ref(64 + 200 + 64), got(ref.size());
   int cases = 0;
   for (int i = 0; i < 4000; ++i) {
     sb::simd::PerspSpan p{};
@@ -572,16 +594,7 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
     p.vmax = int32_t((uint32_t(sh) << 16) - 1);
     p.second_order = rng() & 1;
     const int n = int(rng() % 200);
-    std::fill(ref.begin(), ref.end(), 0xa5);
-    std::fill(got.begin(), got.end(), 0xa5);
-    sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
-    for (int v = 0; v < sb::simd::variant_count(); ++v) {
-      const sb::simd::Variant var = sb::simd::variant(v);
-      if (!var.kernels || !var.supported) continue;
-      std::fill(got.begin(), got.end(), 0xa5);
-      var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
-      ASSERT_EQ(ref, got) << var.kernels->name << " case " << i;
-    }
+    ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " case " << i;
     ++cases;
   }
   std::printf("[ asm      ] span_persp: %d odd-gradient cases, every variant identical\n", cases);
@@ -597,7 +610,6 @@ TEST(AsmSpanPersp, LongSpansMatchOnExtremeSteps) {
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
   const int lengths[] = {65, 79, 80, 81, 82, 95, 96, 97, 112, 113, 127, 128, 129, 144, 145, 160, 161, 176, 177, 1920};
-  std::vector<uint8_t> ref(64 + 2000 + 64), got(ref.size());
   auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
     const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
     return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
@@ -614,15 +626,7 @@ TEST(AsmSpanPersp, LongSpansMatchOnExtremeSteps) {
     p.vmax = int32_t((uint32_t(sh) << 16) - 1);
     p.second_order = true;
     const int n = i < 2000 ? lengths[i % 20] : 65 + int(rng() % 1936);
-    std::fill(ref.begin(), ref.end(), 0xa5);
-    sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
-    for (int v = 0; v < sb::simd::variant_count(); ++v) {
-      const sb::simd::Variant var = sb::simd::variant(v);
-      if (!var.kernels || !var.supported) continue;
-      std::fill(got.begin(), got.end(), 0xa5);
-      var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
-      ASSERT_EQ(ref, got) << var.kernels->name << " case " << i << " n " << n;
-    }
+    ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " case " << i << " n " << n;
     ++cases;
   }
   std::printf("[ asm      ] span_persp: %d long extreme-step spans, every variant identical\n", cases);
@@ -637,7 +641,6 @@ TEST(AsmSpanPersp, LongSpansMatchOnEveryTailLength) {
   const int sw = 256, sh = 256;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
-  std::vector<uint8_t> ref(64 + 208 + 64), got(ref.size());
   int cases = 0;
   for (int n = 81; n <= 208; ++n) {
     for (int k = 0; k < 12; ++k) {
@@ -650,15 +653,7 @@ TEST(AsmSpanPersp, LongSpansMatchOnEveryTailLength) {
       p.umax = int32_t((uint32_t(sw) << 16) - 1);
       p.vmax = int32_t((uint32_t(sh) << 16) - 1);
       p.second_order = true;
-      std::fill(ref.begin(), ref.end(), 0xa5);
-      sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
-      for (int v = 0; v < sb::simd::variant_count(); ++v) {
-        const sb::simd::Variant var = sb::simd::variant(v);
-        if (!var.kernels || !var.supported) continue;
-        std::fill(got.begin(), got.end(), 0xa5);
-        var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
-        ASSERT_EQ(ref, got) << var.kernels->name << " n " << n << " k " << k;
-      }
+      ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " n " << n << " k " << k;
       ++cases;
     }
   }
@@ -673,7 +668,7 @@ TEST(AsmSpanPersp, LongSpansDivideWhereTheReciprocalCannot) {
   const int sw = 37, sh = 19;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i);
-  std::vector<uint8_t> ref(2000), got(2000);
+  std::vector<uint8_t> ref;
   const int lengths[] = {81, 96, 97, 113, 128, 129, 160, 161, 300, 1920};
   int cases = 0;
   for (int k : {-29, -3, 0, 1, 7, 40, 300, 999, 1000, 1010, 1022}) {
@@ -688,15 +683,7 @@ TEST(AsmSpanPersp, LongSpansDivideWhereTheReciprocalCannot) {
       p.vmax = int32_t((uint32_t(sh) << 16) - 1);
       p.second_order = true;
       const int n = lengths[cases % 10];
-      sb::simd::surface_span_persp_scalar(ref.data(), n, surf.data(), sw, sh, p);
-      for (int v = 0; v < sb::simd::variant_count(); ++v) {
-        const sb::simd::Variant var = sb::simd::variant(v);
-        if (!var.kernels || !var.supported) continue;
-        std::fill(got.begin(), got.end(), 0);
-        var.kernels->surface_span_persp(got.data(), n, surf.data(), sw, sh, p);
-        ASSERT_TRUE(std::equal(ref.begin(), ref.begin() + n, got.begin()))
-            << var.kernels->name << " k " << k << " n " << n;
-      }
+      ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p, &ref)) << " k " << k << " n " << n;
       if (k < 1000) {
         EXPECT_EQ(ref[n - 1], uint8_t(c)) << k;  // the case is the sensitive one
       }
@@ -706,10 +693,6 @@ TEST(AsmSpanPersp, LongSpansDivideWhereTheReciprocalCannot) {
   std::printf("[ asm      ] span_persp: %d long spans at all-ones and huge depths, every variant identical\n", cases);
 }
 
-// surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
-// NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
-// scalar reference on every target: random walks (linear and second order) that stay
-// inside the surface, every length that splits differently into runs of 16.
 // Second-order spans of four runs (49 .. 65 pixels: the ARMv7 path for 50 .. 64 and its
 // neighbours) against the reference on gradients spread over many magnitudes: depths near
 // and below the 1/z clamp, u and v past both clamps and saturating, curves whose run steps
@@ -723,7 +706,6 @@ TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeGradients) {
   const int sw = 300, sh = 200;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
-  std::vector<uint8_t> ref(64 + 65 + 64), got(ref.size());
   int cases = 0;
   for (int i = 0; i < 20000; ++i) {
     sb::simd::PerspSpan p{};
@@ -738,20 +720,16 @@ TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeGradients) {
     p.vmax = int32_t((uint32_t(sh) << 16) - 1 - (rng() % 3 == 0 ? rng() % 65536 : 0));
     p.second_order = true;
     const int n = 49 + int(rng() % 17);
-    std::fill(ref.begin(), ref.end(), 0xa5);
-    sb::simd::surface_span_persp_scalar(ref.data() + 64, n, surf.data(), sw, sh, p);
-    for (int v = 0; v < sb::simd::variant_count(); ++v) {
-      const sb::simd::Variant var = sb::simd::variant(v);
-      if (!var.kernels || !var.supported) continue;
-      std::fill(got.begin(), got.end(), 0xa5);
-      var.kernels->surface_span_persp(got.data() + 64, n, surf.data(), sw, sh, p);
-      ASSERT_EQ(ref, got) << var.kernels->name << " case " << i << " n " << n;
-    }
+    ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " case " << i << " n " << n;
     ++cases;
   }
   std::printf("[ asm      ] span_persp: %d four-run second-order spans, every variant identical\n", cases);
 }
 
+// surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
+// NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
+// scalar reference on every target: random walks (linear and second order) that stay
+// inside the surface, every length that splits differently into runs of 16.
 TEST(AsmSpanPersp, SurfaceSpanFastMatchesScalar) {
   std::mt19937 rng(4242);
   const int lengths[] = {0, 1, 2, 3, 15, 16, 17, 31, 32, 33, 47, 48, 49, 320, 1919, 1920};
