@@ -53,19 +53,21 @@ struct MidFirst {
 };
 // Four runs, second order, from the samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4
 // twice), the full runs' curve factors c01, c23, zs23 = [z_2 + z_3, z_3 + z_4], s = max(1,
-// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): what short_steps_k3
-// computes (asm/span_persp_a64short.h: delta, ddf, dd, steps16_dd's 32-bit form). The last
-// run: last_steps' vector part (div_steps' quotient q, lin = trunc(q), ddf = q (curve k),
-// curve = (zc / 2)(z_3 + z_4), dd = trunc(ddf) & (|ddf| < 1e9); q (curve k) is (q curve) k
-// bit for bit, k = -2 scaling exactly and inf / NaN giving dd = 0 either way), its lin and
-// dd put into lanes 2, 3 of run 2's vectors, and last_dd for both runs in those four lanes
-// (asm/span_persp_arm.h): Q = |delta| / s truncated (|delta| >> 4 for run 2; |lin| for
-// run 3: q has delta's sign and is exact enough that trunc(q) = trunc(delta / s)), pdd = dd
-// mirrored by delta's sign, accept iff T |dd| <= |delta|, r = |delta| - s Q, m = (s - 1)
-// pdd, d0 = Q - (m >> 1) - (m & 1 & (r < h)) (the bit as ssra of (m << 31) & mask, #31), d = accept ? mirror(d0) : mirror(Q) (= lin), dd
-// & accept; for s = 16, T = 120 that is steps16_dd's (|delta| - 120 pdd) >> 4. One asm
-// block, fixed registers, the order from bench/order_search.py on
-// bench/mca_a53_p64/steps_k3v.s (registers from alloc.py on steps_k3v.vs).
+// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): what
+// short_steps_k3 computes (asm/span_persp_a64short.h: delta, ddf, dd, steps16_dd's 32-bit
+// form). The last run: last_steps' vector part (div_steps' quotient q, lin = trunc(q), ddf =
+// q (curve k), curve = (zc / 2)(z_3 + z_4); q (curve k) is (q curve) k bit for bit: k = -2
+// scales exactly, and an inf / NaN product gives dd = 0 either way), its lin and dd put into
+// lanes 2, 3 of run 2's vectors, then last_dd (asm/span_persp_arm.h) in those four lanes
+// (for s = 16, T = 120 it is steps16_dd): with sg = delta's sign, Q = |delta| / s truncated
+// (|delta| >> 4 for run 2; |lin| for run 3: q has delta's sign and trunc(q) = trunc(delta /
+// s)), lin = mirror(Q), accept iff T |dd| <= |delta| (and |ddf| < 1e9 for run 3: a rejected
+// lane gives lin and dd 0, as last_dd does with dd masked to 0), r = |delta| - s Q. last_dd's
+// d = mirror(Q - (m >> 1) - (m & 1 & (2 r < s))), m = mirror(M), M = (s - 1) dd, is
+// lin - (M >> 1) - (M & 1 & ((r < h) ^ sg)) (floor(-M / 2) = -(M >> 1) - (M & 1); |M| < 2^31
+// wherever accepted), so no mirroring on the dd chain; d = accept ? that : lin, dd & accept.
+// One asm block, fixed registers, the order from bench/order_search.py (steps_k3v.s in
+// bench/mca_a53_p64; its registers from alloc.py on steps_k3v.vs).
 // AsmSpanPersp.FourRunSpansMatchOnExtremeGradients (lengths 49 .. 64) and
 // MatchesTheRunWalkerOnShortSpans check it against the walker.
 SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
@@ -82,94 +84,93 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // BEGIN short_steps_k3v
       "ext v7.16b, v19.16b, v7.16b, #8\n\t"
       "ext v0.16b, v5.16b, v19.16b, #8\n\t"
-      "fmul d31, d31, v1.d[1]\n\t"
-      "fmov %[a_uv], d5\n\t"
-      "mov %[b_uv], v5.d[1]\n\t"
+      "ldp q23, q24, [%[y], #64]\n\t"
+      "ldp q6, q17, [%[kp], #32]\n\t"
       "sub v7.4s, v7.4s, v19.4s\n\t"
       "sub v0.4s, v0.4s, v5.4s\n\t"
-      "ldp q6, q17, [%[kp], #32]\n\t"
-      "ldp q23, q24, [%[y], #64]\n\t"
-      "ldr q25, [%[y], #96]\n\t"
       "ldp q2, q4, [%[kp]]\n\t"
       "saddw2 v29.2d, v6.2d, v7.4s\n\t"
       "saddw v26.2d, v6.2d, v0.2s\n\t"
       "saddw2 v27.2d, v6.2d, v0.4s\n\t"
-      "fmul d31, d31, v25.d[0]\n\t"
       "saddw v28.2d, v6.2d, v7.2s\n\t"
+      "ldr q25, [%[y], #96]\n\t"
+      "fmul d31, d31, v1.d[1]\n\t"
       "fsub v29.2d, v29.2d, v6.2d\n\t"
       "fsub v26.2d, v26.2d, v6.2d\n\t"
       "fsub v27.2d, v27.2d, v6.2d\n\t"
       "fsub v28.2d, v28.2d, v6.2d\n\t"
+      "ldp q18, q20, [%[y]]\n\t"
       "fmul v30.2d, v29.2d, v24.d[0]\n\t"
       "fmul v26.2d, v26.2d, v3.d[0]\n\t"
+      "fmul d31, d31, v25.d[0]\n\t"
       "fmul v27.2d, v27.2d, v3.d[1]\n\t"
       "fmul v28.2d, v28.2d, v16.d[0]\n\t"
-      "abs v16.4s, v0.4s\n\t"
+      "fmov %[a_uv], d5\n\t"
+      "mov %[b_uv], v5.d[1]\n\t"
       "fmls v29.2d, v30.2d, v24.d[1]\n\t"
       "fcvtzs v26.2d, v26.2d\n\t"
-      "fcvtzs v28.2d, v28.2d\n\t"
-      "fcvtzs v27.2d, v27.2d\n\t"
-      "ldp q18, q20, [%[y]]\n\t"
       "ldp q21, q22, [%[y], #32]\n\t"
-      "fmla v30.2d, v29.2d, v24.d[0]\n\t"
+      "movi v16.2d, #0xffffffffffffffff\n\t"
+      "fcvtzs v28.2d, v28.2d\n\t"
       "sqxtn v6.2s, v26.2d\n\t"
+      "fmla v30.2d, v29.2d, v24.d[0]\n\t"
+      "fcvtzs v27.2d, v27.2d\n\t"
+      "str q19, [%[st]]\n\t"
       "sqxtn v1.2s, v28.2d\n\t"
-      "abs v26.4s, v7.4s\n\t"
-      "sshr v28.4s, v7.4s, #31\n\t"
-      "mov v7.16b, v16.16b\n\t"
-      "ushr v24.4s, v16.4s, #4\n\t"
+      "sshr v28.4s, v0.4s, #31\n\t"
+      "abs v26.4s, v0.4s\n\t"
+      "sshr v29.4s, v7.4s, #31\n\t"
       "fcvtzs v25.2d, v30.2d\n\t"
       "fmul v30.2d, v30.2d, v31.d[0]\n\t"
       "sqxtn2 v6.4s, v27.2d\n\t"
-      "sshr v27.4s, v0.4s, #31\n\t"
-      "ushr v29.4s, v26.4s, #4\n\t"
+      "abs v27.4s, v7.4s\n\t"
+      "mov v7.16b, v26.16b\n\t"
+      "ushr v24.4s, v26.4s, #4\n\t"
       "abs v25.2d, v25.2d\n\t"
       "facgt v3.2d, v17.2d, v30.2d\n\t"
       "fcvtzs v30.2d, v30.2d\n\t"
-      "eor v17.16b, v6.16b, v27.16b\n\t"
-      "eor v24.16b, v24.16b, v27.16b\n\t"
-      "xtn2 v29.4s, v25.2d\n\t"
-      "mov v25.16b, v26.16b\n\t"
-      "and v3.16b, v30.16b, v3.16b\n\t"
-      "sub v17.4s, v17.4s, v27.4s\n\t"
-      "sub v24.4s, v24.4s, v27.4s\n\t"
-      "eor v31.16b, v29.16b, v28.16b\n\t"
-      "mls v25.4s, v18.4s, v29.4s\n\t"
-      "sqxtn2 v1.4s, v3.2d\n\t"
+      "ushr v31.4s, v27.4s, #4\n\t"
+      "eor v24.16b, v24.16b, v28.16b\n\t"
+      "xtn2 v16.4s, v3.2d\n\t"
+      "sqxtn2 v1.4s, v30.2d\n\t"
+      "xtn2 v31.4s, v25.2d\n\t"
       "abs v3.4s, v6.4s\n\t"
-      "mls v7.4s, v17.4s, v2.s[0]\n\t"
-      "sub v31.4s, v31.4s, v28.4s\n\t"
-      "cmhi v25.4s, v23.4s, v25.4s\n\t"
-      "eor v30.16b, v1.16b, v28.16b\n\t"
+      "mov v25.16b, v27.16b\n\t"
+      "eor v30.16b, v6.16b, v28.16b\n\t"
       "abs v0.4s, v1.4s\n\t"
+      "eor v17.16b, v31.16b, v29.16b\n\t"
       "umin v3.4s, v3.4s, v4.4s\n\t"
-      "ushr v7.4s, v7.4s, #4\n\t"
-      "str q19, [%[st]]\n\t"
+      "mul v4.4s, v20.4s, v1.4s\n\t"
       "sub v30.4s, v30.4s, v28.4s\n\t"
+      "mls v25.4s, v18.4s, v31.4s\n\t"
+      "sub v24.4s, v24.4s, v28.4s\n\t"
       "umin v0.4s, v0.4s, v22.4s\n\t"
       "mul v3.4s, v3.4s, v2.4s\n\t"
-      "eor v7.16b, v7.16b, v27.16b\n\t"
-      "mul v4.4s, v20.4s, v30.4s\n\t"
-      "mul v0.4s, v0.4s, v21.4s\n\t"
-      "cmhs v3.4s, v16.4s, v3.4s\n\t"
-      "sub v7.4s, v7.4s, v27.4s\n\t"
+      "mls v7.4s, v30.4s, v2.s[0]\n\t"
       "sshr v22.4s, v4.4s, #1\n\t"
+      "sub v17.4s, v17.4s, v29.4s\n\t"
+      "cmhi v25.4s, v23.4s, v25.4s\n\t"
       "shl v4.4s, v4.4s, #31\n\t"
-      "cmhs v0.4s, v26.4s, v0.4s\n\t"
-      "bit v24.16b, v7.16b, v3.16b\n\t"
+      "mul v0.4s, v0.4s, v21.4s\n\t"
+      "ushr v7.4s, v7.4s, #4\n\t"
+      "cmhs v3.4s, v26.4s, v3.4s\n\t"
+      "sub v21.4s, v17.4s, v22.4s\n\t"
+      "eor v25.16b, v25.16b, v29.16b\n\t"
+      "eor v7.16b, v7.16b, v28.16b\n\t"
       "and v6.16b, v6.16b, v3.16b\n\t"
-      "sub v29.4s, v29.4s, v22.4s\n\t"
+      "cmhs v0.4s, v27.4s, v0.4s\n\t"
       "and v25.16b, v25.16b, v4.16b\n\t"
-      "and v1.16b, v1.16b, v0.16b\n\t"
-      "fmov %[a_d], d24\n\t"
-      "mov %[b_d], v24.d[1]\n\t"
+      "sub v7.4s, v7.4s, v28.4s\n\t"
       "fmov %[a_dd], d6\n\t"
+      "and v0.16b, v0.16b, v16.16b\n\t"
+      "ssra v21.4s, v25.4s, #31\n\t"
       "mov %[b_dd], v6.d[1]\n\t"
-      "ssra v29.4s, v25.4s, #31\n\t"
-      "eor v29.16b, v29.16b, v28.16b\n\t"
-      "sub v29.4s, v29.4s, v28.4s\n\t"
-      "bit v31.16b, v29.16b, v0.16b\n\t"
-      "stp q31, q1, [%[st], #16]"
+      "bit v24.16b, v7.16b, v3.16b\n\t"
+      "and v1.16b, v1.16b, v0.16b\n\t"
+      "bit v17.16b, v21.16b, v0.16b\n\t"
+      "mov %[b_d], v24.d[1]\n\t"
+      "fmov %[a_d], d24\n\t"
+      "stp q17, q1, [%[st], #16]"
 // END short_steps_k3v
       : [a_uv] "=&r"(ra_uv), [a_d] "=&r"(ra_d), [a_dd] "=&r"(ra_dd), [b_uv] "=&r"(rb_uv), [b_d] "=&r"(rb_d),
         [b_dd] "=&r"(rb_dd), "+&w"(rS44), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rzc), "=m"(st)

@@ -39,8 +39,9 @@ fcvtzs v@lin3.2d, v@q.2d
 fmul v@q.2d, v@q.2d, v@zch.d[0]
 facgt v@ok.2d, v@k1e9.2d, v@q.2d
 fcvtzs v@q.2d, v@q.2d
-and v@ok.16b, v@q.16b, v@ok.16b
-sqxtn2 v@dd23.4s, v@ok.2d
+sqxtn2 v@dd23.4s, v@q.2d
+movi v@okx.2d, #0xffffffffffffffff
+xtn2 v@okx.4s, v@ok.2d
 abs v@pd01.4s, v@D01.4s
 abs v@pd23.4s, v@D23.4s
 sshr v@sg01.4s, v@D01.4s, #31
@@ -54,9 +55,7 @@ xtn2 v@Q.4s, v@lin3.2d
 eor v@L23.16b, v@Q.16b, v@sg23.16b
 sub v@L23.4s, v@L23.4s, v@sg23.4s
 eor v@pdd01.16b, v@dd01.16b, v@sg01.16b
-eor v@pdd23.16b, v@dd23.16b, v@sg23.16b
 sub v@pdd01.4s, v@pdd01.4s, v@sg01.4s
-sub v@pdd23.4s, v@pdd23.4s, v@sg23.4s
 abs v@a01.4s, v@dd01.4s
 abs v@a23.4s, v@dd23.4s
 umin v@a01.4s, v@a01.4s, v@k25.4s
@@ -65,6 +64,7 @@ mul v@a01.4s, v@a01.4s, v@k120.4s
 mul v@a23.4s, v@a23.4s, v@T.4s
 cmhs v@a01.4s, v@pd01.4s, v@a01.4s
 cmhs v@a23.4s, v@pd23.4s, v@a23.4s
+and v@a23.16b, v@a23.16b, v@okx.16b
 mov v@e01.16b, v@pd01.16b
 mls v@e01.4s, v@pdd01.4s, v@k120.s[0]
 ushr v@e01.4s, v@e01.4s, #4
@@ -72,17 +72,16 @@ eor v@e01.16b, v@e01.16b, v@sg01.16b
 sub v@e01.4s, v@e01.4s, v@sg01.4s
 mov v@r.16b, v@pd23.16b
 mls v@r.4s, v@S.4s, v@Q.4s
-mul v@m.4s, v@SM1.4s, v@pdd23.4s
+mul v@m.4s, v@SM1.4s, v@dd23.4s
 cmhi v@r.4s, v@H.4s, v@r.4s
 sshr v@t.4s, v@m.4s, #1
 shl v@m.4s, v@m.4s, #31
-sub v@Q.4s, v@Q.4s, v@t.4s
+eor v@r.16b, v@r.16b, v@sg23.16b
+sub v@d23.4s, v@L23.4s, v@t.4s
 and v@r.16b, v@r.16b, v@m.16b
-ssra v@Q.4s, v@r.4s, #31
-eor v@Q.16b, v@Q.16b, v@sg23.16b
-sub v@Q.4s, v@Q.4s, v@sg23.4s
+ssra v@d23.4s, v@r.4s, #31
 bit v@L01.16b, v@e01.16b, v@a01.16b
-bit v@L23.16b, v@Q.16b, v@a23.16b
+bit v@L23.16b, v@d23.16b, v@a23.16b
 and v@dd01.16b, v@dd01.16b, v@a01.16b
 and v@dd23.16b, v@dd23.16b, v@a23.16b
 str q@in_S23, [x0]
