@@ -4,12 +4,12 @@ fmul d31, d31, v1.d[1]
 fmov x13, d5
 mov x23, v5.d[1]
 sub v7.4s, v7.4s, v19.4s
-sub v0.4s, v0.4s, v5.4s
 ldp q6, q17, [x26, #32]
+sub v0.4s, v0.4s, v5.4s
 ldp q23, q24, [x27, #64]
 ldr q25, [x27, #96]
-ldp q2, q4, [x26]
 saddw2 v29.2d, v6.2d, v7.4s
+ldp q2, q4, [x26]
 saddw v26.2d, v6.2d, v0.2s
 saddw2 v27.2d, v6.2d, v0.4s
 saddw v28.2d, v6.2d, v7.2s
@@ -42,10 +42,10 @@ sqxtn2 v6.4s, v27.2d
 abs v27.4s, v7.4s
 mov v7.16b, v26.16b
 ushr v24.4s, v26.4s, #4
-abs v25.2d, v25.2d
 facgt v3.2d, v17.2d, v30.2d
 fcvtzs v30.2d, v30.2d
 ushr v31.4s, v27.4s, #4
+abs v25.2d, v25.2d
 eor v24.16b, v24.16b, v28.16b
 xtn2 v16.4s, v3.2d
 sqxtn2 v1.4s, v30.2d
@@ -93,8 +93,8 @@ add x25, x4, w25, sxtw
 stp q17, q1, [x0, #16]
 and x1, x9, #0xffffffff00000000
 lsl x20, x10, #2
-and x3, x24, #0xffffffff00000000
 add x9, x1, w9, sxtw
+and x3, x24, #0xffffffff00000000
 lsr x1, x13, #48
 add x24, x3, w24, sxtw
 add x17, x10, x9, lsl #1
@@ -105,17 +105,17 @@ add x15, x13, x17
 add x17, x17, x20
 madd w1, w1, w30, w9
 add x16, x14, x19
-add x19, x19, x20
 add x13, x15, x17
+add x19, x19, x20
 add x17, x17, x20
 lsr x3, x15, #48
 lsr w11, w15, #16
-lsr x2, x14, #48
 lsr w10, w14, #16
 add x15, x13, x17
+lsr x2, x14, #48
 add x14, x16, x19
-add x17, x17, x20
 add x19, x19, x20
+add x17, x17, x20
 lsr x5, x13, #48
 lsr w9, w13, #16
 madd w2, w2, w30, w10
@@ -127,26 +127,26 @@ lsr x4, x16, #48
 lsr w12, w16, #16
 add x16, x14, x19
 ldrb w2, [x18, w2, uxtw]
-madd w4, w4, w30, w12
 ldrb w3, [x18, w3, uxtw]
+madd w4, w4, w30, w12
 add x19, x19, x20
 madd w5, w5, w30, w9
 lsr x7, x15, #48
 lsr w11, w15, #16
 lsr x6, x14, #48
 lsr w10, w14, #16
-ldrb w4, [x18, w4, uxtw]
 madd w7, w7, w30, w11
+ldrb w4, [x18, w4, uxtw]
 add x15, x13, x17
 orr x21, x1, x2, lsl #8
 add x14, x16, x19
 add x17, x17, x20
 lsr x1, x13, #48
 lsr w9, w13, #16
-orr x22, x3, x4, lsl #8
 add x19, x19, x20
-lsr x8, x16, #48
+orr x22, x3, x4, lsl #8
 lsr w12, w16, #16
+lsr x8, x16, #48
 add x13, x15, x17
 madd w6, w6, w30, w10
 add x16, x14, x19
@@ -155,13 +155,13 @@ lsr x3, x15, #48
 lsr w11, w15, #16
 orr x15, x21, x22, lsl #16
 madd w8, w8, w30, w12
-add x17, x17, x20
 ldrb w5, [x18, w5, uxtw]
+add x17, x17, x20
 ldrb w6, [x18, w6, uxtw]
 madd w1, w1, w30, w9
 str w15, [x28, #0]
-madd w3, w3, w30, w11
 ldrb w7, [x18, w7, uxtw]
+madd w3, w3, w30, w11
 ldrb w8, [x18, w8, uxtw]
 add x15, x13, x17
 orr x21, x5, x6, lsl #8
@@ -173,61 +173,62 @@ lsr x4, x16, #48
 lsr w12, w16, #16
 add x17, x17, x20
 madd w2, w2, w30, w10
-orr x22, x7, x8, lsl #8
 add x16, x14, x19
+orr x22, x7, x8, lsl #8
 lsr x5, x13, #48
 lsr w9, w13, #16
-add x13, x15, x17
 add x19, x19, x20
+add x13, x15, x17
 lsr x7, x15, #48
 lsr w11, w15, #16
 lsr x6, x14, #48
 lsr w10, w14, #16
+add x17, x17, x20
 orr x15, x21, x22, lsl #16
 add x14, x16, x19
-add x17, x17, x20
 madd w4, w4, w30, w12
 add x19, x19, x20
 ldrb w1, [x18, w1, uxtw]
 str w15, [x28, #4]
 madd w5, w5, w30, w9
-ldrb w2, [x18, w2, uxtw]
-madd w7, w7, w30, w11
 add x17, x25, x24, lsl #1
+ldrb w2, [x18, w2, uxtw]
 ldrb w3, [x18, w3, uxtw]
+madd w7, w7, w30, w11
 ldrb w4, [x18, w4, uxtw]
 madd w6, w6, w30, w10
-add x14, x23, x24
 ldrb w5, [x18, w5, uxtw]
-add x19, x17, x25, lsl #1
 add x15, x23, x17
+add x19, x17, x25, lsl #1
 lsl x20, x25, #2
 orr x21, x1, x2, lsl #8
 orr x22, x3, x4, lsl #8
 ldrb w6, [x18, w6, uxtw]
-add x17, x17, x20
 ldrb w7, [x18, w7, uxtw]
+add x17, x17, x20
+add x14, x23, x24
 lsr x1, x23, #48
 lsr w9, w23, #16
 add x23, x15, x17
-add x17, x17, x20
-lsr x3, x15, #48
 lsr w11, w15, #16
+lsr x3, x15, #48
 orr x15, x21, x22, lsl #16
 madd w1, w1, w30, w9
 orr x21, x5, x6, lsl #8
-madd w3, w3, w30, w11
+add x17, x17, x20
 lsr x8, x16, #48
 lsr w12, w16, #16
 str w15, [x28, #8]
 madd w8, w8, w30, w12
-ldrb w1, [x18, w1, uxtw]
+lsr x5, x23, #48
 add x15, x23, x17
 add x16, x14, x19
+ldrb w1, [x18, w1, uxtw]
 add x17, x17, x20
 add x19, x19, x20
-lsr x5, x23, #48
 lsr w9, w23, #16
+madd w3, w3, w30, w11
+madd w5, w5, w30, w9
 ldrb w8, [x18, w8, uxtw]
 add x23, x15, x17
 add x17, x17, x20
@@ -238,51 +239,51 @@ add x14, x16, x19
 orr x22, x7, x8, lsl #8
 madd w2, w2, w30, w10
 add x19, x19, x20
-madd w5, w5, w30, w9
-ldrb w3, [x18, w3, uxtw]
 lsr x7, x15, #48
 orr x15, x21, x22, lsl #16
 lsr x4, x16, #48
 lsr w12, w16, #16
 ldrb w2, [x18, w2, uxtw]
 madd w7, w7, w30, w11
-madd w4, w4, w30, w12
 str w15, [x28, #12]
+madd w4, w4, w30, w12
 add x16, x14, x19
 add x15, x23, x17
 add x19, x19, x20
-add x17, x17, x20
+ldrb w3, [x18, w3, uxtw]
 orr x21, x1, x2, lsl #8
 ldrb w5, [x18, w5, uxtw]
+add x17, x17, x20
 ldrb w4, [x18, w4, uxtw]
 ldrb w7, [x18, w7, uxtw]
 lsr x6, x14, #48
 lsr w10, w14, #16
+madd w6, w6, w30, w10
 orr x22, x3, x4, lsl #8
 add x14, x16, x19
 lsr x1, x23, #48
 lsr w9, w23, #16
-add x23, x15, x17
 add x19, x19, x20
+add x23, x15, x17
 lsr x3, x15, #48
 lsr w11, w15, #16
 lsr x8, x16, #48
 lsr w12, w16, #16
-madd w6, w6, w30, w10
 orr x15, x21, x22, lsl #16
+madd w1, w1, w30, w9
 add x16, x14, x19
 madd w8, w8, w30, w12
 add x17, x17, x20
-add x19, x19, x20
+lsr x2, x14, #48
 str w15, [x28, #16]
-madd w1, w1, w30, w9
+add x19, x19, x20
 ldrb w6, [x18, w6, uxtw]
 madd w3, w3, w30, w11
 ldrb w8, [x18, w8, uxtw]
 add x15, x23, x17
 add x17, x17, x20
-lsr x2, x14, #48
 lsr w10, w14, #16
+lsr w9, w23, #16
 add x14, x16, x19
 orr x21, x5, x6, lsl #8
 lsr x4, x16, #48
@@ -290,7 +291,6 @@ lsr w12, w16, #16
 add x19, x19, x20
 orr x22, x7, x8, lsl #8
 lsr x5, x23, #48
-lsr w9, w23, #16
 madd w2, w2, w30, w10
 ldrb w1, [x18, w1, uxtw]
 madd w4, w4, w30, w12
@@ -299,8 +299,8 @@ add x23, x15, x17
 add x16, x14, x19
 lsr x7, x15, #48
 lsr w11, w15, #16
-ldrb w2, [x18, w2, uxtw]
 madd w5, w5, w30, w9
+ldrb w2, [x18, w2, uxtw]
 ldrb w4, [x18, w4, uxtw]
 madd w7, w7, w30, w11
 orr x15, x21, x22, lsl #16
@@ -309,16 +309,16 @@ lsr x6, x14, #48
 lsr w10, w14, #16
 lsr x8, x16, #48
 lsr w12, w16, #16
-madd w6, w6, w30, w10
 str w15, [x28, #20]
+madd w6, w6, w30, w10
 madd w8, w8, w30, w12
 ldrb w5, [x18, w5, uxtw]
 orr x21, x1, x2, lsl #8
 orr x22, x3, x4, lsl #8
 ldrb w7, [x18, w7, uxtw]
 ldrb w6, [x18, w6, uxtw]
-ldrb w8, [x18, w8, uxtw]
 orr x15, x21, x22, lsl #16
+ldrb w8, [x18, w8, uxtw]
 add x14, x16, x19
 add x17, x17, x20
 add x19, x19, x20
