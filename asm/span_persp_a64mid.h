@@ -1,8 +1,9 @@
 // asm/span_persp_a64mid.h: aarch64 only, persp_short_inl's second-order path for four runs
 // (49 .. 64 pixels): short_steps_k3v computes every run's steps, the last run's last_dd
-// included, in one vector asm block, and persp_mid_k3 draws the span from them. Internal: included
-// by asm/span_persp_a64short.h (it uses asm/span_persp_arm.h's kRecipSteps, asm/span_persp_run.h's
-// draw_run and Run16, asm/span_persp_a64pass.h's short_pass).
+// included, in one vector asm block; steps_k3v_pass is the same block with the first pass
+// (runs 0, 1) in it, and persp_mid_k3 draws the span with it. Internal: included by
+// asm/span_persp_a64short.h (it uses asm/span_persp_arm.h's kRecipSteps,
+// asm/span_persp_run.h's draw_run and Run16, asm/span_persp_a64pass.h's short_pass).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -68,8 +69,7 @@ struct MidFirst {
 // wherever accepted), so no mirroring on the dd chain; d = accept ? that : lin, dd & accept.
 // One asm block, fixed registers, the order from bench/order_search.py (steps_k3v.s in
 // bench/mca_a53_p64; its registers from alloc.py on steps_k3v.vs).
-// AsmSpanPersp.FourRunSpansMatchOnExtremeGradients (lengths 49 .. 64) and
-// MatchesTheRunWalkerOnShortSpans check it against the walker.
+// AsmSpanPersp.ShortStepsK3vMatchTheirParts checks it against steps16_dd and last_steps.
 SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
                                    float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {
   register int32x4_t rS44 __asm__("v7") = S44;
@@ -184,7 +184,10 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // by mid_pack, asm/span_persp_a64pass.h) in one asm block: the pass's first slots run in the
 // latency gaps of the steps' last vector levels (the block is bench/mca_a53_p64/steps_pass.s,
 // the two blocks one after the other plus the packing, then ordered by
-// bench/order_search.py). Draws dest[0 .. 31]; st as short_steps_k3v's.
+// bench/order_search.py). Draws dest[0 .. 31]; st as short_steps_k3v's. The same
+// instructions as short_steps_k3v (steps_k3v.s) and short_pass<true>, reordered with their
+// dependences kept; AsmSpanPersp.FourRunSpansMatchOnExtremeGradients (lengths 49 .. 64) and
+// MatchesTheRunWalkerOnShortSpans check the span against the walker.
 SB_INLINE void steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
                               int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
                               float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {
@@ -531,16 +534,17 @@ SB_INLINE void steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restric
       : "w"(rS01), "w"(rS23), [kp] "r"(kMidConsts), [y] "r"(&kMidSteps[s]), [st] "r"(st), [d] "r"(dest),
         [tx] "r"(texels), [w] "r"(width)
       : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16",
-        "x17", "x19", "x20", "x21", "x22", "x23", "x24", "x25", "v0", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22",
-        "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
+        "x17", "x19", "x20", "x21", "x22", "x23", "x24", "x25", "v0", "v2", "v4", "v6", "v17", "v18", "v20", "v21",
+        "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
 }
 // Run16's packing of an unpacked [du, dv] lane x: (x & (2^64 - 2^32)) + sext(x mod 2^32).
 SB_INLINE uint64_t mid_pack(uint64_t x) {
   return (x & 0xffffffff00000000) + uint64_t(int64_t(int32_t(uint32_t(x))));
 }
 // Draws a second-order span of 49 .. 64 pixels (4 runs; last = n - 48 pixels in the last
-// run) from the sample block's results (persp_short_inl): runs 0, 1 as one short_pass, then
-// runs 2, 3 as one more (last == 16) or run 2 by Run16 and the last run by draw_run.
+// run) from the sample block's results (persp_short_inl): the steps with runs 0, 1
+// (steps_k3v_pass), then runs 2, 3 as one short_pass (last == 16) or run 2 by Run16 and the
+// last run by draw_run.
 SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int width, int32x4_t S01, int32x4_t S23,
                             int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zc) {
   uint64_t st[6];

@@ -556,7 +556,8 @@ TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
       const double want = double(dl / T) + int32_t(rng() % 5) - 2 + (rng() % 1000) / 1000.0;
       zc = rng() % 2 ? 1.0 : -1.0, zk = want / (-(double(dl) / s) * zc);
     }
-    const int32_t s01[4] = {u[0], v[0], u[1], v[1]}, s23[4] = {u[2], v[2], u[3], v[3]}, s44[4] = {u[4], v[4], u[4], v[4]};
+    const int32_t s01[4] = {u[0], v[0], u[1], v[1]}, s23[4] = {u[2], v[2], u[3], v[3]};
+    const int32_t s44[4] = {u[4], v[4], u[4], v[4]};
     const double c01[2] = {c[0], c[1]}, c23[2] = {c[2], 0.5}, zs23[2] = {1.0, zk};
     uint64_t st[6];
     const sb::simd::MidFirst f =
