@@ -12,6 +12,7 @@
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_a64pass.h"
 #endif
+#include "asm/span_persp_a64mid.h"
 
 namespace sb::simd {
 namespace {
@@ -512,6 +513,10 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
   // span's positions while the divides run).
   auto rest = [&](auto kc) SB_LAMBDA_INLINE {
     constexpr int k = decltype(kc)::value;
+    if constexpr (kCurve && k == 3) {  // four runs: asm/span_persp_a64mid.h
+      persp_mid_k3(dest, last, texels, width, S01, S23, S44, c01, c23, zs23, zc);
+      return;
+    }
     // Full runs 0, 1, 2: deltas D01 = [du_0, dv_0, du_1, dv_1], D23 = [du_2, dv_2, du_3, dv_3]
     // (run 3 only as the last run), and the full runs' packed steps dlo (runs 0, 1), dhi
     // (runs 2, 3), ddlo, ddhi (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64).

@@ -21,7 +21,8 @@
 #include "asm/kernels.h"
 #include "asm/span_persp_run.h"  // steps16_dd (internal linkage: this test's own copy)
 // ARMv7 and x86-64: last_ddi, last_steps_i (the ARMv7 tails' parts; portable C++); aarch64:
-// div_steps and short_steps_k3 (asm/span_persp_a64short.h, included by it).
+// div_steps, short_steps_k3 and short_steps_k3v (asm/span_persp_a64short.h, a64mid.h, included
+// by it).
 #include "asm/span_persp_arm.h"
 #include "engine/render/render_local.h"
 #include "engine/render/span_draw.h"
@@ -534,6 +535,83 @@ TEST(AsmSpanPersp, ShortStepsK3MatchTheirParts) {
   }
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld four-run step blocks, %ld wrong\n", checked, wrong);
+}
+// asm/span_persp_a64mid.h's short_steps_k3v (the four-run path persp_short_inl takes: runs
+// 0 .. 2 full, run 3 the last, with last_dd in run 2's vectors) against its parts: the full
+// runs' steps16_dd (cvt_sat(delta c)) and the last run's last_steps (div_steps, (q curve)
+// -2 and the 1e9 range, last_dd) for every steps = 0 .. 15 (s = max(steps, 1)). The last
+// run's curve often at the T |dd| = |delta| edge (T = steps (steps - 1) / 2, 0 .. 105; for T
+// = 1 with |dd| past the 2^25 clamp the full runs use), 0, tiny, huge, infinite and NaN.
+TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
+  using sb::simd::RunSteps;
+  std::mt19937 rng(29);
+  const int32_t kTop = INT32_MAX - 65535;
+  const double kOdd[] = {0.0, -0.0, 1e-300, -1e-300, 1e300, -1e300, std::numeric_limits<double>::infinity(),
+                         -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
+  auto sample = [&]() -> int32_t {
+    switch (rng() % 4) {
+      case 0: return rng() % 2 ? 0 : kTop - int32_t(rng() % 2);
+      case 1: return int32_t(rng() % (uint32_t(kTop) + 1));
+      default: return int32_t((rng() % (uint32_t(kTop) + 1)) >> (rng() % 31));
+    }
+  };
+  auto curve_for = [&](int32_t delta) -> double {  // a factor c with trunc(delta c) near the edge
+    const uint32_t r = rng() % 8;
+    if (r == 0) return kOdd[rng() % 9];
+    if (r == 1 || delta == 0) return std::ldexp(double(int32_t(rng())), -int(rng() % 80));
+    const int32_t t = int32_t(delta / 120) + int32_t(rng() % 5) - 2;
+    const double want = (rng() % 2 ? t : -t) + (rng() % 1000) / 1000.0;
+    return want / double(delta);
+  };
+  auto unpacked = [](const RunSteps& su, const RunSteps& sv, bool dd) {
+    return (uint64_t(uint32_t(dd ? sv.dd : sv.d)) << 32) + uint32_t(dd ? su.dd : su.d);
+  };
+  long checked = 0, wrong = 0;
+  for (int i = 0; i < 400000; ++i) {
+    int32_t u[5], v[5];
+    for (int j = 0; j < 5; ++j) {
+      u[j] = sample(), v[j] = sample();
+      if (j > 0 && rng() % 8 == 0) u[j] = u[j - 1];
+      if (j > 0 && rng() % 8 == 0) v[j] = v[j - 1];
+    }
+    double c[3];
+    for (int j = 0; j < 3; ++j) c[j] = curve_for(rng() % 2 ? u[j + 1] - u[j] : v[j + 1] - v[j]);
+    const int steps = i % 16, s = steps > 1 ? steps : 1;
+    const int32_t du3 = u[4] - u[3], dv3 = v[4] - v[3];
+    double zc = rng() % 16 == 0 ? kOdd[rng() % 9] : std::ldexp(double(int32_t(rng())), -int(rng() % 90));
+    double zk = rng() % 16 == 0 ? kOdd[rng() % 9] : std::ldexp(double(rng()), -int(rng() % 60));
+    const int T = steps * (steps - 1) / 2;
+    if (rng() % 2 && T > 0 && (du3 != 0 || dv3 != 0)) {  // the last run's T |dd| = |delta| edge
+      const int32_t dl = rng() % 2 && du3 != 0 ? du3 : (dv3 != 0 ? dv3 : du3);
+      const double want = double(dl / T) + int32_t(rng() % 5) - 2 + (rng() % 1000) / 1000.0;
+      zc = rng() % 2 ? 1.0 : -1.0, zk = want / (-(double(dl) / s) * zc);
+    }
+    const int32_t s01[4] = {u[0], v[0], u[1], v[1]}, s23[4] = {u[2], v[2], u[3], v[3]};
+    const int32_t s44[4] = {u[4], v[4], u[4], v[4]};
+    const double c01[2] = {c[0], c[1]}, c23[2] = {c[2], 0.5}, zs23[2] = {1.0, zk};
+    uint64_t st[6];
+    const sb::simd::MidFirst f =
+        sb::simd::short_steps_k3v(vld1q_s32(s01), vld1q_s32(s23), vld1q_s32(s44), vld1q_f64(c01), vld1q_f64(c23),
+                                  vld1q_f64(zs23), s, zc, st);
+    auto uv = [&](int j) { return (uint64_t(uint32_t(v[j])) << 32) + uint32_t(u[j]); };
+    wrong += f.a_uv != uv(0) || f.b_uv != uv(1) || st[0] != uv(2) || st[1] != uv(3);
+    // Full runs 0, 1, 2.
+    const uint64_t gd[3] = {f.a_d, f.b_d, st[2]}, gdd[3] = {f.a_dd, f.b_dd, st[4]};
+    for (int j = 0; j < 3; ++j) {
+      const int32_t du = u[j + 1] - u[j], dv = v[j + 1] - v[j];
+      const RunSteps su = sb::simd::steps16_dd(du, sb::simd::cvt_sat(double(du) * c[j]));
+      const RunSteps sv = sb::simd::steps16_dd(dv, sb::simd::cvt_sat(double(dv) * c[j]));
+      wrong += gd[j] != unpacked(su, sv, false) || gdd[j] != unpacked(su, sv, true);
+    }
+    // The last run (3): last_steps.
+    RunSteps su, sv;
+    const double fd[2] = {double(du3), double(dv3)};
+    sb::simd::last_steps(steps, du3, dv3, vld1q_f64(fd), zc * 0.5 * zk, &su, &sv);
+    wrong += st[3] != unpacked(su, sv, false) || st[5] != unpacked(su, sv, true);
+    ++checked;
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld four-run step blocks (vector last run), %ld wrong\n", checked, wrong);
 }
 #endif
 

@@ -1,0 +1,566 @@
+// asm/span_persp_a64mid.h: aarch64 only, persp_short_inl's second-order path for four runs
+// (49 .. 64 pixels): short_steps_k3v computes every run's steps, the last run's last_dd
+// included, in one vector asm block; steps_k3v_pass is the same block with the first pass
+// (runs 0, 1) in it, and persp_mid_k3 draws the span with it. Internal: included by
+// asm/span_persp_a64short.h (it uses asm/span_persp_arm.h's kRecipSteps,
+// asm/span_persp_run.h's draw_run and Run16, asm/span_persp_a64pass.h's short_pass).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include "asm/span_persp_a64pass.h"
+#endif
+
+namespace sb::simd {
+namespace {
+
+#if defined(__aarch64__)
+// The block's constants: 120 (4 lanes), 2^25 (4 lanes), the deltas' double bias 2^52 + 2^51
+// (2 lanes), 1e9 (last_steps' |ddf| < 1e9 range, 2 lanes): two ldp.
+alignas(16) constexpr uint64_t kMidConsts[8] = {
+    0x0000007800000078, 0x0000007800000078, 0x0200000002000000, 0x0200000002000000,
+    0x4338000000000000, 0x4338000000000000, 0x41cdcd6500000000, 0x41cdcd6500000000};
+static_assert(__builtin_bit_cast(uint64_t, 1e9) == 0x41cdcd6500000000);
+static_assert(__builtin_bit_cast(uint64_t, 6755399441055744.0) == 0x4338000000000000);
+// Per last-run step count s (1 .. 15; index 0 as 1), the constants of the D23 vector [du_2,
+// dv_2, du_3, dv_3] (run 2 full, run 3 the last run): per lane s, s - 1, T = s (s - 1) / 2,
+// the clamp C = floor((2^32 - 1) / T) (2^32 - 1 for T = 0: min(|dd|, C) T < 2^32, and C T >
+// 2^31 > |delta|, so the clamped test T |dd| <= |delta| is the exact one), h = (s + 1) / 2
+// (2 r < s iff r < h), then [RN(1/s), s] (div_steps) and [k, 0] with k = -2 for s > 1 and 0
+// else (ddf = q (curve k): the last run's dd is 0 when steps <= 1, as last_steps_ddi's mask).
+struct alignas(16) MidSteps {
+  uint32_t s[4], sm1[4], t[4], c[4], h[4];
+  double y[2], k[2];
+};
+static_assert(sizeof(MidSteps) == 112 && offsetof(MidSteps, t) == 32 && offsetof(MidSteps, h) == 64 &&
+              offsetof(MidSteps, y) == 80 && offsetof(MidSteps, k) == 96);
+constexpr MidSteps mid_steps(uint32_t s) {
+  const uint32_t t = s * (s - 1) / 2, c = t ? 0xffffffffu / t : 0xffffffffu;
+  return MidSteps{{16, 16, s, s}, {15, 15, s - 1, s - 1}, {120, 120, t, t}, {35791394, 35791394, c, c},
+                  {8, 8, (s + 1) / 2, (s + 1) / 2}, {kRecipSteps[s], double(s)}, {s > 1 ? -2.0 : 0.0, 0.0}};
+}
+constexpr MidSteps kMidSteps[16] = {mid_steps(1),  mid_steps(1),  mid_steps(2),  mid_steps(3),
+                                    mid_steps(4),  mid_steps(5),  mid_steps(6),  mid_steps(7),
+                                    mid_steps(8),  mid_steps(9),  mid_steps(10), mid_steps(11),
+                                    mid_steps(12), mid_steps(13), mid_steps(14), mid_steps(15)};
+// The first pass's arguments (runs 0 and 1: short_pass's run a and run b), the steps
+// unpacked ([du, dv] as v 2^32 + u, each 32-bit); the second pass's stored: st = {c_uv, luv,
+// c_d, ld, c_dd, ldd} (run 2's start, run 3's start, then their steps and second-order steps,
+// unpacked).
+struct MidFirst {
+  uint64_t a_uv, a_d, a_dd, b_uv, b_d, b_dd;
+};
+// Four runs, second order, from the samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4
+// twice), the full runs' curve factors c01, c23, zs23 = [z_2 + z_3, z_3 + z_4], s = max(1,
+// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): what
+// short_steps_k3 computes (asm/span_persp_a64short.h: delta, ddf, dd, steps16_dd's 32-bit
+// form). The last run: last_steps' vector part (div_steps' quotient q, lin = trunc(q), ddf =
+// q (curve k), curve = (zc / 2)(z_3 + z_4); q (curve k) is (q curve) k bit for bit: k = -2
+// scales exactly, and an inf / NaN product gives dd = 0 either way), its lin and dd put into
+// lanes 2, 3 of run 2's vectors, then last_dd (asm/span_persp_arm.h) in those four lanes
+// (for s = 16, T = 120 it is steps16_dd): with sg = delta's sign, Q = |delta| / s truncated
+// (|delta| >> 4 for run 2; |lin| for run 3: q has delta's sign and trunc(q) = trunc(delta /
+// s)), lin = mirror(Q), accept iff T |dd| <= |delta| (and |ddf| < 1e9 for run 3: a rejected
+// lane gives lin and dd 0, as last_dd does with dd masked to 0), r = |delta| - s Q. last_dd's
+// d = mirror(Q - (m >> 1) - (m & 1 & (2 r < s))), m = mirror(M), M = (s - 1) dd, is
+// lin - (M >> 1) - (M & 1 & ((r < h) ^ sg)) (floor(-M / 2) = -(M >> 1) - (M & 1); |M| < 2^31
+// wherever accepted), so no mirroring on the dd chain; d = accept ? that : lin, dd & accept.
+// One asm block, fixed registers, the order from bench/order_search.py (steps_k3v.s in
+// bench/mca_a53_p64; its registers from alloc.py on steps_k3v.vs).
+// AsmSpanPersp.ShortStepsK3vMatchTheirParts checks it against steps16_dd and last_steps.
+SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
+                                   float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {
+  register int32x4_t rS44 __asm__("v7") = S44;
+  register int32x4_t rS01 __asm__("v5") = S01;
+  register int32x4_t rS23 __asm__("v19") = S23;
+  register float64x2_t rc01 __asm__("v3") = c01;
+  register float64x2_t rc23 __asm__("v16") = c23;
+  register float64x2_t rzs __asm__("v1") = zs23;
+  register double rzc __asm__("v31") = zc * 0.5;
+  uint64_t ra_uv, ra_d, ra_dd, rb_uv, rb_d, rb_dd;
+  __asm__(
+// BEGIN short_steps_k3v
+      "ext v7.16b, v19.16b, v7.16b, #8\n\t"
+      "ext v0.16b, v5.16b, v19.16b, #8\n\t"
+      "ldp q23, q24, [%[y], #64]\n\t"
+      "ldp q6, q17, [%[kp], #32]\n\t"
+      "sub v7.4s, v7.4s, v19.4s\n\t"
+      "sub v0.4s, v0.4s, v5.4s\n\t"
+      "ldp q2, q4, [%[kp]]\n\t"
+      "saddw2 v29.2d, v6.2d, v7.4s\n\t"
+      "saddw v26.2d, v6.2d, v0.2s\n\t"
+      "saddw2 v27.2d, v6.2d, v0.4s\n\t"
+      "saddw v28.2d, v6.2d, v7.2s\n\t"
+      "ldr q25, [%[y], #96]\n\t"
+      "fmul d31, d31, v1.d[1]\n\t"
+      "fsub v29.2d, v29.2d, v6.2d\n\t"
+      "fsub v26.2d, v26.2d, v6.2d\n\t"
+      "fsub v27.2d, v27.2d, v6.2d\n\t"
+      "fsub v28.2d, v28.2d, v6.2d\n\t"
+      "ldp q18, q20, [%[y]]\n\t"
+      "fmul v30.2d, v29.2d, v24.d[0]\n\t"
+      "fmul v26.2d, v26.2d, v3.d[0]\n\t"
+      "fmul d31, d31, v25.d[0]\n\t"
+      "fmul v27.2d, v27.2d, v3.d[1]\n\t"
+      "fmul v28.2d, v28.2d, v16.d[0]\n\t"
+      "fmov %[a_uv], d5\n\t"
+      "mov %[b_uv], v5.d[1]\n\t"
+      "fmls v29.2d, v30.2d, v24.d[1]\n\t"
+      "fcvtzs v26.2d, v26.2d\n\t"
+      "ldp q21, q22, [%[y], #32]\n\t"
+      "movi v16.2d, #0xffffffffffffffff\n\t"
+      "fcvtzs v28.2d, v28.2d\n\t"
+      "sqxtn v6.2s, v26.2d\n\t"
+      "fmla v30.2d, v29.2d, v24.d[0]\n\t"
+      "fcvtzs v27.2d, v27.2d\n\t"
+      "str q19, [%[st]]\n\t"
+      "sqxtn v1.2s, v28.2d\n\t"
+      "sshr v28.4s, v0.4s, #31\n\t"
+      "abs v26.4s, v0.4s\n\t"
+      "sshr v29.4s, v7.4s, #31\n\t"
+      "fcvtzs v25.2d, v30.2d\n\t"
+      "fmul v30.2d, v30.2d, v31.d[0]\n\t"
+      "sqxtn2 v6.4s, v27.2d\n\t"
+      "abs v27.4s, v7.4s\n\t"
+      "mov v7.16b, v26.16b\n\t"
+      "ushr v24.4s, v26.4s, #4\n\t"
+      "abs v25.2d, v25.2d\n\t"
+      "facgt v3.2d, v17.2d, v30.2d\n\t"
+      "fcvtzs v30.2d, v30.2d\n\t"
+      "ushr v31.4s, v27.4s, #4\n\t"
+      "eor v24.16b, v24.16b, v28.16b\n\t"
+      "xtn2 v16.4s, v3.2d\n\t"
+      "sqxtn2 v1.4s, v30.2d\n\t"
+      "xtn2 v31.4s, v25.2d\n\t"
+      "abs v3.4s, v6.4s\n\t"
+      "mov v25.16b, v27.16b\n\t"
+      "eor v30.16b, v6.16b, v28.16b\n\t"
+      "abs v0.4s, v1.4s\n\t"
+      "eor v17.16b, v31.16b, v29.16b\n\t"
+      "umin v3.4s, v3.4s, v4.4s\n\t"
+      "mul v4.4s, v20.4s, v1.4s\n\t"
+      "sub v30.4s, v30.4s, v28.4s\n\t"
+      "mls v25.4s, v18.4s, v31.4s\n\t"
+      "sub v24.4s, v24.4s, v28.4s\n\t"
+      "umin v0.4s, v0.4s, v22.4s\n\t"
+      "mul v3.4s, v3.4s, v2.4s\n\t"
+      "mls v7.4s, v30.4s, v2.s[0]\n\t"
+      "sshr v22.4s, v4.4s, #1\n\t"
+      "sub v17.4s, v17.4s, v29.4s\n\t"
+      "cmhi v25.4s, v23.4s, v25.4s\n\t"
+      "shl v4.4s, v4.4s, #31\n\t"
+      "mul v0.4s, v0.4s, v21.4s\n\t"
+      "ushr v7.4s, v7.4s, #4\n\t"
+      "cmhs v3.4s, v26.4s, v3.4s\n\t"
+      "sub v21.4s, v17.4s, v22.4s\n\t"
+      "eor v25.16b, v25.16b, v29.16b\n\t"
+      "eor v7.16b, v7.16b, v28.16b\n\t"
+      "and v6.16b, v6.16b, v3.16b\n\t"
+      "cmhs v0.4s, v27.4s, v0.4s\n\t"
+      "and v25.16b, v25.16b, v4.16b\n\t"
+      "sub v7.4s, v7.4s, v28.4s\n\t"
+      "fmov %[a_dd], d6\n\t"
+      "and v0.16b, v0.16b, v16.16b\n\t"
+      "ssra v21.4s, v25.4s, #31\n\t"
+      "mov %[b_dd], v6.d[1]\n\t"
+      "bit v24.16b, v7.16b, v3.16b\n\t"
+      "and v1.16b, v1.16b, v0.16b\n\t"
+      "bit v17.16b, v21.16b, v0.16b\n\t"
+      "mov %[b_d], v24.d[1]\n\t"
+      "fmov %[a_d], d24\n\t"
+      "stp q17, q1, [%[st], #16]"
+// END short_steps_k3v
+      : [a_uv] "=&r"(ra_uv), [a_d] "=&r"(ra_d), [a_dd] "=&r"(ra_dd), [b_uv] "=&r"(rb_uv), [b_d] "=&r"(rb_d),
+        [b_dd] "=&r"(rb_dd), "+&w"(rS44), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rzc), "=m"(st)
+      : "w"(rS01), "w"(rS23), [kp] "r"(kMidConsts), [y] "r"(&kMidSteps[s]), [st] "r"(st), "m"(kMidConsts),
+        "m"(kMidSteps)
+      : "v0", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29",
+        "v30");
+  return MidFirst{ra_uv, ra_d, ra_dd, rb_uv, rb_d, rb_dd};
+}
+// short_steps_k3v and the first pass (short_pass<true> of runs 0 and 1, its arguments packed
+// by mid_pack, asm/span_persp_a64pass.h) in one asm block: the pass's first slots run in the
+// latency gaps of the steps' last vector levels (the block is bench/mca_a53_p64/steps_pass.s,
+// the two blocks one after the other plus the packing, then ordered by
+// bench/order_search.py). Draws dest[0 .. 31]; st as short_steps_k3v's. The same
+// instructions as short_steps_k3v (steps_k3v.s) and short_pass<true>, reordered with their
+// dependences kept; AsmSpanPersp.FourRunSpansMatchOnExtremeGradients (lengths 49 .. 64) and
+// MatchesTheRunWalkerOnShortSpans check the span against the walker.
+SB_INLINE void steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
+                              int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
+                              float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {
+  register int32x4_t rS44 __asm__("v7") = S44;
+  register int32x4_t rS01 __asm__("v5") = S01;
+  register int32x4_t rS23 __asm__("v19") = S23;
+  register float64x2_t rc01 __asm__("v3") = c01;
+  register float64x2_t rc23 __asm__("v16") = c23;
+  register float64x2_t rzs __asm__("v1") = zs23;
+  register double rzc __asm__("v31") = zc * 0.5;
+  __asm__ volatile(
+// BEGIN steps_k3v_pass
+      "ext v7.16b, v19.16b, v7.16b, #8\n\t"
+      "ext v0.16b, v5.16b, v19.16b, #8\n\t"
+      "fmul d31, d31, v1.d[1]\n\t"
+      "fmov x13, d5\n\t"
+      "mov x23, v5.d[1]\n\t"
+      "sub v7.4s, v7.4s, v19.4s\n\t"
+      "ldp q6, q17, [%[kp], #32]\n\t"
+      "sub v0.4s, v0.4s, v5.4s\n\t"
+      "ldp q23, q24, [%[y], #64]\n\t"
+      "ldr q25, [%[y], #96]\n\t"
+      "saddw2 v29.2d, v6.2d, v7.4s\n\t"
+      "ldp q2, q4, [%[kp]]\n\t"
+      "saddw v26.2d, v6.2d, v0.2s\n\t"
+      "saddw2 v27.2d, v6.2d, v0.4s\n\t"
+      "saddw v28.2d, v6.2d, v7.2s\n\t"
+      "fmul d31, d31, v25.d[0]\n\t"
+      "fsub v29.2d, v29.2d, v6.2d\n\t"
+      "fsub v26.2d, v26.2d, v6.2d\n\t"
+      "fsub v27.2d, v27.2d, v6.2d\n\t"
+      "fsub v28.2d, v28.2d, v6.2d\n\t"
+      "ldp q18, q20, [%[y]]\n\t"
+      "fmul v30.2d, v29.2d, v24.d[0]\n\t"
+      "fmul v26.2d, v26.2d, v3.d[0]\n\t"
+      "fmul v27.2d, v27.2d, v3.d[1]\n\t"
+      "fmul v28.2d, v28.2d, v16.d[0]\n\t"
+      "movi v16.2d, #0xffffffffffffffff\n\t"
+      "fmls v29.2d, v30.2d, v24.d[1]\n\t"
+      "fcvtzs v26.2d, v26.2d\n\t"
+      "fcvtzs v28.2d, v28.2d\n\t"
+      "fcvtzs v27.2d, v27.2d\n\t"
+      "ldp q21, q22, [%[y], #32]\n\t"
+      "str q19, [%[st]]\n\t"
+      "fmla v30.2d, v29.2d, v24.d[0]\n\t"
+      "sqxtn v6.2s, v26.2d\n\t"
+      "sqxtn v1.2s, v28.2d\n\t"
+      "sshr v28.4s, v0.4s, #31\n\t"
+      "abs v26.4s, v0.4s\n\t"
+      "sshr v29.4s, v7.4s, #31\n\t"
+      "fcvtzs v25.2d, v30.2d\n\t"
+      "fmul v30.2d, v30.2d, v31.d[0]\n\t"
+      "sqxtn2 v6.4s, v27.2d\n\t"
+      "abs v27.4s, v7.4s\n\t"
+      "mov v7.16b, v26.16b\n\t"
+      "ushr v24.4s, v26.4s, #4\n\t"
+      "facgt v3.2d, v17.2d, v30.2d\n\t"
+      "fcvtzs v30.2d, v30.2d\n\t"
+      "ushr v31.4s, v27.4s, #4\n\t"
+      "abs v25.2d, v25.2d\n\t"
+      "eor v24.16b, v24.16b, v28.16b\n\t"
+      "xtn2 v16.4s, v3.2d\n\t"
+      "sqxtn2 v1.4s, v30.2d\n\t"
+      "eor v30.16b, v6.16b, v28.16b\n\t"
+      "abs v3.4s, v6.4s\n\t"
+      "sub v24.4s, v24.4s, v28.4s\n\t"
+      "xtn2 v31.4s, v25.2d\n\t"
+      "mov v25.16b, v27.16b\n\t"
+      "abs v0.4s, v1.4s\n\t"
+      "sub v30.4s, v30.4s, v28.4s\n\t"
+      "umin v3.4s, v3.4s, v4.4s\n\t"
+      "mul v4.4s, v20.4s, v1.4s\n\t"
+      "eor v17.16b, v31.16b, v29.16b\n\t"
+      "mls v25.4s, v18.4s, v31.4s\n\t"
+      "umin v0.4s, v0.4s, v22.4s\n\t"
+      "mls v7.4s, v30.4s, v2.s[0]\n\t"
+      "mul v3.4s, v3.4s, v2.4s\n\t"
+      "sshr v22.4s, v4.4s, #1\n\t"
+      "shl v4.4s, v4.4s, #31\n\t"
+      "sub v17.4s, v17.4s, v29.4s\n\t"
+      "cmhi v25.4s, v23.4s, v25.4s\n\t"
+      "mul v0.4s, v0.4s, v21.4s\n\t"
+      "ushr v7.4s, v7.4s, #4\n\t"
+      "cmhs v3.4s, v26.4s, v3.4s\n\t"
+      "sub v21.4s, v17.4s, v22.4s\n\t"
+      "eor v25.16b, v25.16b, v29.16b\n\t"
+      "cmhs v0.4s, v27.4s, v0.4s\n\t"
+      "eor v7.16b, v7.16b, v28.16b\n\t"
+      "and v6.16b, v6.16b, v3.16b\n\t"
+      "and v25.16b, v25.16b, v4.16b\n\t"
+      "and v0.16b, v0.16b, v16.16b\n\t"
+      "sub v7.4s, v7.4s, v28.4s\n\t"
+      "fmov x10, d6\n\t"
+      "mov x25, v6.d[1]\n\t"
+      "ssra v21.4s, v25.4s, #31\n\t"
+      "and v1.16b, v1.16b, v0.16b\n\t"
+      "bit v24.16b, v7.16b, v3.16b\n\t"
+      "and x2, x10, #0xffffffff00000000\n\t"
+      "and x4, x25, #0xffffffff00000000\n\t"
+      "bit v17.16b, v21.16b, v0.16b\n\t"
+      "fmov x9, d24\n\t"
+      "mov x24, v24.d[1]\n\t"
+      "add x10, x2, w10, sxtw\n\t"
+      "add x25, x4, w25, sxtw\n\t"
+      "stp q17, q1, [%[st], #16]\n\t"
+      "and x1, x9, #0xffffffff00000000\n\t"
+      "lsl x20, x10, #2\n\t"
+      "add x9, x1, w9, sxtw\n\t"
+      "and x3, x24, #0xffffffff00000000\n\t"
+      "lsr x1, x13, #48\n\t"
+      "add x24, x3, w24, sxtw\n\t"
+      "add x17, x10, x9, lsl #1\n\t"
+      "add x14, x13, x9\n\t"
+      "lsr w9, w13, #16\n\t"
+      "add x19, x17, x10, lsl #1\n\t"
+      "add x15, x13, x17\n\t"
+      "add x17, x17, x20\n\t"
+      "madd w1, w1, %w[w], w9\n\t"
+      "add x16, x14, x19\n\t"
+      "add x13, x15, x17\n\t"
+      "add x19, x19, x20\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x3, x15, #48\n\t"
+      "lsr w11, w15, #16\n\t"
+      "lsr w10, w14, #16\n\t"
+      "add x15, x13, x17\n\t"
+      "lsr x2, x14, #48\n\t"
+      "add x14, x16, x19\n\t"
+      "add x19, x19, x20\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x5, x13, #48\n\t"
+      "lsr w9, w13, #16\n\t"
+      "madd w2, w2, %w[w], w10\n\t"
+      "ldrb w1, [%[tx], w1, uxtw]\n\t"
+      "madd w3, w3, %w[w], w11\n\t"
+      "add x13, x15, x17\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x4, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "add x16, x14, x19\n\t"
+      "ldrb w2, [%[tx], w2, uxtw]\n\t"
+      "ldrb w3, [%[tx], w3, uxtw]\n\t"
+      "madd w4, w4, %w[w], w12\n\t"
+      "add x19, x19, x20\n\t"
+      "madd w5, w5, %w[w], w9\n\t"
+      "lsr x7, x15, #48\n\t"
+      "lsr w11, w15, #16\n\t"
+      "lsr x6, x14, #48\n\t"
+      "lsr w10, w14, #16\n\t"
+      "madd w7, w7, %w[w], w11\n\t"
+      "ldrb w4, [%[tx], w4, uxtw]\n\t"
+      "add x15, x13, x17\n\t"
+      "orr x21, x1, x2, lsl #8\n\t"
+      "add x14, x16, x19\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x1, x13, #48\n\t"
+      "lsr w9, w13, #16\n\t"
+      "add x19, x19, x20\n\t"
+      "orr x22, x3, x4, lsl #8\n\t"
+      "lsr w12, w16, #16\n\t"
+      "lsr x8, x16, #48\n\t"
+      "add x13, x15, x17\n\t"
+      "madd w6, w6, %w[w], w10\n\t"
+      "add x16, x14, x19\n\t"
+      "add x19, x19, x20\n\t"
+      "lsr x3, x15, #48\n\t"
+      "lsr w11, w15, #16\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "madd w8, w8, %w[w], w12\n\t"
+      "ldrb w5, [%[tx], w5, uxtw]\n\t"
+      "add x17, x17, x20\n\t"
+      "ldrb w6, [%[tx], w6, uxtw]\n\t"
+      "madd w1, w1, %w[w], w9\n\t"
+      "str w15, [%[d], #0]\n\t"
+      "ldrb w7, [%[tx], w7, uxtw]\n\t"
+      "madd w3, w3, %w[w], w11\n\t"
+      "ldrb w8, [%[tx], w8, uxtw]\n\t"
+      "add x15, x13, x17\n\t"
+      "orr x21, x5, x6, lsl #8\n\t"
+      "lsr x2, x14, #48\n\t"
+      "lsr w10, w14, #16\n\t"
+      "add x14, x16, x19\n\t"
+      "add x19, x19, x20\n\t"
+      "lsr x4, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "add x17, x17, x20\n\t"
+      "madd w2, w2, %w[w], w10\n\t"
+      "add x16, x14, x19\n\t"
+      "orr x22, x7, x8, lsl #8\n\t"
+      "lsr x5, x13, #48\n\t"
+      "lsr w9, w13, #16\n\t"
+      "add x19, x19, x20\n\t"
+      "add x13, x15, x17\n\t"
+      "lsr x7, x15, #48\n\t"
+      "lsr w11, w15, #16\n\t"
+      "lsr x6, x14, #48\n\t"
+      "lsr w10, w14, #16\n\t"
+      "add x17, x17, x20\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "add x14, x16, x19\n\t"
+      "madd w4, w4, %w[w], w12\n\t"
+      "add x19, x19, x20\n\t"
+      "ldrb w1, [%[tx], w1, uxtw]\n\t"
+      "str w15, [%[d], #4]\n\t"
+      "madd w5, w5, %w[w], w9\n\t"
+      "add x17, x25, x24, lsl #1\n\t"
+      "ldrb w2, [%[tx], w2, uxtw]\n\t"
+      "ldrb w3, [%[tx], w3, uxtw]\n\t"
+      "madd w7, w7, %w[w], w11\n\t"
+      "ldrb w4, [%[tx], w4, uxtw]\n\t"
+      "madd w6, w6, %w[w], w10\n\t"
+      "ldrb w5, [%[tx], w5, uxtw]\n\t"
+      "add x15, x23, x17\n\t"
+      "add x19, x17, x25, lsl #1\n\t"
+      "lsl x20, x25, #2\n\t"
+      "orr x21, x1, x2, lsl #8\n\t"
+      "orr x22, x3, x4, lsl #8\n\t"
+      "ldrb w6, [%[tx], w6, uxtw]\n\t"
+      "ldrb w7, [%[tx], w7, uxtw]\n\t"
+      "add x17, x17, x20\n\t"
+      "add x14, x23, x24\n\t"
+      "lsr x1, x23, #48\n\t"
+      "lsr w9, w23, #16\n\t"
+      "add x23, x15, x17\n\t"
+      "lsr w11, w15, #16\n\t"
+      "lsr x3, x15, #48\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "madd w1, w1, %w[w], w9\n\t"
+      "orr x21, x5, x6, lsl #8\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x8, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "str w15, [%[d], #8]\n\t"
+      "madd w8, w8, %w[w], w12\n\t"
+      "lsr x5, x23, #48\n\t"
+      "add x15, x23, x17\n\t"
+      "add x16, x14, x19\n\t"
+      "ldrb w1, [%[tx], w1, uxtw]\n\t"
+      "add x17, x17, x20\n\t"
+      "add x19, x19, x20\n\t"
+      "lsr w9, w23, #16\n\t"
+      "madd w3, w3, %w[w], w11\n\t"
+      "madd w5, w5, %w[w], w9\n\t"
+      "ldrb w8, [%[tx], w8, uxtw]\n\t"
+      "add x23, x15, x17\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x2, x14, #48\n\t"
+      "lsr w10, w14, #16\n\t"
+      "lsr w11, w15, #16\n\t"
+      "add x14, x16, x19\n\t"
+      "orr x22, x7, x8, lsl #8\n\t"
+      "madd w2, w2, %w[w], w10\n\t"
+      "add x19, x19, x20\n\t"
+      "lsr x7, x15, #48\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "lsr x4, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "ldrb w2, [%[tx], w2, uxtw]\n\t"
+      "madd w7, w7, %w[w], w11\n\t"
+      "str w15, [%[d], #12]\n\t"
+      "madd w4, w4, %w[w], w12\n\t"
+      "add x16, x14, x19\n\t"
+      "add x15, x23, x17\n\t"
+      "add x19, x19, x20\n\t"
+      "ldrb w3, [%[tx], w3, uxtw]\n\t"
+      "orr x21, x1, x2, lsl #8\n\t"
+      "ldrb w5, [%[tx], w5, uxtw]\n\t"
+      "add x17, x17, x20\n\t"
+      "ldrb w4, [%[tx], w4, uxtw]\n\t"
+      "ldrb w7, [%[tx], w7, uxtw]\n\t"
+      "lsr x6, x14, #48\n\t"
+      "lsr w10, w14, #16\n\t"
+      "madd w6, w6, %w[w], w10\n\t"
+      "orr x22, x3, x4, lsl #8\n\t"
+      "add x14, x16, x19\n\t"
+      "lsr x1, x23, #48\n\t"
+      "lsr w9, w23, #16\n\t"
+      "add x19, x19, x20\n\t"
+      "add x23, x15, x17\n\t"
+      "lsr x3, x15, #48\n\t"
+      "lsr w11, w15, #16\n\t"
+      "lsr x8, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "madd w1, w1, %w[w], w9\n\t"
+      "add x16, x14, x19\n\t"
+      "madd w8, w8, %w[w], w12\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr x2, x14, #48\n\t"
+      "str w15, [%[d], #16]\n\t"
+      "add x19, x19, x20\n\t"
+      "ldrb w6, [%[tx], w6, uxtw]\n\t"
+      "madd w3, w3, %w[w], w11\n\t"
+      "ldrb w8, [%[tx], w8, uxtw]\n\t"
+      "add x15, x23, x17\n\t"
+      "add x17, x17, x20\n\t"
+      "lsr w10, w14, #16\n\t"
+      "lsr w9, w23, #16\n\t"
+      "add x14, x16, x19\n\t"
+      "orr x21, x5, x6, lsl #8\n\t"
+      "lsr x4, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "add x19, x19, x20\n\t"
+      "orr x22, x7, x8, lsl #8\n\t"
+      "lsr x5, x23, #48\n\t"
+      "madd w2, w2, %w[w], w10\n\t"
+      "ldrb w1, [%[tx], w1, uxtw]\n\t"
+      "madd w4, w4, %w[w], w12\n\t"
+      "ldrb w3, [%[tx], w3, uxtw]\n\t"
+      "add x23, x15, x17\n\t"
+      "add x16, x14, x19\n\t"
+      "lsr x7, x15, #48\n\t"
+      "lsr w11, w15, #16\n\t"
+      "madd w5, w5, %w[w], w9\n\t"
+      "ldrb w2, [%[tx], w2, uxtw]\n\t"
+      "ldrb w4, [%[tx], w4, uxtw]\n\t"
+      "madd w7, w7, %w[w], w11\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "add x19, x19, x20\n\t"
+      "lsr x6, x14, #48\n\t"
+      "lsr w10, w14, #16\n\t"
+      "lsr x8, x16, #48\n\t"
+      "lsr w12, w16, #16\n\t"
+      "str w15, [%[d], #20]\n\t"
+      "madd w6, w6, %w[w], w10\n\t"
+      "madd w8, w8, %w[w], w12\n\t"
+      "ldrb w5, [%[tx], w5, uxtw]\n\t"
+      "orr x21, x1, x2, lsl #8\n\t"
+      "orr x22, x3, x4, lsl #8\n\t"
+      "ldrb w7, [%[tx], w7, uxtw]\n\t"
+      "ldrb w6, [%[tx], w6, uxtw]\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "ldrb w8, [%[tx], w8, uxtw]\n\t"
+      "add x14, x16, x19\n\t"
+      "add x17, x17, x20\n\t"
+      "add x19, x19, x20\n\t"
+      "orr x21, x5, x6, lsl #8\n\t"
+      "str w15, [%[d], #24]\n\t"
+      "orr x22, x7, x8, lsl #8\n\t"
+      "orr x15, x21, x22, lsl #16\n\t"
+      "str w15, [%[d], #28]"
+// END steps_k3v_pass
+      : "+&w"(rS44), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rzc)
+      : "w"(rS01), "w"(rS23), [kp] "r"(kMidConsts), [y] "r"(&kMidSteps[s]), [st] "r"(st), [d] "r"(dest),
+        [tx] "r"(texels), [w] "r"(width)
+      : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16",
+        "x17", "x19", "x20", "x21", "x22", "x23", "x24", "x25", "v0", "v2", "v4", "v6", "v17", "v18", "v20", "v21",
+        "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
+}
+// Run16's packing of an unpacked [du, dv] lane x: (x & (2^64 - 2^32)) + sext(x mod 2^32).
+SB_INLINE uint64_t mid_pack(uint64_t x) {
+  return (x & 0xffffffff00000000) + uint64_t(int64_t(int32_t(uint32_t(x))));
+}
+// Draws a second-order span of 49 .. 64 pixels (4 runs; last = n - 48 pixels in the last
+// run) from the sample block's results (persp_short_inl): the steps with runs 0, 1
+// (steps_k3v_pass), then runs 2, 3 as one short_pass (last == 16) or run 2 by Run16 and the
+// last run by draw_run.
+SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int width, int32x4_t S01, int32x4_t S23,
+                            int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zc) {
+  uint64_t st[6];
+  steps_k3v_pass(dest, texels, uint64_t(width), S01, S23, S44, c01, c23, zs23, last > 2 ? last - 1 : 1, zc, st);
+  if (last == 16) {
+    short_pass<true>(dest + 32, texels, uint64_t(width), st[0], mid_pack(st[2]), mid_pack(st[4]), st[1],
+                     mid_pack(st[3]), mid_pack(st[5]));
+    return;
+  }
+  const uint32_t w = uint32_t(width);
+  Run16<true> run(st[0], mid_pack(st[2]), mid_pack(st[4]), typename Run16<true>::Packed{});
+  run.draw(dest + 32, texels, w);
+  draw_run(dest + 48, last, texels, w, uint32_t(st[1]), uint32_t(st[1] >> 32), uint32_t(st[3]), uint32_t(st[3] >> 32),
+           uint32_t(st[5]), uint32_t(st[5] >> 32));
+}
+#endif
+
+}  // namespace
+}  // namespace sb::simd
