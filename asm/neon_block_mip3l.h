@@ -45,339 +45,315 @@ namespace {
   "ushr v1.8h, v19.8h, #1\n\t" \
   "add v3.8h, v19.8h, v20.8h\n\t" \
   "stp d4, d5, [x1]\n\t" \
+  "cmp x30, #4\n\t" \
   "add x1, x1, x2\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "bif v24.16b, v16.16b, v31.16b\n\t" \
-  "stp d6, d7, [x1]\n\t" \
   "ldr q16, [x3]\n\t" \
+  "stp d6, d7, [x1]\n\t" \
   "fmov x13, v2.d[1]\n\t" \
   "fmov x10, d1\n\t" \
   "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
   "fmov x8, d24\n\t" \
   "fmov x11, v1.d[1]\n\t" \
   "fmov x12, d2\n\t" \
-  "add v21.8h, v18.8h, v22.8h\n\t" \
   "fmov x9, v24.d[1]\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "fmov x14, d3\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
+  "ldr q24, [x5]\n\t" \
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "ldr q24, [x5]\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "ldr q25, [x5, #16]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x24, x0, x8, lsr #48\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "and x24, x27, x8, lsr #16\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "and x16, x27, x9, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x18, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x25, x0, x12, lsr #48\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "add x24, x0, x24\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
+  "add x17, x0, x10, lsr #48\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x16, x0, x16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "add x17, x0, x17\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
+  "add x16, x0, x13, lsr #48\n\t" \
+  "add x27, x0, x9, lsr #48\n\t" \
+  "ror x8, x8, #32\n\t" \
   "ld1 {v7.b}[1], [x23]\n\t" \
-  "add x18, x0, x18\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v6.b}[2], [x25]\n\t" \
-  "add x20, x0, x20\n\t" \
-  "ld1 {v5.b}[2], [x16]\n\t" \
-  "add x21, x0, x21\n\t" \
-  "ld1 {v7.b}[2], [x17]\n\t" \
-  "and x24, x27, x9, lsr #32\n\t" \
-  "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
-  "and x23, x27, x12, lsr #32\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x22, x0, x22\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
-  "and x17, x27, x14, lsr #32\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
-  "ld1 {v7.b}[3], [x21]\n\t" \
-  "and x18, x27, x11, lsr #32\n\t" \
-  "ld1 {v4.b}[4], [x22]\n\t" \
-  "and x19, x27, x15, lsr #32\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
-  "add x17, x0, x17\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x20, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x16]\n\t" \
-  "add x21, x0, x12, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x17]\n\t" \
-  "add x22, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
-  "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
-  "add x16, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ror x12, x12, #32\n\t" \
+  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ror x9, x9, #32\n\t" \
+  "ld1 {v5.b}[6], [x27]\n\t" \
+  "add x19, x0, x14, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x25]\n\t" \
+  "add x20, x0, x15, lsr #48\n\t" \
+  "ror x15, x15, #32\n\t" \
+  "add x21, x0, w8, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x22, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x16]\n\t" \
+  "ror x13, x13, #32\n\t" \
+  "ld1 {v4.b}[7], [x17]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x25, x0, x14, lsr #48\n\t" \
-  "cmp x30, #4\n\t" \
+  "add x23, x0, w9, uxth\n\t" \
+  "ror x14, x14, #32\n\t" \
+  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ror x10, x10, #32\n\t" \
+  "ld1 {v7.b}[7], [x20]\n\t" \
+  "add x24, x0, w13, uxth\n\t" \
+  "ror x11, x11, #32\n\t" \
+  "add x27, x0, w14, uxth\n\t" \
+  "ld1 {v4.b}[4], [x21]\n\t" \
+  "add x19, x0, x12, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x18]\n\t" \
+  "add x21, x0, x13, lsr #48\n\t" \
+  "add x20, x0, x9, lsr #48\n\t" \
+  "add x25, x0, w10, uxth\n\t" \
+  "add x16, x0, w11, uxth\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v7.b}[6], [x23]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
+  "ld1 {v6.b}[4], [x22]\n\t" \
+  "ld1 {v5.b}[4], [x23]\n\t" \
+  "ld1 {v7.b}[4], [x24]\n\t" \
+  "add x17, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x25]\n\t" \
+  "add x18, x0, x8, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x27]\n\t" \
+  "ld1 {v5.b}[5], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
+  "ld1 {v7.b}[5], [x17]\n\t" \
+  "add x22, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x18]\n\t" \
+  "add x24, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x19]\n\t" \
+  "add x23, x0, x14, lsr #48\n\t" \
+  "ld1 {v5.b}[2], [x20]\n\t" \
+  "ld1 {v7.b}[2], [x21]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x25, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x22]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v6.b}[7], [x25]\n\t" \
-  "add x1, x1, x2\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
+  "ld1 {v5.b}[3], [x24]\n\t" \
   "add x3, x3, x26\n\t" \
+  "ld1 {v6.b}[3], [x23]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ld1 {v7.b}[3], [x25]\n\t" \
 
 #define SB_MIP3L_BAND1 \
   "uhadd v2.8h, v17.8h, v18.8h\n\t" \
   "ushr v1.8h, v20.8h, #1\n\t" \
   "add v3.8h, v20.8h, v21.8h\n\t" \
   "stp d4, d5, [x1]\n\t" \
+  "cmp x30, #4\n\t" \
   "add x1, x1, x2\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "bif v24.16b, v17.16b, v31.16b\n\t" \
-  "stp d6, d7, [x1]\n\t" \
   "ldr q17, [x3]\n\t" \
+  "stp d6, d7, [x1]\n\t" \
   "fmov x13, v2.d[1]\n\t" \
   "fmov x10, d1\n\t" \
   "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "add v19.8h, v16.8h, v22.8h\n\t" \
   "fmov x8, d24\n\t" \
   "fmov x11, v1.d[1]\n\t" \
   "fmov x12, d2\n\t" \
-  "add v19.8h, v16.8h, v22.8h\n\t" \
   "fmov x9, v24.d[1]\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "fmov x14, d3\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
+  "ldr q24, [x5]\n\t" \
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "ldr q24, [x5]\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "ldr q25, [x5, #16]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x24, x0, x8, lsr #48\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "and x24, x27, x8, lsr #16\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "and x16, x27, x9, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x18, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x25, x0, x12, lsr #48\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "add x24, x0, x24\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
+  "add x17, x0, x10, lsr #48\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x16, x0, x16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "add x17, x0, x17\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
+  "add x16, x0, x13, lsr #48\n\t" \
+  "add x27, x0, x9, lsr #48\n\t" \
+  "ror x8, x8, #32\n\t" \
   "ld1 {v7.b}[1], [x23]\n\t" \
-  "add x18, x0, x18\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v6.b}[2], [x25]\n\t" \
-  "add x20, x0, x20\n\t" \
-  "ld1 {v5.b}[2], [x16]\n\t" \
-  "add x21, x0, x21\n\t" \
-  "ld1 {v7.b}[2], [x17]\n\t" \
-  "and x24, x27, x9, lsr #32\n\t" \
-  "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
-  "and x23, x27, x12, lsr #32\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x22, x0, x22\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
-  "and x17, x27, x14, lsr #32\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
-  "ld1 {v7.b}[3], [x21]\n\t" \
-  "and x18, x27, x11, lsr #32\n\t" \
-  "ld1 {v4.b}[4], [x22]\n\t" \
-  "and x19, x27, x15, lsr #32\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
-  "add x17, x0, x17\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x20, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x16]\n\t" \
-  "add x21, x0, x12, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x17]\n\t" \
-  "add x22, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
-  "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
-  "add x16, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ror x12, x12, #32\n\t" \
+  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ror x9, x9, #32\n\t" \
+  "ld1 {v5.b}[6], [x27]\n\t" \
+  "add x19, x0, x14, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x25]\n\t" \
+  "add x20, x0, x15, lsr #48\n\t" \
+  "ror x15, x15, #32\n\t" \
+  "add x21, x0, w8, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x22, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x16]\n\t" \
+  "ror x13, x13, #32\n\t" \
+  "ld1 {v4.b}[7], [x17]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x25, x0, x14, lsr #48\n\t" \
-  "cmp x30, #4\n\t" \
+  "add x23, x0, w9, uxth\n\t" \
+  "ror x14, x14, #32\n\t" \
+  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ror x10, x10, #32\n\t" \
+  "ld1 {v7.b}[7], [x20]\n\t" \
+  "add x24, x0, w13, uxth\n\t" \
+  "ror x11, x11, #32\n\t" \
+  "add x27, x0, w14, uxth\n\t" \
+  "ld1 {v4.b}[4], [x21]\n\t" \
+  "add x19, x0, x12, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x18]\n\t" \
+  "add x21, x0, x13, lsr #48\n\t" \
+  "add x20, x0, x9, lsr #48\n\t" \
+  "add x25, x0, w10, uxth\n\t" \
+  "add x16, x0, w11, uxth\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v7.b}[6], [x23]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
+  "ld1 {v6.b}[4], [x22]\n\t" \
+  "ld1 {v5.b}[4], [x23]\n\t" \
+  "ld1 {v7.b}[4], [x24]\n\t" \
+  "add x17, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x25]\n\t" \
+  "add x18, x0, x8, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x27]\n\t" \
+  "ld1 {v5.b}[5], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
+  "ld1 {v7.b}[5], [x17]\n\t" \
+  "add x22, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x18]\n\t" \
+  "add x24, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x19]\n\t" \
+  "add x23, x0, x14, lsr #48\n\t" \
+  "ld1 {v5.b}[2], [x20]\n\t" \
+  "ld1 {v7.b}[2], [x21]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x25, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x22]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v6.b}[7], [x25]\n\t" \
-  "add x1, x1, x2\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
+  "ld1 {v5.b}[3], [x24]\n\t" \
   "add x3, x3, x26\n\t" \
+  "ld1 {v6.b}[3], [x23]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ld1 {v7.b}[3], [x25]\n\t" \
 
 #define SB_MIP3L_BAND2 \
   "uhadd v2.8h, v18.8h, v16.8h\n\t" \
   "ushr v1.8h, v21.8h, #1\n\t" \
   "add v3.8h, v21.8h, v19.8h\n\t" \
   "stp d4, d5, [x1]\n\t" \
+  "cmp x30, #4\n\t" \
   "add x1, x1, x2\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "bif v24.16b, v18.16b, v31.16b\n\t" \
-  "stp d6, d7, [x1]\n\t" \
   "ldr q18, [x3]\n\t" \
+  "stp d6, d7, [x1]\n\t" \
   "fmov x13, v2.d[1]\n\t" \
   "fmov x10, d1\n\t" \
   "trn2 v3.16b, v25.16b, v3.16b\n\t" \
+  "add v20.8h, v17.8h, v22.8h\n\t" \
   "fmov x8, d24\n\t" \
   "fmov x11, v1.d[1]\n\t" \
   "fmov x12, d2\n\t" \
-  "add v20.8h, v17.8h, v22.8h\n\t" \
   "fmov x9, v24.d[1]\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "fmov x14, d3\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
+  "ldr q24, [x5]\n\t" \
   "add x20, x0, w10, uxth\n\t" \
   "add x16, x0, w8, uxth\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "ldr q24, [x5]\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "ldr q25, [x5, #16]\n\t" \
   "add x19, x0, w13, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x24, x0, x8, lsr #48\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "and x24, x27, x8, lsr #16\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "and x16, x27, x9, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
   "add x22, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x18, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x25, x0, x12, lsr #48\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "add x24, x0, x24\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
+  "add x17, x0, x10, lsr #48\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x16, x0, x16\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "add x17, x0, x17\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
+  "add x16, x0, x13, lsr #48\n\t" \
+  "add x27, x0, x9, lsr #48\n\t" \
+  "ror x8, x8, #32\n\t" \
   "ld1 {v7.b}[1], [x23]\n\t" \
-  "add x18, x0, x18\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v6.b}[2], [x25]\n\t" \
-  "add x20, x0, x20\n\t" \
-  "ld1 {v5.b}[2], [x16]\n\t" \
-  "add x21, x0, x21\n\t" \
-  "ld1 {v7.b}[2], [x17]\n\t" \
-  "and x24, x27, x9, lsr #32\n\t" \
-  "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
-  "and x23, x27, x12, lsr #32\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
-  "add x23, x0, x23\n\t" \
-  "add x25, x0, x25\n\t" \
-  "add x22, x0, x22\n\t" \
-  "add x24, x0, x24\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
-  "and x17, x27, x14, lsr #32\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
-  "ld1 {v7.b}[3], [x21]\n\t" \
-  "and x18, x27, x11, lsr #32\n\t" \
-  "ld1 {v4.b}[4], [x22]\n\t" \
-  "and x19, x27, x15, lsr #32\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
-  "add x16, x0, x16\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
-  "add x17, x0, x17\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x20, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x16]\n\t" \
-  "add x21, x0, x12, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x17]\n\t" \
-  "add x22, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
-  "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
-  "add x16, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ror x12, x12, #32\n\t" \
+  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ror x9, x9, #32\n\t" \
+  "ld1 {v5.b}[6], [x27]\n\t" \
+  "add x19, x0, x14, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x25]\n\t" \
+  "add x20, x0, x15, lsr #48\n\t" \
+  "ror x15, x15, #32\n\t" \
+  "add x21, x0, w8, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x22, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x16]\n\t" \
+  "ror x13, x13, #32\n\t" \
+  "ld1 {v4.b}[7], [x17]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
-  "add x25, x0, x14, lsr #48\n\t" \
-  "cmp x30, #4\n\t" \
+  "add x23, x0, w9, uxth\n\t" \
+  "ror x14, x14, #32\n\t" \
+  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ror x10, x10, #32\n\t" \
+  "ld1 {v7.b}[7], [x20]\n\t" \
+  "add x24, x0, w13, uxth\n\t" \
+  "ror x11, x11, #32\n\t" \
+  "add x27, x0, w14, uxth\n\t" \
+  "ld1 {v4.b}[4], [x21]\n\t" \
+  "add x19, x0, x12, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x18]\n\t" \
+  "add x21, x0, x13, lsr #48\n\t" \
+  "add x20, x0, x9, lsr #48\n\t" \
+  "add x25, x0, w10, uxth\n\t" \
+  "add x16, x0, w11, uxth\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v7.b}[6], [x23]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
+  "ld1 {v6.b}[4], [x22]\n\t" \
+  "ld1 {v5.b}[4], [x23]\n\t" \
+  "ld1 {v7.b}[4], [x24]\n\t" \
+  "add x17, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x25]\n\t" \
+  "add x18, x0, x8, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x27]\n\t" \
+  "ld1 {v5.b}[5], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
+  "ld1 {v7.b}[5], [x17]\n\t" \
+  "add x22, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x18]\n\t" \
+  "add x24, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x19]\n\t" \
+  "add x23, x0, x14, lsr #48\n\t" \
+  "ld1 {v5.b}[2], [x20]\n\t" \
+  "ld1 {v7.b}[2], [x21]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x25, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x22]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v6.b}[7], [x25]\n\t" \
-  "add x1, x1, x2\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
+  "ld1 {v5.b}[3], [x24]\n\t" \
   "add x3, x3, x26\n\t" \
+  "ld1 {v6.b}[3], [x23]\n\t" \
+  "add x1, x1, x2\n\t" \
+  "ld1 {v7.b}[3], [x25]\n\t" \
 
 #define SB_MIP3L_ENTRY \
   "add x9, x6, x4\n\t" \
@@ -415,95 +391,86 @@ namespace {
   "fmov x11, v1.d[1]\n\t" \
   "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
   "ldr q24, [x5]\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "ldr q25, [x5, #16]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "add x16, x0, w8, uxth\n\t" \
   "add x19, x0, w13, uxth\n\t" \
+  "add x17, x0, w12, uxth\n\t" \
+  "add x23, x0, w15, uxth\n\t" \
+  "add x18, x0, w9, uxth\n\t" \
+  "add x24, x0, x8, lsr #48\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x21, x0, w14, uxth\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "and x24, x27, x8, lsr #16\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "and x16, x27, x9, lsr #16\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x24, x0, x24\n\t" \
   "add x22, x0, w11, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
+  "ld1 {v5.b}[0], [x18]\n\t" \
+  "add x18, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[0], [x19]\n\t" \
+  "add x25, x0, x12, lsr #48\n\t" \
   "ld1 {v4.b}[1], [x20]\n\t" \
-  "and x20, x27, x11, lsr #16\n\t" \
+  "add x17, x0, x10, lsr #48\n\t" \
   "ld1 {v6.b}[1], [x21]\n\t" \
-  "and x25, x27, x12, lsr #16\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
-  "and x18, x27, x10, lsr #16\n\t" \
-  "add x16, x0, x16\n\t" \
-  "and x21, x27, x15, lsr #16\n\t" \
-  "and x17, x27, x13, lsr #16\n\t" \
-  "add x25, x0, x25\n\t" \
+  "add x16, x0, x13, lsr #48\n\t" \
+  "add x27, x0, x9, lsr #48\n\t" \
+  "ror x8, x8, #32\n\t" \
   "ld1 {v7.b}[1], [x23]\n\t" \
-  "add x17, x0, x17\n\t" \
-  "ld1 {v4.b}[2], [x24]\n\t" \
-  "and x19, x27, x14, lsr #16\n\t" \
-  "add x18, x0, x18\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v6.b}[2], [x25]\n\t" \
-  "add x20, x0, x20\n\t" \
-  "ld1 {v5.b}[2], [x16]\n\t" \
-  "add x21, x0, x21\n\t" \
-  "ld1 {v7.b}[2], [x17]\n\t" \
-  "and x24, x27, x9, lsr #32\n\t" \
-  "ld1 {v4.b}[3], [x18]\n\t" \
-  "and x23, x27, x12, lsr #32\n\t" \
-  "ld1 {v6.b}[3], [x19]\n\t" \
-  "and x22, x27, x8, lsr #32\n\t" \
-  "ld1 {v5.b}[3], [x20]\n\t" \
-  "add x23, x0, x23\n\t" \
-  "add x22, x0, x22\n\t" \
-  "add x24, x0, x24\n\t" \
-  "and x25, x27, x13, lsr #32\n\t" \
-  "and x17, x27, x14, lsr #32\n\t" \
-  "add x25, x0, x25\n\t" \
-  "and x16, x27, x10, lsr #32\n\t" \
-  "ld1 {v7.b}[3], [x21]\n\t" \
-  "and x18, x27, x11, lsr #32\n\t" \
-  "ld1 {v4.b}[4], [x22]\n\t" \
-  "and x19, x27, x15, lsr #32\n\t" \
-  "add x16, x0, x16\n\t" \
-  "add x17, x0, x17\n\t" \
-  "ld1 {v6.b}[4], [x23]\n\t" \
-  "add x18, x0, x18\n\t" \
-  "ld1 {v5.b}[4], [x24]\n\t" \
-  "add x19, x0, x19\n\t" \
-  "ld1 {v7.b}[4], [x25]\n\t" \
-  "add x20, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x16]\n\t" \
-  "add x21, x0, x12, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x17]\n\t" \
-  "add x22, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "add x24, x0, x10, lsr #48\n\t" \
-  "ld1 {v7.b}[5], [x19]\n\t" \
-  "add x23, x0, x13, lsr #48\n\t" \
-  "ld1 {v4.b}[6], [x20]\n\t" \
-  "add x16, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x21]\n\t" \
+  "ror x12, x12, #32\n\t" \
+  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ror x9, x9, #32\n\t" \
+  "ld1 {v5.b}[6], [x27]\n\t" \
+  "add x19, x0, x14, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x25]\n\t" \
+  "add x20, x0, x15, lsr #48\n\t" \
+  "ror x15, x15, #32\n\t" \
+  "add x21, x0, w8, uxth\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
+  "add x22, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x16]\n\t" \
+  "ror x13, x13, #32\n\t" \
+  "ld1 {v4.b}[7], [x17]\n\t" \
   "add x5, x5, #32\n\t" \
-  "add x25, x0, x14, lsr #48\n\t" \
-  "ld1 {v5.b}[6], [x22]\n\t" \
+  "add x23, x0, w9, uxth\n\t" \
+  "ror x14, x14, #32\n\t" \
+  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ror x10, x10, #32\n\t" \
+  "ld1 {v7.b}[7], [x20]\n\t" \
+  "add x24, x0, w13, uxth\n\t" \
+  "ror x11, x11, #32\n\t" \
+  "add x27, x0, w14, uxth\n\t" \
+  "ld1 {v4.b}[4], [x21]\n\t" \
+  "add x19, x0, x12, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x18]\n\t" \
+  "add x21, x0, x13, lsr #48\n\t" \
+  "add x20, x0, x9, lsr #48\n\t" \
+  "add x25, x0, w10, uxth\n\t" \
+  "add x16, x0, w11, uxth\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v7.b}[6], [x23]\n\t" \
-  "add x17, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x24]\n\t" \
+  "ld1 {v6.b}[4], [x22]\n\t" \
+  "ld1 {v5.b}[4], [x23]\n\t" \
+  "ld1 {v7.b}[4], [x24]\n\t" \
+  "add x17, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x25]\n\t" \
+  "add x18, x0, x8, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x27]\n\t" \
+  "ld1 {v5.b}[5], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v6.b}[7], [x25]\n\t" \
+  "ld1 {v7.b}[5], [x17]\n\t" \
+  "add x22, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x18]\n\t" \
+  "add x24, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x19]\n\t" \
+  "add x23, x0, x14, lsr #48\n\t" \
+  "ld1 {v5.b}[2], [x20]\n\t" \
+  "ld1 {v7.b}[2], [x21]\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
+  "add x25, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x22]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v5.b}[7], [x16]\n\t" \
-  "ld1 {v7.b}[7], [x17]\n\t" \
-  "add x3, x3, x26\n\t"
-
+  "ld1 {v5.b}[3], [x24]\n\t" \
+  "add x3, x3, x26\n\t" \
+  "ld1 {v6.b}[3], [x23]\n\t" \
+  "ld1 {v7.b}[3], [x25]\n\t"
 // Texture layout: row t (tw bytes at x22 + tw t) goes to x19 + 16 t, byte k its texel
 // (soff + k) mod tw (a table lookup by v0 of the row loaded into the low tw bytes of vN).
 // Eight rows by LD ("ldr d" ...) at offsets 0, O1..O7 into v16-v23, their lookups, stores.
@@ -601,8 +568,7 @@ namespace {
   "mov x1, x17\n\t" \
   "lsr w7, w9, #4\n\t" \
   "mov x10, x14\n\t" \
-  "movi v31.8h, #0xff\n\t" \
-  "mov x27, #0xffff\n\t"
+  "movi v31.8h, #0xff\n\t"
 
 // The neon_a53 variant's surface_block (asm/surface_block.h's contract), all in assembly:
 // mips 0-2 and the mip-3 shapes the lean path does not take go on to surface_block_inorder
