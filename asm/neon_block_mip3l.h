@@ -592,32 +592,40 @@ asm(".pushsection .text\n\t"
     ".type " SB_MIP3L_SYM ", %function\n" SB_MIP3L_SYM ":\n\t"
     "cmp w5, #3\n\t"
     "b.ne " SB_MIP3L_REST "\n\t"
-    // Fits: w9 = width, w10 = height; every bit of w11 clear (w12 also: the fast path).
+    // w9 = width, w10 = height. The fast path: tw = 8, th 2, 4 or 8, width 16..512 a multiple
+    // of 16, height > 0 (every bit of w11 clear).
     "ldr w9, [sp]\n\t"
     "ldr w10, [sp, #8]\n\t"
+    "eor w14, w3, #8\n\t"
+    "sub w12, w4, #2\n\t"
+    "sub w13, w4, #1\n\t"
+    "and w12, w12, #0xfffffff9\n\t"  // th - 2 in 0, 2, 4, 6
+    "sub w11, w9, #16\n\t"
+    "and w13, w13, w4\n\t"          // th a power of two
+    "and w11, w11, #0xfffffe0f\n\t"  // width - 16 in 0..496, a multiple of 16
+    "cmp w10, #0\n\t"
+    "orr w12, w12, w14\n\t"
+    "orr w11, w11, w13\n\t"
+    "orr w11, w11, w12\n\t"
+    "ccmp w11, #0, #0, gt\n\t"
+    "b.eq .Lsb_m3l_fast\n\t"
+    // The lean path's other shapes (every bit of w11 clear): tw 2..16 and th 2..64 powers of
+    // two, tw th >= 16.
     "sub w11, w9, #16\n\t"
     "sub w12, w3, #1\n\t"
     "sub w13, w4, #1\n\t"
     "mul w15, w3, w4\n\t"
-    "and w11, w11, #0xfffffe0f\n\t"  // width - 16 in 0..496, a multiple of 16
-    "and w12, w12, w3\n\t"           // tw a power of two
-    "and w13, w13, w4\n\t"           // th a power of two
+    "and w11, w11, #0xfffffe0f\n\t"
+    "and w12, w12, w3\n\t"
+    "and w13, w13, w4\n\t"
     "orr w11, w11, w12\n\t"
     "and w12, w3, #0xffffffe1\n\t"  // tw <= 16 (and even)
     "orr w11, w11, w13\n\t"
     "and w13, w4, #0xffffff81\n\t"  // th <= 64 (and even)
     "orr w11, w11, w12\n\t"
-    "eor w12, w3, #8\n\t"           // fast: tw = 8
     "orr w11, w11, w13\n\t"
-    "and w13, w4, #0xfffffff1\n\t"  // fast: th <= 8
-    "orr w12, w12, w11\n\t"
-    "orr w12, w12, w13\n\t"
-    "cmp w15, #15\n\t"            // tw th >= 16 (also: neither is 0)
-    "ccmp w10, #0, #4, hi\n\t"    // height > 0
-    "ccmp w12, #0, #0, gt\n\t"
-    "b.eq .Lsb_m3l_fast\n\t"
-    "cmp w15, #15\n\t"
-    "ccmp w10, #0, #4, hi\n\t"
+    "cmp w15, #15\n\t"          // (also: neither is 0)
+    "ccmp w10, #0, #4, hi\n\t"  // height > 0
     "ccmp w11, #0, #0, gt\n\t"
     "b.ne " SB_MIP3L_REST "\n\t"
     SB_MIP3L_PRO
