@@ -66,83 +66,83 @@ namespace {
   "ldr q24, [x5]\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "add x24, x0, x8, lsr #48\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
+  "add x18, x0, w10, uxth\n\t" \
+  "add x19, x0, x8, lsr #48\n\t" \
+  "add x20, x0, w13, uxth\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
+  "add x22, x0, w14, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x25, x0, x12, lsr #48\n\t" \
+  "add x16, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x18, x0, x11, lsr #48\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x17, x0, x10, lsr #48\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "add x16, x0, x13, lsr #48\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x27, x0, x9, lsr #48\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x17, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x21]\n\t" \
+  "add x21, x0, w15, uxth\n\t" \
+  "ld1 {v7.b}[0], [x20]\n\t" \
+  "add x20, x0, x11, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x18]\n\t" \
+  "add x18, x0, x10, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x22]\n\t" \
+  "add x22, x0, x13, lsr #48\n\t" \
+  "ld1 {v5.b}[1], [x17]\n\t" \
+  "add x17, x0, x9, lsr #48\n\t" \
+  "ld1 {v7.b}[1], [x21]\n\t" \
   "ror x8, x8, #32\n\t" \
-  "add x19, x0, x14, lsr #48\n\t" \
+  "add x21, x0, x14, lsr #48\n\t" \
   "ror x12, x12, #32\n\t" \
-  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ld1 {v4.b}[6], [x19]\n\t" \
   "ror x9, x9, #32\n\t" \
-  "ld1 {v6.b}[6], [x25]\n\t" \
+  "ld1 {v6.b}[6], [x16]\n\t" \
   "ror x10, x10, #32\n\t" \
-  "ld1 {v5.b}[6], [x27]\n\t" \
-  "add x20, x0, x15, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x17]\n\t" \
+  "add x16, x0, x15, lsr #48\n\t" \
   "ldr q25, [x5, #16]\n\t" \
-  "add x21, x0, w8, uxth\n\t" \
+  "add x17, x0, w8, uxth\n\t" \
   "ror x15, x15, #32\n\t" \
-  "add x22, x0, w12, uxth\n\t" \
-  "ld1 {v7.b}[6], [x16]\n\t" \
+  "add x19, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x22]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ld1 {v6.b}[7], [x21]\n\t" \
   "ror x13, x13, #32\n\t" \
-  "ld1 {v4.b}[7], [x17]\n\t" \
-  "add x19, x0, x12, lsr #48\n\t" \
-  "add x23, x0, w9, uxth\n\t" \
+  "ld1 {v4.b}[7], [x18]\n\t" \
+  "add x18, x0, x12, lsr #48\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
   "ror x14, x14, #32\n\t" \
-  "ld1 {v7.b}[7], [x20]\n\t" \
-  "add x24, x0, w13, uxth\n\t" \
+  "ld1 {v7.b}[7], [x16]\n\t" \
+  "add x16, x0, w13, uxth\n\t" \
   "ror x11, x11, #32\n\t" \
-  "add x20, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[7], [x18]\n\t" \
-  "add x25, x0, w10, uxth\n\t" \
-  "ld1 {v6.b}[4], [x22]\n\t" \
-  "add x16, x0, w11, uxth\n\t" \
-  "ld1 {v4.b}[4], [x21]\n\t" \
-  "add x21, x0, x13, lsr #48\n\t" \
-  "add x27, x0, w14, uxth\n\t" \
-  "add x22, x0, x10, lsr #48\n\t" \
-  "ld1 {v5.b}[4], [x23]\n\t" \
-  "add x18, x0, x8, lsr #48\n\t" \
-  "ld1 {v7.b}[4], [x24]\n\t" \
-  "add x17, x0, w15, uxth\n\t" \
-  "ld1 {v4.b}[5], [x25]\n\t" \
-  "ld1 {v6.b}[5], [x27]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x20]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "ld1 {v6.b}[4], [x19]\n\t" \
+  "add x19, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[4], [x17]\n\t" \
+  "add x17, x0, x13, lsr #48\n\t" \
+  "add x23, x0, w14, uxth\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v5.b}[4], [x21]\n\t" \
+  "add x21, x0, x8, lsr #48\n\t" \
+  "ld1 {v7.b}[4], [x16]\n\t" \
+  "add x16, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x20]\n\t" \
+  "ld1 {v6.b}[5], [x23]\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v5.b}[5], [x16]\n\t" \
+  "ld1 {v5.b}[5], [x19]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v7.b}[5], [x17]\n\t" \
-  "add x23, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[2], [x18]\n\t" \
+  "ld1 {v7.b}[5], [x16]\n\t" \
+  "add x16, x0, x14, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x21]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x24, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[2], [x19]\n\t" \
-  "ld1 {v5.b}[2], [x20]\n\t" \
-  "ld1 {v7.b}[2], [x21]\n\t" \
-  "add x25, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[3], [x22]\n\t" \
-  "ld1 {v6.b}[3], [x23]\n\t" \
+  "add x19, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x18]\n\t" \
+  "ld1 {v5.b}[2], [x22]\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x24]\n\t" \
+  "ld1 {v6.b}[3], [x16]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v5.b}[3], [x24]\n\t" \
+  "ld1 {v5.b}[3], [x19]\n\t" \
   "add x3, x3, x26\n\t" \
-  "ld1 {v7.b}[3], [x25]\n\t" \
+  "ld1 {v7.b}[3], [x17]\n\t" \
   "add x1, x1, x2\n\t"
 
 #define SB_MIP3L_BAND1 \
@@ -171,83 +171,83 @@ namespace {
   "ldr q24, [x5]\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "add x24, x0, x8, lsr #48\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
+  "add x18, x0, w10, uxth\n\t" \
+  "add x19, x0, x8, lsr #48\n\t" \
+  "add x20, x0, w13, uxth\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
+  "add x22, x0, w14, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x25, x0, x12, lsr #48\n\t" \
+  "add x16, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x18, x0, x11, lsr #48\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x17, x0, x10, lsr #48\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "add x16, x0, x13, lsr #48\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x27, x0, x9, lsr #48\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x17, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x21]\n\t" \
+  "add x21, x0, w15, uxth\n\t" \
+  "ld1 {v7.b}[0], [x20]\n\t" \
+  "add x20, x0, x11, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x18]\n\t" \
+  "add x18, x0, x10, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x22]\n\t" \
+  "add x22, x0, x13, lsr #48\n\t" \
+  "ld1 {v5.b}[1], [x17]\n\t" \
+  "add x17, x0, x9, lsr #48\n\t" \
+  "ld1 {v7.b}[1], [x21]\n\t" \
   "ror x8, x8, #32\n\t" \
-  "add x19, x0, x14, lsr #48\n\t" \
+  "add x21, x0, x14, lsr #48\n\t" \
   "ror x12, x12, #32\n\t" \
-  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ld1 {v4.b}[6], [x19]\n\t" \
   "ror x9, x9, #32\n\t" \
-  "ld1 {v6.b}[6], [x25]\n\t" \
+  "ld1 {v6.b}[6], [x16]\n\t" \
   "ror x10, x10, #32\n\t" \
-  "ld1 {v5.b}[6], [x27]\n\t" \
-  "add x20, x0, x15, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x17]\n\t" \
+  "add x16, x0, x15, lsr #48\n\t" \
   "ldr q25, [x5, #16]\n\t" \
-  "add x21, x0, w8, uxth\n\t" \
+  "add x17, x0, w8, uxth\n\t" \
   "ror x15, x15, #32\n\t" \
-  "add x22, x0, w12, uxth\n\t" \
-  "ld1 {v7.b}[6], [x16]\n\t" \
+  "add x19, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x22]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ld1 {v6.b}[7], [x21]\n\t" \
   "ror x13, x13, #32\n\t" \
-  "ld1 {v4.b}[7], [x17]\n\t" \
-  "add x19, x0, x12, lsr #48\n\t" \
-  "add x23, x0, w9, uxth\n\t" \
+  "ld1 {v4.b}[7], [x18]\n\t" \
+  "add x18, x0, x12, lsr #48\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
   "ror x14, x14, #32\n\t" \
-  "ld1 {v7.b}[7], [x20]\n\t" \
-  "add x24, x0, w13, uxth\n\t" \
+  "ld1 {v7.b}[7], [x16]\n\t" \
+  "add x16, x0, w13, uxth\n\t" \
   "ror x11, x11, #32\n\t" \
-  "add x20, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[7], [x18]\n\t" \
-  "add x25, x0, w10, uxth\n\t" \
-  "ld1 {v6.b}[4], [x22]\n\t" \
-  "add x16, x0, w11, uxth\n\t" \
-  "ld1 {v4.b}[4], [x21]\n\t" \
-  "add x21, x0, x13, lsr #48\n\t" \
-  "add x27, x0, w14, uxth\n\t" \
-  "add x22, x0, x10, lsr #48\n\t" \
-  "ld1 {v5.b}[4], [x23]\n\t" \
-  "add x18, x0, x8, lsr #48\n\t" \
-  "ld1 {v7.b}[4], [x24]\n\t" \
-  "add x17, x0, w15, uxth\n\t" \
-  "ld1 {v4.b}[5], [x25]\n\t" \
-  "ld1 {v6.b}[5], [x27]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x20]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "ld1 {v6.b}[4], [x19]\n\t" \
+  "add x19, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[4], [x17]\n\t" \
+  "add x17, x0, x13, lsr #48\n\t" \
+  "add x23, x0, w14, uxth\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v5.b}[4], [x21]\n\t" \
+  "add x21, x0, x8, lsr #48\n\t" \
+  "ld1 {v7.b}[4], [x16]\n\t" \
+  "add x16, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x20]\n\t" \
+  "ld1 {v6.b}[5], [x23]\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v5.b}[5], [x16]\n\t" \
+  "ld1 {v5.b}[5], [x19]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v7.b}[5], [x17]\n\t" \
-  "add x23, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[2], [x18]\n\t" \
+  "ld1 {v7.b}[5], [x16]\n\t" \
+  "add x16, x0, x14, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x21]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x24, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[2], [x19]\n\t" \
-  "ld1 {v5.b}[2], [x20]\n\t" \
-  "ld1 {v7.b}[2], [x21]\n\t" \
-  "add x25, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[3], [x22]\n\t" \
-  "ld1 {v6.b}[3], [x23]\n\t" \
+  "add x19, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x18]\n\t" \
+  "ld1 {v5.b}[2], [x22]\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x24]\n\t" \
+  "ld1 {v6.b}[3], [x16]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v5.b}[3], [x24]\n\t" \
+  "ld1 {v5.b}[3], [x19]\n\t" \
   "add x3, x3, x26\n\t" \
-  "ld1 {v7.b}[3], [x25]\n\t" \
+  "ld1 {v7.b}[3], [x17]\n\t" \
   "add x1, x1, x2\n\t"
 
 #define SB_MIP3L_BAND2 \
@@ -276,83 +276,83 @@ namespace {
   "ldr q24, [x5]\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "add x17, x0, w12, uxth\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "add x24, x0, x8, lsr #48\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
+  "add x18, x0, w10, uxth\n\t" \
+  "add x19, x0, x8, lsr #48\n\t" \
+  "add x20, x0, w13, uxth\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
+  "add x22, x0, w14, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x25, x0, x12, lsr #48\n\t" \
+  "add x16, x0, x12, lsr #48\n\t" \
   "ld1 {v6.b}[0], [x17]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x18, x0, x11, lsr #48\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x17, x0, x10, lsr #48\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "add x16, x0, x13, lsr #48\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x27, x0, x9, lsr #48\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x17, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x21]\n\t" \
+  "add x21, x0, w15, uxth\n\t" \
+  "ld1 {v7.b}[0], [x20]\n\t" \
+  "add x20, x0, x11, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x18]\n\t" \
+  "add x18, x0, x10, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x22]\n\t" \
+  "add x22, x0, x13, lsr #48\n\t" \
+  "ld1 {v5.b}[1], [x17]\n\t" \
+  "add x17, x0, x9, lsr #48\n\t" \
+  "ld1 {v7.b}[1], [x21]\n\t" \
   "ror x8, x8, #32\n\t" \
-  "add x19, x0, x14, lsr #48\n\t" \
+  "add x21, x0, x14, lsr #48\n\t" \
   "ror x12, x12, #32\n\t" \
-  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ld1 {v4.b}[6], [x19]\n\t" \
   "ror x9, x9, #32\n\t" \
-  "ld1 {v6.b}[6], [x25]\n\t" \
+  "ld1 {v6.b}[6], [x16]\n\t" \
   "ror x10, x10, #32\n\t" \
-  "ld1 {v5.b}[6], [x27]\n\t" \
-  "add x20, x0, x15, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x17]\n\t" \
+  "add x16, x0, x15, lsr #48\n\t" \
   "ldr q25, [x5, #16]\n\t" \
-  "add x21, x0, w8, uxth\n\t" \
+  "add x17, x0, w8, uxth\n\t" \
   "ror x15, x15, #32\n\t" \
-  "add x22, x0, w12, uxth\n\t" \
-  "ld1 {v7.b}[6], [x16]\n\t" \
+  "add x19, x0, w12, uxth\n\t" \
+  "ld1 {v7.b}[6], [x22]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v6.b}[7], [x19]\n\t" \
+  "ld1 {v6.b}[7], [x21]\n\t" \
   "ror x13, x13, #32\n\t" \
-  "ld1 {v4.b}[7], [x17]\n\t" \
-  "add x19, x0, x12, lsr #48\n\t" \
-  "add x23, x0, w9, uxth\n\t" \
+  "ld1 {v4.b}[7], [x18]\n\t" \
+  "add x18, x0, x12, lsr #48\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
   "ror x14, x14, #32\n\t" \
-  "ld1 {v7.b}[7], [x20]\n\t" \
-  "add x24, x0, w13, uxth\n\t" \
+  "ld1 {v7.b}[7], [x16]\n\t" \
+  "add x16, x0, w13, uxth\n\t" \
   "ror x11, x11, #32\n\t" \
-  "add x20, x0, x9, lsr #48\n\t" \
-  "ld1 {v5.b}[7], [x18]\n\t" \
-  "add x25, x0, w10, uxth\n\t" \
-  "ld1 {v6.b}[4], [x22]\n\t" \
-  "add x16, x0, w11, uxth\n\t" \
-  "ld1 {v4.b}[4], [x21]\n\t" \
-  "add x21, x0, x13, lsr #48\n\t" \
-  "add x27, x0, w14, uxth\n\t" \
-  "add x22, x0, x10, lsr #48\n\t" \
-  "ld1 {v5.b}[4], [x23]\n\t" \
-  "add x18, x0, x8, lsr #48\n\t" \
-  "ld1 {v7.b}[4], [x24]\n\t" \
-  "add x17, x0, w15, uxth\n\t" \
-  "ld1 {v4.b}[5], [x25]\n\t" \
-  "ld1 {v6.b}[5], [x27]\n\t" \
+  "add x22, x0, x9, lsr #48\n\t" \
+  "ld1 {v5.b}[7], [x20]\n\t" \
+  "add x20, x0, w10, uxth\n\t" \
+  "ld1 {v6.b}[4], [x19]\n\t" \
+  "add x19, x0, w11, uxth\n\t" \
+  "ld1 {v4.b}[4], [x17]\n\t" \
+  "add x17, x0, x13, lsr #48\n\t" \
+  "add x23, x0, w14, uxth\n\t" \
+  "add x24, x0, x10, lsr #48\n\t" \
+  "ld1 {v5.b}[4], [x21]\n\t" \
+  "add x21, x0, x8, lsr #48\n\t" \
+  "ld1 {v7.b}[4], [x16]\n\t" \
+  "add x16, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x20]\n\t" \
+  "ld1 {v6.b}[5], [x23]\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v5.b}[5], [x16]\n\t" \
+  "ld1 {v5.b}[5], [x19]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v7.b}[5], [x17]\n\t" \
-  "add x23, x0, x14, lsr #48\n\t" \
-  "ld1 {v4.b}[2], [x18]\n\t" \
+  "ld1 {v7.b}[5], [x16]\n\t" \
+  "add x16, x0, x14, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x21]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x24, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[2], [x19]\n\t" \
-  "ld1 {v5.b}[2], [x20]\n\t" \
-  "ld1 {v7.b}[2], [x21]\n\t" \
-  "add x25, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[3], [x22]\n\t" \
-  "ld1 {v6.b}[3], [x23]\n\t" \
+  "add x19, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[2], [x18]\n\t" \
+  "ld1 {v5.b}[2], [x22]\n\t" \
+  "ld1 {v7.b}[2], [x17]\n\t" \
+  "add x17, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x24]\n\t" \
+  "ld1 {v6.b}[3], [x16]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v5.b}[3], [x24]\n\t" \
+  "ld1 {v5.b}[3], [x19]\n\t" \
   "add x3, x3, x26\n\t" \
-  "ld1 {v7.b}[3], [x25]\n\t" \
+  "ld1 {v7.b}[3], [x17]\n\t" \
   "add x1, x1, x2\n\t"
 
 #define SB_MIP3L_ENTRY \
@@ -392,85 +392,86 @@ namespace {
   "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
   "ldr q24, [x5]\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "add x16, x0, w8, uxth\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x24, x0, x8, lsr #48\n\t" \
-  "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
-  "ld1 {v6.b}[0], [x17]\n\t" \
-  "add x22, x0, w11, uxth\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x18, x0, x11, lsr #48\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x25, x0, x12, lsr #48\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
-  "add x17, x0, x10, lsr #48\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x16, x0, x13, lsr #48\n\t" \
-  "add x27, x0, x9, lsr #48\n\t" \
+  "add x16, x0, w10, uxth\n\t" \
+  "add x17, x0, w8, uxth\n\t" \
+  "add x18, x0, w13, uxth\n\t" \
+  "add x19, x0, w12, uxth\n\t" \
+  "add x20, x0, w15, uxth\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
+  "add x22, x0, x8, lsr #48\n\t" \
+  "ld1 {v4.b}[0], [x17]\n\t" \
+  "add x17, x0, w14, uxth\n\t" \
+  "ld1 {v6.b}[0], [x19]\n\t" \
+  "add x19, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[0], [x21]\n\t" \
+  "add x21, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[0], [x18]\n\t" \
+  "add x18, x0, x12, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x16]\n\t" \
+  "add x16, x0, x10, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x17]\n\t" \
+  "ld1 {v5.b}[1], [x19]\n\t" \
+  "add x17, x0, x13, lsr #48\n\t" \
+  "add x19, x0, x9, lsr #48\n\t" \
   "ror x8, x8, #32\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
+  "ld1 {v7.b}[1], [x20]\n\t" \
   "ror x12, x12, #32\n\t" \
-  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ld1 {v4.b}[6], [x22]\n\t" \
   "ror x9, x9, #32\n\t" \
-  "ld1 {v5.b}[6], [x27]\n\t" \
+  "ld1 {v5.b}[6], [x19]\n\t" \
   "add x19, x0, x14, lsr #48\n\t" \
-  "ld1 {v6.b}[6], [x25]\n\t" \
-  "add x20, x0, x15, lsr #48\n\t" \
+  "ld1 {v6.b}[6], [x18]\n\t" \
+  "add x18, x0, x15, lsr #48\n\t" \
   "ror x15, x15, #32\n\t" \
-  "add x21, x0, w8, uxth\n\t" \
+  "add x20, x0, w8, uxth\n\t" \
   "ldr q25, [x5, #16]\n\t" \
   "add x22, x0, w12, uxth\n\t" \
-  "ld1 {v7.b}[6], [x16]\n\t" \
+  "ld1 {v7.b}[6], [x17]\n\t" \
   "ror x13, x13, #32\n\t" \
-  "ld1 {v4.b}[7], [x17]\n\t" \
+  "ld1 {v4.b}[7], [x16]\n\t" \
   "add x5, x5, #32\n\t" \
-  "add x23, x0, w9, uxth\n\t" \
+  "add x16, x0, w9, uxth\n\t" \
   "ror x14, x14, #32\n\t" \
   "ld1 {v6.b}[7], [x19]\n\t" \
   "ror x10, x10, #32\n\t" \
-  "ld1 {v7.b}[7], [x20]\n\t" \
-  "add x24, x0, w13, uxth\n\t" \
+  "ld1 {v7.b}[7], [x18]\n\t" \
+  "add x17, x0, w13, uxth\n\t" \
   "ror x11, x11, #32\n\t" \
-  "add x27, x0, w14, uxth\n\t" \
-  "ld1 {v4.b}[4], [x21]\n\t" \
+  "add x18, x0, w14, uxth\n\t" \
+  "ld1 {v4.b}[4], [x20]\n\t" \
   "add x19, x0, x12, lsr #48\n\t" \
-  "ld1 {v5.b}[7], [x18]\n\t" \
-  "add x21, x0, x13, lsr #48\n\t" \
-  "add x20, x0, x9, lsr #48\n\t" \
-  "add x25, x0, w10, uxth\n\t" \
-  "add x16, x0, w11, uxth\n\t" \
+  "ld1 {v5.b}[7], [x21]\n\t" \
+  "add x20, x0, x13, lsr #48\n\t" \
+  "add x21, x0, x9, lsr #48\n\t" \
+  "add x23, x0, w10, uxth\n\t" \
+  "add x24, x0, w11, uxth\n\t" \
   "and x5, x5, x28\n\t" \
   "ld1 {v6.b}[4], [x22]\n\t" \
-  "ld1 {v5.b}[4], [x23]\n\t" \
-  "ld1 {v7.b}[4], [x24]\n\t" \
-  "add x17, x0, w15, uxth\n\t" \
-  "ld1 {v4.b}[5], [x25]\n\t" \
-  "add x18, x0, x8, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x27]\n\t" \
-  "ld1 {v5.b}[5], [x16]\n\t" \
+  "ld1 {v5.b}[4], [x16]\n\t" \
+  "ld1 {v7.b}[4], [x17]\n\t" \
+  "add x16, x0, w15, uxth\n\t" \
+  "ld1 {v4.b}[5], [x23]\n\t" \
+  "add x17, x0, x8, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x18]\n\t" \
+  "ld1 {v5.b}[5], [x24]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v7.b}[5], [x17]\n\t" \
-  "add x22, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[2], [x18]\n\t" \
-  "add x24, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[5], [x16]\n\t" \
+  "add x16, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x17]\n\t" \
+  "add x17, x0, x11, lsr #48\n\t" \
   "ld1 {v6.b}[2], [x19]\n\t" \
-  "add x23, x0, x14, lsr #48\n\t" \
-  "ld1 {v5.b}[2], [x20]\n\t" \
-  "ld1 {v7.b}[2], [x21]\n\t" \
+  "add x18, x0, x14, lsr #48\n\t" \
+  "ld1 {v5.b}[2], [x21]\n\t" \
+  "ld1 {v7.b}[2], [x20]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "add x25, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[3], [x22]\n\t" \
+  "add x19, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[3], [x16]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v5.b}[3], [x24]\n\t" \
+  "ld1 {v5.b}[3], [x17]\n\t" \
   "add x3, x3, x26\n\t" \
-  "ld1 {v6.b}[3], [x23]\n\t" \
-  "ld1 {v7.b}[3], [x25]\n\t"
+  "ld1 {v6.b}[3], [x18]\n\t" \
+  "ld1 {v7.b}[3], [x19]\n\t"
+
 #define SB_MIP3L_FAST \
   "ldp x16, x17, [sp, #16]\n\t" \
   "sub sp, sp, #3248\n\t" \
@@ -481,8 +482,7 @@ namespace {
   "sub w13, w13, #8\n\t" \
   "stp x23, x24, [sp, #96]\n\t" \
   "mov x22, x2\n\t" \
-  "stp x25, x26, [sp, #112]\n\t" \
-  "stp x27, x28, [sp, #128]\n\t" \
+  "stp x26, x28, [sp, #112]\n\t" \
   "sub w12, w3, #1\n\t" \
   "stp x29, x30, [sp, #144]\n\t" \
   "ldr q0, .Lsb_m3l_iota\n\t" \
@@ -583,83 +583,83 @@ namespace {
   "fmov x15, v3.d[1]\n\t" \
   "add x16, x0, w8, uxth\n\t" \
   "ldr q24, [x5]\n\t" \
-  "add x19, x0, w13, uxth\n\t" \
-  "add x24, x0, x8, lsr #48\n\t" \
-  "add x20, x0, w10, uxth\n\t" \
-  "add x21, x0, w14, uxth\n\t" \
-  "add x23, x0, w15, uxth\n\t" \
+  "add x17, x0, w13, uxth\n\t" \
+  "add x18, x0, x8, lsr #48\n\t" \
+  "add x19, x0, w10, uxth\n\t" \
+  "add x20, x0, w14, uxth\n\t" \
+  "add x21, x0, w15, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
-  "add x18, x0, w9, uxth\n\t" \
-  "add x17, x0, w12, uxth\n\t" \
-  "ld1 {v6.b}[0], [x17]\n\t" \
+  "add x16, x0, w9, uxth\n\t" \
+  "add x22, x0, w12, uxth\n\t" \
+  "ld1 {v6.b}[0], [x22]\n\t" \
   "add x22, x0, w11, uxth\n\t" \
-  "ld1 {v5.b}[0], [x18]\n\t" \
-  "add x18, x0, x11, lsr #48\n\t" \
-  "ld1 {v7.b}[0], [x19]\n\t" \
-  "add x25, x0, x12, lsr #48\n\t" \
-  "ld1 {v4.b}[1], [x20]\n\t" \
+  "ld1 {v5.b}[0], [x16]\n\t" \
+  "add x16, x0, x11, lsr #48\n\t" \
+  "ld1 {v7.b}[0], [x17]\n\t" \
+  "add x17, x0, x12, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x19]\n\t" \
   "add x19, x0, x14, lsr #48\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
-  "add x17, x0, x10, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x20]\n\t" \
+  "add x20, x0, x10, lsr #48\n\t" \
   "ror x8, x8, #32\n\t" \
-  "add x27, x0, x9, lsr #48\n\t" \
+  "add x23, x0, x9, lsr #48\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
-  "add x16, x0, x13, lsr #48\n\t" \
-  "ld1 {v7.b}[1], [x23]\n\t" \
+  "add x22, x0, x13, lsr #48\n\t" \
+  "ld1 {v7.b}[1], [x21]\n\t" \
   "ror x12, x12, #32\n\t" \
-  "ld1 {v4.b}[6], [x24]\n\t" \
+  "ld1 {v4.b}[6], [x18]\n\t" \
   "ror x9, x9, #32\n\t" \
-  "ld1 {v6.b}[6], [x25]\n\t" \
+  "ld1 {v6.b}[6], [x17]\n\t" \
   "ror x13, x13, #32\n\t" \
   "ldr q25, [x5, #16]\n\t" \
-  "add x21, x0, w8, uxth\n\t" \
-  "ld1 {v7.b}[6], [x16]\n\t" \
-  "add x20, x0, x15, lsr #48\n\t" \
-  "ld1 {v4.b}[7], [x17]\n\t" \
+  "add x17, x0, w8, uxth\n\t" \
+  "ld1 {v7.b}[6], [x22]\n\t" \
+  "add x18, x0, x15, lsr #48\n\t" \
+  "ld1 {v4.b}[7], [x20]\n\t" \
   "ror x11, x11, #32\n\t" \
-  "ld1 {v5.b}[6], [x27]\n\t" \
-  "add x22, x0, w12, uxth\n\t" \
-  "add x23, x0, w9, uxth\n\t" \
+  "ld1 {v5.b}[6], [x23]\n\t" \
+  "add x20, x0, w12, uxth\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
   "ror x14, x14, #32\n\t" \
-  "ld1 {v7.b}[7], [x20]\n\t" \
+  "ld1 {v7.b}[7], [x18]\n\t" \
   "ror x15, x15, #32\n\t" \
   "ld1 {v6.b}[7], [x19]\n\t" \
   "add x5, x5, #32\n\t" \
-  "ld1 {v4.b}[4], [x21]\n\t" \
-  "add x24, x0, w13, uxth\n\t" \
-  "add x27, x0, w14, uxth\n\t" \
+  "ld1 {v4.b}[4], [x17]\n\t" \
+  "add x17, x0, w13, uxth\n\t" \
+  "add x18, x0, w14, uxth\n\t" \
   "ror x10, x10, #32\n\t" \
-  "ld1 {v5.b}[7], [x18]\n\t" \
+  "ld1 {v5.b}[7], [x16]\n\t" \
   "add x16, x0, w11, uxth\n\t" \
-  "add x20, x0, x9, lsr #48\n\t" \
+  "add x19, x0, x9, lsr #48\n\t" \
   "and x5, x5, x28\n\t" \
-  "ld1 {v7.b}[4], [x24]\n\t" \
-  "add x25, x0, w10, uxth\n\t" \
-  "ld1 {v6.b}[4], [x22]\n\t" \
-  "add x17, x0, w15, uxth\n\t" \
-  "ld1 {v5.b}[4], [x23]\n\t" \
-  "add x18, x0, x8, lsr #48\n\t" \
-  "add x21, x0, x13, lsr #48\n\t" \
-  "add x19, x0, x12, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x25]\n\t" \
-  "add x24, x0, x11, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x27]\n\t" \
-  "add x23, x0, x14, lsr #48\n\t" \
+  "ld1 {v7.b}[4], [x17]\n\t" \
+  "add x17, x0, w10, uxth\n\t" \
+  "ld1 {v6.b}[4], [x20]\n\t" \
+  "add x20, x0, w15, uxth\n\t" \
+  "ld1 {v5.b}[4], [x21]\n\t" \
+  "add x21, x0, x8, lsr #48\n\t" \
+  "add x22, x0, x13, lsr #48\n\t" \
+  "add x23, x0, x12, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x17]\n\t" \
+  "add x17, x0, x11, lsr #48\n\t" \
+  "ld1 {v6.b}[5], [x18]\n\t" \
+  "add x18, x0, x14, lsr #48\n\t" \
   "ld1 {v5.b}[5], [x16]\n\t" \
   "csel x26, x4, xzr, ge\n\t" \
-  "ld1 {v7.b}[5], [x17]\n\t" \
-  "add x22, x0, x10, lsr #48\n\t" \
-  "ld1 {v4.b}[2], [x18]\n\t" \
-  "ld1 {v6.b}[2], [x19]\n\t" \
+  "ld1 {v7.b}[5], [x20]\n\t" \
+  "add x16, x0, x10, lsr #48\n\t" \
+  "ld1 {v4.b}[2], [x21]\n\t" \
+  "ld1 {v6.b}[2], [x23]\n\t" \
   "ldur q22, [x3, #2]\n\t" \
-  "ld1 {v5.b}[2], [x20]\n\t" \
-  "add x25, x0, x15, lsr #48\n\t" \
-  "ld1 {v7.b}[2], [x21]\n\t" \
-  "ld1 {v4.b}[3], [x22]\n\t" \
-  "ld1 {v6.b}[3], [x23]\n\t" \
-  "ld1 {v5.b}[3], [x24]\n\t" \
+  "ld1 {v5.b}[2], [x19]\n\t" \
+  "add x19, x0, x15, lsr #48\n\t" \
+  "ld1 {v7.b}[2], [x22]\n\t" \
+  "ld1 {v4.b}[3], [x16]\n\t" \
+  "ld1 {v6.b}[3], [x18]\n\t" \
+  "ld1 {v5.b}[3], [x17]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v7.b}[3], [x25]\n\t" \
+  "ld1 {v7.b}[3], [x19]\n\t" \
   "add x3, x3, x26\n\t"
 
 // Texture layout: row t (tw bytes at x22 + tw t) goes to x19 + 16 t, byte k its texel
@@ -718,8 +718,7 @@ namespace {
   "stp x19, x20, [sp, #64]\n\t" \
   "stp x21, x22, [sp, #80]\n\t" \
   "stp x23, x24, [sp, #96]\n\t" \
-  "stp x25, x26, [sp, #112]\n\t" \
-  "stp x27, x28, [sp, #128]\n\t" \
+  "stp x26, x28, [sp, #112]\n\t" \
   "stp x29, x30, [sp, #144]\n\t" \
   "ldr q0, .Lsb_m3l_iota\n\t" \
   "dup v1.16b, w6\n\t" \
@@ -766,8 +765,8 @@ namespace {
 // (asm/neon.cpp) with the arguments untouched. The lean path: mip 3, texture width 2..16 and
 // height 2..64 powers of two with tw th >= 16, surface width 16..512 a multiple of 16, height
 // > 0. Its frame: [sp, 64) the groups' state (t0 at 24, bands at 32, rows 2 and 3's offsets at
-// 48, 56), [64, 160) the saved x19-x30, then the buffer of laid-out rows aligned to 2048 (>=
-// twice its size P = 16 th <= 1024). The column loop over the n = width / 16 groups: group k
+// 48, 56), [64, 160) the saved x19-x24, x26, x28, x29, x30, then the buffer of laid-out rows
+// aligned to 2048 (>= twice its size P = 16 th <= 1024). The column loop over the n = width / 16 groups: group k
 // writes out + 16 k (row stride w) from grid entries 8 k.. (row stride gst = 2 gw bytes), texel
 // rows from t0 = buf + 16 (toff mod th), x28 = ~P; the bands keep x6 (grid row 0), x7 (groups
 // left) and x29 ((2 bh - 1) w - 16: the next group's output from the last row's).
@@ -851,8 +850,7 @@ asm(".pushsection .text\n\t"
     "ldp x19, x20, [sp, #64]\n\t"
     "ldp x21, x22, [sp, #80]\n\t"
     "ldp x23, x24, [sp, #96]\n\t"
-    "ldp x25, x26, [sp, #112]\n\t"
-    "ldp x27, x28, [sp, #128]\n\t"
+    "ldp x26, x28, [sp, #112]\n\t"
     "ldp x29, x30, [sp, #144]\n\t"
     "add sp, sp, #3248\n\t"
     "ret\n"
