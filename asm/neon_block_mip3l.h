@@ -478,119 +478,120 @@ namespace {
   "lsl w13, w4, #3\n\t" \
   "dup v1.16b, w6\n\t" \
   "stp x19, x20, [sp, #64]\n\t" \
-  "stp x21, x22, [sp, #80]\n\t" \
   "sub w13, w13, #8\n\t" \
-  "stp x23, x24, [sp, #96]\n\t" \
+  "stp x21, x22, [sp, #80]\n\t" \
   "mov x22, x2\n\t" \
+  "stp x23, x24, [sp, #96]\n\t" \
   "stp x26, x28, [sp, #112]\n\t" \
   "sub w12, w3, #1\n\t" \
   "stp x29, x30, [sp, #144]\n\t" \
   "ldr q0, .Lsb_m3l_iota\n\t" \
+  "movi v31.8h, #255\n\t" \
   "add x21, sp, #2207\n\t" \
   "dup v2.16b, w12\n\t" \
-  "movi v31.8h, #255\n\t" \
   "add v0.16b, v0.16b, v1.16b\n\t" \
   "ldr d16, [x22]\n\t" \
-  "and x8, x13, #8\n\t" \
-  "and x21, x21, #0xfffffffffffff800\n\t" \
-  "mov x19, x21\n\t" \
-  "and x11, x13, #16\n\t" \
-  "and x15, x13, #0xffffffffffffffef\n\t" \
-  "and x23, x13, #48\n\t" \
   "and x12, x13, #24\n\t" \
-  "ldr d17, [x22, x8]\n\t" \
-  "and x14, x13, #32\n\t" \
-  "and v0.16b, v0.16b, v2.16b\n\t" \
-  "ldr d21, [x22, x15]\n\t" \
-  "ldr d19, [x22, x12]\n\t" \
-  "ldr d20, [x22, x14]\n\t" \
-  "ldr d18, [x22, x11]\n\t" \
-  "mov w4, #8\n\t" \
+  "and x8, x13, #8\n\t" \
+  "and x15, x13, #0xffffffffffffffef\n\t" \
+  "and x11, x13, #16\n\t" \
+  "and x21, x21, #0xfffffffffffff800\n\t" \
   "ldr d23, [x22, x13]\n\t" \
+  "and x23, x13, #48\n\t" \
+  "and x14, x13, #32\n\t" \
+  "ldr d17, [x22, x8]\n\t" \
+  "and v0.16b, v0.16b, v2.16b\n\t" \
+  "ldr d19, [x22, x12]\n\t" \
+  "mov w4, #8\n\t" \
   "ldr d22, [x22, x23]\n\t" \
-  "tbl v19.16b, {v19.16b}, v0.16b\n\t" \
+  "ldr d20, [x22, x14]\n\t" \
+  "mov x19, x21\n\t" \
+  "ldr d18, [x22, x11]\n\t" \
+  "ldr d21, [x22, x15]\n\t" \
   "tbl v16.16b, {v16.16b}, v0.16b\n\t" \
-  "tbl v20.16b, {v20.16b}, v0.16b\n\t" \
   "tbl v17.16b, {v17.16b}, v0.16b\n\t" \
-  "tbl v22.16b, {v22.16b}, v0.16b\n\t" \
+  "tbl v19.16b, {v19.16b}, v0.16b\n\t" \
   "tbl v18.16b, {v18.16b}, v0.16b\n\t" \
+  "tbl v20.16b, {v20.16b}, v0.16b\n\t" \
+  "tbl v22.16b, {v22.16b}, v0.16b\n\t" \
   "tbl v21.16b, {v21.16b}, v0.16b\n\t" \
   "tbl v23.16b, {v23.16b}, v0.16b\n\t" \
   "stp q16, q17, [x19]\n\t" \
-  "stp q18, q19, [x19, #32]\n\t" \
-  "stp q20, q21, [x19, #64]\n\t" \
-  "stp q22, q23, [x19, #96]\n\t" \
-  "sub w13, w4, #1\n\t" \
   "lsl w28, w4, #4\n\t" \
+  "stp q18, q19, [x19, #32]\n\t" \
+  "sub w13, w4, #1\n\t" \
+  "stp q20, q21, [x19, #64]\n\t" \
   "and w7, w7, w13\n\t" \
-  "ubfiz x4, x1, #1, #32\n\t" \
-  "add x14, x4, x4\n\t" \
   "asr w13, w10, #1\n\t" \
   "cmp w13, #2\n\t" \
+  "ubfiz x4, x1, #1, #32\n\t" \
+  "add x14, x4, x4\n\t" \
   "add x12, x21, x7, lsl #4\n\t" \
   "csel x14, x14, x4, ge\n\t" \
   "cmp w13, #3\n\t" \
-  "stp x12, x13, [sp, #24]\n\t" \
+  "sxtw x2, w9\n\t" \
+  "stp q22, q23, [x19, #96]\n\t" \
   "add x11, x14, x4\n\t" \
   "csel x11, x11, x14, ge\n\t" \
   "lsl x29, x13, #1\n\t" \
   "sub x29, x29, #1\n\t" \
-  "sxtw x2, w9\n\t" \
+  "stp x12, x13, [sp, #24]\n\t" \
   "mul x29, x29, x2\n\t" \
   "stp x14, x11, [sp, #48]\n\t" \
   "mov x6, x0\n\t" \
-  "sub x29, x29, #16\n\t" \
-  "mov x10, x14\n\t" \
   "lsr w7, w9, #4\n\t" \
+  "sub x29, x29, #16\n\t" \
   "add x9, x6, x4\n\t" \
-  "add x3, x6, x11\n\t" \
+  "mov x10, x14\n\t" \
   "ldur q22, [x6, #2]\n\t" \
   "add x19, x19, #128\n\t" \
   "ldr q16, [x6]\n\t" \
   "mvn x28, x28\n\t" \
   "ldr q17, [x9]\n\t" \
-  "add x8, x6, x10\n\t" \
   "ldur q23, [x9, #2]\n\t" \
+  "add x3, x6, x11\n\t" \
+  "add x8, x6, x10\n\t" \
   "ldp x5, x30, [sp, #24]\n\t" \
-  "ldr q18, [x8]\n\t" \
+  "mov x0, x16\n\t" \
   "add v19.8h, v16.8h, v22.8h\n\t" \
   "add v20.8h, v17.8h, v23.8h\n\t" \
-  "cmp x30, #4\n\t" \
   "ldr q24, [x5]\n\t" \
-  "ldr q25, [x5, #16]\n\t" \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
+  "ldr q18, [x8]\n\t" \
+  "ldr q25, [x5, #16]\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
   "add v3.8h, v19.8h, v20.8h\n\t" \
-  "ldur q22, [x8, #2]\n\t" \
-  "mov x0, x16\n\t" \
   "add x5, x5, #32\n\t" \
+  "ldur q22, [x8, #2]\n\t" \
   "and x5, x5, x28\n\t" \
   "bit v2.16b, v25.16b, v31.16b\n\t" \
   "trn2 v1.16b, v24.16b, v1.16b\n\t" \
   "ushr v3.16b, v3.16b, #2\n\t" \
   "bif v24.16b, v16.16b, v31.16b\n\t" \
-  "ldr q16, [x3]\n\t" \
   "mov x1, x17\n\t" \
   "fmov x13, v2.d[1]\n\t" \
   "fmov x10, d1\n\t" \
   "trn2 v3.16b, v25.16b, v3.16b\n\t" \
   "fmov x8, d24\n\t" \
-  "add v21.8h, v18.8h, v22.8h\n\t" \
+  "fmov x9, v24.d[1]\n\t" \
   "fmov x11, v1.d[1]\n\t" \
   "fmov x12, d2\n\t" \
-  "fmov x9, v24.d[1]\n\t" \
+  "add v21.8h, v18.8h, v22.8h\n\t" \
   "fmov x14, d3\n\t" \
   "fmov x15, v3.d[1]\n\t" \
+  "ldr q16, [x3]\n\t" \
+  "cmp x30, #4\n\t" \
   "add x16, x0, w8, uxth\n\t" \
-  "ldr q24, [x5]\n\t" \
-  "add x17, x0, w13, uxth\n\t" \
   "add x18, x0, x8, lsr #48\n\t" \
-  "add x19, x0, w10, uxth\n\t" \
+  "add x23, x0, x9, lsr #48\n\t" \
+  "add x17, x0, w13, uxth\n\t" \
   "add x20, x0, w14, uxth\n\t" \
   "add x21, x0, w15, uxth\n\t" \
   "ld1 {v4.b}[0], [x16]\n\t" \
   "add x16, x0, w9, uxth\n\t" \
+  "add x19, x0, w10, uxth\n\t" \
   "add x22, x0, w12, uxth\n\t" \
+  "ldr q24, [x5]\n\t" \
   "ld1 {v6.b}[0], [x22]\n\t" \
   "add x22, x0, w11, uxth\n\t" \
   "ld1 {v5.b}[0], [x16]\n\t" \
@@ -598,13 +599,13 @@ namespace {
   "ld1 {v7.b}[0], [x17]\n\t" \
   "add x17, x0, x12, lsr #48\n\t" \
   "ld1 {v4.b}[1], [x19]\n\t" \
-  "add x19, x0, x14, lsr #48\n\t" \
+  "ror x11, x11, #32\n\t" \
   "ld1 {v6.b}[1], [x20]\n\t" \
   "add x20, x0, x10, lsr #48\n\t" \
-  "ror x8, x8, #32\n\t" \
-  "add x23, x0, x9, lsr #48\n\t" \
   "ld1 {v5.b}[1], [x22]\n\t" \
   "add x22, x0, x13, lsr #48\n\t" \
+  "ror x10, x10, #32\n\t" \
+  "ror x8, x8, #32\n\t" \
   "ld1 {v7.b}[1], [x21]\n\t" \
   "ror x12, x12, #32\n\t" \
   "ld1 {v4.b}[6], [x18]\n\t" \
@@ -616,27 +617,27 @@ namespace {
   "ld1 {v7.b}[6], [x22]\n\t" \
   "add x18, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[7], [x20]\n\t" \
-  "ror x11, x11, #32\n\t" \
+  "add x19, x0, x14, lsr #48\n\t" \
   "ld1 {v5.b}[6], [x23]\n\t" \
   "add x20, x0, w12, uxth\n\t" \
-  "add x21, x0, w9, uxth\n\t" \
   "ror x14, x14, #32\n\t" \
+  "add x21, x0, w9, uxth\n\t" \
   "ld1 {v7.b}[7], [x18]\n\t" \
   "ror x15, x15, #32\n\t" \
   "ld1 {v6.b}[7], [x19]\n\t" \
   "add x5, x5, #32\n\t" \
   "ld1 {v4.b}[4], [x17]\n\t" \
   "add x17, x0, w13, uxth\n\t" \
+  "ldur q22, [x3, #2]\n\t" \
   "add x18, x0, w14, uxth\n\t" \
-  "ror x10, x10, #32\n\t" \
   "ld1 {v5.b}[7], [x16]\n\t" \
-  "add x16, x0, w11, uxth\n\t" \
   "add x19, x0, x9, lsr #48\n\t" \
-  "and x5, x5, x28\n\t" \
+  "ld1 {v6.b}[4], [x20]\n\t" \
+  "add x16, x0, w11, uxth\n\t" \
   "ld1 {v7.b}[4], [x17]\n\t" \
   "add x17, x0, w10, uxth\n\t" \
-  "ld1 {v6.b}[4], [x20]\n\t" \
   "add x20, x0, w15, uxth\n\t" \
+  "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v5.b}[4], [x21]\n\t" \
   "add x21, x0, x8, lsr #48\n\t" \
   "add x22, x0, x13, lsr #48\n\t" \
@@ -646,21 +647,20 @@ namespace {
   "ld1 {v6.b}[5], [x18]\n\t" \
   "add x18, x0, x14, lsr #48\n\t" \
   "ld1 {v5.b}[5], [x16]\n\t" \
-  "csel x26, x4, xzr, ge\n\t" \
   "ld1 {v7.b}[5], [x20]\n\t" \
   "add x16, x0, x10, lsr #48\n\t" \
   "ld1 {v4.b}[2], [x21]\n\t" \
   "ld1 {v6.b}[2], [x23]\n\t" \
-  "ldur q22, [x3, #2]\n\t" \
   "ld1 {v5.b}[2], [x19]\n\t" \
-  "add x19, x0, x15, lsr #48\n\t" \
+  "add x3, x3, x26\n\t" \
   "ld1 {v7.b}[2], [x22]\n\t" \
+  "add x19, x0, x15, lsr #48\n\t" \
   "ld1 {v4.b}[3], [x16]\n\t" \
   "ld1 {v6.b}[3], [x18]\n\t" \
-  "ld1 {v5.b}[3], [x17]\n\t" \
   "subs x30, x30, #1\n\t" \
-  "ld1 {v7.b}[3], [x19]\n\t" \
-  "add x3, x3, x26\n\t"
+  "ld1 {v5.b}[3], [x17]\n\t" \
+  "and x5, x5, x28\n\t" \
+  "ld1 {v7.b}[3], [x19]\n\t"
 
 // Texture layout: row t (tw bytes at x22 + tw t) goes to x19 + 16 t, byte k its texel
 // (soff + k) mod tw (a table lookup by v0 of the row loaded into the low tw bytes of vN).
