@@ -33,13 +33,18 @@ namespace {
 
 #if defined(__aarch64__)
 
-// The band loop (asm/neon_block_mip3.h's SB_MIP3_BAND0..2 and SB_MIP3_ENTRY, same
-// registers and method) with the texel rows read at x5 and x5 + 16, x5 += 32 wrapped by
-// x28 = ~P, reordered by bench/order_search.py (Cortex-A53 model: 72 -> 70
-// cycles a band); the entry copy is band 0 without the previous band's stores, after the
-// group's grid rows 0-2 (v16-v18, v19 = g + g1 of row 0, v20 of row 1, v22 = row 2's entries
-// 1..8, x3 = row 3), the first texel rows (v24, v25 at t0, x5 = the next band's) and the
-// band count x30 from the frame, the whole reordered the same way (87 -> 82 cycles).
+// The band loop (asm/neon_block_mip3.h's SB_MIP3_BAND0..2 and SB_MIP3_ENTRY, same registers
+// and method) with the texel rows read at x5 and x5 + 16, x5 += 32 wrapped by x28 = ~P, and
+// lanes 1-2 of an index word xW by one rotation: after lanes 0 (uxth) and 3 (lsr #48) are
+// taken, `ror xW, xW, #32` puts lane 2 in bits 0-15 and lane 1 in bits 48-63 (5 address ops a
+// word, no mask register); lane addresses in x16-x24 (x25, x27 unused). Reordered by
+// bench/order_search.py (Cortex-A53 model: 68 cycles a band). The entry copy is band 0 without
+// the previous band's stores, after the group's grid rows 0-2 (v16-v18, v19 = g + g1 of row 0,
+// v20 of row 1, v22 = row 2's entries 1..8, x3 = row 3), the first texel rows (v24, v25 at t0,
+// x5 = the next band's) and the band count x30 from the frame (82 cycles). SB_MIP3L_FAST: the
+// fast path's straight block (see below), from SB_MIP3L_PRO, the eight row loads at 8 k &
+// x13, SB_MIP3L_TBL8, SB_MIP3L_ST8 with w4 = 8, SB_MIP3L_STATE and SB_MIP3L_ENTRY, reordered
+// by the same search against qemu's block cut (136 cycles).
 #define SB_MIP3L_BAND0 \
   "uhadd v2.8h, v16.8h, v17.8h\n\t" \
   "ushr v1.8h, v19.8h, #1\n\t" \
@@ -766,16 +771,17 @@ namespace {
 // height 2..64 powers of two with tw th >= 16, surface width 16..512 a multiple of 16, height
 // > 0. Its frame: [sp, 64) the groups' state (t0 at 24, bands at 32, rows 2 and 3's offsets at
 // 48, 56), [64, 160) the saved x19-x24, x26, x28, x29, x30, then the buffer of laid-out rows
-// aligned to 2048 (>= twice its size P = 16 th <= 1024). The column loop over the n = width / 16 groups: group k
-// writes out + 16 k (row stride w) from grid entries 8 k.. (row stride gst = 2 gw bytes), texel
-// rows from t0 = buf + 16 (toff mod th), x28 = ~P; the bands keep x6 (grid row 0), x7 (groups
-// left) and x29 ((2 bh - 1) w - 16: the next group's output from the last row's).
-// Textures 8 wide and at most 8 tall (mip 3 of 64-wide textures up to 64 tall) take one
-// straight block (frame, eight rows laid out, texture row k mod th, state) into the first
-// group's entry: no branch between, so an in-order core overlaps their latencies.
+// aligned to 2048 (>= twice its size P = 16 th <= 1024). The column loop over the n = width /
+// 16 groups: group k writes out + 16 k (row stride w) from grid entries 8 k.. (row stride gst
+// = 2 gw bytes), texel rows from t0 = buf + 16 (toff mod th), x28 = ~P; the bands keep x6
+// (grid row 0), x7 (groups left) and x29 ((2 bh - 1) w - 16: the next group's output from the
+// last row's). Textures 8 wide and at most 8 tall (mip 3 of 64-wide textures up to 64 tall)
+// take one straight block (SB_MIP3L_FAST: frame, eight rows laid out, texture row k mod th,
+// state) into the first group's entry: no branch between, so an in-order core overlaps their
+// latencies. Its own section: its 4 KiB alignment leaves the rest of .text where it was.
 #define SB_MIP3L_SYM "_ZN2sb4simd6detail26surface_block_neon_inorderEPKtiPKhiiiiiiiS5_Ph"
 #define SB_MIP3L_REST "_ZN2sb4simd6detail21surface_block_inorderEPKtiPKhiiiiiiiS5_Ph"
-asm(".pushsection .text\n\t"
+asm(".pushsection .text.sb_neon_a53_block, \"ax\", %progbits\n\t"
     ".p2align 6\n\t"
     ".globl " SB_MIP3L_SYM "\n\t"
     ".hidden " SB_MIP3L_SYM "\n\t"
