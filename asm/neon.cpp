@@ -862,12 +862,17 @@ void surface_block_neon(const uint16_t* grid, int grid_width, const uint8_t* tex
 }
 
 #if defined(__aarch64__)
-// The in-order variant (Cortex-A53/A55/A35): its own row loops at every mip (the lean mip-3
-// path first, without this function's frame).
+// The in-order variant (Cortex-A53/A55/A35): its own row loops at every mip. Entered from
+// surface_block_neon_inorder (asm/neon_block_mip3l.h: the lean mip-3 path in assembly) by a
+// branch, under this symbol name.
 namespace {
-__attribute__((noipa)) void surface_block_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels,
-                                                     int tex_width, int tex_height, int mip, int soff, int toff,
-                                                     int width, int height, const uint8_t* colormap, uint8_t* out) {
+__attribute__((noipa, used)) void surface_block_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels,
+                                                        int tex_width, int tex_height, int mip, int soff, int toff,
+                                                        int width, int height, const uint8_t* colormap,
+                                                        uint8_t* out) asm(SB_MIP3L_REST);
+void surface_block_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width, int tex_height,
+                           int mip, int soff, int toff, int width, int height, const uint8_t* colormap,
+                           uint8_t* out) {
   if (width > 0 && height > 0 && mip >= 0 && mip <= 3 && width / (16 >> mip) <= kMaxBlockColumns) {
     if (mip == 0)
       return (width & 15 ? surface_block_groups<0, true> : surface_block_groups<0, true, true>)(
@@ -887,15 +892,6 @@ __attribute__((noipa)) void surface_block_inorder(const uint16_t* grid, int grid
 }
 }  // namespace
 
-void surface_block_neon_inorder(const uint16_t* grid, int grid_width, const uint8_t* texels, int tex_width,
-                                int tex_height, int mip, int soff, int toff, int width, int height,
-                                const uint8_t* colormap, uint8_t* out) {
-  // One indirect tail call (a branch on mip first costs mips 0-2 GCC's argument shuffling).
-  const bool lean = mip == 3 && width > 0 && height > 0 && width <= 2 * kMaxBlockColumns &&
-                    mip3_p16_fits(tex_width, tex_height, width);
-  return (lean ? surface_block_mip3_p16 : surface_block_inorder)(grid, grid_width, texels, tex_width, tex_height, mip,
-                                                                 soff, toff, width, height, colormap, out);
-}
 #endif
 
 // ---------------------------------------------------------------- 3. z span

@@ -381,6 +381,29 @@ TEST(AsmSurfaceBlock, Mip3PowerOfTwoTextures) {
   std::printf("[ asm      ] surface_block mip 3, power-of-two textures: %d cases compared\n", cases);
 }
 
+// AArch64 neon_a53's fast mip-3 block (asm/neon_block_mip3l.h): textures 8 wide and 2, 4 or 8
+// tall (rows laid out by register offsets, repeating every th rows), every row and column
+// offset, one group and several, widths at the lean path's limit (512) and just past it.
+TEST(AsmSurfaceBlock, Mip3EightWideTextures) {
+  std::mt19937 rng(6464);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int th : {2, 4, 8}) {
+      for (int toff = 0; toff < 2 * th; toff += 2) {
+        for (int soff = -8; soff < 8; soff += 2) {
+          const int ws[] = {16, 32, 80, 512, 528};
+          const int hs[] = {2, 4, 6, 32, 34};
+          const int w = ws[rng() % 5], h = hs[rng() % 5];
+          check_block(k, rng, BlockCase{3, w, h, 8, th, soff, toff - th, w / 2 + 1 + int(rng() % 2)},
+                      Light(rng() % 6), false);
+          ++cases;
+        }
+      }
+    }
+  }
+  std::printf("[ asm      ] surface_block mip 3, 8-wide textures: %d cases compared\n", cases);
+}
+
 // ---------------------------------------------------------------- z span
 
 TEST(AsmZSpan, EveryVariantMatchesScalar) {
