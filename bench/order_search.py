@@ -4,7 +4,7 @@
 # Cortex-A57 (the A72 column) to break ties, or A53 + W A57 with --a57=W.
 #
 #   order_search.py IN.s OUT.s [--evals=N] [--head=K] [--seed=S] [--a57=W] [--cuts=A,B,..]
-#                              [--iter=N] [--kick=N]
+#                              [--iter=N] [--kick=N] [--mem]
 #
 # Operands are plain registers. Moves keep every register, flag and store order: accumulating
 # ops (fmla, mla, bsl/bit/bif, ssra, sqxtn2, lane inserts, ld1 lane loads ...) read their
@@ -14,7 +14,9 @@
 # rewrites rA from the listed registers and returns), which reads those registers and its own
 # and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow).
 # --cuts=A,B (body line indexes, labels not counted) scores the sum over the blocks cut
-# there, as qemu's translation blocks are timed by bench/count.sh.
+# there, as qemu's translation blocks are timed by bench/count.sh. --mem keeps loads in order
+# with stores too (for blocks that reload what they store: stack state, layout buffers);
+# without it only stores keep their order. sp is a register like the others.
 # Each step takes one instruction, times every legal position for it in one llvm-mca run,
 # keeps the best (ties: any); after 150 steps without a gain it restarts from the best order
 # moved a little (--kick moves). Writes OUT.s at every gain. A model search: check the
@@ -27,6 +29,8 @@ ACCUMULATE = ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "s
 
 
 def reg(tok):
+    if tok in ("sp", "wsp"):
+        return "sp"
     m = re.fullmatch(r"[xw](\d+)", tok)
     if m:
         return "x" + m.group(1)
@@ -48,7 +52,7 @@ def parse(l):
         return set(regs) | set(own) | {"nzcv"}, {regs[0]}, False, False
     l = l.split("//")[0].strip()
     op, _, rest = l.partition(" ")
-    rs = [r for r in (reg(t) for t in re.findall(r"[a-z]+\d+(?:\.\w+)?(?:\[\d+\])?", rest)) if r]
+    rs = [r for r in (reg(t) for t in re.findall(r"\bw?sp\b|[a-z]+\d+(?:\.\w+)?(?:\[\d+\])?", rest)) if r]
     reads, writes, store = set(), set(), False
     mem = list(re.finditer(r"\[((?:x\d+|sp)[^\]]*)\]", rest))
     post = bool(mem) and ("]!" in rest or "," in rest[mem[-1].end():])
@@ -60,7 +64,7 @@ def parse(l):
         if post:
             writes.add(reg(mem[-1].group(1).split(",")[0]))
     elif op.startswith("ld"):  # ldp, ldr, ldrb, ld1, ld1r, ld2 ...: every listed register written
-        addr = [r for r in (reg(t) for t in re.findall(r"[a-z]+\d+", mem[-1].group(1))) if r]
+        addr = [r for r in (reg(t) for t in re.findall(r"\bsp\b|[a-z]+\d+", mem[-1].group(1))) if r]
         dst = rs[:len(rs) - len(addr)]
         reads |= set(addr)
         writes |= set(dst)
@@ -89,7 +93,8 @@ def parse(l):
 def dep(a, b):  # must a stay before b?
     ra, wa, sa, xa = info[a]
     rb, wb, sb, xb = info[b]
-    return xa or xb or bool(wa & rb or wa & wb or ra & wb) or (sa and sb)
+    mem = (sa and sb) or (MEM and (sa and LOAD[b] or LOAD[a] and sb))
+    return xa or xb or bool(wa & rb or wa & wb or ra & wb) or mem
 
 
 def cycles(orders, cpu):
@@ -133,7 +138,7 @@ def show(s):
 
 if __name__ == "__main__":
     args = [a for a in sys.argv[1:] if not a.startswith("--")]
-    opt = dict(a[2:].split("=", 1) for a in sys.argv[1:] if a.startswith("--"))
+    opt = dict(a[2:].partition("=")[::2] for a in sys.argv[1:] if a.startswith("--"))
     inp, outp = args
     evals, head = int(opt.get("evals", 20000)), int(opt.get("head", 0))
     random.seed(int(opt.get("seed", 1)))
@@ -142,6 +147,8 @@ if __name__ == "__main__":
     CUTS = [int(c) for c in opt["cuts"].split(",")] if "cuts" in opt else []
     lines = [l.strip() for l in open(inp) if l.strip() and not l.strip().startswith("//")]
     info = [parse(l) for l in lines]
+    MEM = "mem" in opt
+    LOAD = [l.split()[0].startswith("ld") and not l.endswith(":") for l in lines]
     last = len(lines) - 1 if is_branch(lines[-1].split()[0]) else len(lines)
     order = list(range(len(lines)))
     cur = best = score([order])[0]
