@@ -11,6 +11,7 @@
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_a64pass.h"
+#include "asm/span_persp_a64lin.h"
 #endif
 
 namespace sb::simd {
@@ -183,6 +184,10 @@ SB_INLINE ShortStepsK3 short_steps_k3(int32x4_t S01, int32x4_t S23, int32x4_t S4
 }
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  if constexpr (!kCurve) {
+    persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
+    return;
+  }
   const double zc = p.second_order ? p.dzi : 0.0;
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
