@@ -63,14 +63,14 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
   register uint64_t rn __asm__("x7") = uint64_t(uint32_t(n));
   register const double* rkm __asm__("x2") = &kMinZi;
   register const ShortLinPos* rtab __asm__("x11") = &kShortLinPos;
-  register uint64_t rx0 __asm__("x13");  // packed samples 0 .. 4
+  register uint64_t rx0 __asm__("x13");  // packed samples 0 .. 3 (sample 4 in x27)
   register uint64_t rx1 __asm__("x23");
   register uint64_t rx2 __asm__("x19");
   register uint64_t rx3 __asm__("x25");
-  register uint64_t rx4 __asm__("x27");
   register uint64_t rd0 __asm__("x9");  // steps16_packed of samples 0 -> 1, 1 -> 2, 2 -> 3
   register uint64_t rd1 __asm__("x24");
   register uint64_t rd2 __asm__("x20");
+  register uint64_t rld __asm__("x28");  // the last run's packed step (see below)
   __asm__ volatile(
 // BEGIN lin_setup
         "add x10, x4, #48\n\t"
@@ -177,80 +177,97 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
         "fdiv v6.2d, v1.2d, v27.2d\n\t"
         "fdiv d4, d1, d28\n\t"
         "2:\n\t"
+        "sub w22, w7, #1\n\t"
         "fmul v18.2d, v18.2d, v2.d[0]\n\t"
         "fmul v20.2d, v20.2d, v2.d[1]\n\t"
-        "fmul v22.2d, v22.2d, v6.d[0]\n\t"
         "fmul v24.2d, v24.2d, v6.d[1]\n\t"
+        "fmul v22.2d, v22.2d, v6.d[0]\n\t"
         "fmul v29.2d, v29.2d, v4.d[0]\n\t"
         "fmin v18.2d, v18.2d, v21.2d\n\t"
         "fmin v20.2d, v20.2d, v21.2d\n\t"
-        "fmin v22.2d, v22.2d, v21.2d\n\t"
         "fmin v24.2d, v24.2d, v21.2d\n\t"
+        "fmin v22.2d, v22.2d, v21.2d\n\t"
         "fmin v29.2d, v29.2d, v21.2d\n\t"
         "fcvtzu v18.2d, v18.2d, #16\n\t"
         "fcvtzu v20.2d, v20.2d, #16\n\t"
-        "fcvtzu v22.2d, v22.2d, #16\n\t"
         "fcvtzu v24.2d, v24.2d, #16\n\t"
+        "fcvtzu v22.2d, v22.2d, #16\n\t"
         "fcvtzu v29.2d, v29.2d, #16\n\t"
         "fmov x13, d18\n\t"
-        "mov x1, v18.d[1]\n\t"
         "fmov x23, d20\n\t"
+        "mov x1, v18.d[1]\n\t"
         "mov x2, v20.d[1]\n\t"
-        "fmov x19, d22\n\t"
-        "mov x3, v22.d[1]\n\t"
         "fmov x25, d24\n\t"
+        "fmov x19, d22\n\t"
         "mov x5, v24.d[1]\n\t"
+        "mov x3, v22.d[1]\n\t"
         "fmov x27, d29\n\t"
         "mov x6, v29.d[1]\n\t"
         "sub w9, w23, w13\n\t"
         "sub w10, w2, w1\n\t"
-        "sub w24, w19, w23\n\t"
         "sub w12, w3, w2\n\t"
         "sub w20, w25, w19\n\t"
-        "sub w15, w5, w3\n\t"
-        "asr w8, w9, #31\n\t"
-        "asr w11, w10, #31\n\t"
-        "asr w14, w24, #31\n\t"
         "asr w16, w12, #31\n\t"
-        "asr w17, w20, #31\n\t"
+        "sub w15, w5, w3\n\t"
         "asr w21, w15, #31\n\t"
-        "add w9, w9, w8, lsr #28\n\t"
-        "add w10, w10, w11, lsr #28\n\t"
-        "add w24, w24, w14, lsr #28\n\t"
-        "add w12, w12, w16, lsr #28\n\t"
-        "add w20, w20, w17, lsr #28\n\t"
+        "sub w24, w19, w23\n\t"
+        "asr w17, w20, #31\n\t"
+        "asr w14, w24, #31\n\t"
+        "asr w11, w10, #31\n\t"
+        "asr w8, w9, #31\n\t"
         "add w15, w15, w21, lsr #28\n\t"
-        "sbfx x9, x9, #4, #28\n\t"
-        "asr w10, w10, #4\n\t"
-        "sbfx x24, x24, #4, #28\n\t"
+        "add w12, w12, w16, lsr #28\n\t"
+        "add w9, w9, w8, lsr #28\n\t"
+        "and w28, w22, #15\n\t"
+        "add w20, w20, w17, lsr #28\n\t"
+        "add w24, w24, w14, lsr #28\n\t"
         "asr w12, w12, #4\n\t"
-        "sbfx x20, x20, #4, #28\n\t"
-        "asr w15, w15, #4\n\t"
-        "add x9, x9, x10, lsl #32\n\t"
-        "add x24, x24, x12, lsl #32\n\t"
-        "add x20, x20, x15, lsl #32\n\t"
         "orr x13, x13, x1, lsl #32\n\t"
-        "orr x23, x23, x2, lsl #32\n\t"
+        "sbfx x24, x24, #4, #28\n\t"
+        "add x24, x24, x12, lsl #32\n\t"
+        "sbfx x20, x20, #4, #28\n\t"
+        "cmp w28, #0\n\t"
+        "lsr w22, w22, #4\n\t"
         "orr x19, x19, x3, lsl #32\n\t"
+        "sbfx x9, x9, #4, #28\n\t"
+        "orr x23, x23, x2, lsl #32\n\t"
+        "csinc w28, w28, wzr, ne\n\t"
+        "cmp w22, #2\n\t"
+        "orr x27, x27, x6, lsl #32\n\t"
+        "add w10, w10, w11, lsr #28\n\t"
+        "asr w10, w10, #4\n\t"
         "orr x25, x25, x5, lsl #32\n\t"
-        "orr x27, x27, x6, lsl #32"
+        "asr w15, w15, #4\n\t"
+        "csel w17, w25, w27, eq\n\t"
+        "csel w17, w19, w17, lt\n\t"
+        "csel w21, w5, w6, eq\n\t"
+        "csel w8, w19, w25, eq\n\t"
+        "csel w21, w3, w21, lt\n\t"
+        "csel w16, w3, w5, eq\n\t"
+        "csel w8, w23, w8, lt\n\t"
+        "csel w16, w2, w16, lt\n\t"
+        "sub w8, w17, w8\n\t"
+        "sub w16, w21, w16\n\t"
+        "sdiv w8, w8, w28\n\t"
+        "add x9, x9, x10, lsl #32\n\t"
+        "sdiv w16, w16, w28\n\t"
+        "add x20, x20, x15, lsl #32\n\t"
+        "lsl x16, x16, #32\n\t"
+        "add x28, x16, w8, sxtw"
 // END lin_setup
-      : "=&r"(rx0), "=&r"(rx1), "=&r"(rx2), "=&r"(rx3), "=&r"(rx4), "=&r"(rd0), "=&r"(rd1), "=&r"(rd2), "+&r"(rkm),
+      : "=&r"(rx0), "=&r"(rx1), "=&r"(rx2), "=&r"(rx3), "=&r"(rd0), "=&r"(rd1), "=&r"(rd2), "=&r"(rld), "+&r"(rkm),
         "+&r"(rtab)
       : "r"(rp), "r"(rn)
-      : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "v0", "v1", "v2", "v3",
+      : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "x22", "x27", "v0", "v1", "v2", "v3",
         "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
         "v28", "v29", "v30", "v31");
-  const uint64_t x0 = rx0, x1 = rx1, x2 = rx2, x3 = rx3, x4 = rx4, d0 = rd0, d1 = rd1, d2 = rd2;
-  // The last run (k = runs - 1): from sample k to k + 1 in `steps` = last - 1 steps (run_steps'
-  // delta / steps truncating, |delta| < 2^31; a one-pixel last run draws no step: any divisor).
+  const uint64_t x0 = rx0, x1 = rx1, x2 = rx2, x3 = rx3, d0 = rd0, d1 = rd1, d2 = rd2, ld = rld;
+  // The last run (k = runs - 1) from sample k to k + 1 in s = max(last - 1, 1) steps, in the
+  // block: run_steps' delta / s truncating per component (|delta| < 2^31; a one-pixel last
+  // run draws no step: any divisor), packed as ld = dv 2^32 + sign-extended du.
   auto go = [&](auto kc) SB_LAMBDA_INLINE {
     constexpr int k = decltype(kc)::value;
-    const uint64_t xa = k == 1 ? x1 : (k == 2 ? x2 : x3), xb = k == 1 ? x2 : (k == 2 ? x3 : x4);
-    const int32_t s = last > 2 ? last - 1 : 1;
-    const int32_t ldu = (int32_t(uint32_t(xb)) - int32_t(uint32_t(xa))) / s;
-    const int32_t ldv = (int32_t(xb >> 32) - int32_t(xa >> 32)) / s;
-    const uint64_t ld = (uint64_t(uint32_t(ldv)) << 32) + uint64_t(int64_t(ldu));
+    const uint64_t xa = k == 1 ? x1 : (k == 2 ? x2 : x3);
     auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
       short_pass<false>(d, texels, uint64_t(width), a_uv, a_d, 0, b_uv, b_d, 0);
     };
@@ -274,7 +291,8 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
       Run16<false> run(xa, ld, 0, typename Run16<false>::Packed{});
       run.draw(dest, texels, w);
     } else {
-      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), uint32_t(ldu), uint32_t(ldv), 0, 0);
+      const uint32_t ldu = uint32_t(ld), ldv = uint32_t((ld - uint64_t(int64_t(int32_t(ldu)))) >> 32);
+      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), ldu, ldv, 0, 0);
     }
   };
   if (runs == 2) {
