@@ -292,6 +292,28 @@ TEST(AsmSpanPersp, UnsignedFixedPointClampMatchesTheWalker) {
 #endif
 }
 
+// aarch64 short linear spans (asm/span_persp_a64lin.h) clamp before converting: fcvtzu #16
+// of fmin(q, m 2^-16) (the limit from m as an unsigned 32-bit integer, ucvtf #16), the
+// 64-bit lane taken whole: the walker's to_fixed on the same edges and random values.
+TEST(AsmSpanPersp, MinBeforeFixedPointMatchesTheWalker) {
+#if defined(__aarch64__)
+  std::mt19937 rng(19);
+  long checked = 0, wrong = 0;
+  auto check = [&](double q, int32_t m) {
+    const int32_t want = sb::simd::span_walk::to_fixed(q, m);
+    const float64x2_t lim = vcvtq_n_f64_u64(vmovl_u32(vdup_n_u32(uint32_t(m))), 16);
+    const uint64_t c = vgetq_lane_u64(vcvtq_n_u64_f64(vminq_f64(vdupq_n_f64(q), lim), 16), 0);
+    wrong += c != uint64_t(uint32_t(want));
+    ++checked;
+  };
+  to_fixed_cases(rng, check);
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld clamps before the conversion, %ld wrong\n", checked, wrong);
+#else
+  GTEST_SKIP() << "aarch64 only";
+#endif
+}
+
 #if !defined(__aarch64__)
 // asm/span_persp_arm.h's last-run steps as the ARMv7 tails take them in two parts
 // (last_ddi: ddf converted, its range test in integers; last_steps_i) against the walker's
