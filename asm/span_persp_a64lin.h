@@ -63,7 +63,7 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
   register uint64_t rn __asm__("x7") = uint64_t(uint32_t(n));
   register const double* rkm __asm__("x2") = &kMinZi;
   register const ShortLinPos* rtab __asm__("x11") = &kShortLinPos;
-  register uint64_t rx0 __asm__("x13");  // packed samples 0 .. 3 (sample 4 in x27)
+  register uint64_t rx0 __asm__("x13");  // packed samples 0 .. 3
   register uint64_t rx1 __asm__("x23");
   register uint64_t rx2 __asm__("x19");
   register uint64_t rx3 __asm__("x25");
@@ -205,7 +205,7 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
         "fmov x25, d24\n\t"
         "mov x3, v22.d[1]\n\t"
         "mov x1, v18.d[1]\n\t"
-        "fmov x27, d29\n\t"
+        "fmov x4, d29\n\t"
         "mov x6, v29.d[1]\n\t"
         "sub w20, w25, w19\n\t"
         "sub w15, w5, w3\n\t"
@@ -219,13 +219,13 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
         "cmp w22, #2\n\t"
         "asr w11, w10, #31\n\t"
         "asr w8, w9, #31\n\t"
-        "sub w27, w27, w25\n\t"
+        "sub w4, w4, w25\n\t"
         "add w10, w10, w11, lsr #28\n\t"
-        "csel w4, w20, w27, eq\n\t"
+        "csel w4, w20, w4, eq\n\t"
         "sub w6, w6, w5\n\t"
         "asr w17, w20, #31\n\t"
         "add w9, w9, w8, lsr #28\n\t"
-        "csel w7, w15, w6, eq\n\t"
+        "csel w6, w15, w6, eq\n\t"
         "add w24, w24, w14, lsr #28\n\t"
         "add w15, w15, w21, lsr #28\n\t"
         "csel w4, w24, w4, lt\n\t"
@@ -235,25 +235,25 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
         "orr x19, x19, x3, lsl #32\n\t"
         "asr w10, w10, #4\n\t"
         "sbfx x24, x24, #4, #28\n\t"
-        "csel w7, w12, w7, lt\n\t"
+        "csel w6, w12, w6, lt\n\t"
         "add x9, x9, x10, lsl #32\n\t"
         "asr w12, w12, #4\n\t"
         "sbfx x20, x20, #4, #28\n\t"
         "asr w15, w15, #4\n\t"
         "sdiv w4, w4, w28\n\t"
         "orr x13, x13, x1, lsl #32\n\t"
-        "sdiv w7, w7, w28\n\t"
+        "sdiv w6, w6, w28\n\t"
         "add x24, x24, x12, lsl #32\n\t"
         "add x20, x20, x15, lsl #32\n\t"
         "orr x23, x23, x2, lsl #32\n\t"
         "orr x25, x25, x5, lsl #32\n\t"
-        "lsl x7, x7, #32\n\t"
-        "add x28, x7, w4, sxtw"
+        "lsl x6, x6, #32\n\t"
+        "add x28, x6, w4, sxtw"
 // END lin_setup
       : "=&r"(rx0), "=&r"(rx1), "=&r"(rx2), "=&r"(rx3), "=&r"(rd0), "=&r"(rd1), "=&r"(rd2), "=&r"(rld), "+&r"(rkm),
-        "+&r"(rtab), "+&r"(rp), "+&r"(rn)
-      :
-      : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "x22", "x27", "v0", "v1", "v2", "v3",
+        "+&r"(rtab), "+&r"(rp)
+      : "r"(rn)
+      : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "x22", "v0", "v1", "v2", "v3",
         "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
         "v28", "v29", "v30", "v31");
   const uint64_t x0 = rx0, x1 = rx1, x2 = rx2, x3 = rx3, d0 = rd0, d1 = rd1, d2 = rd2, ld = rld;

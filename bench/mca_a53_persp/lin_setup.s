@@ -130,7 +130,7 @@ fmov x19, d22
 fmov x25, d24
 mov x3, v22.d[1]
 mov x1, v18.d[1]
-fmov x27, d29
+fmov x4, d29
 mov x6, v29.d[1]
 sub w20, w25, w19
 sub w15, w5, w3
@@ -144,13 +144,13 @@ asr w21, w15, #31
 cmp w22, #2
 asr w11, w10, #31
 asr w8, w9, #31
-sub w27, w27, w25
+sub w4, w4, w25
 add w10, w10, w11, lsr #28
-csel w4, w20, w27, eq
+csel w4, w20, w4, eq
 sub w6, w6, w5
 asr w17, w20, #31
 add w9, w9, w8, lsr #28
-csel w7, w15, w6, eq
+csel w6, w15, w6, eq
 add w24, w24, w14, lsr #28
 add w15, w15, w21, lsr #28
 csel w4, w24, w4, lt
@@ -160,17 +160,17 @@ add w20, w20, w17, lsr #28
 orr x19, x19, x3, lsl #32
 asr w10, w10, #4
 sbfx x24, x24, #4, #28
-csel w7, w12, w7, lt
+csel w6, w12, w6, lt
 add x9, x9, x10, lsl #32
 asr w12, w12, #4
 sbfx x20, x20, #4, #28
 asr w15, w15, #4
 sdiv w4, w4, w28
 orr x13, x13, x1, lsl #32
-sdiv w7, w7, w28
+sdiv w6, w6, w28
 add x24, x24, x12, lsl #32
 add x20, x20, x15, lsl #32
 orr x23, x23, x2, lsl #32
 orr x25, x25, x5, lsl #32
-lsl x7, x7, #32
-add x28, x7, w4, sxtw
+lsl x6, x6, #32
+add x28, x6, w4, sxtw
