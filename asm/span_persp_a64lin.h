@@ -55,10 +55,15 @@ static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && 
                   offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
               "lin_setup.s: PerspSpan offsets");
 
-// Linear spans of 17 .. 64 pixels (the contract of persp_short_inl).
-SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
-  const uint32_t w = uint32_t(width);
-  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+// The block's results for a linear span of n = 17 .. 64 pixels: the packed samples x_j (v 2^32
+// + u, j = 0 .. 3; sample 4 stays internal), the full runs' steps d_j = steps16_packed(x_j,
+// x_{j+1}) (j = 0 .. 2) and the last run's step ld (k = (n - 1) >> 4, from sample k to k + 1
+// in s = max(last - 1, 1) steps; packed as Run16 takes it). Samples past the last (j > k + 1)
+// and steps past the full runs are computed but meaningless.
+struct ShortLinSetup {
+  uint64_t x0, x1, x2, x3, d0, d1, d2, ld;
+};
+SB_INLINE ShortLinSetup short_lin_setup(int n, const PerspSpan& p) {
   register const PerspSpan* rp __asm__("x4") = &p;
   register uint64_t rn __asm__("x7") = uint64_t(uint32_t(n));
   register const double* rkm __asm__("x2") = &kMinZi;
@@ -226,16 +231,16 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
         "asr w17, w20, #31\n\t"
         "add w9, w9, w8, lsr #28\n\t"
         "csel w6, w15, w6, eq\n\t"
+        "csel w4, w24, w4, lt\n\t"
         "add w24, w24, w14, lsr #28\n\t"
         "add w15, w15, w21, lsr #28\n\t"
-        "csel w4, w24, w4, lt\n\t"
         "sbfx x9, x9, #4, #28\n\t"
+        "csel w6, w12, w6, lt\n\t"
         "add w12, w12, w16, lsr #28\n\t"
         "add w20, w20, w17, lsr #28\n\t"
         "orr x19, x19, x3, lsl #32\n\t"
         "asr w10, w10, #4\n\t"
         "sbfx x24, x24, #4, #28\n\t"
-        "csel w6, w12, w6, lt\n\t"
         "add x9, x9, x10, lsl #32\n\t"
         "asr w12, w12, #4\n\t"
         "sbfx x20, x20, #4, #28\n\t"
@@ -256,7 +261,15 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
       : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "x22", "v0", "v1", "v2", "v3",
         "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
         "v28", "v29", "v30", "v31");
-  const uint64_t x0 = rx0, x1 = rx1, x2 = rx2, x3 = rx3, d0 = rd0, d1 = rd1, d2 = rd2, ld = rld;
+  return ShortLinSetup{rx0, rx1, rx2, rx3, rd0, rd1, rd2, rld};
+}
+
+// Linear spans of 17 .. 64 pixels (the contract of persp_short_inl).
+SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const uint32_t w = uint32_t(width);
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  const ShortLinSetup r = short_lin_setup(n, p);
+  const uint64_t x0 = r.x0, x1 = r.x1, x2 = r.x2, x3 = r.x3, d0 = r.d0, d1 = r.d1, d2 = r.d2, ld = r.ld;
   // The last run (k = runs - 1) from sample k to k + 1 in s = max(last - 1, 1) steps, in the
   // block: run_steps' delta / s truncating per component (|delta| < 2^31; a one-pixel last
   // run draws no step: any divisor), packed as ld = dv 2^32 + sign-extended du.

@@ -151,16 +151,16 @@ sub w6, w6, w5
 asr w17, w20, #31
 add w9, w9, w8, lsr #28
 csel w6, w15, w6, eq
+csel w4, w24, w4, lt
 add w24, w24, w14, lsr #28
 add w15, w15, w21, lsr #28
-csel w4, w24, w4, lt
 sbfx x9, x9, #4, #28
+csel w6, w12, w6, lt
 add w12, w12, w16, lsr #28
 add w20, w20, w17, lsr #28
 orr x19, x19, x3, lsl #32
 asr w10, w10, #4
 sbfx x24, x24, #4, #28
-csel w6, w12, w6, lt
 add x9, x9, x10, lsl #32
 asr w12, w12, #4
 sbfx x20, x20, #4, #28
