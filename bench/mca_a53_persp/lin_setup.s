@@ -4,18 +4,17 @@ ldr q6, [x11]
 fmov d1, #16.0
 ld1r {v28.2d}, [x10]
 sub w22, w7, #1
-ld1r {v27.2d}, [x4]
-and w28, w22, #15
 ld1r {v31.2d}, [x2]
-cmp w28, #0
+and w28, w22, #15
 ld2r {v16.2d, v17.2d}, [x4]
 add x10, x4, #16
 ld1r {v26.2d}, [x4]
 ldp q4, q5, [x9, #-528]
-csinc w28, w28, wzr, ne
 fadd d2, d28, d1
 fadd v0.2d, v28.2d, v6.2d
 ld2 {v20.2d, v21.2d}, [x10]
+cmp w28, #0
+ld1r {v27.2d}, [x4]
 fadd d3, d2, d1
 ld2 {v22.2d, v23.2d}, [x10]
 fadd v7.2d, v0.2d, v4.2d
@@ -25,20 +24,20 @@ fadd d3, d3, d5
 ld2 {v24.2d, v25.2d}, [x10]
 fmla v27.2d, v17.2d, v7.2d
 fmla v22.2d, v23.2d, v7.d[0]
+ld2 {v29.2d, v30.2d}, [x10]
 fmaxnm v26.2d, v26.2d, v31.2d
 fmadd d28, d17, d3, d16
+fmla v24.2d, v25.2d, v7.d[1]
 fmaxnm v27.2d, v27.2d, v31.2d
-fmov x3, d26
-frecpe v2.2d, v26.2d
 ld2 {v18.2d, v19.2d}, [x10]
+frecpe v2.2d, v26.2d
 fmov v1.2d, #1.0
 fmaxnm d28, d28, d31
-mov x5, v26.d[1]
 fmov x9, d27
-ld2 {v29.2d, v30.2d}, [x10]
+fmov x3, d26
 frecps v5.2d, v26.2d, v2.2d
 frecpe v6.2d, v27.2d
-ldr d21, [x4, #56]
+mov x5, v26.d[1]
 frecpe d4, d28
 fmax v31.2d, v26.2d, v27.2d
 mov x8, v27.d[1]
@@ -47,41 +46,42 @@ fmul v2.2d, v2.2d, v5.2d
 frecps v16.2d, v27.2d, v6.2d
 frecps d17, d28, d4
 fmaxp d31, v31.2d
-add x3, x3, #1
 add x10, x10, #1
+add x3, x3, #1
 lsl x3, x3, #12
-add x8, x8, #1
 lsl x10, x10, #12
+add x8, x8, #1
 fmul v6.2d, v6.2d, v16.2d
-fmul d4, d4, d17
 fmax d31, d31, d28
-add x5, x5, #1
+fmul d4, d4, d17
+ldr d21, [x4, #56]
 clz x10, x10
-lsl x8, x8, #12
+add x5, x5, #1
 lsl x5, x5, #12
 clz x3, x3
+lsl x8, x8, #12
 frecps v5.2d, v26.2d, v2.2d
-frecps v16.2d, v27.2d, v6.2d
 frecps d17, d28, d4
-add x9, x9, #1
+frecps v16.2d, v27.2d, v6.2d
 clz x8, x8
+add x9, x9, #1
 lsl x9, x9, #12
 fmul v2.2d, v2.2d, v5.2d
 mov v5.16b, v1.16b
+fmul d4, d4, d17
 fmul v6.2d, v6.2d, v16.2d
 mov v16.16b, v1.16b
-fmul d4, d4, d17
 clz x9, x9
 clz x5, x5
-orr x9, x9, x8
 orr x3, x3, x5
+orr x9, x9, x8
 fmov x6, d31
-fmls v5.2d, v26.2d, v2.2d
 fmsub d17, d28, d4, d1
 fmls v16.2d, v27.2d, v6.2d
+fmls v5.2d, v26.2d, v2.2d
+uxtl v21.2d, v21.2s
 orr x3, x3, x9
 lsr x6, x6, #52
-fmla v29.2d, v30.2d, v3.d[0]
 fmadd d4, d4, d17, d4
 fmla v6.2d, v6.2d, v16.2d
 fmla v2.2d, v2.2d, v5.2d
@@ -90,17 +90,17 @@ mov v16.16b, v1.16b
 add x6, x6, #25
 orr x3, x3, x10
 lsr x6, x6, #5
-fmla v18.2d, v19.2d, v0.d[0]
+fmla v29.2d, v30.2d, v3.d[0]
 fmls v5.2d, v26.2d, v2.2d
 fmls v16.2d, v27.2d, v6.2d
 fmsub d17, d28, d4, d1
-uxtl v21.2d, v21.2s
 orr x3, x3, x6
-fmla v24.2d, v25.2d, v7.d[1]
+fmla v18.2d, v19.2d, v0.d[0]
 fmla v2.2d, v2.2d, v5.2d
 fmla v6.2d, v6.2d, v16.2d
 fmadd d4, d4, d17, d4
 ucvtf v21.2d, v21.2d, #16
+csinc w28, w28, wzr, ne
 lsr w22, w22, #4
 tbz x3, #6, 2f
 fdiv v2.2d, v1.2d, v26.2d
