@@ -13,9 +13,12 @@
 // - to_fixed: fcvtzu #16 of min(uv z, [umax, vmax] 2^-16) (the clamp at 0 folded into the
 //   unsigned conversion, NaN -> 0; the limit exact: ucvtf of a 32-bit integer; truncation is
 //   monotone, so this is min(fcvtzu(uv z), umax) as the vector code's uqxtn / umin: the same
-//   value, AsmSpanPersp.UnsignedFixedPoint...), each lane moved to an integer register;
+//   value, AsmSpanPersp.MinBeforeFixedPointMatchesTheWalker), each lane moved to an integer
+//   register;
 // - the full runs' steps steps16_packed (delta / 16 truncated per component, packed v 2^32 +
-//   sign-extended u) and the samples packed (v 2^32 + u) in integer registers.
+//   sign-extended u), the samples packed (v 2^32 + u) and the last run's step (k and s from
+//   n before the branch, its raw delta picked by csel, sdiv) in integer registers
+//   (AsmSpanPersp.ShortLinearSetupMatchesTheWalkersParts).
 // Registers are fixed (the .s file's names), the outputs where short_pass takes its first
 // pass (x13, x9, x23, x24) and, for the second pass, in registers short_pass keeps.
 #pragma once
@@ -258,9 +261,11 @@ SB_INLINE ShortLinSetup short_lin_setup(int n, const PerspSpan& p) {
       : "=&r"(rx0), "=&r"(rx1), "=&r"(rx2), "=&r"(rx3), "=&r"(rd0), "=&r"(rd1), "=&r"(rd2), "=&r"(rld), "+&r"(rkm),
         "+&r"(rtab), "+&r"(rp)
       : "r"(rn)
-      : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "x22", "v0", "v1", "v2", "v3",
-        "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27",
-        "v28", "v29", "v30", "v31");
+      // "memory": the block reads p, kMinZi and kShortLinPos ("m" operands for them left GCC
+      // no register for their addresses: an internal compiler error).
+      : "cc", "memory", "x1", "x3", "x5", "x6", "x8", "x10", "x12", "x14", "x15", "x16", "x17", "x21", "x22", "v0",
+        "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
+        "v26", "v27", "v28", "v29", "v30", "v31");
   return ShortLinSetup{rx0, rx1, rx2, rx3, rd0, rd1, rd2, rld};
 }
 
