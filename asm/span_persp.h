@@ -62,9 +62,10 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // ARM second-order last runs branch-free, from the quotient of one divide; on aarch64 that
 // quotient correctly rounded from a table of 1 / steps and two fused multiply-adds).
 // aarch64, spans of 17 .. 64 pixels: every sample's reciprocal first (second order: Newton
-// steps from frecpe, correctly rounded, proof in asm/span_persp_a64short.h; linear: divides), then
-// the conversions (and second-order steps) in vectors, linear steps in integer registers,
-// then the runs (pairs as one fixed-register asm pass). Longer spans (linear over 48
+// steps from frecpe, correctly rounded, proof in asm/span_persp_a64short.h), then the
+// conversions (and second-order steps) in vectors; linear: one asm block from the samples to
+// every run's step in integer registers (asm/span_persp_a64lin.h); then the runs (pairs as
+// one fixed-register asm pass). Longer spans (linear over 48
 // pixels, second-order over 80): each pass of 32 pixels one pipeline of eight 4-pixel groups
 // in inline asm, ordered for in-order cores, with the samples' double arithmetic in 2-lane
 // vectors and to_fixed as saturating integer clamps.

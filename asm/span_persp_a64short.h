@@ -11,6 +11,7 @@
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_a64pass.h"
+#include "asm/span_persp_a64lin.h"
 #endif
 #include "asm/span_persp_a64mid.h"
 
@@ -18,13 +19,12 @@ namespace sb::simd {
 namespace {
 
 #if defined(__aarch64__)
-// aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs): every sample's position, depth
-// and reciprocal first (two 2-lane and one scalar, without a divide: below; the linear block
-// is the second-order one without zck and the z sums), the conversions in vectors; second
-// order: the full runs' steps in vectors, the last run's by last_steps;
-// linear: every run's step in integer registers (steps16_packed, the last run's delta /
-// steps); all branch-free, then the runs drawn straight (pairs of runs as one short_pass,
-// asm/span_persp_a64pass.h). Positions as the walker computes
+// aarch64, short spans (17 .. kShortMax pixels: 2 .. 4 runs; linear steps: persp_short_lin,
+// asm/span_persp_a64lin.h, the same samples and reciprocals in one block with the steps):
+// every sample's position, depth and reciprocal first (two 2-lane and one scalar, without a
+// divide: below), the conversions in vectors; the full runs' steps in vectors, the last
+// run's by last_steps; all branch-free, then the runs drawn straight (pairs of runs as one
+// short_pass, asm/span_persp_a64pass.h). Positions as the walker computes
 // them: P_j = P_{j-1} + 16 (run j's first pixel), sample 1 at P_0 + 16 = P_1, sample j + 2 at
 // P_j + min(32, n - 16 j - 1) (16 + end_offset of the pixels after run j). Samples past the
 // last one (j > runs) are computed but unused; for a one-pixel last run the last sample is
@@ -184,6 +184,10 @@ SB_INLINE ShortStepsK3 short_steps_k3(int32x4_t S01, int32x4_t S23, int32x4_t S4
 }
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  if constexpr (!kCurve) {
+    persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
+    return;
+  }
   const double zc = p.second_order ? p.dzi : 0.0;
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
@@ -361,150 +365,6 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
         : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
           "v29", "v30", "v31");
     zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
-    S01 = rS01, S23 = rS23, S44 = rS44;
-  } else {
-    // Linear steps: the same block without zck and the z sums (the reciprocals by Newton, the
-    // divides only on the branch).
-    register int32x4_t rS01 __asm__("v5");
-    register int32x4_t rS23 __asm__("v19");
-    register int32x4_t rS44 __asm__("v7");
-    uint64_t t0, t1, t2, t5, t6, t7;
-    __asm__ volatile(
-        "sub %w[t5], %w[n], #1\n\t"
-        "cmp %w[t5], #32\n\t"
-        "mov %w[t7], #32\n\t"
-        "sub %w[t6], %w[n], #17\n\t"
-        "fmov d1, #16.0\n\t"
-        "ldr d0, [%[p], #48]\n\t"
-        "csel %w[t5], %w[t5], %w[t7], lt\n\t"
-        "cmp %w[t6], #32\n\t"
-        "add %[t0], %[p], #16\n\t"
-        "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
-        "ld1r {v26.2d}, [%[p]]\n\t"
-        "csel %w[t6], %w[t6], %w[t7], lt\n\t"
-        "fadd d2, d0, d1\n\t"
-        "sub %w[t7], %w[n], #33\n\t"
-        "scvtf d5, %w[t6]\n\t"
-        "scvtf d4, %w[t5]\n\t"
-        "ld1r {v27.2d}, [%[p]]\n\t"
-        "trn1 v0.2d, v0.2d, v2.2d\n\t"
-        "fadd d3, d2, d1\n\t"
-        "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
-        "fmov v1.2d, #1.0\n\t"
-        "scvtf d6, %w[t7]\n\t"
-        "trn1 v4.2d, v4.2d, v5.2d\n\t"
-        "ld1r {v31.2d}, [%[km]]\n\t"
-        "fmla v26.2d, v17.2d, v0.2d\n\t"
-        "fadd v7.2d, v0.2d, v4.2d\n\t"
-        "fadd d3, d3, d6\n\t"
-        "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
-        "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
-        "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
-        "fmla v27.2d, v17.2d, v7.2d\n\t"
-        "fmadd d28, d17, d3, d16\n\t"
-        "fmla v20.2d, v21.2d, v0.d[1]\n\t"
-        "frecpe v2.2d, v26.2d\n\t"
-        "mov %[t2], v26.d[1]\n\t"
-        "fmov %[t1], d26\n\t"
-        "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
-        "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
-        "fmaxnm d28, d28, d31\n\t"
-        "fmla v22.2d, v23.2d, v7.d[0]\n\t"
-        "frecps v5.2d, v26.2d, v2.2d\n\t"
-        "frecpe v6.2d, v27.2d\n\t"
-        "frecpe d4, d28\n\t"
-        "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
-        "fmax v31.2d, v26.2d, v27.2d\n\t"
-        "fmov %[t0], d28\n\t"
-        "fmov %[t7], d27\n\t"
-        "fmul v2.2d, v2.2d, v5.2d\n\t"
-        "frecps v16.2d, v27.2d, v6.2d\n\t"
-        "frecps d17, d28, d4\n\t"
-        "mov %[t6], v27.d[1]\n\t"
-        "fmaxp d31, v31.2d\n\t"
-        "add %[t1], %[t1], #1\n\t"
-        "add %[t0], %[t0], #1\n\t"
-        "lsl %[t1], %[t1], #12\n\t"
-        "lsl %[t0], %[t0], #12\n\t"
-        "add %[t6], %[t6], #1\n\t"
-        "frecps v5.2d, v26.2d, v2.2d\n\t"
-        "fmul d4, d4, d17\n\t"
-        "fmax d31, d31, d28\n\t"
-        "fmul v6.2d, v6.2d, v16.2d\n\t"
-        "add %[t2], %[t2], #1\n\t"
-        "add %[t7], %[t7], #1\n\t"
-        "lsl %[t2], %[t2], #12\n\t"
-        "lsl %[t6], %[t6], #12\n\t"
-        "lsl %[t7], %[t7], #12\n\t"
-        "frecps d17, d28, d4\n\t"
-        "frecps v16.2d, v27.2d, v6.2d\n\t"
-        "clz %[t1], %[t1]\n\t"
-        "clz %[t7], %[t7]\n\t"
-        "clz %[t6], %[t6]\n\t"
-        "fmul v2.2d, v2.2d, v5.2d\n\t"
-        "mov v5.16b, v1.16b\n\t"
-        "fmul d4, d4, d17\n\t"
-        "fmul v6.2d, v6.2d, v16.2d\n\t"
-        "mov v16.16b, v1.16b\n\t"
-        "fmov %[t5], d31\n\t"
-        "orr %[t7], %[t7], %[t6]\n\t"
-        "clz %[t2], %[t2]\n\t"
-        "orr %[t1], %[t1], %[t2]\n\t"
-        "fmsub d17, d28, d4, d1\n\t"
-        "fmls v5.2d, v26.2d, v2.2d\n\t"
-        "fmla v29.2d, v30.2d, v3.d[0]\n\t"
-        "fmls v16.2d, v27.2d, v6.2d\n\t"
-        "orr %[t1], %[t1], %[t7]\n\t"
-        "clz %[t0], %[t0]\n\t"
-        "lsr %[t5], %[t5], #52\n\t"
-        "fmla v2.2d, v2.2d, v5.2d\n\t"
-        "fmadd d4, d4, d17, d4\n\t"
-        "fmla v6.2d, v6.2d, v16.2d\n\t"
-        "mov v5.16b, v1.16b\n\t"
-        "mov v16.16b, v1.16b\n\t"
-        "add %[t5], %[t5], #0x19\n\t"
-        "orr %[t1], %[t1], %[t0]\n\t"
-        "lsr %[t5], %[t5], #5\n\t"
-        "fmla v18.2d, v19.2d, v0.d[0]\n\t"
-        "fmls v5.2d, v26.2d, v2.2d\n\t"
-        "fmls v16.2d, v27.2d, v6.2d\n\t"
-        "fmsub d17, d28, d4, d1\n\t"
-        "fmla v24.2d, v25.2d, v7.d[1]\n\t"
-        "orr %[t1], %[t1], %[t5]\n\t"
-        "fmla v2.2d, v2.2d, v5.2d\n\t"
-        "fmla v6.2d, v6.2d, v16.2d\n\t"
-        "fmadd d4, d4, d17, d4\n\t"
-        "tbz %[t1], #6, 2f\n\t"
-        "fdiv v2.2d, v1.2d, v26.2d\n\t"
-        "fdiv v6.2d, v1.2d, v27.2d\n\t"
-        "fdiv d4, d1, d28\n\t"
-        "2:\n\t"
-        "fmul v22.2d, v22.2d, v6.d[0]\n\t"
-        "fmul v18.2d, v18.2d, v2.d[0]\n\t"
-        "fmul v24.2d, v24.2d, v6.d[1]\n\t"
-        "fmul v29.2d, v29.2d, v4.d[0]\n\t"
-        "fmul v20.2d, v20.2d, v2.d[1]\n\t"
-        "add %[t0], %[p], #56\n\t"
-        "fcvtzu v18.2d, v18.2d, #16\n\t"
-        "fcvtzu v22.2d, v22.2d, #16\n\t"
-        "fcvtzu v29.2d, v29.2d, #16\n\t"
-        "fcvtzu v20.2d, v20.2d, #16\n\t"
-        "fcvtzu v24.2d, v24.2d, #16\n\t"
-        "uqxtn v5.2s, v18.2d\n\t"
-        "uqxtn v19.2s, v22.2d\n\t"
-        "uqxtn v7.2s, v29.2d\n\t"
-        "ld1r {v31.2d}, [%[t0]]\n\t"
-        "uqxtn2 v5.4s, v20.2d\n\t"
-        "uqxtn2 v19.4s, v24.2d\n\t"
-        "uqxtn2 v7.4s, v29.2d\n\t"
-        "umin v5.4s, v5.4s, v31.4s\n\t"
-        "umin v19.4s, v19.4s, v31.4s\n\t"
-        "umin v7.4s, v7.4s, v31.4s"
-        : "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5),
-          [t6] "=&r"(t6), [t7] "=&r"(t7)
-        : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
-        : "cc", "v0", "v1", "v2", "v3", "v4", "v6", "v16", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25",
-          "v26", "v27", "v28", "v29", "v30", "v31");
     S01 = rS01, S23 = rS23, S44 = rS44;
   }
   // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
@@ -703,60 +563,12 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
                uint32_t(lv.dd));
     }
   };
-  // Linear steps: the samples' packed [u, v] (v 2^32 + u, clamped: 0 <= u, v < 2^31) moved
-  // to integer registers, each full run's step steps16_packed's delta / 16, the last run's
-  // delta / steps (32-bit divides; steps 0, a one-pixel last run, draws no step): in the
-  // integer unit, not a chain of vector ops (the A53 waits out each one's latency).
-  auto rest_lin = [&](auto kc) SB_LAMBDA_INLINE {
-    constexpr int k = decltype(kc)::value;
-    const uint64x2_t st01 = vreinterpretq_u64_s32(S01), st23 = vreinterpretq_u64_s32(S23);
-    const uint64_t x[5] = {vgetq_lane_u64(st01, 0), vgetq_lane_u64(st01, 1), vgetq_lane_u64(st23, 0),
-                           vgetq_lane_u64(st23, 1), vgetq_lane_u64(vreinterpretq_u64_s32(S44), 0)};
-    const uint64_t xa = x[k], xb = x[k + 1];
-    const int32_t s = last > 2 ? last - 1 : 1;
-    const int32_t ldu = (int32_t(uint32_t(xb)) - int32_t(uint32_t(xa))) / s;
-    const int32_t ldv = (int32_t(xb >> 32) - int32_t(xa >> 32)) / s;
-    const uint64_t ld = (uint64_t(uint32_t(ldv)) << 32) + uint64_t(int64_t(ldu));
-    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
-      short_pass<false>(d, texels, uint64_t(width), a_uv, a_d, 0, b_uv, b_d, 0);
-    };
-    if (k == 1) {
-      Run16<false> run(x[0], steps16_packed(x[0], x[1]), 0, typename Run16<false>::Packed{});
-      run.draw(dest, texels, w);
-    } else {
-      const uint64_t d1 = steps16_packed(x[1], x[2]);
-      if (k == 3 && last == 16) {
-        pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
-        pass(dest + 32, x[2], steps16_packed(x[2], x[3]), x[3], ld);
-        return;
-      }
-      pass(dest, x[0], steps16_packed(x[0], x[1]), x[1], d1);
-      if (k > 2) {
-        Run16<false> run(x[2], steps16_packed(x[2], x[3]), 0, typename Run16<false>::Packed{});
-        run.draw(dest + 32, texels, w);
-      }
-    }
-    dest += 16 * k;
-    if (last == 16) {
-      Run16<false> run(xa, ld, 0, typename Run16<false>::Packed{});
-      run.draw(dest, texels, w);
-    } else {
-      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), uint32_t(ldu), uint32_t(ldv), 0, 0);
-    }
-  };
-  auto go = [&](auto kc) SB_LAMBDA_INLINE {
-    if constexpr (kCurve) {
-      rest(kc);
-    } else {
-      rest_lin(kc);
-    }
-  };
   if (runs == 2) {
-    go(std::integral_constant<int, 1>{});
+    rest(std::integral_constant<int, 1>{});
   } else if (runs == 3) {
-    go(std::integral_constant<int, 2>{});
+    rest(std::integral_constant<int, 2>{});
   } else {
-    go(std::integral_constant<int, 3>{});
+    rest(std::integral_constant<int, 3>{});
   }
 }
 // The same, out of line (persp_fast's linear instance keeps a call to it); the

@@ -323,6 +323,28 @@ TEST(AsmSpanPersp, UnsignedFixedPointClampMatchesTheWalker) {
 #endif
 }
 
+// aarch64 short linear spans (asm/span_persp_a64lin.h) clamp before converting: fcvtzu #16
+// of fmin(q, m 2^-16) (the limit from m as an unsigned 32-bit integer, ucvtf #16), the
+// 64-bit lane taken whole: the walker's to_fixed on the same edges and random values.
+TEST(AsmSpanPersp, MinBeforeFixedPointMatchesTheWalker) {
+#if defined(__aarch64__)
+  std::mt19937 rng(19);
+  long checked = 0, wrong = 0;
+  auto check = [&](double q, int32_t m) {
+    const int32_t want = sb::simd::span_walk::to_fixed(q, m);
+    const float64x2_t lim = vcvtq_n_f64_u64(vmovl_u32(vdup_n_u32(uint32_t(m))), 16);
+    const uint64_t c = vgetq_lane_u64(vcvtq_n_u64_f64(vminq_f64(vdupq_n_f64(q), lim), 16), 0);
+    wrong += c != uint64_t(uint32_t(want));
+    ++checked;
+  };
+  to_fixed_cases(rng, check);
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld clamps before the conversion, %ld wrong\n", checked, wrong);
+#else
+  GTEST_SKIP() << "aarch64 only";
+#endif
+}
+
 #if !defined(__aarch64__)
 // asm/span_persp_arm.h's last-run steps as the ARMv7 tails take them in two parts
 // (last_ddi: ddf converted, its range test in integers; last_steps_i) against the walker's
@@ -655,6 +677,109 @@ TEST(AsmSpanPersp, ShortSpansDivideWhereTheReciprocalCannot) {
               cases);
 }
 
+#if defined(__aarch64__)
+// asm/span_persp_a64lin.h's setup block (short linear spans) against the walker's parts: the
+// samples as asm/span_persp.cpp's exact() at the walker's positions, the full runs' steps as
+// steps16_packed, the last run's as run_steps (delta / steps per component, truncating):
+// every length 17 .. 64, samples rising, falling, equal and at the clamps. Sensitive to a
+// step one unit off, which drawn texels rarely show.
+TEST(AsmSpanPersp, ShortLinearSetupMatchesTheWalkersParts) {
+  using sb::simd::span_walk::kMinZi;
+  using sb::simd::span_walk::to_fixed;
+  std::mt19937 rng(29);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  long checked = 0, wrong = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    for (int n = 17; n <= 64; ++n) {
+      sb::simd::PerspSpan p{};
+      p.zi0 = 0.01 * (1.5 + r(rng));
+      p.dzi = trial % 7 == 0 ? 0.0 : p.zi0 * 0.02 * r(rng);
+      const double scale = std::ldexp(1.0, int(rng() % 12));
+      p.uz0 = p.zi0 * 65536.0 * 64.0 * (0.5 + 0.6 * r(rng)) * scale;
+      p.duz = p.zi0 * 65536.0 * r(rng) * scale * (trial % 3 == 0 ? 0.0 : 1.0);
+      p.vz0 = p.zi0 * 65536.0 * 64.0 * (0.5 + 0.6 * r(rng)) * scale;
+      p.dvz = p.zi0 * 65536.0 * r(rng) * scale;
+      p.px0 = double(rng() % 2000) + (rng() & 1 ? 0.5 : 0.0);
+      p.umax = trial % 5 == 0 ? int32_t(rng() % (1u << 23)) : INT32_MAX - 65535;
+      p.vmax = trial % 11 == 0 ? 0 : int32_t((64u << 16) - 1) * int32_t(1 + rng() % 64);
+      auto sample = [&](double px) {
+        double zi = p.zi0 + p.dzi * px;
+        if (!(zi > kMinZi)) zi = kMinZi;
+        const double z = 1.0 / zi;
+        const uint32_t u = uint32_t(to_fixed((p.uz0 + p.duz * px) * z, p.umax));
+        const uint32_t v = uint32_t(to_fixed((p.vz0 + p.dvz * px) * z, p.vmax));
+        return uint64_t(v) << 32 | u;
+      };
+      // The walker's positions: run starts P_j = P_{j-1} + 16, each run's end sample one
+      // addition from its start (16, or the last run's last pixel).
+      uint64_t x[5];
+      double pj = p.px0;
+      x[0] = sample(pj);
+      for (int j = 0; j < 4; ++j) {
+        const int left = n - 16 * j;
+        x[j + 1] = left > 1 ? sample(pj + double(left > 16 ? 16 : left - 1)) : x[j];
+        pj += 16.0;
+      }
+      const int k = (n - 1) >> 4, last = n - 16 * k, s = last > 2 ? last - 1 : 1;
+      auto lo = [](uint64_t a) { return int32_t(uint32_t(a)); };
+      auto hi = [](uint64_t a) { return int32_t(a >> 32); };
+      auto packed = [](int32_t du, int32_t dv) { return (uint64_t(uint32_t(dv)) << 32) + uint64_t(int64_t(du)); };
+      const sb::simd::ShortLinSetup got = sb::simd::short_lin_setup(n, p);
+      const uint64_t want_ld = packed((lo(x[k + 1]) - lo(x[k])) / s, (hi(x[k + 1]) - hi(x[k])) / s);
+      bool bad = got.ld != want_ld;
+      const uint64_t gx[4] = {got.x0, got.x1, got.x2, got.x3}, gd[3] = {got.d0, got.d1, got.d2};
+      for (int j = 0; j <= k; ++j) bad |= gx[j] != x[j];
+      for (int j = 0; j < k; ++j) bad |= gd[j] != sb::simd::steps16_packed(x[j], x[j + 1]);
+      if (bad && wrong < 5) ADD_FAILURE() << "n " << n << " trial " << trial;
+      wrong += bad;
+      ++checked;
+    }
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld short linear setups, %ld wrong\n", checked, wrong);
+}
+#endif
+
+// Linear spans of every short length (17 .. 64: each run count and last-run length) with
+// texture steps of both signs and sizes, u and v each rising or falling: every variant
+// against the walker (surface_span_persp_scalar), guard bytes after the span untouched.
+TEST(AsmSpanPersp, ShortLinearSpansMatchTheWalkerBothWays) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  const int sw = 64, sh = 64;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  std::vector<uint8_t> ref(80), got(80);
+  int cases = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    for (int n = 17; n <= 64; ++n) {
+      sb::simd::PerspSpan p{};
+      p.zi0 = 0.01 * (1.5 + r(rng));
+      p.dzi = p.zi0 * 0.01 * r(rng);
+      const double su = (trial & 1 ? -1.0 : 1.0) * (trial % 5 + 1) * 40.0, sv = (trial & 2 ? -1.0 : 1.0) * 30.0;
+      p.uz0 = p.zi0 * sw * 65536.0 * (0.5 + 0.4 * r(rng));
+      p.duz = p.zi0 * 65536.0 * (su + r(rng)) / 64.0 + p.dzi * p.uz0 / p.zi0;
+      p.vz0 = p.zi0 * sh * 65536.0 * (0.5 + 0.4 * r(rng));
+      p.dvz = p.zi0 * 65536.0 * (sv + r(rng)) / 64.0 + p.dzi * p.vz0 / p.zi0;
+      p.px0 = double(rng() % 300) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1);
+      p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+      p.second_order = false;
+      std::fill(ref.begin(), ref.end(), 0xa5);
+      sb::simd::surface_span_persp_scalar(ref.data(), n, surf.data(), sw, sh, p);
+      for (int v = 0; v < sb::simd::variant_count(); ++v) {
+        const sb::simd::Variant var = sb::simd::variant(v);
+        if (!var.kernels || !var.supported) continue;
+        std::fill(got.begin(), got.end(), 0xa5);
+        var.kernels->surface_span_persp(got.data(), n, surf.data(), sw, sh, p);
+        ASSERT_EQ(ref, got) << var.kernels->name << " n " << n << " trial " << trial;
+      }
+      ++cases;
+    }
+  }
+  std::printf("[ asm      ] span_persp: %d short linear spans, every variant identical\n", cases);
+}
+
 TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
   const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
   const double odd[] = {0.0, -0.0, 1e-300, -1e300, 1e300, inf, -inf, nan, 3.5, -2.25e-5};
@@ -812,7 +937,7 @@ TEST(AsmSpanPersp, SurfaceSpanFastMatchesScalar) {
   std::mt19937 rng(4242);
   const int lengths[] = {0, 1, 2, 3, 15, 16, 17, 31, 32, 33, 47, 48, 49, 320, 1919, 1920};
   int cases = 0, curved = 0;
-  for (int trial = 0; trial < 400; ++trial) {
+  for (int trial = 0; trial < 3000; ++trial) {
     const int w = 1 + int(rng() % 600), h = 1 + int(rng() % 300);
     std::vector<uint8_t> surf(size_t(w) * h);
     for (auto& b : surf) b = uint8_t(rng());
