@@ -119,120 +119,132 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // A register is reused only after its value's last read (in order: each vcvt into s_2j /
 // s_2j+1 reads a product whose register is no longer needed). The multiply-adds are fused,
 // as the compiled walker's are (GCC contracts them; the tests compare bit for bit).
-#define SB_V7_CLAMP(d) \
-  "vcmpe.f64 " d ", d24\n\t" \
-  "vmrs APSR_nzcv, fpscr\n\t" \
-  "it le\n\t" \
-  "vmovle.f64 " d ", d24\n\t"
 // r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
 SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d8");
   __asm__ volatile(
-      "vld1.64 {d16-d19}, [%[p]]\n\t"
-      "vld1.64 {d24-d27}, [%[c]]\n\t"
-      "vld1.64 {d20-d23}, [%[p2]]\n\t"
+      // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search_a9.py;
+      // the model issues VFP / NEON in order: each waits least on its inputs).
       "vmov.f64 d28, #16.0\n\t"
-      "vadd.f64 d29, d28, d28\n\t"  // 32
+      "vld1.64 {d20-d23}, [%[p2]]\n\t"
+      "vadd.f64 d29, d28, d28\n\t"
+      "vld1.64 {d16-d19}, [%[p]]\n\t"
+      "vadd.f64 d30, d22, d28\n\t"
       "vmov s0, %[nm33]\n\t"
-      "vadd.f64 d30, d22, d28\n\t"  // x1 = P + 16
-      "vcvt.f64.s32 d0, s0\n\t"  // n - 33
-      "vadd.f64 d31, d22, d29\n\t"  // x2 = P + 32
-      "vsub.f64 d10, d0, d28\n\t"  // steps n - 49 = (n - 33) - 16 (exact)
+      "vcvt.f64.s32 d0, s0\n\t"
+      "vld1.64 {d24-d27}, [%[c]]\n\t"
       "vmov.f64 d5, d16\n\t"
-      "vfma.f64 d5, d17, d22\n\t"  // zi0
-      "vadd.f64 d29, d30, d29\n\t"  // x3 = x1 + 32
-      "vadd.f64 d28, d30, d28\n\t"  // P2 = x1 + 16
-      "vmov.f64 d6, d16\n\t"
-      "vfma.f64 d6, d17, d30\n\t"  // zi1
+      "vfma.f64 d5, d17, d22\n\t"
+      "vadd.f64 d31, d22, d29\n\t"
+      "vadd.f64 d29, d30, d29\n\t"
+      "vsub.f64 d10, d0, d28\n\t"
       "vmov.f64 d7, d16\n\t"
-      "vfma.f64 d7, d17, d31\n\t"  // zi2
-      "vadd.f64 d28, d28, d0\n\t"  // x4 = P2 + (n - 33)
+      "vadd.f64 d28, d30, d28\n\t"
+      "vmov.f64 d6, d16\n\t"
+      "vfma.f64 d6, d17, d30\n\t"
+      "vfma.f64 d7, d17, d31\n\t"
+      "vcmpe.f64 d5, d24\n\t"
       "vmov.f64 d1, d16\n\t"
-      "vfma.f64 d1, d17, d29\n\t"  // zi3
-      "vmul.f64 d26, d17, d26\n\t"  // zck
-      "vmul.f64 d27, d17, d27\n\t"  // zh
-      "vfma.f64 d16, d17, d28\n\t"  // zi4 (zrow's register)
-      SB_V7_CLAMP("d5") SB_V7_CLAMP("d6") SB_V7_CLAMP("d7") SB_V7_CLAMP("d1") SB_V7_CLAMP("d16")
+      "vmul.f64 d26, d17, d26\n\t"
+      "vmul.f64 d27, d17, d27\n\t"
+      "vadd.f64 d28, d28, d0\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d5, d24\n\t"
+      "vfma.f64 d1, d17, d29\n\t"
+      "vfma.f64 d16, d17, d28\n\t"
+      "vcmpe.f64 d6, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d6, d24\n\t"
       "vmov.f64 d17, #1.0\n\t"
+      "vcmpe.f64 d7, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d7, d24\n\t"
+      "vcmpe.f64 d1, d24\n\t"
+      "vdiv.f64 d7, d17, d7\n\t"
       "vdiv.f64 d5, d17, d5\n\t"
       "vdiv.f64 d6, d17, d6\n\t"
-      "vdiv.f64 d7, d17, d7\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "vcmpe.f64 d16, d24\n\t"
+      "it le\n\t"
+      "vmovle.f64 d1, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
       "vdiv.f64 d1, d17, d1\n\t"
+      "it le\n\t"
+      "vmovle.f64 d16, d24\n\t"
       "vdiv.f64 d16, d17, d16\n\t"
-      // Under the divides: t and s of every sample.
-      "vmov.f64 d17, d18\n\t"
-      "vmov.f64 d24, d20\n\t"
-      "vfma.f64 d17, d19, d22\n\t"
-      "vfma.f64 d24, d21, d22\n\t"
-      "vmov.f64 d22, d18\n\t"
       "vmov.f64 d2, d20\n\t"
+      "vmov.f64 d17, d18\n\t"
+      "vmov.f64 d3, d20\n\t"
+      "vfma.f64 d3, d21, d31\n\t"
+      "vmov.f64 d24, d20\n\t"
+      "vfma.f64 d24, d21, d22\n\t"
+      "vfma.f64 d17, d19, d22\n\t"
+      "vmov.f64 d22, d18\n\t"
       "vfma.f64 d22, d19, d30\n\t"
       "vfma.f64 d2, d21, d30\n\t"
       "vmov.f64 d30, d18\n\t"
-      "vmov.f64 d3, d20\n\t"
-      "vfma.f64 d30, d19, d31\n\t"
-      "vfma.f64 d3, d21, d31\n\t"
-      "vmov.f64 d31, d18\n\t"
       "vmov.f64 d4, d20\n\t"
-      "vfma.f64 d31, d19, d29\n\t"
       "vfma.f64 d4, d21, d29\n\t"
-      "vfma.f64 d18, d19, d28\n\t"
+      "vfma.f64 d30, d19, d31\n\t"
+      "vmov.f64 d31, d18\n\t"
       "vfma.f64 d20, d21, d28\n\t"
-      // Depth sums and curve factors, z 2^16, the products.
+      "vfma.f64 d18, d19, d28\n\t"
+      "vfma.f64 d31, d19, d29\n\t"
       "vadd.f64 d19, d5, d6\n\t"
-      "vadd.f64 d21, d6, d7\n\t"
       "vmul.f64 d5, d5, d25\n\t"
+      "vadd.f64 d21, d6, d7\n\t"
       "vmul.f64 d6, d6, d25\n\t"
       "vadd.f64 d28, d7, d1\n\t"
-      "vadd.f64 d29, d1, d16\n\t"
       "vmul.f64 d7, d7, d25\n\t"
-      "vmul.f64 d1, d1, d25\n\t"
+      "vadd.f64 d29, d1, d16\n\t"
       "vmul.f64 d16, d16, d25\n\t"
       "vmul.f64 d17, d17, d5\n\t"
+      "vmul.f64 d1, d1, d25\n\t"
       "vmul.f64 d24, d24, d5\n\t"
+      "vmul.f64 d30, d30, d7\n\t"
       "vmul.f64 d22, d22, d6\n\t"
       "vmul.f64 d2, d2, d6\n\t"
-      "vmul.f64 d30, d30, d7\n\t"
-      "vmul.f64 d3, d3, d7\n\t"
-      "vmul.f64 d31, d31, d1\n\t"
-      "vmul.f64 d4, d4, d1\n\t"
-      "vmul.f64 d18, d18, d16\n\t"
-      "vmul.f64 d20, d20, d16\n\t"
-      "vmul.f64 d19, d19, d26\n\t"  // c_0
-      // The conversions (each product's register is dead once read; s_2j, s_2j+1 = d_j).
       "vcvt.u32.f64 s0, d17\n\t"
+      "vmul.f64 d18, d18, d16\n\t"
       "vcvt.u32.f64 s1, d24\n\t"
+      "vmul.f64 d5, d29, d27\n\t"
+      "vmul.f64 d3, d3, d7\n\t"
+      "vmul.f64 d4, d4, d1\n\t"
+      "vmul.f64 d31, d31, d1\n\t"
       "vcvt.u32.f64 s2, d22\n\t"
+      "vmul.f64 d20, d20, d16\n\t"
       "vcvt.u32.f64 s3, d2\n\t"
-      "vmul.f64 d5, d29, d27\n\t"  // curve
-      "vmul.f64 d29, d28, d26\n\t"  // c_2
+      "vcvt.u32.f64 s4, d30\n\t"
       "vmin.u32 d0, d0, d23\n\t"
       "vmin.u32 d1, d1, d23\n\t"
-      "vcvt.u32.f64 s4, d30\n\t"
       "vcvt.u32.f64 s5, d3\n\t"
-      "vsub.i32 d6, d1, d0\n\t"  // run 0's [du, dv]
+      "vmul.f64 d19, d19, d26\n\t"
       "vcvt.u32.f64 s6, d31\n\t"
       "vcvt.u32.f64 s7, d4\n\t"
+      "vsub.i32 d6, d1, d0\n\t"
+      "vcvt.u32.f64 s8, d18\n\t"
+      "vmin.u32 d3, d3, d23\n\t"
+      "vcvt.u32.f64 s9, d20\n\t"
       "vcvt.f64.s32 d17, s12\n\t"
       "vcvt.f64.s32 d24, s13\n\t"
-      "vmul.f64 d28, d21, d26\n\t"  // c_1
-      "vcvt.u32.f64 s8, d18\n\t"
-      "vcvt.u32.f64 s9, d20\n\t"
+      "vmul.f64 d29, d28, d26\n\t"
+      "vmin.u32 d4, d4, d23\n\t"
       "vmul.f64 d17, d17, d19\n\t"
       "vmul.f64 d24, d24, d19\n\t"
+      "vsub.i32 d7, d4, d3\n\t"
       "vmin.u32 d2, d2, d23\n\t"
-      "vmin.u32 d3, d3, d23\n\t"
-      "vmin.u32 d4, d4, d23\n\t"
+      "vmul.f64 d28, d21, d26\n\t"
+      "vcvt.f64.s32 d9, s15\n\t"
+      "vcvt.f64.s32 d8, s14\n\t"
       "vcvt.s32.f64 s12, d17\n\t"
       "vcvt.s32.f64 s13, d24\n\t"
-      // The last run's q = double(delta) / steps (last_quotient), delta = sample 4 - sample 3.
-      "vsub.i32 d7, d4, d3\n\t"
-      "vcvt.f64.s32 d8, s14\n\t"
-      "vcvt.f64.s32 d9, s15\n\t"
-      "vdiv.f64 d8, d8, d10\n\t"
-      "vdiv.f64 d9, d9, d10"
+      "vdiv.f64 d9, d9, d10\n\t"
+      "vdiv.f64 d8, d8, d10"
       : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
       : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p),
         "m"(kMidConsts)
@@ -241,7 +253,6 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
   *q89 = o9;
 }
-#undef SB_V7_CLAMP
 
 SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
   return {uint32_t(u), uint32_t(v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd), uint32_t(sv.dd)};
