@@ -2,8 +2,12 @@
 # bench/order_search_a9.py: searches an instruction order of one straight-line Thumb-2 + NEON
 # block against llvm-mca's Cortex-A9 model (as bench/count.sh times armhf blocks).
 #
-#   order_search_a9.py IN.s OUT.s [EVALS]
+#   order_search_a9.py IN.s OUT.s [EVALS] [--runs]
 #
+# --runs: IN.s is a hot block of the ARMv7 50 .. 64 px spans as bench/count.sh dumps it
+# (SB_MCA_DUMP); only the lines of a run's asm statement move, within it (a run: from a
+# smulbt through the pixel groups and the VFP / NEON lines among and after them); the
+# compiler's code between runs stays.
 # IN.s: one instruction a line (no IT: a conditional move that an IT block guards is written
 # unconditionally with the comment `@flags`, which makes it read the flags). Memory: loads and
 # stores keep their order unless both carry different tags (`@m=NAME`); ldrb (texel gathers)
@@ -128,7 +132,80 @@ def search(lines,evals=1500,seed=1,fixed_head=0,out=None,fixed_tail=None):
             best=c; order=o
             if out: open(out,'w').write("\n".join(lines[i] for i in order)+"\n")
     return [lines[i] for i in order],best
+PIX = ('smulbt', 'uxtah', 'add', 'ldrb', 'orr', 'str')
+
+
+def run_regions(lines):
+    """Per line: the index of its run statement, or -1 (fixed)."""
+    n = len(lines)
+    reg = [-1] * n
+    r = -1
+    i = 0
+    while i < n:
+        if lines[i].startswith('smulbt') and (r < 0 or reg[i - 1] != r):
+            r += 1
+            j = i
+            last = i
+            while j < n:
+                op = lines[j].split()[0].split('.')[0]
+                if op in PIX or lines[j].startswith('v'):
+                    if op == 'str' or lines[j].startswith('v'):
+                        last = j
+                    j += 1
+                else:
+                    break
+            for k in range(i, last + 1):
+                reg[k] = r
+            i = last + 1
+        else:
+            i += 1
+    return reg
+
+
+def search_runs(lines, evals, seed, out):
+    random.seed(seed)
+    reg = run_regions(lines)
+    n = len(lines)
+    pred = build(lines)
+    succ = [set() for _ in range(n)]
+    for j in range(n):
+        for i in pred[j]:
+            succ[i].add(j)
+    order = list(range(n))
+    best = mca(lines)
+    print('start', best, flush=True)
+    for e in range(evals):
+        pos = {k: p for p, k in enumerate(order)}
+        k = random.randrange(n)
+        if reg[k] < 0:
+            continue
+        rpos = [pos[i] for i in range(n) if reg[i] == reg[k]]
+        lo = max([pos[i] for i in pred[k]] + [min(rpos) - 1]) + 1
+        hi = min([pos[i] for i in succ[k]] + [max(rpos) + 1]) - 1
+        if hi <= lo:
+            continue
+        t = random.randint(lo, hi)
+        if t == pos[k]:
+            continue
+        o = order[:]
+        o.remove(k)
+        o.insert(t, k)
+        c = mca([lines[i] for i in o])
+        if c <= best:
+            if c < best:
+                print(e, c, flush=True)
+            best = c
+            order = o
+            open(out, 'w').write("\n".join(lines[i] for i in order) + "\n")
+    return best
+
+
 if __name__=='__main__':
+    if '--runs' in sys.argv:
+        sys.argv.remove('--runs')
+        src = [l.strip() for l in open(sys.argv[1]) if l.strip() and not l.startswith('.')]
+        print('best', search_runs(src, int(sys.argv[3]) if len(sys.argv) > 3 else 1500, 1, sys.argv[2]))
+        sys.exit(0)
     src=[l.strip() for l in open(sys.argv[1]) if l.strip() and not l.startswith('.')]
     res,b=search(src,int(sys.argv[3]) if len(sys.argv)>3 else 1500,out=sys.argv[2])
     print('best',b)
