@@ -89,12 +89,20 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
 #define SB_V7_HI(off) \
   SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #16\n\t" SB_V7_PX("%[b]") "orr %[a], %[a], %[b], lsl #24\n\t" \
   "str %[a], [%[d], #" off "]\n\t"
+// The last two pixels: their steps are never read (pixel 14 steps u and v only, 15 none).
+#define SB_V7_HI_END(off)                                                                         \
+  "smulbt %[b], %[w], %[v]\n\tuxtah %[b], %[b], %[u], ror #16\n\tadd %[u], %[u], %[du]\n\t" \
+  "add %[v], %[v], %[dv]\n\tldrb %[b], [%[tx], %[b]]\n\torr %[a], %[a], %[b], lsl #16\n\t"    \
+  "smulbt %[b], %[w], %[v]\n\tuxtah %[b], %[b], %[u], ror #16\n\tldrb %[b], [%[tx], %[b]]\n\t"  \
+  "orr %[a], %[a], %[b], lsl #24\n\tstr %[a], [%[d], #" off "]\n\t"
 #define SB_V7_RUN(F0, F1, F2, F3, F4, F5, F6, F7) \
-  SB_V7_LO F0 SB_V7_HI("0") F1 SB_V7_LO F2 SB_V7_HI("4") F3 SB_V7_LO F4 SB_V7_HI("8") F5 SB_V7_LO F6 SB_V7_HI("12") F7
+  SB_V7_LO F0 SB_V7_HI("0") F1 SB_V7_LO F2 SB_V7_HI("4") F3 SB_V7_LO F4 SB_V7_HI("8") F5 SB_V7_LO F6 \
+      SB_V7_HI_END("12") F7
 // persp_mid_v7's runs 0 .. 2 are written out: each the instructions SB_V7_RUN gives it (the
-// pixel groups and its F0 .. F7 work), in an order bench/order_search_a9.py found within the
-// statement against the Cortex-A9 model (on the blocks as qemu cuts them; every reordering
-// keeps each register's and memory's order of reads and writes). The VFP / NEON registers are
+// pixel groups, the last two pixels without their unread steps, and its F0 .. F7 work), in an
+// order bench/order_search_a9.py found within the statement against the Cortex-A9 model (on
+// the blocks as qemu cuts them; every reordering keeps each register's and memory's order of
+// reads and writes). The VFP / NEON registers are
 // named as bound (uv1 .. uv4 = d1 .. d4, curve = d5, c1 = d28, c2 = d29, L = sd = d10; those
 // stay listed as operands).
 #define SB_V7_RUN_OPERANDS(dst)                                                               \
@@ -437,20 +445,14 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[u], %[du]\n\t"
                      "vbsl q12, q9, q13\n\t"
-                     "add %[dv], %[ddv]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
-                     "add %[du], %[ddu]\n\t"
                      "vshr.u32 q12, q12, #4\n\t"
                      "veor q12, q12, q15\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
-                     "add %[u], %[du]\n\t"
-                     "add %[v], %[dv]\n\t"
                      "vsub.i32 q12, q12, q15\n\t"
-                     "add %[dv], %[ddv]\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "add %[du], %[ddu]\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), "=&w"(d2r), "=&w"(dd1r), "=&w"(dd2r)
                      : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1),
@@ -631,17 +633,11 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "add %[v], %[dv]\n\t"
-                     "add %[dv], %[ddv]\n\t"
-                     "add %[du], %[ddu]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "add %[v], %[dv]\n\t"
                      "vand d19, d19, d20\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "add %[u], %[du]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "add %[dv], %[ddv]\n\t"
-                     "add %[du], %[ddu]\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      : SB_V7_RUN_OPERANDS(d1), [qq] "+w"(qq), [sd] "=w"(sdr), "=w"(h9), "=w"(h10), "=w"(h11),
                        "=w"(h12), "=w"(h13), "=w"(h14), "=w"(h15)
@@ -793,18 +789,12 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[v], %[dv]\n\t"
                      "add %[u], %[du]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
-                     "add %[dv], %[ddv]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "add %[du], %[ddu]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "add %[u], %[du]\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      "vmov %[a], %[b], d16\n\t"
-                     "add %[v], %[dv]\n\t"
-                     "add %[dv], %[ddv]\n\t"
-                     "add %[du], %[ddu]\n\t"
                      "vmov %[du], %[dv], d8\n\t"
                      : SB_V7_RUN_OPERANDS(d2), [qq] "+w"(qq), "+w"(h9), "+w"(h12), "+w"(h14), "+w"(h15)
                      : SB_V7_RUN_INPUTS(d2), [L] "w"(sdr), "w"(h10), "w"(h11), "w"(h13)
@@ -823,6 +813,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
 #undef SB_V7_RUN_INPUTS
 #undef SB_V7_RUN_OPERANDS
 #undef SB_V7_RUN
+#undef SB_V7_HI_END
 #undef SB_V7_HI
 #undef SB_V7_LO
 #undef SB_V7_PX
