@@ -3,7 +3,7 @@
 // full runs' steps, then the runs drawn by short_pass (asm/span_persp_a64pass.h). Internal:
 // included by asm/span_persp_a64short.h (it uses asm/span_persp_run.h's runs).
 //
-// The block (written from bench/mca_a53_persp/lin_setup.s by lin_inline.py there):
+// The block (written from bench/mca_a53_persp/lin_setup.s by bench/to_inline.py):
 // - positions as the walker computes them (asm/span_walk.h: px += 16 per run, each sample one
 //   addition from its run's start): [P_0, P_1] = [P_0, P_0] + [0, 16], samples 2, 3 at
 //   [P_0, P_1] + [o_0, o_1], sample 4 at ((P_0 + 16) + 16) + o_2, with o_j = min(32,

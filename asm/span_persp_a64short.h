@@ -66,7 +66,7 @@ constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // quotient q (s = max(steps, 1), 1 <= s <= 16), lin = trunc(q), ddf = (q curve) -2, dd =
 // trunc(ddf) & (|ddf| < 1e9), curve = (zc / 2) (z_3 + z_4) as the walker's zc * 0.5 * zmk
 // (zs23 = [z_2 + z_3, z_3 + z_4]). One asm block, fixed registers, the order from
-// bench/order_search.py on short_steps_k3.s (written here by to_inline.py).
+// bench/order_search.py on short_steps_k3.s (written here by bench/to_inline.py).
 // AsmSpanPersp.ShortStepsK3MatchTheWalker checks it against steps16_dd and last_steps.
 struct ShortStepsK3 {
   int32x4_t D01, D23;

@@ -100,9 +100,9 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
       SB_V7_HI_END("12") F7
 // persp_mid_v7's runs 0 .. 2 are written out: each the instructions SB_V7_RUN gives it (the
 // pixel groups, the last two pixels without their unread steps, and its F0 .. F7 work), in an
-// order bench/order_search_a9.py found within the statement against the Cortex-A9 model (on
-// the blocks as qemu cuts them; every reordering keeps each register's and memory's order of
-// reads and writes). The VFP / NEON registers are
+// order bench/order_search.py --arch=armv7 --runs found within the statement against the
+// Cortex-A9 model (on the blocks as qemu cuts them; every reordering keeps each register's and
+// memory's order of reads and writes). The VFP / NEON registers are
 // named as bound (uv1 .. uv4 = d1 .. d4, curve = d5, c1 = d28, c2 = d29, L = sd = d10; those
 // stay listed as operands).
 #define SB_V7_RUN_OPERANDS(dst)                                                               \
@@ -139,8 +139,8 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
   register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d8");
   __asm__ volatile(
-      // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search_a9.py;
-      // the model issues VFP / NEON in order: each waits least on its inputs).
+      // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search.py
+      // --arch=armv7; the model issues VFP / NEON in order: each waits least on its inputs).
       "vmov.f64 d28, #16.0\n\t"
       "vld1.64 {d20-d23}, [%[p2]]\n\t"
       "vadd.f64 d29, d28, d28\n\t"
