@@ -171,23 +171,17 @@ add x14, x16, x19
 add x19, x19, x20
 lsr x4, x16, #48
 lsr w12, w16, #16
-add x17, x17, x20
 madd w2, w2, w30, w10
 add x16, x14, x19
 orr x22, x7, x8, lsl #8
 lsr x5, x13, #48
 lsr w9, w13, #16
-add x19, x19, x20
-add x13, x15, x17
 lsr x7, x15, #48
 lsr w11, w15, #16
 lsr x6, x14, #48
 lsr w10, w14, #16
-add x17, x17, x20
 orr x15, x21, x22, lsl #16
-add x14, x16, x19
 madd w4, w4, w30, w12
-add x19, x19, x20
 ldrb w1, [x18, w1, uxtw]
 str w15, [x28, #4]
 madd w5, w5, w30, w9
@@ -281,7 +275,6 @@ ldrb w6, [x18, w6, uxtw]
 madd w3, w3, w30, w11
 ldrb w8, [x18, w8, uxtw]
 add x15, x23, x17
-add x17, x17, x20
 lsr w10, w14, #16
 lsr w9, w23, #16
 add x14, x16, x19
@@ -295,7 +288,6 @@ madd w2, w2, w30, w10
 ldrb w1, [x18, w1, uxtw]
 madd w4, w4, w30, w12
 ldrb w3, [x18, w3, uxtw]
-add x23, x15, x17
 add x16, x14, x19
 lsr x7, x15, #48
 lsr w11, w15, #16
@@ -304,7 +296,6 @@ ldrb w2, [x18, w2, uxtw]
 ldrb w4, [x18, w4, uxtw]
 madd w7, w7, w30, w11
 orr x15, x21, x22, lsl #16
-add x19, x19, x20
 lsr x6, x14, #48
 lsr w10, w14, #16
 lsr x8, x16, #48
@@ -319,9 +310,6 @@ ldrb w7, [x18, w7, uxtw]
 ldrb w6, [x18, w6, uxtw]
 orr x15, x21, x22, lsl #16
 ldrb w8, [x18, w8, uxtw]
-add x14, x16, x19
-add x17, x17, x20
-add x19, x19, x20
 orr x21, x5, x6, lsl #8
 str w15, [x28, #24]
 orr x22, x7, x8, lsl #8
