@@ -4,7 +4,8 @@
 # every other register fixed) as the string lines of the inline asm
 # between the "// BEGIN NAME" and "// END NAME" lines of a header.
 # With a fourth argument "pass" (the steps block and the first pass in one, steps_pass.s): x26,
-# x27, x0, x28, x18, x30 the operands kp, y, st, d, tx, w; every other register fixed.
+# x27, x0, x28, x18, x30 the operands kp, y, st, d, tx, w; every other register fixed (x13, x9,
+# x10, x23, x24, x25 the second pass's arguments, bound by register variables).
 #   to_inline.py BLOCK.s HEADER NAME [pass]
 import re, sys
 src, hdr, name = sys.argv[1:4]
