@@ -55,9 +55,9 @@ struct MidFirst {
 };
 // Four runs, second order, from the samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4
 // twice), the full runs' curve factors c01, c23, zs23 = [z_2 + z_3, z_3 + z_4], s = max(1,
-// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): what
-// short_steps_k3 computes (asm/span_persp_a64short.h: delta, ddf, dd, steps16_dd's 32-bit
-// form). The last run: last_steps' vector part (div_steps' quotient q, lin = trunc(q), ddf =
+// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): delta,
+// ddf, dd and steps16_dd's 32-bit form, as the two- and three-run steps block of
+// asm/span_persp_a64short.h computes them. The last run: last_steps' vector part (div_steps' quotient q, lin = trunc(q), ddf =
 // q (curve k), curve = (zc / 2)(z_3 + z_4); q (curve k) is (q curve) k bit for bit: k = -2
 // scales exactly, and an inf / NaN product gives dd = 0 either way), its lin and dd put into
 // lanes 2, 3 of run 2's vectors, then last_dd (asm/span_persp_arm.h) in those four lanes

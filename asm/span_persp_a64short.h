@@ -61,127 +61,6 @@ constexpr int kShortMax = 64;
 alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
 constexpr uint64_t kBiasBits = 0x4338000000000000;  // 2^52 + 2^51 (the deltas' double bias)
 constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
-// Four runs (second order): the full runs' steps as above (D01, D23, dlo, dhi, ddlo, ddhi)
-// with the last run's vector part of last_steps interleaved: [du_3, dv_3] unbiased, div_steps'
-// quotient q (s = max(steps, 1), 1 <= s <= 16), lin = trunc(q), ddf = (q curve) -2, dd =
-// trunc(ddf) & (|ddf| < 1e9), curve = (zc / 2) (z_3 + z_4) as the walker's zc * 0.5 * zmk
-// (zs23 = [z_2 + z_3, z_3 + z_4]). One asm block, fixed registers, the order from
-// bench/order_search.py on short_steps_k3.s (written here by bench/to_inline.py).
-// AsmSpanPersp.ShortStepsK3MatchTheWalker checks it against steps16_dd and last_steps.
-struct ShortStepsK3 {
-  int32x4_t D01, D23;
-  int64x2_t dlo, dhi, ddlo, ddhi, lin, dd;
-};
-SB_INLINE ShortStepsK3 short_steps_k3(int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
-                                      float64x2_t zs23, int s, double zc) {
-    register int32x4_t rD01 __asm__("v0");
-    register int32x4_t rD23 __asm__("v7") = S44;
-    register int32x4_t rS01 __asm__("v5") = S01;
-    register int32x4_t rS23 __asm__("v19") = S23;
-    register float64x2_t rc01 __asm__("v3") = c01;
-    register float64x2_t rc23 __asm__("v16") = c23;
-    register float64x2_t rzs __asm__("v1") = zs23;
-    register double rsd __asm__("v30") = double(s);
-    register double rzc __asm__("v31") = zc * 0.5;
-    register int64x2_t rddhi __asm__("v2");
-    register int64x2_t rlin __asm__("v4");
-    register int64x2_t rdd __asm__("v6");
-    __asm__(
-// BEGIN short_steps_k3
-      "ext v0.16b, v5.16b, v19.16b, #8\n\t"
-      "ld1r {v6.2d}, [%[y]]\n\t"
-      "ext v7.16b, v19.16b, v7.16b, #8\n\t"
-      "ld1r {v17.2d}, [%[kb]]\n\t"
-      "sub v0.4s, v0.4s, v5.4s\n\t"
-      "sub v7.4s, v7.4s, v19.4s\n\t"
-      "ld1r {v2.2d}, [%[k1e9]]\n\t"
-      "ldp q18, q20, [%[kc]]\n\t"
-      "saddw v21.2d, v17.2d, v0.2s\n\t"
-      "saddw2 v22.2d, v17.2d, v0.4s\n\t"
-      "saddw2 v4.2d, v17.2d, v7.4s\n\t"
-      "saddw v23.2d, v17.2d, v7.2s\n\t"
-      "fsub v21.2d, v21.2d, v17.2d\n\t"
-      "fsub v22.2d, v22.2d, v17.2d\n\t"
-      "fsub v4.2d, v4.2d, v17.2d\n\t"
-      "fmul d31, d31, v1.d[1]\n\t"
-      "fsub v23.2d, v23.2d, v17.2d\n\t"
-      "abs v26.4s, v0.4s\n\t"
-      "fmul v21.2d, v21.2d, v3.d[0]\n\t"
-      "abs v27.4s, v7.4s\n\t"
-      "fmul v1.2d, v4.2d, v6.2d\n\t"
-      "sshr v24.4s, v0.4s, #31\n\t"
-      "sshr v25.4s, v7.4s, #31\n\t"
-      "fmul v23.2d, v23.2d, v16.d[0]\n\t"
-      "fcvtzs v21.2d, v21.2d\n\t"
-      "fmul v22.2d, v22.2d, v3.d[1]\n\t"
-      "fmls v4.2d, v1.2d, v30.d[0]\n\t"
-      "ushr v28.4s, v27.4s, #4\n\t"
-      "sqxtn v21.2s, v21.2d\n\t"
-      "fcvtzs v22.2d, v22.2d\n\t"
-      "ushr v17.4s, v26.4s, #4\n\t"
-      "fcvtzs v23.2d, v23.2d\n\t"
-      "fmla v1.2d, v4.2d, v6.2d\n\t"
-      "sqxtn v23.2s, v23.2d\n\t"
-      "eor v17.16b, v17.16b, v24.16b\n\t"
-      "sqxtn2 v21.4s, v22.2d\n\t"
-      "mov v3.16b, v26.16b\n\t"
-      "fmov v6.2d, #-2.0\n\t"
-      "mov v16.16b, v27.16b\n\t"
-      "abs v29.4s, v23.4s\n\t"
-      "fcvtzs v4.2d, v1.2d\n\t"
-      "fmul v1.2d, v1.2d, v31.d[0]\n\t"
-      "eor v31.16b, v23.16b, v25.16b\n\t"
-      "eor v30.16b, v21.16b, v24.16b\n\t"
-      "abs v22.4s, v21.4s\n\t"
-      "umin v29.4s, v29.4s, v20.4s\n\t"
-      "fmul v1.2d, v1.2d, v6.2d\n\t"
-      "sub v31.4s, v31.4s, v25.4s\n\t"
-      "sub v30.4s, v30.4s, v24.4s\n\t"
-      "sub v17.4s, v17.4s, v24.4s\n\t"
-      "mul v29.4s, v29.4s, v18.4s\n\t"
-      "umin v22.4s, v22.4s, v20.4s\n\t"
-      "facgt v6.2d, v2.2d, v1.2d\n\t"
-      "mls v16.4s, v31.4s, v18.s[0]\n\t"
-      "mls v3.4s, v30.4s, v18.s[0]\n\t"
-      "fcvtzs v1.2d, v1.2d\n\t"
-      "cmhs v29.4s, v27.4s, v29.4s\n\t"
-      "mul v22.4s, v22.4s, v18.4s\n\t"
-      "ushr v16.4s, v16.4s, #4\n\t"
-      "ushr v3.4s, v3.4s, #4\n\t"
-      "and v6.16b, v1.16b, v6.16b\n\t"
-      "eor v28.16b, v28.16b, v25.16b\n\t"
-      "cmhs v22.4s, v26.4s, v22.4s\n\t"
-      "and v23.16b, v23.16b, v29.16b\n\t"
-      "eor v16.16b, v16.16b, v25.16b\n\t"
-      "eor v3.16b, v3.16b, v24.16b\n\t"
-      "movi v26.2d, #0xffffffff00000000\n\t"
-      "sub v28.4s, v28.4s, v25.4s\n\t"
-      "and v21.16b, v21.16b, v22.16b\n\t"
-      "sub v16.4s, v16.4s, v25.4s\n\t"
-      "sub v3.4s, v3.4s, v24.4s\n\t"
-      "shl v24.2d, v21.2d, #32\n\t"
-      "shl v27.2d, v23.2d, #32\n\t"
-      "bit v28.16b, v16.16b, v29.16b\n\t"
-      "bit v17.16b, v3.16b, v22.16b\n\t"
-      "and v16.16b, v21.16b, v26.16b\n\t"
-      "and v2.16b, v23.16b, v26.16b\n\t"
-      "shl v25.2d, v28.2d, #32\n\t"
-      "and v3.16b, v17.16b, v26.16b\n\t"
-      "ssra v16.2d, v24.2d, #32\n\t"
-      "shl v24.2d, v17.2d, #32\n\t"
-      "and v1.16b, v28.16b, v26.16b\n\t"
-      "ssra v2.2d, v27.2d, #32\n\t"
-      "ssra v3.2d, v24.2d, #32\n\t"
-      "ssra v1.2d, v25.2d, #32"
-// END short_steps_k3
-        : "=&w"(rD01), "+&w"(rD23), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rsd), "+&w"(rzc), "=&w"(rddhi),
-          "=&w"(rlin), "=&w"(rdd)
-        : "w"(rS01), "w"(rS23), [kb] "r"(&kBiasBits), [kc] "r"(kShortConsts), [y] "r"(&kRecipSteps[s]),
-          [k1e9] "r"(&kOneE9), "m"(kBiasBits), "m"(kShortConsts), "m"(kRecipSteps), "m"(kOneE9)
-        : "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29");
-  return ShortStepsK3{rD01, rD23, vreinterpretq_s64_f64(rc01), vreinterpretq_s64_f64(rzs), vreinterpretq_s64_f64(rc23),
-                     rddhi, rlin, rdd};
-}
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if constexpr (!kCurve) {
@@ -382,7 +261,6 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     // (runs 2, 3), ddlo, ddhi (sign-extended du plus dv 2^32: Run16's packing, modulo 2^64).
     int32x4_t D01, D23;
     int64x2_t dlo, dhi, ddlo, ddhi;
-    int64x2_t lin3 = vdupq_n_s64(0), dd3 = lin3;  // k = 3: the last run's last_steps vector results
     // Deltas as doubles without scvtf (A72 latency 10): the int64 2^52 + 2^51 + x (saddw,
     // |x| < 2^31) is that double's bits, exactly (ulp 1 in [2^52, 2^53)); minus 2^52 + 2^51
     // it is x exactly (x = 0: +0, as scvtf).
@@ -400,12 +278,6 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
       // 2^31 > pd); d = accept ? mirror((pd - 120 pdd) >> 4) : mirror(pd >> 4) (both
       // computed, then picked by bit: the pick waits on the test only), dd & accept. Packed:
       // (x & (2^64 - 2^32)) + (x << 32 >> 32, arithmetic) of each 64-bit lane x = [du, dv].
-      if constexpr (k == 3) {
-        // Four runs: the same with the last run's last_steps vector part (short_steps_k3).
-        const ShortStepsK3 r = short_steps_k3(S01, S23, S44, c01, c23, zs23, last > 2 ? last - 1 : 1, zc);
-        D01 = r.D01, D23 = r.D23, dlo = r.dlo, dhi = r.dhi, ddlo = r.ddlo, ddhi = r.ddhi;
-        lin3 = r.lin, dd3 = r.dd;
-      } else {
       D23 = S44;
       int64x2_t c01b = vreinterpretq_s64_f64(c01), c23b = vreinterpretq_s64_f64(c23);
       __asm__(
@@ -485,7 +357,6 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
             "m"(kShortConsts)
           : "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30", "v31");
       dlo = c01b, ddlo = c23b;
-      }
     } else {
       D01 = vsubq_s32(vextq_s32(S01, S23, 2), S01);
       D23 = vsubq_s32(vextq_s32(S23, S44, 2), S23);
@@ -513,9 +384,7 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     const float64x2_t fd = unbias(k == 1 ? vaddw_high_s32(kBias, D01)
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
-    if constexpr (kCurve && k == 3) {
-      last_steps_dd(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), lin3, dd3, &lu, &lv);
-    } else if constexpr (kCurve) {
+    if constexpr (kCurve) {
       last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zmk, &lu, &lv);
     } else {
       // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one

@@ -20,8 +20,7 @@
 
 #include "asm/span_persp_run.h"  // steps16_dd (internal linkage: this test's own copy)
 // ARMv7 and x86-64: last_ddi, last_steps_i (the ARMv7 tails' parts; portable C++); aarch64:
-// div_steps, short_steps_k3 and short_steps_k3v (asm/span_persp_a64short.h, a64mid.h, included
-// by it).
+// div_steps and short_steps_k3v (asm/span_persp_a64short.h, a64mid.h, included by it).
 #include "asm/span_persp_arm.h"
 
 namespace {
@@ -346,82 +345,6 @@ TEST(AsmSpanPersp, ReciprocalWithoutDivide) {
 }
 #endif
 #if defined(__aarch64__)
-// asm/span_persp_a64short.h's short_steps_k3 (four-run short spans, second order: the full
-// runs' steps and the last run's last_steps vector part in one asm block) against its parts:
-// per full run and component steps16_dd(delta, cvt_sat(delta c)) packed as Run16 takes them,
-// and last_steps' vector results (div_steps quotient, trunc, (q curve) -2 masked by |ddf| <
-// 1e9) for every s = 1 .. 16. Samples: 0, the clamp's top, equal neighbours, random of every
-// magnitude; curve factors at the 120 |dd| = |delta| edge, 0, tiny, huge, infinite and NaN.
-TEST(AsmSpanPersp, ShortStepsK3MatchTheirParts) {
-  using sb::simd::RunSteps;
-  std::mt19937 rng(23);
-  const int32_t kTop = INT32_MAX - 65535;
-  const double kOdd[] = {0.0, -0.0, 1e-300, -1e-300, 1e300, -1e300, std::numeric_limits<double>::infinity(),
-                         -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
-  auto sample = [&]() -> int32_t {
-    switch (rng() % 4) {
-      case 0: return rng() % 2 ? 0 : kTop - int32_t(rng() % 2);
-      case 1: return int32_t(rng() % (uint32_t(kTop) + 1));
-      default: return int32_t((rng() % (uint32_t(kTop) + 1)) >> (rng() % 31));
-    }
-  };
-  auto curve_for = [&](int32_t delta) -> double {  // a factor c with trunc(delta c) near the edge
-    const uint32_t r = rng() % 8;
-    if (r == 0) return kOdd[rng() % 9];
-    if (r == 1 || delta == 0) return std::ldexp(double(int32_t(rng())), -int(rng() % 80));
-    const int32_t t = int32_t(delta / 120) + int32_t(rng() % 5) - 2;
-    const double want = (rng() % 2 ? t : -t) + (rng() % 1000) / 1000.0;
-    return want / double(delta);
-  };
-  long checked = 0, wrong = 0;
-  for (int i = 0; i < 400000; ++i) {
-    int32_t u[5], v[5];
-    for (int j = 0; j < 5; ++j) {
-      u[j] = sample(), v[j] = sample();
-      if (j > 0 && rng() % 8 == 0) u[j] = u[j - 1];
-      if (j > 0 && rng() % 8 == 0) v[j] = v[j - 1];
-    }
-    double c[3];
-    for (int j = 0; j < 3; ++j) c[j] = curve_for(rng() % 2 ? u[j + 1] - u[j] : v[j + 1] - v[j]);
-    const int s = 1 + int(i % 16);
-    const double zc = rng() % 16 == 0 ? kOdd[rng() % 9] : std::ldexp(double(int32_t(rng())), -int(rng() % 90));
-    const double zk = rng() % 16 == 0 ? kOdd[rng() % 9] : std::ldexp(double(rng()), -int(rng() % 60));
-    const int32_t s01[4] = {u[0], v[0], u[1], v[1]}, s23[4] = {u[2], v[2], u[3], v[3]}, s44[4] = {u[4], v[4], u[4], v[4]};
-    const double c01[2] = {c[0], c[1]}, c23[2] = {c[2], 0.5}, zs23[2] = {1.0, zk};
-    const sb::simd::ShortStepsK3 r =
-        sb::simd::short_steps_k3(vld1q_s32(s01), vld1q_s32(s23), vld1q_s32(s44), vld1q_f64(c01), vld1q_f64(c23),
-                                 vld1q_f64(zs23), s, zc);
-    // Deltas.
-    const int32_t d01[4] = {u[1] - u[0], v[1] - v[0], u[2] - u[1], v[2] - v[1]};
-    const int32_t d23[4] = {u[3] - u[2], v[3] - v[2], u[4] - u[3], v[4] - v[3]};
-    int32_t g01[4], g23[4];
-    vst1q_s32(g01, r.D01), vst1q_s32(g23, r.D23);
-    wrong += std::memcmp(g01, d01, sizeof d01) != 0 || std::memcmp(g23, d23, sizeof d23) != 0;
-    // Full runs 0, 1, 2.
-    const int64_t dl[3] = {vgetq_lane_s64(r.dlo, 0), vgetq_lane_s64(r.dlo, 1), vgetq_lane_s64(r.dhi, 0)};
-    const int64_t ddl[3] = {vgetq_lane_s64(r.ddlo, 0), vgetq_lane_s64(r.ddlo, 1), vgetq_lane_s64(r.ddhi, 0)};
-    for (int j = 0; j < 3; ++j) {
-      const int32_t du = u[j + 1] - u[j], dv = v[j + 1] - v[j];
-      const RunSteps su = sb::simd::steps16_dd(du, sb::simd::cvt_sat(double(du) * c[j]));
-      const RunSteps sv = sb::simd::steps16_dd(dv, sb::simd::cvt_sat(double(dv) * c[j]));
-      const uint64_t want_d = (uint64_t(uint32_t(sv.d)) << 32) + uint64_t(int64_t(su.d));
-      const uint64_t want_dd = (uint64_t(uint32_t(sv.dd)) << 32) + uint64_t(int64_t(su.dd));
-      wrong += uint64_t(dl[j]) != want_d || uint64_t(ddl[j]) != want_dd;
-    }
-    // The last run (3): last_steps' vector part.
-    const double fd[2] = {double(d23[2]), double(d23[3])};
-    const float64x2_t q = sb::simd::div_steps(vld1q_f64(fd), uint32_t(s));
-    const int64x2_t lin = vcvtq_s64_f64(q);
-    const float64x2_t ddf = vmulq_n_f64(vmulq_n_f64(q, zc * 0.5 * zk), -2.0);
-    const int64x2_t dd =
-        vandq_s64(vcvtq_s64_f64(ddf), vreinterpretq_s64_u64(vcaltq_f64(ddf, vdupq_n_f64(1e9))));
-    wrong += vgetq_lane_s64(r.lin, 0) != vgetq_lane_s64(lin, 0) || vgetq_lane_s64(r.lin, 1) != vgetq_lane_s64(lin, 1);
-    wrong += vgetq_lane_s64(r.dd, 0) != vgetq_lane_s64(dd, 0) || vgetq_lane_s64(r.dd, 1) != vgetq_lane_s64(dd, 1);
-    ++checked;
-  }
-  EXPECT_EQ(wrong, 0);
-  std::printf("[ asm      ] span_persp: %ld four-run step blocks, %ld wrong\n", checked, wrong);
-}
 // asm/span_persp_a64mid.h's short_steps_k3v (the four-run path persp_short_inl takes: runs
 // 0 .. 2 full, run 3 the last, with last_dd in run 2's vectors) against its parts: the full
 // runs' steps16_dd (cvt_sat(delta c)) and the last run's last_steps (div_steps, (q curve)
