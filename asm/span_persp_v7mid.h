@@ -292,11 +292,14 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
   // Run 0; beside it runs 1 and 2's steps: their deltas [du_1, dv_1, du_2, dv_2] (vsub.i32
   // on the packed samples, exact as doubles), ddf = delta c_r, cvt_sat, then steps16_dd per
-  // lane in one q register (the 32-bit form: s = delta >> 31, pd = |delta|, pdd = dd
-  // mirrored; accepted iff 120 min(|dd|, 2^25) <= pd, as ssat(dd, 26) decides it there:
-  // |dd| >= 2^25 rejects either way; d = mirror((accepted ? pd - 120 pdd : pd) >> 4),
-  // dd = accepted ? dd : 0). Outputs: q12 = the four d, q11 = the four dd.
-  register double d1r __asm__("d24"), d2r __asm__("d25"), dd1r __asm__("d22"), dd2r __asm__("d23");
+  // lane in one q register (the 32-bit form: pd = |delta|; accepted iff
+  // 120 min(|dd|, 2^25) <= pd, as ssat(dd, 26) decides it there: |dd| >= 2^25 rejects either
+  // way; dd' = accepted ? dd : 0; d = mirror((pd - 120 mirror(dd')) >> 4), mirror by delta's
+  // sign, computed as (delta + (delta < 0 ? 15 : 0) - 120 dd') >> 4 (arithmetic: the shift
+  // rounds down, the bias makes it round toward zero; exact in int32, |delta - 120 dd'| <=
+  // pd < 2^31). Outputs: q0 = the four d (d0 run 1's, d1 run 2's: uv1 is dead after its
+  // lanes), q3 = the four dd (d6, d7): registers run 1 leaves alone, so no copies.
+  register double d1r __asm__("d0"), dd1r __asm__("d6"), dd2r __asm__("d7");
   {
     RunRegs rr = run_regs(u0, v0, su, sv);
     uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
@@ -348,6 +351,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[u], %[du]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "vshr.s32 q15, q3, #31\n\t"
+                     "vshr.u32 q15, q15, #28\n\t"
+                     "vadd.i32 q15, q15, q3\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "ldrb %[a], [%[tx], %[a]]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
@@ -402,7 +407,6 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[du], %[ddu]\n\t"
                      "vmin.u32 q12, q12, q11\n\t"
                      "add %[v], %[dv]\n\t"
-                     "veor q9, q3, q15\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[u], %[du]\n\t"
@@ -411,14 +415,13 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[dv], %[ddv]\n\t"
                      "add %[v], %[dv]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
-                     "vsub.i32 q9, q9, q15\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "vmul.i32 q12, q12, q10\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[du], %[ddu]\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[du], %[ddu]\n\t"
-                     "vmul.i32 q9, q9, q10\n\t"
+                     "vmul.i32 q9, q3, q10\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "str %[a], [%[d], #8]\n\t"
                      "smulbt %[a], %[w], %[v]\n\t"
@@ -437,30 +440,27 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #8\n\t"
                      "vcge.u32 q12, q13, q12\n\t"
-                     "vsub.i32 q9, q13, q9\n\t"
-                     "vand q11, q3, q12\n\t"
-                     "vbsl q12, q9, q13\n\t"
-                     "vshr.u32 q12, q12, #4\n\t"
+                     "vand q9, q9, q12\n\t"
+                     "vand q3, q3, q12\n\t"
+                     "vsub.i32 q9, q15, q9\n\t"
+                     "vshr.s32 q0, q9, #4\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "add %[u], %[du]\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
-                     "veor q12, q12, q15\n\t"
                      "add %[v], %[dv]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
-                     "vsub.i32 q12, q12, q15\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "str %[a], [%[d], #12]\n\t"
-                     : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), "=&w"(d2r), "=&w"(dd1r), "=&w"(dd2r)
-                     : SB_V7_RUN_INPUTS(dest), [uv1] "w"(uv1), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1),
-                       [c2] "w"(c2)
-                     : "memory", "s12", "s13", "s14", "s15", "d16", "d17", "d18", "d19", "d20", "d21", "d26", "d27",
+                     : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), [uv1] "+w"(uv1), "=&w"(dd1r), "=&w"(dd2r)
+                     : SB_V7_RUN_INPUTS(dest), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1), [c2] "w"(c2)
+                     : "memory", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
                        "d30", "d31");
   }
-  const double sd1 = d1r, sd2 = d2r, sdd1 = dd1r, sdd2 = dd2r;
+  const double sd1 = d1r, sd2 = uv1, sdd1 = dd1r, sdd2 = dd2r;
   auto steps_of = [](double d, double dd, RunSteps* ou, RunSteps* ov) SB_LAMBDA_INLINE {
     int32_t a, b, c, e;
     lanes(d, &a, &b), lanes(dd, &c, &e);
