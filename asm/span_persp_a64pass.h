@@ -14,8 +14,8 @@
 // pairs into a word and store it; the shifts and chain steps of group J into set J % 2; the
 // address multiply-adds of group J beside the byte loads of group J - 1 (set (J - 1) % 2, in
 // place). After slot 3 the chains restart on run b. Generated (the order scored with llvm-mca
-// Cortex-A53; second order: no chain steps after a run's last group, whose results nothing
-// reads, then ordered by bench/order_search.py: bench/mca_a53_p64/short_pass2.s, x26, x18, w0
+// Cortex-A53; no chain steps after a run's last group, whose results nothing reads; second
+// order then ordered by bench/order_search.py: bench/mca_a53_p64/short_pass2.s, x26, x18, w0
 // the operands d, tx, w); registers: sets x1-x4 / x5-x8, low halves x9-x12 (a_d, a_dd on entry),
 // chains x13-x17, x19, x20 (a_uv in x13 on entry), pairs x21, x22, run b x23-x25.
 #pragma once
@@ -338,10 +338,6 @@ inline __attribute__((always_inline)) void short_pass(uint8_t* __restrict d, con
         "lsr w11, w15, #16\n\t"
         "lsr x8, x16, #48\n\t"
         "lsr w12, w16, #16\n\t"
-        "add x13, x13, x17\n\t"
-        "add x14, x14, x17\n\t"
-        "add x15, x15, x17\n\t"
-        "add x16, x16, x17\n\t"
         "madd w5, w5, %w[w], w9\n\t"
         "ldrb w1, [%[tx], w1, uxtw]\n\t"
         "madd w6, w6, %w[w], w10\n\t"
@@ -438,10 +434,6 @@ inline __attribute__((always_inline)) void short_pass(uint8_t* __restrict d, con
         "lsr w11, w15, #16\n\t"
         "lsr x8, x16, #48\n\t"
         "lsr w12, w16, #16\n\t"
-        "add x23, x23, x17\n\t"
-        "add x14, x14, x17\n\t"
-        "add x15, x15, x17\n\t"
-        "add x16, x16, x17\n\t"
         "madd w5, w5, %w[w], w9\n\t"
         "ldrb w1, [%[tx], w1, uxtw]\n\t"
         "madd w6, w6, %w[w], w10\n\t"
