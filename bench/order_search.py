@@ -261,7 +261,8 @@ def cycles(orders, cpu):
 def score(orders):
     if V7:
         return cycles(orders, "cortex-a9")
-    return [int((a + W57 * b) * 100000 + b) for a, b in zip(cycles(orders, "cortex-a53"), cycles(orders, "cortex-a57"))]
+    # (A53 + W A57, A57): compared as tuples, A57 breaking ties
+    return [(a + W57 * b, b) for a, b in zip(cycles(orders, "cortex-a53"), cycles(orders, "cortex-a57"))]
 
 
 def window(order, i):
@@ -285,8 +286,7 @@ def moved(order, i, j):
 def show(s):
     if V7:
         return f"A9 {s / ITER:.2f}"
-    b = s % 100000
-    return f"A53 {(s // 100000 - W57 * b) / ITER:.2f} A57 {b / ITER:.2f}"
+    return f"A53 {(s[0] - W57 * s[1]) / ITER:.2f} A57 {s[1] / ITER:.2f}"
 
 
 if __name__ == "__main__":
