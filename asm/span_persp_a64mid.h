@@ -55,10 +55,11 @@ struct MidFirst {
 };
 // Four runs, second order, from the samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4
 // twice), the full runs' curve factors c01, c23, zs23 = [z_2 + z_3, z_3 + z_4], s = max(1,
-// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): delta,
-// ddf, dd and steps16_dd's 32-bit form, as the two- and three-run steps block of
-// asm/span_persp_a64short.h computes them. The last run: last_steps' vector part (div_steps' quotient q, lin = trunc(q), ddf =
-// q (curve k), curve = (zc / 2)(z_3 + z_4); q (curve k) is (q curve) k bit for bit: k = -2
+// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): delta, ddf, dd
+// and steps16_dd's 32-bit form, as the two- and three-run steps block of
+// asm/span_persp_a64short.h computes them. The last run: last_steps' vector part (div_steps'
+// quotient q, lin = trunc(q), ddf = q (curve k), curve = (zc / 2)(z_3 + z_4); q (curve k)
+// is (q curve) k bit for bit: k = -2
 // scales exactly, and an inf / NaN product gives dd = 0 either way), its lin and dd put into
 // lanes 2, 3 of run 2's vectors, then last_dd (asm/span_persp_arm.h) in those four lanes
 // (for s = 16, T = 120 it is steps16_dd): with sg = delta's sign, Q = |delta| / s truncated
@@ -190,8 +191,9 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // short_pass takes them: moved from the vectors st is stored from and packed in the block's
 // tail, after the first pass's last reads of those registers (not loaded back from st). The
 // same instructions as short_steps_k3v (steps_k3v.s) and short_pass<true>, reordered with
-// their dependences kept; AsmSpanPersp.FourRunSpansMatchOnExtremeGradients (lengths 49 .. 64) and
-// MatchesTheRunWalkerOnShortSpans check the span against the walker.
+// their dependences kept; AsmSpanPersp.ShortStepsK3vMatchTheirParts checks its st, its packed
+// results and the pixels of runs 0, 1 against the parts, FourRunSpansMatchOnExtremeGradients
+// (lengths 49 .. 64) and MatchesTheRunWalkerOnShortSpans the span against the walker.
 SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
                                   int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
                                   float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {

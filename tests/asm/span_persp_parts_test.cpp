@@ -6,6 +6,7 @@
 // drawn texels (tests/asm/span_persp_test.cpp compares whole spans).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <limits>
 #include <random>
 #include <utility>
+#include <vector>
 
 #if defined(__aarch64__)
 #include <arm_neon.h>
@@ -22,6 +24,7 @@
 // ARMv7 and x86-64: last_ddi, last_steps_i (the ARMv7 tails' parts; portable C++); aarch64:
 // div_steps and short_steps_k3v (asm/span_persp_a64short.h, a64mid.h, included by it).
 #include "asm/span_persp_arm.h"
+#include "asm/surface_span.h"
 
 namespace {
 // asm/span_persp_arm.h's div_steps (the last run's step quotient on aarch64): a / s as
@@ -351,6 +354,8 @@ TEST(AsmSpanPersp, ReciprocalWithoutDivide) {
 // -2 and the 1e9 range, last_dd) for every steps = 0 .. 15 (s = max(steps, 1)). The last
 // run's curve often at the T |dd| = |delta| edge (T = steps (steps - 1) / 2, 0 .. 105; for T
 // = 1 with |dd| past the 2^25 clamp the full runs use), 0, tiny, huge, infinite and NaN.
+// The engine runs the same steps as steps_k3v_pass (the first pass drawn inside the block):
+// it is checked on the same inputs.
 TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
   using sb::simd::RunSteps;
   std::mt19937 rng(29);
@@ -375,7 +380,10 @@ TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
   auto unpacked = [](const RunSteps& su, const RunSteps& sv, bool dd) {
     return (uint64_t(uint32_t(dd ? sv.dd : sv.d)) << 32) + uint32_t(dd ? su.dd : su.d);
   };
-  long checked = 0, wrong = 0;
+  long checked = 0, wrong = 0, wrong_pass = 0;
+  std::vector<uint8_t> texture(3 << 17);  // texels[-2^17 .. 2^17 + 2^17)
+  for (auto& t : texture) t = uint8_t(rng());
+  const uint8_t* texels = texture.data() + (1 << 17);
   for (int i = 0; i < 400000; ++i) {
     int32_t u[5], v[5];
     for (int j = 0; j < 5; ++j) {
@@ -417,10 +425,31 @@ TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
     const double fd[2] = {double(du3), double(dv3)};
     sb::simd::last_steps(steps, du3, dv3, vld1q_f64(fd), zc * 0.5 * zk, &su, &sv);
     wrong += st[3] != unpacked(su, sv, false) || st[5] != unpacked(su, sv, true);
+    // The engine's block (steps_k3v_pass: the same steps with the first pass drawn inside):
+    // the same st, the second pass's arguments packed from it, and runs 0, 1 drawn as the
+    // reference draws them with the steps checked above (texture 1 texel wide: every
+    // (v >> 16) + (u >> 16) lies inside the guarded texel buffer).
+    uint64_t st2[6];
+    uint8_t drawn[32], want[32];
+    const sb::simd::MidFirst g = sb::simd::steps_k3v_pass(
+        drawn, texels, 1, vld1q_s32(s01), vld1q_s32(s23), vld1q_s32(s44), vld1q_f64(c01), vld1q_f64(c23),
+        vld1q_f64(zs23), s, zc, st2);
+    wrong_pass += !std::equal(st, st + 6, st2);
+    wrong_pass += g.a_uv != st[0] || g.b_uv != st[1] || g.a_d != sb::simd::mid_pack(st[2]) ||
+                  g.b_d != sb::simd::mid_pack(st[3]) || g.a_dd != sb::simd::mid_pack(st[4]) ||
+                  g.b_dd != sb::simd::mid_pack(st[5]);
+    for (int j = 0; j < 2; ++j) {
+      const uint64_t d = j ? f.b_d : f.a_d, dd = j ? f.b_dd : f.a_dd;
+      sb::simd::surface_span_scalar(want + 16 * j, 16, texels, 1, 1, u[j], v[j], int32_t(uint32_t(d)),
+                                    int32_t(d >> 32), int32_t(uint32_t(dd)), int32_t(dd >> 32));
+    }
+    wrong_pass += std::memcmp(drawn, want, 32) != 0;
     ++checked;
   }
   EXPECT_EQ(wrong, 0);
-  std::printf("[ asm      ] span_persp: %ld four-run step blocks (vector last run), %ld wrong\n", checked, wrong);
+  EXPECT_EQ(wrong_pass, 0);
+  std::printf("[ asm      ] span_persp: %ld four-run step blocks (vector last run), %ld wrong; with the first "
+              "pass %ld wrong\n", checked, wrong, wrong_pass);
 }
 #endif
 
