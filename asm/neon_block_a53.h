@@ -8,16 +8,16 @@
 // instructions after a NEON one wait for it and the NEON run costs its length in full; this
 // loop keeps it short (20 instructions for two rows). The indices leave as 16-bit lanes, four a
 // 64-bit move (x0-x3 the even row, x4-x7 the odd one, texels 4i..4i + 3 in xi). Each index
-// becomes an address (cm + lane: uxth, and + add, or lsr #48; SB_PAIR_LOOP_16,
-// SB_PAIR_LOOP_16W0 / W1: lanes 0 and 3 of xi so, lanes 2 and 1 from `ror xT, xi, #32` by uxth
-// and lsr #48, 5 ops a word, no mask) and its colormap byte is loaded straight into an output
+// becomes an address (cm + lane; every loop of this file: lanes 0 and 3 of xi by uxth and
+// lsr #48, lanes 2 and 1 from `ror xT, xi, #32` by uxth and lsr #48, 5 ops a word, no mask)
+// and its colormap byte is loaded straight into an output
 // lane (ld1 lane), no packing: v4 / v5 the even row's bytes 0-7 / 8-15, v6 / v7 the odd row's,
 // four chains taken in turn (a lane load waits for the previous one into its register). Rows
 // are stored in the next iteration (d: the even row, first; x8: the odd, after the NEON run);
 // the loop is entered at 2: after SB_PAIR_LOOP_16_PRO, the instructions before it but the
 // stores. Numerators {N2, N3, T, N0, N1}: v19-v23 (even row), v24-v28 (odd); steps v16-v18, v29
-// as in the loop below; x26 = 0xffff (mip 2's loops; SB_PAIR_LOOP_16W0 / W1 use x26 as a
-// temporary: mips 0-1 read no mask). (Orders from bench/order_search.py, every loop of this
+// as in the loop below; x26 is a temporary of SB_PAIR_LOOP_16W0 / W1 (no loop reads a
+// mask). (Orders from bench/order_search.py, every loop of this
 // file.)
 #define SB_PAIR_LOOP_16_PRO \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \

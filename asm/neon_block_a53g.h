@@ -58,7 +58,6 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "stp x2, x3, [sp, #16]\n\t" \
   "stp x4, x5, [sp, #32]\n\t" \
   "str x6, [sp, #48]\n\t" \
-  "mov x26, #0xffff\n" \
   "ldp %[d], x11, [sp]\n\t" \
   "ldp " OFF ", %[rp], [sp, #16]\n" \
   "5:\n\t" HEAD \
