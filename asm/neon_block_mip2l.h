@@ -1,0 +1,389 @@
+// asm/neon_block_mip2l.h: the mip-2 surface block builder's lean path on AArch64 (the neon_a53
+// variant): textures 4, 8 or 16 wide (mip 2 of the 16-, 32- and 64-wide textures), any height,
+// surfaces whose width is a multiple of 16, up to kM2LMaxHeight rows, whose grid table fits
+// kA53TableBytes. Only asm/neon.cpp includes this (after asm/neon_block_a53.h and
+// asm/neon_block_a53g.h, whose band loop and grid table it uses); surface_block_inorder tries it
+// before the general surface_block_groups<2>, whose set-up (texture runs, run pointers, strips,
+// the group state's copies) it skips.
+//
+// Every group reads the same 16 bytes of a texture row (byte k: texel (c0 + k) mod tw), so the
+// surface's rows are laid out once, in surface order, 16 bytes each: L + 16 y holds the texels
+// of surface row y (texture row (t0 + y) mod th; the th distinct rows by one table lookup each,
+// the rest copies). The band loop (SB_PAIR16_A / B with their row pointer loads replaced by
+// reads at rp and rp + 16, rp += 32 a pair) then needs no run pointers; two rows past the
+// surface are read (never used). Grid: asm/neon_block_a53g.h's table T (row 0, then the bands'
+// differences, width bytes a row), group g at byte 8 g.
+#pragma once
+#include <arm_neon.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "asm/neon_block_a53.h"
+#include "asm/neon_block_a53g.h"
+#include "asm/variants.h"
+
+namespace sb::simd::detail {
+namespace {
+
+#if defined(__aarch64__)
+
+constexpr int kM2LMaxHeight = 512;  // surface rows at most (the layout buffer: + 2 rows)
+// (asm/neon.cpp's kIota32 and kTix16, and mip 2's row-step weights (4 - k, k) << 4, k = 0..3:
+// asm/neon.cpp defines its tables after its includes.)
+constexpr uint8_t kM2LIota[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+constexpr uint8_t kM2LTix[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6, 42, 7, 46},
+                                    {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
+constexpr int16_t kM2LWt[8] = {64, 48, 32, 16, 0, 16, 32, 48};
+
+// SB_PAIR16_A / B (asm/neon_block_a53.h, same registers and order) with the texel rows read at
+// rp and rp + 16 (rp += 32 a pair) instead of through two run pointers.
+#define SB_M2L_A \
+    "stp d4, d5, [%[d]]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "2:\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "ldr q8, [%[ete], %[q]]\n\t" \
+    "ror x21, x4, #32\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "add x12, %[cm], w2, uxth\n\t" \
+    "ror x10, x0, #32\n\t" \
+    "add x9, %[cm], w0, uxth\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ror x18, x2, #32\n\t" \
+    "add x23, %[cm], w6, uxth\n\t" \
+    "ld1 {v5.b}[0], [x12]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ror x24, x6, #32\n\t" \
+    "add x19, %[cm], w18, uxth\n\t" \
+    "ldr q21, [%[rp]]\n\t" \
+    "add x22, %[cm], w21, uxth\n\t" \
+    "ld1 {v4.b}[0], [x9]\n\t" \
+    "add x11, %[cm], w10, uxth\n\t" \
+    "add x10, %[cm], x10, lsr #48\n\t" \
+    "ld1 {v7.b}[0], [x23]\n\t" \
+    "add x25, %[cm], w24, uxth\n\t" \
+    "add x21, %[cm], x21, lsr #48\n\t" \
+    "add x18, %[cm], x18, lsr #48\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "add x24, %[cm], x24, lsr #48\n\t" \
+    "ld1 {v4.b}[1], [x10]\n\t" \
+    "add x12, %[cm], w3, uxth\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "ror x10, x1, #32\n\t" \
+    "ld1 {v5.b}[1], [x18]\n\t" \
+    "add x20, %[cm], w5, uxth\n\t" \
+    "ld1 {v6.b}[1], [x21]\n\t" \
+    "ld1 {v7.b}[1], [x24]\n\t" \
+    "ror x18, x3, #32\n\t" \
+    "ld1 {v4.b}[2], [x11]\n\t" \
+    "ror x21, x5, #32\n\t" \
+    "ld1 {v5.b}[2], [x19]\n\t" \
+    "add x11, %[cm], w10, uxth\n\t" \
+    "ld1 {v6.b}[2], [x22]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ldr q26, [%[rp], #16]\n\t" \
+    "ror x24, x7, #32\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "add x23, %[cm], w7, uxth\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "add %[rp], %[rp], #32\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "add x25, %[cm], w24, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x22, %[cm], w21, uxth\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "add x19, %[cm], w18, uxth\n\t" \
+    "ld1 {v6.b}[4], [x20]\n\t" \
+    "add x10, %[cm], x10, lsr #48\n\t" \
+    "ld1 {v5.b}[4], [x12]\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x21, %[cm], x21, lsr #48\n\t" \
+    "ld1 {v7.b}[4], [x23]\n\t" \
+    "add x24, %[cm], x24, lsr #48\n\t" \
+    "ld1 {v4.b}[5], [x10]\n\t" \
+    "ld1 {v5.b}[5], [x18]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v6.b}[5], [x21]\n\t" \
+    "ld1 {v7.b}[5], [x24]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x11]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x19]\n\t" \
+    "ld1 {v6.b}[6], [x22]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "b 3f\n\t" \
+    "3:\n\t"
+
+#define SB_M2L_B \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+    "add v20.4s, v25.4s, v29.4s\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x0, d0\n\t" \
+    "fmov x6, d3\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
+    "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
+    "stp d4, d5, [%[d]]\n\t" \
+    "ror x24, x6, #32\n\t" \
+    "add x9, %[cm], w0, uxth\n\t" \
+    "add x23, %[cm], w6, uxth\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "ror x21, x4, #32\n\t" \
+    "adds %[q], %[q], %[w]\n\t" \
+    "ror x10, x0, #32\n\t" \
+    "ror x18, x2, #32\n\t" \
+    "ld1 {v4.b}[0], [x9]\n\t" \
+    "add x20, %[cm], w4, uxth\n\t" \
+    "add x12, %[cm], w2, uxth\n\t" \
+    "add x22, %[cm], w21, uxth\n\t" \
+    "add x11, %[cm], w10, uxth\n\t" \
+    "add x25, %[cm], w24, uxth\n\t" \
+    "ldr q21, [%[rp]]\n\t" \
+    "add x19, %[cm], w18, uxth\n\t" \
+    "add x10, %[cm], x10, lsr #48\n\t" \
+    "ld1 {v7.b}[0], [x23]\n\t" \
+    "add x18, %[cm], x18, lsr #48\n\t" \
+    "ld1 {v5.b}[0], [x12]\n\t" \
+    "add x21, %[cm], x21, lsr #48\n\t" \
+    "ld1 {v6.b}[0], [x20]\n\t" \
+    "add x24, %[cm], x24, lsr #48\n\t" \
+    "ld1 {v4.b}[1], [x10]\n\t" \
+    "add x23, %[cm], w7, uxth\n\t" \
+    "ror x10, x1, #32\n\t" \
+    "add x12, %[cm], w3, uxth\n\t" \
+    "ld1 {v5.b}[1], [x18]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
+    "ld1 {v6.b}[1], [x21]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v7.b}[1], [x24]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ld1 {v4.b}[2], [x11]\n\t" \
+    "ror x21, x5, #32\n\t" \
+    "ld1 {v5.b}[2], [x19]\n\t" \
+    "add x20, %[cm], w5, uxth\n\t" \
+    "ld1 {v6.b}[2], [x22]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ror x24, x7, #32\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "ld1 {v7.b}[2], [x25]\n\t" \
+    "add x22, %[cm], w21, uxth\n\t" \
+    "ld1 {v5.b}[3], [x2]\n\t" \
+    "add x11, %[cm], w10, uxth\n\t" \
+    "ld1 {v4.b}[3], [x0]\n\t" \
+    "ror x18, x3, #32\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
+    "add x25, %[cm], w24, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x10, %[cm], x10, lsr #48\n\t" \
+    "ldr q26, [%[rp], #16]\n\t" \
+    "add x19, %[cm], w18, uxth\n\t" \
+    "ld1 {v4.b}[4], [x9]\n\t" \
+    "add x21, %[cm], x21, lsr #48\n\t" \
+    "ld1 {v6.b}[4], [x20]\n\t" \
+    "add x18, %[cm], x18, lsr #48\n\t" \
+    "ld1 {v5.b}[4], [x12]\n\t" \
+    "add x24, %[cm], x24, lsr #48\n\t" \
+    "ld1 {v7.b}[4], [x23]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v4.b}[5], [x10]\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "ld1 {v6.b}[5], [x21]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v5.b}[5], [x18]\n\t" \
+    "ld1 {v7.b}[5], [x24]\n\t" \
+    "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
+    "ld1 {v6.b}[6], [x22]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x19]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x11]\n\t" \
+    "ld1 {v7.b}[6], [x25]\n\t" \
+    "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
+    "ld1 {v6.b}[7], [x5]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
+    "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "add %[rp], %[rp], #32\n\t" \
+    "b.ne 1b\n\t"
+
+// A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2 with the rows read at rp): numerators
+// from T's row 0 at t0 (v0), the first band's step from row 1 (v8), the first two texel rows,
+// d = the group's output (x26) two rows up.
+#define SB_M2L_HEAD \
+  "ldr q0, [%[t0]]\n\t" \
+  "add x10, %[t0], %[w]\n\t" \
+  "ldr q21, [%[rp]]\n\t" \
+  "ldr q8, [x10]\n\t" \
+  "ldr q26, [%[rp], #16]\n\t" \
+  "add %[rp], %[rp], #32\n\t" \
+  "sub %[d], x26, %[w], lsl #1\n\t" \
+  "smull v22.4s, %[wt].4h, v0.h[0]\n\t" \
+  "smull v23.4s, %[wt].4h, v0.h[1]\n\t" \
+  "smull v19.4s, %[wt].4h, v0.h[2]\n\t" \
+  "smull v20.4s, %[wt].4h, v0.h[3]\n\t" \
+  "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+  "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
+  "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
+  "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
+  "smlal2 v22.4s, %[wt].8h, v0.h[1]\n\t" \
+  "smlal2 v23.4s, %[wt].8h, v0.h[2]\n\t" \
+  "smlal2 v19.4s, %[wt].8h, v0.h[3]\n\t" \
+  "smlal2 v20.4s, %[wt].8h, v0.h[4]\n\t" \
+  "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
+  "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
+  "shl v22.4s, v22.4s, #2\n\t" \
+  "shl v23.4s, v23.4s, #2\n\t" \
+  "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
+  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
+  "shl v19.4s, v19.4s, #2\n\t" \
+  "shl v20.4s, v20.4s, #2\n\t"
+
+// Surface rows 0..h-1 (texture rows t0, t0 + 1, .. wrapping at th) laid out 16 bytes each at L,
+// byte k the texel (c0 + k) mod TW by the lookup I: four texture rows a step (4 TW bytes: one to
+// four loads, never past the texture), each stored at every row it repeats on (y, y + th, ..).
+// th, t0 and h are multiples of 4 (the contract's, mip 2).
+template <int TW>
+__attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int th, int t0, int h, uint8x16_t I,
+                                                    uint8_t* L) {
+  const uint8x16_t I1 = vaddq_u8(I, vdupq_n_u8(TW == 16 ? 0 : TW));
+  const uint8x16_t I2 = vaddq_u8(I, vdupq_n_u8(TW == 4 ? 8 : 0)), I3 = vaddq_u8(I1, vdupq_n_u8(TW == 4 ? 8 : 0));
+  const int n = h < th ? h : th;
+  const uint8_t* row = texels + t0 * TW;
+  const uint8_t* const end = texels + th * TW;
+  uint8_t* const L_end = L + 16 * h;
+  const int64_t period = 16 * int64_t(th);
+  for (int k = 0; k < n; k += 4, L += 64) {
+    uint8x16_t a, b, c, d;
+    if constexpr (TW == 16) {
+      a = vld1q_u8(row), b = vld1q_u8(row + 16), c = vld1q_u8(row + 32), d = vld1q_u8(row + 48);
+    } else if constexpr (TW == 8) {
+      a = b = vld1q_u8(row), c = d = vld1q_u8(row + 16);
+    } else {
+      a = b = c = d = vld1q_u8(row);
+    }
+    row += 4 * TW;
+    if (row == end) row = texels;
+    a = vqtbl1q_u8(a, I), b = vqtbl1q_u8(b, I1), c = vqtbl1q_u8(c, I2), d = vqtbl1q_u8(d, I3);
+    for (uint8_t* o = L; o < L_end; o += period) {
+      vst1q_u8(o, a);
+      vst1q_u8(o + 16, b);
+      vst1q_u8(o + 32, c);
+      vst1q_u8(o + 48, d);
+    }
+  }
+}
+
+// The lean path (see the top): false, touching nothing, for the shapes it does not take.
+__attribute__((always_inline)) inline bool surface_block_mip2l(const uint16_t* grid, int gw, const uint8_t* texels, int tw, int th, int soff,
+                                int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
+  if ((tw != 4 && tw != 8 && tw != 16) || (width & 15) || width < 16 || height <= 0 || height > kM2LMaxHeight ||
+      ((th | toff | height) & 3))
+    return false;
+  const int nb = height >> 2;
+  if ((nb + 3) * width > kA53TableBytes) return false;
+  alignas(16) uint8_t t[kA53TableBytes];
+  alignas(16) uint8_t L[(kM2LMaxHeight + 2) * 16];
+  const int c0 = soff & (tw - 1), t0 = wrap(toff, th);
+  const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
+  if (tw == 16)
+    m2l_rows<16>(texels, th, t0, height, I, L);
+  else if (tw == 8)
+    m2l_rows<8>(texels, th, t0, height, I, L);
+  else
+    m2l_rows<4>(texels, th, t0, height, I, L);
+  const int64_t es = width;
+  a53_table<2>(grid, gw, nb, 4 * (width >> 4) + 1, t, es);
+  const int16x8_t wt = vld1q_s16(kM2LWt);
+  const uint8x16_t J0 = vld1q_u8(kM2LTix[0]), J1 = vld1q_u8(kM2LTix[1]);
+  uint8_t* d = out;
+  const uint8_t* const ld[2] = {L, out + width};  // (rp's start and the outputs' end: the stack's)
+  const uint8_t* rp = reinterpret_cast<const uint8_t*>(ld);
+  const uint8_t* t0r = t;
+  const uint8_t* ete = t + (nb + 2) * es;
+  int64_t q = -int64_t(nb) * es;
+  // x26: the group's output; [sp]: L (rp's start), dend. The group's exit: T's row-0 pointer
+  // and ete a group on (8 bytes), q = t0 + 2 w - ete (-nb w), rp = L.
+  asm volatile(
+      "ldp x26, x30, [%[rp]]\n\t"
+      "stp x26, x30, [sp, #-16]!\n\t"
+      "mov %[rp], x26\n\t"
+      "mov x26, %[d]\n"
+      "5:\n\t" SB_M2L_HEAD
+      "b 2f\n\t"
+      ".p2align 6\n"
+      "1:\n\t" SB_M2L_A SB_M2L_B
+      "stp d4, d5, [%[d]]\n\t"
+      "stp d6, d7, [x8]\n\t"
+      "ldp %[rp], x30, [sp]\n\t"
+      "add x26, x26, #16\n\t"
+      "add %[t0], %[t0], #8\n\t"
+      "add %[ete], %[ete], #8\n\t"
+      "add %[q], %[t0], %[w], lsl #1\n\t"
+      "sub %[q], %[q], %[ete]\n\t"
+      "cmp x26, x30\n\t"
+      "b.ne 5b\n\t"
+      "add sp, sp, #16\n\t"
+      : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [t0] "+r"(t0r)
+      : [cm] "r"(colormap), [w] "r"(es), [j0] "w"(J0), [j1] "w"(J1), [wt] "w"(wt)
+      : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21",
+        "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17",
+        "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory");
+  return true;
+}
+
+#undef SB_M2L_A
+#undef SB_M2L_B
+#undef SB_M2L_HEAD
+
+#endif  // __aarch64__
+
+}  // namespace
+}  // namespace sb::simd::detail
