@@ -20,8 +20,8 @@
 #include "asm/neon_block_a53g.h"
 #include "asm/neon_block_a64.h"
 #include "asm/neon_block_mip3.h"
-#include "asm/neon_block_mip3l.h"
 #include "asm/neon_block_mip2l.h"
+#include "asm/neon_block_mip3l.h"
 
 namespace sb::simd::detail {
 namespace {
@@ -881,9 +881,6 @@ void surface_block_inorder(const uint16_t* grid, int grid_width, const uint8_t* 
     if (mip == 1)
       return (width & 15 ? surface_block_groups<1, true> : surface_block_groups<1, true, true>)(
           grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);
-    if (mip == 2 && surface_block_mip2l(grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height,
-                                        colormap, out))
-      return;
     if (mip == 2)
       return (width & 15 ? surface_block_groups<2, true> : surface_block_groups<2, true, true>)(
           grid, grid_width, texels, tex_width, tex_height, soff, toff, width, height, colormap, out);

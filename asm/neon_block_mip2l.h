@@ -321,17 +321,28 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
   }
 }
 
-// The lean path (see the top): false, touching nothing, for the shapes it does not take.
-__attribute__((always_inline)) inline bool surface_block_mip2l(const uint16_t* grid, int gw, const uint8_t* texels, int tw, int th, int soff,
-                                int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
+// The lean path (see the top), entered from surface_block_neon_inorder (asm/neon_block_mip3l.h)
+// on mip 2 by a branch, under the symbol SB_M2L_SYM, with surface_block's arguments; the shapes
+// it does not take go on (tail call, arguments untouched) to surface_block_inorder (asm/neon.cpp).
+#define SB_M2L_SYM "_ZN2sb4simd6detail23surface_block_mip2_leanEPKtiPKhiiiiiiiS5_Ph"
+namespace {  // (asm/neon.cpp defines it in this nested unnamed namespace)
+__attribute__((noipa, used)) void surface_block_inorder(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
+                                                        int th, int mip, int soff, int toff, int width, int height,
+                                                        const uint8_t* colormap, uint8_t* out)
+    asm("_ZN2sb4simd6detail21surface_block_inorderEPKtiPKhiiiiiiiS5_Ph");
+}  // namespace
+__attribute__((noipa, used)) void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
+                                                          int th, int mip, int soff, int toff, int width, int height,
+                                                          const uint8_t* colormap, uint8_t* out) asm(SB_M2L_SYM);
+void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw, int th, int mip, int soff,
+                             int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
   if ((tw != 4 && tw != 8 && tw != 16) || (width & 15) || width < 16 || height <= 0 || height > kM2LMaxHeight ||
-      ((th | toff | height) & 3))
-    return false;
+      ((th | toff | height) & 3) || th <= 0 || ((height >> 2) + 3) * width > kA53TableBytes)
+    return surface_block_inorder(grid, gw, texels, tw, th, mip, soff, toff, width, height, colormap, out);
   const int nb = height >> 2;
-  if ((nb + 3) * width > kA53TableBytes) return false;
   alignas(16) uint8_t t[kA53TableBytes];
   alignas(16) uint8_t L[(kM2LMaxHeight + 2) * 16];
-  const int c0 = soff & (tw - 1), t0 = wrap(toff, th);
+  const int c0 = soff & (tw - 1), t0 = (th & (th - 1)) == 0 ? toff & (th - 1) : wrap(toff, th);
   const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
   if (tw == 16)
     m2l_rows<16>(texels, th, t0, height, I, L);
@@ -376,7 +387,6 @@ __attribute__((always_inline)) inline bool surface_block_mip2l(const uint16_t* g
       : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21",
         "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17",
         "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory");
-  return true;
 }
 
 #undef SB_M2L_A

@@ -16,6 +16,7 @@
 
 #include <cstdint>
 
+#include "asm/neon_block_mip2l.h"
 #include "asm/neon_block_mip3.h"
 #include "asm/variants.h"
 
@@ -786,6 +787,8 @@ asm(".pushsection .text.sb_neon_a53_block, \"ax\", %progbits\n\t"
     ".globl " SB_MIP3L_SYM "\n\t"
     ".hidden " SB_MIP3L_SYM "\n\t"
     ".type " SB_MIP3L_SYM ", %function\n" SB_MIP3L_SYM ":\n\t"
+    "cmp w5, #2\n\t"
+    "b.eq " SB_M2L_SYM "\n\t"  // (asm/neon_block_mip2l.h)
     "cmp w5, #3\n\t"
     "b.ne " SB_MIP3L_REST "\n\t"
     // w9 = width, w10 = height. The fast path: tw = 8, th 2, 4 or 8, width 16..512 a multiple
