@@ -404,6 +404,46 @@ TEST(AsmSurfaceBlock, Mip3EightWideTextures) {
   std::printf("[ asm      ] surface_block mip 3, 8-wide textures: %d cases compared\n", cases);
 }
 
+// AArch64 neon_a53's lean mip-2 path (asm/neon_block_mip2l.h): textures 4, 8 and 16 wide, any
+// height (rows laid out once in surface order: repeating, shorter and taller than the surface,
+// heights not a power of two), every row offset, surface widths a multiple of 16 (one group and
+// several), heights up to its limit (512) and past it, the grid table's limit; and the shapes
+// next to it (12 and 32 wide, widths not a multiple of 16: the general builder).
+TEST(AsmSurfaceBlock, Mip2LeanPath) {
+  std::mt19937 rng(2442);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int tw : {4, 8, 12, 16, 32}) {
+      for (int th : {4, 8, 12, 16, 20, 32, 64, 128}) {
+        for (int w : {16, 32, 48, 64, 68, 80}) {
+          for (int h : {4, 8, 12, 16, 20, 64, 68}) {
+            if (rng() % 3 && (h > 16 || w > 48)) continue;
+            const int soff = 4 * (int(rng() % 65) - 32), toff = 4 * (int(rng() % 65) - 32);
+            check_block(k, rng, BlockCase{2, w, h, tw, th, soff, toff, w / 4 + 1 + int(rng() % 3)}, Light(rng() % 6),
+                        false);
+            ++cases;
+          }
+        }
+      }
+      for (int toff = 0; toff < 32; toff += 4) {  // every row offset of a 16- and a 32-row texture
+        check_block(k, rng, BlockCase{2, 64, 64, tw, 16, 4 * int(rng() % 8), toff - 16, 17}, Light::kRandom, false);
+        check_block(k, rng, BlockCase{2, 32, 40, tw, 32, -4, toff, 9}, Light::kSmooth, false);
+        cases += 2;
+      }
+    }
+    // Tall (the lean path's 512 rows, then 516: the general builder), wide (the table's limit:
+    // (h / 4 + 3) w <= 16384 bytes, then past it), a 4-row texture under a tall surface.
+    check_block(k, rng, BlockCase{2, 16, 512, 16, 16, 8, -12, 5}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{2, 16, 516, 16, 16, 8, -12, 5}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{2, 256, 244, 8, 64, -8, 4, 65}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{2, 256, 248, 8, 64, -8, 4, 65}, Light::kSmooth, false);
+    check_block(k, rng, BlockCase{2, 1024, 4, 4, 4, 0, 0, 257}, Light::kAlternating, false);
+    check_block(k, rng, BlockCase{2, 48, 300, 4, 4, 12, -4, 13}, Light::kRandom, false);
+    cases += 6;
+  }
+  std::printf("[ asm      ] surface_block mip 2 lean path: %d cases compared\n", cases);
+}
+
 // ---------------------------------------------------------------- z span
 
 TEST(AsmZSpan, EveryVariantMatchesScalar) {
