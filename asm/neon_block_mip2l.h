@@ -286,6 +286,119 @@ constexpr int16_t kM2LWt[8] = {64, 48, 32, 16, 0, 16, 32, 48};
   "shl v19.4s, v19.4s, #2\n\t" \
   "shl v20.4s, v20.4s, #2\n\t"
 
+// The rows from L + 16 TH to e (> L + 16 TH) as repeats of the TH rows at L (TH 4, 8 or 16),
+// stored from registers, a period a step (up to 16 TH - 64 bytes past e: the buffer has room).
+template <int TH>
+inline void m2l_repeat(uint8_t* L, uint8_t* e) {
+  uint8_t* o = L + 16 * TH;
+  if constexpr (TH == 16) {
+    asm volatile(
+        "ldp q16, q17, [%[o], #-256]\n\t"
+        "ldp q18, q19, [%[o], #-224]\n\t"
+        "ldp q20, q21, [%[o], #-192]\n\t"
+        "ldp q22, q23, [%[o], #-160]\n\t"
+        "ldp q24, q25, [%[o], #-128]\n\t"
+        "ldp q26, q27, [%[o], #-96]\n\t"
+        "ldp q28, q29, [%[o], #-64]\n\t"
+        "ldp q30, q31, [%[o], #-32]\n"
+        "1:\n\t"
+        "stp q16, q17, [%[o]]\n\t"
+        "stp q18, q19, [%[o], #32]\n\t"
+        "stp q20, q21, [%[o], #64]\n\t"
+        "stp q22, q23, [%[o], #96]\n\t"
+        "stp q24, q25, [%[o], #128]\n\t"
+        "stp q26, q27, [%[o], #160]\n\t"
+        "stp q28, q29, [%[o], #192]\n\t"
+        "stp q30, q31, [%[o], #224]\n\t"
+        "add %[o], %[o], #256\n\t"
+        "cmp %[o], %[e]\n\t"
+        "b.lo 1b\n\t"
+        : [o] "+r"(o)
+        : [e] "r"(e)
+        : "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30",
+          "v31", "cc", "memory");
+  } else if constexpr (TH == 8) {
+    asm volatile(
+        "ldp q16, q17, [%[o], #-128]\n\t"
+        "ldp q18, q19, [%[o], #-96]\n\t"
+        "ldp q20, q21, [%[o], #-64]\n\t"
+        "ldp q22, q23, [%[o], #-32]\n"
+        "1:\n\t"
+        "stp q16, q17, [%[o]]\n\t"
+        "stp q18, q19, [%[o], #32]\n\t"
+        "stp q20, q21, [%[o], #64]\n\t"
+        "stp q22, q23, [%[o], #96]\n\t"
+        "add %[o], %[o], #128\n\t"
+        "cmp %[o], %[e]\n\t"
+        "b.lo 1b\n\t"
+        : [o] "+r"(o)
+        : [e] "r"(e)
+        : "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "cc", "memory");
+  } else {
+    asm volatile(
+        "ldp q16, q17, [%[o], #-64]\n\t"
+        "ldp q18, q19, [%[o], #-32]\n"
+        "1:\n\t"
+        "stp q16, q17, [%[o]]\n\t"
+        "stp q18, q19, [%[o], #32]\n\t"
+        "add %[o], %[o], #64\n\t"
+        "cmp %[o], %[e]\n\t"
+        "b.lo 1b\n\t"
+        : [o] "+r"(o)
+        : [e] "r"(e)
+        : "v16", "v17", "v18", "v19", "cc", "memory");
+  }
+}
+
+// 16 x 16 textures (mip 2 of 64 x 64): m2l_rows in one block, every row loaded first (four
+// runs of four rows from t0, rows wrapping at 16), 16 lookups, stores from the registers, a
+// period a step up to e (up to 192 bytes past e).
+inline void m2l_rows16x16(const uint8_t* texels, int t0, uint8x16_t I, uint8_t* L, uint8_t* e) {
+  const uint8_t *p0 = texels + 16 * t0, *p1 = texels + 16 * ((t0 + 4) & 15), *p2 = texels + 16 * ((t0 + 8) & 15),
+                *p3 = texels + 16 * ((t0 + 12) & 15);
+  asm volatile(
+      "ldp q16, q17, [%[p0]]\n\t"
+      "ldp q18, q19, [%[p0], #32]\n\t"
+      "ldp q20, q21, [%[p1]]\n\t"
+      "ldp q22, q23, [%[p1], #32]\n\t"
+      "ldp q24, q25, [%[p2]]\n\t"
+      "ldp q26, q27, [%[p2], #32]\n\t"
+      "ldp q28, q29, [%[p3]]\n\t"
+      "ldp q30, q31, [%[p3], #32]\n\t"
+      "tbl v16.16b, {v16.16b}, %[i].16b\n\t"
+      "tbl v17.16b, {v17.16b}, %[i].16b\n\t"
+      "tbl v18.16b, {v18.16b}, %[i].16b\n\t"
+      "tbl v19.16b, {v19.16b}, %[i].16b\n\t"
+      "tbl v20.16b, {v20.16b}, %[i].16b\n\t"
+      "tbl v21.16b, {v21.16b}, %[i].16b\n\t"
+      "tbl v22.16b, {v22.16b}, %[i].16b\n\t"
+      "tbl v23.16b, {v23.16b}, %[i].16b\n\t"
+      "tbl v24.16b, {v24.16b}, %[i].16b\n\t"
+      "tbl v25.16b, {v25.16b}, %[i].16b\n\t"
+      "tbl v26.16b, {v26.16b}, %[i].16b\n\t"
+      "tbl v27.16b, {v27.16b}, %[i].16b\n\t"
+      "tbl v28.16b, {v28.16b}, %[i].16b\n\t"
+      "tbl v29.16b, {v29.16b}, %[i].16b\n\t"
+      "tbl v30.16b, {v30.16b}, %[i].16b\n\t"
+      "tbl v31.16b, {v31.16b}, %[i].16b\n"
+      "1:\n\t"
+      "stp q16, q17, [%[o]]\n\t"
+      "stp q18, q19, [%[o], #32]\n\t"
+      "stp q20, q21, [%[o], #64]\n\t"
+      "stp q22, q23, [%[o], #96]\n\t"
+      "stp q24, q25, [%[o], #128]\n\t"
+      "stp q26, q27, [%[o], #160]\n\t"
+      "stp q28, q29, [%[o], #192]\n\t"
+      "stp q30, q31, [%[o], #224]\n\t"
+      "add %[o], %[o], #256\n\t"
+      "cmp %[o], %[e]\n\t"
+      "b.lo 1b\n\t"
+      : [o] "+r"(L)
+      : [e] "r"(e), [i] "w"(I), [p0] "r"(p0), [p1] "r"(p1), [p2] "r"(p2), [p3] "r"(p3)
+      : "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30",
+        "v31", "cc", "memory");
+}
+
 // Surface rows 0..h-1 (texture rows t0, t0 + 1, .. wrapping at th) laid out 16 bytes each at L,
 // byte k the texel (c0 + k) mod TW by the lookup I: four texture rows a step (4 TW bytes: one to
 // four loads, never past the texture), each stored at every row it repeats on (y, y + th, ..).
@@ -298,8 +411,11 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
   const int n = h < th ? h : th;
   const uint8_t* row = texels + t0 * TW;
   const uint8_t* const end = texels + th * TW;
+  uint8_t* const L0 = L;
   uint8_t* const L_end = L + 16 * h;
   const int64_t period = 16 * int64_t(th);
+  // (4, 8 or 16 rows: the first copy here, the others by m2l_repeat)
+  const bool rep = h > th && th <= 16 && (th & (th - 1)) == 0;
   for (int k = 0; k < n; k += 4, L += 64) {
     uint8x16_t a, b, c, d;
     if constexpr (TW == 16) {
@@ -312,13 +428,103 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
     row += 4 * TW;
     if (row == end) row = texels;
     a = vqtbl1q_u8(a, I), b = vqtbl1q_u8(b, I1), c = vqtbl1q_u8(c, I2), d = vqtbl1q_u8(d, I3);
-    for (uint8_t* o = L; o < L_end; o += period) {
+    for (uint8_t* o = L; o < (rep ? L + 64 : L_end); o += period) {
       vst1q_u8(o, a);
       vst1q_u8(o + 16, b);
       vst1q_u8(o + 32, c);
       vst1q_u8(o + 48, d);
     }
   }
+  if (!rep) return;
+  if (th == 16)
+    m2l_repeat<16>(L0, L_end);
+  else if (th == 8)
+    m2l_repeat<8>(L0, L_end);
+  else
+    m2l_repeat<4>(L0, L_end);
+}
+
+// Two 8-entry columns of asm/neon_block_a53g.h's table T (a53_table's, four rows a step, both
+// columns interleaved: Cortex-A53 model 30 cycles for 8 differences against 34): grid entries
+// at s0 and s1 (rows gw entries apart) to T at o0 and o1 (rows es bytes apart), rows 0..nb.
+inline void m2l_cols2(const uint16_t* s0, const uint16_t* s1, int gw, int nb, uint8_t* o0, uint8_t* o1, int64_t es) {
+  const int64_t g1 = 2 * int64_t(gw), g2 = 2 * g1, g3 = 3 * g1, g4 = 4 * g1;
+  const int64_t e2 = 2 * es, e3 = 3 * es, e4 = 4 * es;
+  int64_t n4 = nb >> 2, n1 = nb & 3;
+  asm volatile(
+      "ldr q0, [%[s0]]\n\t"
+      "ldr q16, [%[s1]]\n\t"
+      "str q0, [%[o0]]\n\t"
+      "str q16, [%[o1]]\n\t"
+      "cbz %[n4], 2f\n"
+      "1:\n\t"
+      "ldr q1, [%[s0], %[g1]]\n\t"
+      "ldr q2, [%[s0], %[g2]]\n\t"
+      "ldr q3, [%[s0], %[g3]]\n\t"
+      "ldr q4, [%[s0], %[g4]]\n\t"
+      "ldr q17, [%[s1], %[g1]]\n\t"
+      "ldr q18, [%[s1], %[g2]]\n\t"
+      "ldr q19, [%[s1], %[g3]]\n\t"
+      "ldr q20, [%[s1], %[g4]]\n\t"
+      "add %[s0], %[s0], %[g4]\n\t"
+      "add %[s1], %[s1], %[g4]\n\t"
+      "subs %[n4], %[n4], #1\n\t"
+      "sub v5.8h, v1.8h, v0.8h\n\t"
+      "sub v6.8h, v2.8h, v1.8h\n\t"
+      "sub v7.8h, v3.8h, v2.8h\n\t"
+      "sub v21.8h, v17.8h, v16.8h\n\t"
+      "sub v22.8h, v18.8h, v17.8h\n\t"
+      "sub v23.8h, v19.8h, v18.8h\n\t"
+      "sub v24.8h, v20.8h, v19.8h\n\t"
+      "sub v25.8h, v4.8h, v3.8h\n\t"
+      "mov v0.16b, v4.16b\n\t"
+      "mov v16.16b, v20.16b\n\t"
+      "str q5, [%[o0], %[e1]]\n\t"
+      "str q21, [%[o1], %[e1]]\n\t"
+      "str q6, [%[o0], %[e2]]\n\t"
+      "str q22, [%[o1], %[e2]]\n\t"
+      "str q7, [%[o0], %[e3]]\n\t"
+      "str q23, [%[o1], %[e3]]\n\t"
+      "str q25, [%[o0], %[e4]]\n\t"
+      "str q24, [%[o1], %[e4]]\n\t"
+      "add %[o0], %[o0], %[e4]\n\t"
+      "add %[o1], %[o1], %[e4]\n\t"
+      "b.ne 1b\n"
+      "2:\n\t"
+      "cbz %[n1], 4f\n"
+      "3:\n\t"
+      "ldr q1, [%[s0], %[g1]]\n\t"
+      "ldr q17, [%[s1], %[g1]]\n\t"
+      "add %[s0], %[s0], %[g1]\n\t"
+      "add %[s1], %[s1], %[g1]\n\t"
+      "subs %[n1], %[n1], #1\n\t"
+      "sub v5.8h, v1.8h, v0.8h\n\t"
+      "sub v21.8h, v17.8h, v16.8h\n\t"
+      "mov v0.16b, v1.16b\n\t"
+      "mov v16.16b, v17.16b\n\t"
+      "str q5, [%[o0], %[e1]]\n\t"
+      "str q21, [%[o1], %[e1]]\n\t"
+      "add %[o0], %[o0], %[e1]\n\t"
+      "add %[o1], %[o1], %[e1]\n\t"
+      "b.ne 3b\n"
+      "4:\n\t"
+      : [s0] "+r"(s0), [s1] "+r"(s1), [o0] "+r"(o0), [o1] "+r"(o1), [n4] "+r"(n4), [n1] "+r"(n1)
+      : [g1] "r"(g1), [g2] "r"(g2), [g3] "r"(g3), [g4] "r"(g4), [e1] "r"(es), [e2] "r"(e2), [e3] "r"(e3),
+        [e4] "r"(e4)
+      : "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24",
+        "v25", "cc", "memory");
+}
+
+// T's entries 0..ne - 1 (ne >= 8, ne <= gw): columns of 8 in pairs, a last one alone by
+// a53_table (the last column ends at entry ne - 1, overlapping the one before).
+inline void m2l_table(const uint16_t* r, int gw, int nb, int ne, uint8_t* t, int64_t es) {
+  int j = 0;
+  for (; j + 16 <= ne; j += 16) m2l_cols2(r + j, r + j + 8, gw, nb, t + 2 * j, t + 2 * j + 16, es);
+  if (j == ne) return;
+  if (ne - j > 8)
+    m2l_cols2(r + j, r + ne - 8, gw, nb, t + 2 * j, t + 2 * (ne - 8), es);
+  else
+    a53_table<2>(r + ne - 8, gw, nb, 8, t + 2 * (ne - 8), es);
 }
 
 // The lean path (see the top), entered from surface_block_neon_inorder (asm/neon_block_mip3l.h)
@@ -341,17 +547,23 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
     return surface_block_inorder(grid, gw, texels, tw, th, mip, soff, toff, width, height, colormap, out);
   const int nb = height >> 2;
   alignas(16) uint8_t t[kA53TableBytes];
-  alignas(16) uint8_t L[(kM2LMaxHeight + 2) * 16];
+  alignas(16) uint8_t L[(kM2LMaxHeight + 16) * 16];  // (m2l_repeat: up to 12 rows past)
   const int c0 = soff & (tw - 1), t0 = (th & (th - 1)) == 0 ? toff & (th - 1) : wrap(toff, th);
   const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
-  if (tw == 16)
+  if (tw == 16 && th == 16)
+    m2l_rows16x16(texels, t0, I, L, L + 16 * height);
+  else if (tw == 16)
     m2l_rows<16>(texels, th, t0, height, I, L);
   else if (tw == 8)
     m2l_rows<8>(texels, th, t0, height, I, L);
   else
     m2l_rows<4>(texels, th, t0, height, I, L);
   const int64_t es = width;
-  a53_table<2>(grid, gw, nb, 4 * (width >> 4) + 1, t, es);
+  const int ne = 4 * (width >> 4) + 1;  // (one group: 8 entries when the grid rows have them)
+  if (ne >= 8 || gw >= 8)
+    m2l_table(grid, gw, nb, ne >= 8 ? ne : 8, t, es);
+  else
+    a53_table<2>(grid, gw, nb, ne, t, es);
   const int16x8_t wt = vld1q_s16(kM2LWt);
   const uint8x16_t J0 = vld1q_u8(kM2LTix[0]), J1 = vld1q_u8(kM2LTix[1]);
   uint8_t* d = out;
