@@ -1,18 +1,20 @@
 // asm/neon_block_mip2l.h: the mip-2 surface block builder's lean path on AArch64 (the neon_a53
-// variant): textures 4, 8 or 16 wide (mip 2 of the 16-, 32- and 64-wide textures), any height,
+// variant): textures 4, 8, 16 or 32 wide (mip 2 of the 16- to 128-wide textures), any height,
 // surfaces whose width is a multiple of 16, up to kM2LMaxHeight rows, whose grid table fits
 // kA53TableBytes. Only asm/neon.cpp includes this (after asm/neon_block_a53.h and
-// asm/neon_block_a53g.h, whose band loop and grid table it uses); surface_block_inorder tries it
-// before the general surface_block_groups<2>, whose set-up (texture runs, run pointers, strips,
-// the group state's copies) it skips.
+// asm/neon_block_a53g.h, whose band loop and grid table it uses); the assembly entry
+// surface_block_neon_inorder (asm/neon_block_mip3l.h) branches here on mip 2, and the shapes
+// this does not take go on to surface_block_inorder (the general surface_block_groups<2>, whose
+// set-up (texture runs, run pointers, strips, the group state's copies) this skips).
 //
-// Every group reads the same 16 bytes of a texture row (byte k: texel (c0 + k) mod tw), so the
-// surface's rows are laid out once, in surface order, 16 bytes each: L + 16 y holds the texels
-// of surface row y (texture row (t0 + y) mod th; the th distinct rows by one table lookup each,
-// the rest copies). The band loop (SB_PAIR16_A / B with their row pointer loads replaced by
-// reads at rp and rp + 16, rp += 32 a pair) then needs no run pointers; two rows past the
-// surface are read (never used). Grid: asm/neon_block_a53g.h's table T (row 0, then the bands'
-// differences, width bytes a row), group g at byte 8 g.
+// Every group reads the same 16 bytes of a texture row (byte k: texel (c0 + k) mod tw; 32 wide:
+// the even groups so, the odd ones (c0 + 16 + k) mod tw, a second buffer), so the surface's
+// rows are laid out once, in surface order, 16 bytes each: L + 16 y holds the texels of surface
+// row y (texture row (t0 + y) mod th; the th distinct rows by one table lookup each, the rest
+// copies). The band loop (SB_PAIR16_A / B with their row pointer loads replaced by reads at rp
+// and rp + 16, rp += 32 a pair) then needs no run pointers; two rows past the surface are read
+// (never used). Grid: asm/neon_block_a53g.h's table T (row 0, then the bands' differences,
+// width bytes a row), group g at byte 8 g.
 #pragma once
 #include <arm_neon.h>
 
@@ -527,6 +529,32 @@ inline void m2l_table(const uint16_t* r, int gw, int nb, int ne, uint8_t* t, int
     a53_table<2>(r + ne - 8, gw, nb, 8, t + 2 * (ne - 8), es);
 }
 
+// 32-wide textures (mip 2 of 128-wide ones): even groups read texels (c0 + k) mod 32 of a row,
+// odd groups (c0 + 16 + k) mod 32: surface row y's are laid out at L + 16 y and L2 + 16 y (two
+// two-register lookups of the row), two rows a step, rows wrapping at th (m2l_rows' order).
+inline void m2l_rows32(const uint8_t* texels, int th, int t0, int h, int c0, uint8_t* L, uint8_t* L2) {
+  const uint8x16_t k = vld1q_u8(kM2LIota), m = vdupq_n_u8(31);
+  const uint8x16_t I0 = vandq_u8(vaddq_u8(k, vdupq_n_u8(uint8_t(c0))), m);
+  const uint8x16_t I1 = vandq_u8(vaddq_u8(k, vdupq_n_u8(uint8_t(c0 + 16))), m);
+  const int n = h < th ? h : th;
+  const uint8_t* row = texels + 32 * t0;
+  const uint8_t* const end = texels + 32 * th;
+  const int64_t period = 16 * int64_t(th);
+  uint8_t* const L_end = L + 16 * h;
+  for (int y = 0; y < n; y += 2, L += 32, L2 += 32) {
+    const uint8x16x2_t a = {{vld1q_u8(row), vld1q_u8(row + 16)}}, b = {{vld1q_u8(row + 32), vld1q_u8(row + 48)}};
+    row += 64;
+    if (row == end) row = texels;
+    const uint8x16_t a0 = vqtbl2q_u8(a, I0), a1 = vqtbl2q_u8(a, I1), b0 = vqtbl2q_u8(b, I0), b1 = vqtbl2q_u8(b, I1);
+    for (int64_t o = 0; L + o < L_end; o += period) {
+      vst1q_u8(L + o, a0);
+      vst1q_u8(L + o + 16, b0);
+      vst1q_u8(L2 + o, a1);
+      vst1q_u8(L2 + o + 16, b1);
+    }
+  }
+}
+
 // The lean path (see the top), entered from surface_block_neon_inorder (asm/neon_block_mip3l.h)
 // on mip 2 by a branch, under the symbol SB_M2L_SYM, with surface_block's arguments; the shapes
 // it does not take go on (tail call, arguments untouched) to surface_block_inorder (asm/neon.cpp).
@@ -542,16 +570,19 @@ __attribute__((noipa, used)) void surface_block_mip2_lean(const uint16_t* grid, 
                                                           const uint8_t* colormap, uint8_t* out) asm(SB_M2L_SYM);
 void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw, int th, int mip, int soff,
                              int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
-  if ((tw != 4 && tw != 8 && tw != 16) || (width & 15) || width < 16 || height <= 0 || height > kM2LMaxHeight ||
+  if ((tw != 4 && tw != 8 && tw != 16 && tw != 32) || (width & 15) || width < 16 || height <= 0 || height > kM2LMaxHeight ||
       ((th | toff | height) & 3) || th <= 0 || ((height >> 2) + 3) * width > kA53TableBytes)
     return surface_block_inorder(grid, gw, texels, tw, th, mip, soff, toff, width, height, colormap, out);
   const int nb = height >> 2;
   alignas(16) uint8_t t[kA53TableBytes];
   alignas(16) uint8_t L[(kM2LMaxHeight + 16) * 16];  // (m2l_repeat: up to 12 rows past)
+  alignas(16) uint8_t L2[(kM2LMaxHeight + 2) * 16];  // (tw 32: the odd groups' rows)
   const int c0 = soff & (tw - 1), t0 = (th & (th - 1)) == 0 ? toff & (th - 1) : wrap(toff, th);
   const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
   if (tw == 16 && th == 16)
     m2l_rows16x16(texels, t0, I, L, L + 16 * height);
+  else if (tw == 32)
+    m2l_rows32(texels, th, t0, height, c0, L, L2);
   else if (tw == 16)
     m2l_rows<16>(texels, th, t0, height, I, L);
   else if (tw == 8)
@@ -567,38 +598,50 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
   const int16x8_t wt = vld1q_s16(kM2LWt);
   const uint8x16_t J0 = vld1q_u8(kM2LTix[0]), J1 = vld1q_u8(kM2LTix[1]);
   uint8_t* d = out;
-  const uint8_t* const ld[2] = {L, out + width};  // (rp's start and the outputs' end: the stack's)
+  // (the stack's: group 0's rows, the outputs' end, group 1's rows)
+  const uint8_t* const ld[3] = {L, out + width, tw == 32 ? L2 : L};
   const uint8_t* rp = reinterpret_cast<const uint8_t*>(ld);
   const uint8_t* t0r = t;
   const uint8_t* ete = t + (nb + 2) * es;
   int64_t q = -int64_t(nb) * es;
-  // x26: the group's output; [sp]: L (rp's start), dend. The group's exit: T's row-0 pointer
-  // and ete a group on (8 bytes), q = t0 + 2 w - ete (-nb w), rp = L.
-  asm volatile(
-      "ldp x26, x30, [%[rp]]\n\t"
-      "stp x26, x30, [sp, #-16]!\n\t"
-      "mov %[rp], x26\n\t"
-      "mov x26, %[d]\n"
-      "5:\n\t" SB_M2L_HEAD
-      "b 2f\n\t"
-      ".p2align 6\n"
-      "1:\n\t" SB_M2L_A SB_M2L_B
-      "stp d4, d5, [%[d]]\n\t"
-      "stp d6, d7, [x8]\n\t"
-      "ldp %[rp], x30, [sp]\n\t"
-      "add x26, x26, #16\n\t"
-      "add %[t0], %[t0], #8\n\t"
-      "add %[ete], %[ete], #8\n\t"
-      "add %[q], %[t0], %[w], lsl #1\n\t"
-      "sub %[q], %[q], %[ete]\n\t"
-      "cmp x26, x30\n\t"
-      "b.ne 5b\n\t"
-      "add sp, sp, #16\n\t"
-      : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [t0] "+r"(t0r)
-      : [cm] "r"(colormap), [w] "r"(es), [j0] "w"(J0), [j1] "w"(J1), [wt] "w"(wt)
-      : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21",
-        "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17",
-        "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory");
+  // x26: the group's output; [sp]: this group's rows (rp's start), dend, the next group's rows
+  // (tw 32: swapped at each exit, SWAP; else the same rows, ROWS). The group's exit: T's row-0
+  // pointer and ete a group on (8 bytes), q = t0 + 2 w - ete (-nb w), rp = the next group's rows.
+#define SB_M2L_GROUPS(ROWS) \
+  asm volatile( \
+      "ldp x26, x30, [%[rp]]\n\t" \
+      "ldr x10, [%[rp], #16]\n\t" \
+      "stp x26, x30, [sp, #-32]!\n\t" \
+      "str x10, [sp, #16]\n\t" \
+      "mov %[rp], x26\n\t" \
+      "mov x26, %[d]\n" \
+      "5:\n\t" SB_M2L_HEAD \
+      "b 2f\n\t" \
+      ".p2align 6\n" \
+      "1:\n\t" SB_M2L_A SB_M2L_B \
+      "stp d4, d5, [%[d]]\n\t" \
+      "stp d6, d7, [x8]\n\t" ROWS \
+      "add x26, x26, #16\n\t" \
+      "add %[t0], %[t0], #8\n\t" \
+      "add %[ete], %[ete], #8\n\t" \
+      "add %[q], %[t0], %[w], lsl #1\n\t" \
+      "sub %[q], %[q], %[ete]\n\t" \
+      "cmp x26, x30\n\t" \
+      "b.ne 5b\n\t" \
+      "add sp, sp, #32\n\t" \
+      : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [t0] "+r"(t0r) \
+      : [cm] "r"(colormap), [w] "r"(es), [j0] "w"(J0), [j1] "w"(J1), [wt] "w"(wt) \
+      : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21", \
+        "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
+        "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory")
+  if (tw == 32)
+    SB_M2L_GROUPS("ldp x10, x30, [sp]\n\t"
+                  "ldr %[rp], [sp, #16]\n\t"
+                  "str x10, [sp, #16]\n\t"
+                  "str %[rp], [sp]\n\t");
+  else
+    SB_M2L_GROUPS("ldp %[rp], x30, [sp]\n\t");
+#undef SB_M2L_GROUPS
 }
 
 #undef SB_M2L_A

@@ -404,16 +404,17 @@ TEST(AsmSurfaceBlock, Mip3EightWideTextures) {
   std::printf("[ asm      ] surface_block mip 3, 8-wide textures: %d cases compared\n", cases);
 }
 
-// AArch64 neon_a53's lean mip-2 path (asm/neon_block_mip2l.h): textures 4, 8 and 16 wide, any
-// height (rows laid out once in surface order: repeating, shorter and taller than the surface,
-// heights not a power of two), every row offset, surface widths a multiple of 16 (one group and
-// several), heights up to its limit (512) and past it, the grid table's limit; and the shapes
-// next to it (12 and 32 wide, widths not a multiple of 16: the general builder).
+// AArch64 neon_a53's lean mip-2 path (asm/neon_block_mip2l.h): textures 4, 8, 16 and 32 wide
+// (32: even and odd groups read different windows), any height (rows laid out once in surface
+// order: repeating, shorter and taller than the surface, heights not a power of two), every row
+// offset, surface widths a multiple of 16 (one group and several), heights up to its limit (512)
+// and past it, the grid table's limit; and the shapes next to it (12 and 64 wide, widths not a
+// multiple of 16: the general builder).
 TEST(AsmSurfaceBlock, Mip2LeanPath) {
   std::mt19937 rng(2442);
   int cases = 0;
   for (const Kernels* k : tuned_variants("surface_block")) {
-    for (int tw : {4, 8, 12, 16, 32}) {
+    for (int tw : {4, 8, 12, 16, 32, 64}) {
       for (int th : {4, 8, 12, 16, 20, 32, 64, 128}) {
         for (int w : {16, 32, 48, 64, 68, 80}) {
           for (int h : {4, 8, 12, 16, 20, 64, 68}) {
@@ -439,7 +440,9 @@ TEST(AsmSurfaceBlock, Mip2LeanPath) {
     check_block(k, rng, BlockCase{2, 256, 248, 8, 64, -8, 4, 65}, Light::kSmooth, false);
     check_block(k, rng, BlockCase{2, 1024, 4, 4, 4, 0, 0, 257}, Light::kAlternating, false);
     check_block(k, rng, BlockCase{2, 48, 300, 4, 4, 12, -4, 13}, Light::kRandom, false);
-    cases += 6;
+    check_block(k, rng, BlockCase{2, 80, 512, 32, 32, -20, 8, 21}, Light::kRandom, false);
+    check_block(k, rng, BlockCase{2, 256, 100, 32, 12, 28, -36, 65}, Light::kSmooth, false);
+    cases += 8;
   }
   std::printf("[ asm      ] surface_block mip 2 lean path: %d cases compared\n", cases);
 }
