@@ -447,84 +447,102 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
 }
 
 // Two 8-entry columns of asm/neon_block_a53g.h's table T (a53_table's, four rows a step, both
-// columns interleaved: Cortex-A53 model 30 cycles for 8 differences against 34): grid entries
-// at s0 and s1 (rows gw entries apart) to T at o0 and o1 (rows es bytes apart), rows 0..nb.
-inline void m2l_cols2(const uint16_t* s0, const uint16_t* s1, int gw, int nb, uint8_t* o0, uint8_t* o1, int64_t es) {
+// columns interleaved: Cortex-A53 model 30 cycles for 8 differences against 34), with kH a third
+// column of one entry (by core loads: widths a multiple of 64 end on one), in one pass: grid
+// entries at s0, s1, s2 (rows gw entries apart) to T at o0, o1, o2 (rows es bytes apart), rows
+// 0..nb.
+#define SB_M2L_COLS(H0, H1, H2, H3, H4) \
+  asm volatile( \
+      "ldr q0, [%[s0]]\n\t" \
+      "ldr q16, [%[s1]]\n\t" H0 \
+      "str q0, [%[o0]]\n\t" \
+      "str q16, [%[o1]]\n\t" \
+      "cbz %[n4], 2f\n" \
+      "1:\n\t" \
+      "ldr q1, [%[s0], %[g1]]\n\t" \
+      "ldr q2, [%[s0], %[g2]]\n\t" \
+      "ldr q3, [%[s0], %[g3]]\n\t" \
+      "ldr q4, [%[s0], %[g4]]\n\t" \
+      "ldr q17, [%[s1], %[g1]]\n\t" \
+      "ldr q18, [%[s1], %[g2]]\n\t" \
+      "ldr q19, [%[s1], %[g3]]\n\t" \
+      "ldr q20, [%[s1], %[g4]]\n\t" H1 \
+      "add %[s0], %[s0], %[g4]\n\t" \
+      "add %[s1], %[s1], %[g4]\n\t" \
+      "subs %[n4], %[n4], #1\n\t" H2 \
+      "sub v5.8h, v1.8h, v0.8h\n\t" \
+      "sub v6.8h, v2.8h, v1.8h\n\t" \
+      "sub v7.8h, v3.8h, v2.8h\n\t" \
+      "sub v21.8h, v17.8h, v16.8h\n\t" \
+      "sub v22.8h, v18.8h, v17.8h\n\t" \
+      "sub v23.8h, v19.8h, v18.8h\n\t" \
+      "sub v24.8h, v20.8h, v19.8h\n\t" \
+      "sub v25.8h, v4.8h, v3.8h\n\t" \
+      "mov v0.16b, v4.16b\n\t" \
+      "mov v16.16b, v20.16b\n\t" \
+      "str q5, [%[o0], %[e1]]\n\t" \
+      "str q21, [%[o1], %[e1]]\n\t" \
+      "str q6, [%[o0], %[e2]]\n\t" \
+      "str q22, [%[o1], %[e2]]\n\t" \
+      "str q7, [%[o0], %[e3]]\n\t" \
+      "str q23, [%[o1], %[e3]]\n\t" \
+      "str q25, [%[o0], %[e4]]\n\t" \
+      "str q24, [%[o1], %[e4]]\n\t" H3 \
+      "add %[o0], %[o0], %[e4]\n\t" \
+      "add %[o1], %[o1], %[e4]\n\t" \
+      "b.ne 1b\n" \
+      "2:\n\t" \
+      "cbz %[n1], 4f\n" \
+      "3:\n\t" \
+      "ldr q1, [%[s0], %[g1]]\n\t" \
+      "ldr q17, [%[s1], %[g1]]\n\t" \
+      "add %[s0], %[s0], %[g1]\n\t" \
+      "add %[s1], %[s1], %[g1]\n\t" \
+      "subs %[n1], %[n1], #1\n\t" \
+      "sub v5.8h, v1.8h, v0.8h\n\t" \
+      "sub v21.8h, v17.8h, v16.8h\n\t" \
+      "mov v0.16b, v1.16b\n\t" \
+      "mov v16.16b, v17.16b\n\t" \
+      "str q5, [%[o0], %[e1]]\n\t" \
+      "str q21, [%[o1], %[e1]]\n\t" H4 \
+      "add %[o0], %[o0], %[e1]\n\t" \
+      "add %[o1], %[o1], %[e1]\n\t" \
+      "b.ne 3b\n" \
+      "4:\n\t" \
+      : [s0] "+r"(s0), [s1] "+r"(s1), [o0] "+r"(o0), [o1] "+r"(o1), [n4] "+r"(n4), [n1] "+r"(n1), [s2] "+r"(s2), \
+        [o2] "+r"(o2) \
+      : [g1] "r"(g1), [g2] "r"(g2), [g3] "r"(g3), [g4] "r"(g4), [e1] "r"(es), [e2] "r"(e2), [e3] "r"(e3), \
+        [e4] "r"(e4) \
+      : "x9", "x10", "x11", "x12", "x13", "x14", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", \
+        "v19", "v20", "v21", "v22", "v23", "v24", "v25", "cc", "memory")
+template <bool kH>
+inline void m2l_cols2(const uint16_t* s0, const uint16_t* s1, int gw, int nb, uint8_t* o0, uint8_t* o1, int64_t es,
+                      const uint16_t* s2 = nullptr, uint8_t* o2 = nullptr) {
   const int64_t g1 = 2 * int64_t(gw), g2 = 2 * g1, g3 = 3 * g1, g4 = 4 * g1;
   const int64_t e2 = 2 * es, e3 = 3 * es, e4 = 4 * es;
   int64_t n4 = nb >> 2, n1 = nb & 3;
-  asm volatile(
-      "ldr q0, [%[s0]]\n\t"
-      "ldr q16, [%[s1]]\n\t"
-      "str q0, [%[o0]]\n\t"
-      "str q16, [%[o1]]\n\t"
-      "cbz %[n4], 2f\n"
-      "1:\n\t"
-      "ldr q1, [%[s0], %[g1]]\n\t"
-      "ldr q2, [%[s0], %[g2]]\n\t"
-      "ldr q3, [%[s0], %[g3]]\n\t"
-      "ldr q4, [%[s0], %[g4]]\n\t"
-      "ldr q17, [%[s1], %[g1]]\n\t"
-      "ldr q18, [%[s1], %[g2]]\n\t"
-      "ldr q19, [%[s1], %[g3]]\n\t"
-      "ldr q20, [%[s1], %[g4]]\n\t"
-      "add %[s0], %[s0], %[g4]\n\t"
-      "add %[s1], %[s1], %[g4]\n\t"
-      "subs %[n4], %[n4], #1\n\t"
-      "sub v5.8h, v1.8h, v0.8h\n\t"
-      "sub v6.8h, v2.8h, v1.8h\n\t"
-      "sub v7.8h, v3.8h, v2.8h\n\t"
-      "sub v21.8h, v17.8h, v16.8h\n\t"
-      "sub v22.8h, v18.8h, v17.8h\n\t"
-      "sub v23.8h, v19.8h, v18.8h\n\t"
-      "sub v24.8h, v20.8h, v19.8h\n\t"
-      "sub v25.8h, v4.8h, v3.8h\n\t"
-      "mov v0.16b, v4.16b\n\t"
-      "mov v16.16b, v20.16b\n\t"
-      "str q5, [%[o0], %[e1]]\n\t"
-      "str q21, [%[o1], %[e1]]\n\t"
-      "str q6, [%[o0], %[e2]]\n\t"
-      "str q22, [%[o1], %[e2]]\n\t"
-      "str q7, [%[o0], %[e3]]\n\t"
-      "str q23, [%[o1], %[e3]]\n\t"
-      "str q25, [%[o0], %[e4]]\n\t"
-      "str q24, [%[o1], %[e4]]\n\t"
-      "add %[o0], %[o0], %[e4]\n\t"
-      "add %[o1], %[o1], %[e4]\n\t"
-      "b.ne 1b\n"
-      "2:\n\t"
-      "cbz %[n1], 4f\n"
-      "3:\n\t"
-      "ldr q1, [%[s0], %[g1]]\n\t"
-      "ldr q17, [%[s1], %[g1]]\n\t"
-      "add %[s0], %[s0], %[g1]\n\t"
-      "add %[s1], %[s1], %[g1]\n\t"
-      "subs %[n1], %[n1], #1\n\t"
-      "sub v5.8h, v1.8h, v0.8h\n\t"
-      "sub v21.8h, v17.8h, v16.8h\n\t"
-      "mov v0.16b, v1.16b\n\t"
-      "mov v16.16b, v17.16b\n\t"
-      "str q5, [%[o0], %[e1]]\n\t"
-      "str q21, [%[o1], %[e1]]\n\t"
-      "add %[o0], %[o0], %[e1]\n\t"
-      "add %[o1], %[o1], %[e1]\n\t"
-      "b.ne 3b\n"
-      "4:\n\t"
-      : [s0] "+r"(s0), [s1] "+r"(s1), [o0] "+r"(o0), [o1] "+r"(o1), [n4] "+r"(n4), [n1] "+r"(n1)
-      : [g1] "r"(g1), [g2] "r"(g2), [g3] "r"(g3), [g4] "r"(g4), [e1] "r"(es), [e2] "r"(e2), [e3] "r"(e3),
-        [e4] "r"(e4)
-      : "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24",
-        "v25", "cc", "memory");
+  if constexpr (kH)
+    SB_M2L_COLS("ldrh w9, [%[s2]]\n\t" "strh w9, [%[o2]]\n\t", "ldrh w10, [%[s2], %[g1]]\n\t" "ldrh w11, [%[s2], %[g2]]\n\t" "ldrh w12, [%[s2], %[g3]]\n\t" "ldrh w13, [%[s2], %[g4]]\n\t" "add %[s2], %[s2], %[g4]\n\t", "sub w14, w13, w12\n\t" "sub w12, w12, w11\n\t" "sub w11, w11, w10\n\t" "sub w10, w10, w9\n\t" "mov w9, w13\n\t", "strh w10, [%[o2], %[e1]]\n\t" "strh w11, [%[o2], %[e2]]\n\t" "strh w12, [%[o2], %[e3]]\n\t" "strh w14, [%[o2], %[e4]]\n\t" "add %[o2], %[o2], %[e4]\n\t", "ldrh w10, [%[s2], %[g1]]\n\t" "add %[s2], %[s2], %[g1]\n\t" "sub w11, w10, w9\n\t" "mov w9, w10\n\t" "strh w11, [%[o2], %[e1]]\n\t" "add %[o2], %[o2], %[e1]\n\t");
+  else
+    SB_M2L_COLS("", "", "", "", "");
 }
+#undef SB_M2L_COLS
 
-// T's entries 0..ne - 1 (ne >= 8, ne <= gw): columns of 8 in pairs, a last one alone by
-// a53_table (the last column ends at entry ne - 1, overlapping the one before).
+// T's entries 0..ne - 1 (ne >= 8, ne <= gw): columns of 8 in pairs (and a last single entry
+// with the last pair), a last column alone by a53_table (the last column ends at entry ne - 1,
+// overlapping the one before).
 inline void m2l_table(const uint16_t* r, int gw, int nb, int ne, uint8_t* t, int64_t es) {
   int j = 0;
-  for (; j + 16 <= ne; j += 16) m2l_cols2(r + j, r + j + 8, gw, nb, t + 2 * j, t + 2 * j + 16, es);
+  for (; j + 16 <= ne; j += 16) {
+    if (j + 17 == ne) {
+      m2l_cols2<true>(r + j, r + j + 8, gw, nb, t + 2 * j, t + 2 * j + 16, es, r + j + 16, t + 2 * j + 32);
+      return;
+    }
+    m2l_cols2<false>(r + j, r + j + 8, gw, nb, t + 2 * j, t + 2 * j + 16, es);
+  }
   if (j == ne) return;
   if (ne - j > 8)
-    m2l_cols2(r + j, r + ne - 8, gw, nb, t + 2 * j, t + 2 * (ne - 8), es);
+    m2l_cols2<false>(r + j, r + ne - 8, gw, nb, t + 2 * j, t + 2 * (ne - 8), es);
   else
     a53_table<2>(r + ne - 8, gw, nb, 8, t + 2 * (ne - 8), es);
 }
