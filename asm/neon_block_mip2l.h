@@ -256,16 +256,17 @@ constexpr int16_t kM2LWt[8] = {64, 48, 32, 16, 0, 16, 32, 48};
     "add %[rp], %[rp], #32\n\t" \
     "b.ne 1b\n\t"
 
-// A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2 with the rows read at rp): numerators
-// from T's row 0 at t0 (v0), the first band's step from row 1 (v8), the first two texel rows,
-// d = the group's output (x26) two rows up.
-#define SB_M2L_HEAD \
+// A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2): numerators from T's row 0 (v0), the
+// first band's step from row 1 (v8), d = the group's output (x26) two rows up; v0, v8 and the
+// first two texel rows (v21, v26, rp stepped) are loaded before it (SB_M2L_LOADS: at the
+// previous group's exit, so their latency overlaps its stores and state steps).
+#define SB_M2L_LOADS \
   "ldr q0, [%[t0]]\n\t" \
-  "add x10, %[t0], %[w]\n\t" \
+  "ldr q8, [%[t0], %[w]]\n\t" \
   "ldr q21, [%[rp]]\n\t" \
-  "ldr q8, [x10]\n\t" \
   "ldr q26, [%[rp], #16]\n\t" \
-  "add %[rp], %[rp], #32\n\t" \
+  "add %[rp], %[rp], #32\n\t"
+#define SB_M2L_HEAD \
   "sub %[d], x26, %[w], lsl #1\n\t" \
   "smull v22.4s, %[wt].4h, v0.h[0]\n\t" \
   "smull v23.4s, %[wt].4h, v0.h[1]\n\t" \
@@ -632,7 +633,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
       "stp x26, x30, [sp, #-32]!\n\t" \
       "str x10, [sp, #16]\n\t" \
       "mov %[rp], x26\n\t" \
-      "mov x26, %[d]\n" \
+      "mov x26, %[d]\n\t" SB_M2L_LOADS \
       "5:\n\t" SB_M2L_HEAD \
       "b 2f\n\t" \
       ".p2align 6\n" \
@@ -643,7 +644,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
       "add %[t0], %[t0], #8\n\t" \
       "add %[ete], %[ete], #8\n\t" \
       "add %[q], %[t0], %[w], lsl #1\n\t" \
-      "sub %[q], %[q], %[ete]\n\t" \
+      "sub %[q], %[q], %[ete]\n\t" SB_M2L_LOADS \
       "cmp x26, x30\n\t" \
       "b.ne 5b\n\t" \
       "add sp, sp, #32\n\t" \
@@ -665,6 +666,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 #undef SB_M2L_A
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
+#undef SB_M2L_LOADS
 
 #endif  // __aarch64__
 
