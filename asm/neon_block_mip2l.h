@@ -36,7 +36,7 @@ constexpr int kM2LMaxHeight = 512;  // surface rows at most (the layout buffer: 
 constexpr uint8_t kM2LIota[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 constexpr uint8_t kM2LTix[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6, 42, 7, 46},
                                     {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
-constexpr int16_t kM2LWt[8] = {64, 48, 32, 16, 0, 16, 32, 48};
+constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 128, 64, 0, 64, 128, 192}};
 
 // SB_PAIR16_A / B (asm/neon_block_a53.h, same registers) with the texel rows read at rp and
 // rp + 16 (rp += 32 a pair) instead of through two run pointers; B in its order, A reordered by
@@ -257,10 +257,11 @@ constexpr int16_t kM2LWt[8] = {64, 48, 32, 16, 0, 16, 32, 48};
     "add %[rp], %[rp], #32\n\t" \
     "b.ne 1b\n\t"
 
-// A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2): numerators from T's row 0 (v0), the
-// first band's step from row 1 (v8), d = the group's output (x26) two rows up; v0, v8 and the
-// first two texel rows (v21, v26, rp stepped) are loaded before it (SB_M2L_LOADS: at the
-// previous group's exit, so their latency overlaps its stores and state steps).
+// A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2, the numerators' << 2 in their weights
+// wt4): numerators from T's row 0 (v0), the first band's step from row 1 (v8), d = the group's
+// output (x26) two rows up; v0, v8 and the first two texel rows (v21, v26, rp stepped) are
+// loaded before it (SB_M2L_LOADS: at the previous group's exit, so their latency overlaps its
+// stores and state steps).
 #define SB_M2L_LOADS \
   "ldr q0, [%[t0]]\n\t" \
   "ldr q8, [%[t0], %[w]]\n\t" \
@@ -269,26 +270,22 @@ constexpr int16_t kM2LWt[8] = {64, 48, 32, 16, 0, 16, 32, 48};
   "add %[rp], %[rp], #32\n\t"
 #define SB_M2L_HEAD \
   "sub %[d], x26, %[w], lsl #1\n\t" \
-  "smull v22.4s, %[wt].4h, v0.h[0]\n\t" \
-  "smull v23.4s, %[wt].4h, v0.h[1]\n\t" \
-  "smull v19.4s, %[wt].4h, v0.h[2]\n\t" \
-  "smull v20.4s, %[wt].4h, v0.h[3]\n\t" \
+  "smull v22.4s, %[wt4].4h, v0.h[0]\n\t" \
+  "smull v23.4s, %[wt4].4h, v0.h[1]\n\t" \
+  "smull v19.4s, %[wt4].4h, v0.h[2]\n\t" \
+  "smull v20.4s, %[wt4].4h, v0.h[3]\n\t" \
   "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
   "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
   "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
   "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
-  "smlal2 v22.4s, %[wt].8h, v0.h[1]\n\t" \
-  "smlal2 v23.4s, %[wt].8h, v0.h[2]\n\t" \
-  "smlal2 v19.4s, %[wt].8h, v0.h[3]\n\t" \
-  "smlal2 v20.4s, %[wt].8h, v0.h[4]\n\t" \
+  "smlal2 v22.4s, %[wt4].8h, v0.h[1]\n\t" \
+  "smlal2 v23.4s, %[wt4].8h, v0.h[2]\n\t" \
+  "smlal2 v19.4s, %[wt4].8h, v0.h[3]\n\t" \
+  "smlal2 v20.4s, %[wt4].8h, v0.h[4]\n\t" \
   "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
   "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
-  "shl v22.4s, v22.4s, #2\n\t" \
-  "shl v23.4s, v23.4s, #2\n\t" \
   "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
-  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
-  "shl v19.4s, v19.4s, #2\n\t" \
-  "shl v20.4s, v20.4s, #2\n\t"
+  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t"
 
 // The rows from L + 16 TH to e (> L + 16 TH) as repeats of the TH rows at L (TH 4, 8 or 16),
 // stored from registers, a period a step (up to 16 TH - 64 bytes past e: the buffer has room).
@@ -615,7 +612,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
     m2l_table(grid, gw, nb, ne >= 8 ? ne : 8, t, es);
   else
     a53_table<2>(grid, gw, nb, ne, t, es);
-  const int16x8_t wt = vld1q_s16(kM2LWt);
+  const int16x8_t wt = vld1q_s16(kM2LWt[0]), wt4 = vld1q_s16(kM2LWt[1]);  // (wt4: the numerators', << 2)
   const uint8x16_t J0 = vld1q_u8(kM2LTix[0]), J1 = vld1q_u8(kM2LTix[1]);
   uint8_t* d = out;
   // (the stack's: group 0's rows, the outputs' end, group 1's rows)
@@ -650,7 +647,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
       "b.ne 5b\n\t" \
       "add sp, sp, #32\n\t" \
       : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [t0] "+r"(t0r) \
-      : [cm] "r"(colormap), [w] "r"(es), [j0] "w"(J0), [j1] "w"(J1), [wt] "w"(wt) \
+      : [cm] "r"(colormap), [w] "r"(es), [j0] "w"(J0), [j1] "w"(J1), [wt] "w"(wt), [wt4] "w"(wt4) \
       : "x0", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x18", "x19", "x20", "x21", \
         "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
         "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory")
