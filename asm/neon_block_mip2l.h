@@ -39,8 +39,9 @@ constexpr uint8_t kM2LTix[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6
 constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 128, 64, 0, 64, 128, 192}};
 
 // SB_PAIR16_A / B (asm/neon_block_a53.h, same registers) with the texel rows read at rp and
-// rp + 16 (rp += 32 a pair) instead of through two run pointers; B in its order, A reordered by
-// bench/order_search.py (Cortex-A53 model 68 -> 67 cycles; bench/mca_a53_block/pair16a_lean.s).
+// rp + 16 (rp += 32 a pair) instead of through two run pointers, reordered by
+// bench/order_search.py (Cortex-A53 model: A 68 -> 66, B 75 -> 74 cycles;
+// bench/mca_a53_block/pair16a_lean.s, pair16b_lean.s).
 #define SB_M2L_A \
     "stp d4, d5, [%[d]]\n\t" \
     "stp d6, d7, [x8]\n\t" \
@@ -48,68 +49,68 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
-    "add v24.4s, v19.4s, v18.4s\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v24.4s, v19.4s, v18.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
-    "fmov x1, v0.d[1]\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
     "fmov x0, d0\n\t" \
     "fmov x2, d1\n\t" \
     "fmov x5, v2.d[1]\n\t" \
-    "fmov x4, d2\n\t" \
     "fmov x7, v3.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
     "ldr q8, [%[ete], %[q]]\n\t" \
-    "ror x21, x4, #32\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
     "ror x10, x0, #32\n\t" \
+    "ror x21, x4, #32\n\t" \
     "add x9, %[cm], w0, uxth\n\t" \
-    "add x0, %[cm], x0, lsr #48\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
+    "add x12, %[cm], w2, uxth\n\t" \
     "ror x18, x2, #32\n\t" \
-    "ld1 {v5.b}[0], [x12]\n\t" \
+    "add x0, %[cm], x0, lsr #48\n\t" \
     "add x11, %[cm], w10, uxth\n\t" \
-    "ror x24, x6, #32\n\t" \
+    "add x23, %[cm], w6, uxth\n\t" \
     "add x20, %[cm], w4, uxth\n\t" \
+    "ld1 {v5.b}[0], [x12]\n\t" \
+    "ror x24, x6, #32\n\t" \
     "ld1 {v4.b}[0], [x9]\n\t" \
     "add x22, %[cm], w21, uxth\n\t" \
+    "ld1 {v7.b}[0], [x23]\n\t" \
     "add x21, %[cm], x21, lsr #48\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
     "add x10, %[cm], x10, lsr #48\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
-    "ld1 {v7.b}[0], [x23]\n\t" \
     "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x25, %[cm], w24, uxth\n\t" \
     "ld1 {v6.b}[0], [x20]\n\t" \
     "add x24, %[cm], x24, lsr #48\n\t" \
-    "add x6, %[cm], x6, lsr #48\n\t" \
     "add x2, %[cm], x2, lsr #48\n\t" \
-    "ld1 {v4.b}[1], [x10]\n\t" \
-    "add x20, %[cm], w5, uxth\n\t" \
+    "add x12, %[cm], w3, uxth\n\t" \
     "ld1 {v5.b}[1], [x18]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v4.b}[1], [x10]\n\t" \
     "ror x10, x1, #32\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x21]\n\t" \
     "ror x18, x3, #32\n\t" \
-    "ld1 {v4.b}[2], [x11]\n\t" \
-    "ld1 {v5.b}[2], [x19]\n\t" \
-    "ror x21, x5, #32\n\t" \
     "ldr q21, [%[rp]]\n\t" \
-    "add x23, %[cm], w7, uxth\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
+    "ld1 {v4.b}[2], [x11]\n\t" \
+    "ror x21, x5, #32\n\t" \
+    "ld1 {v5.b}[2], [x19]\n\t" \
+    "add x20, %[cm], w5, uxth\n\t" \
     "ld1 {v6.b}[2], [x22]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
+    "ror x24, x7, #32\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
     "ldr q26, [%[rp], #16]\n\t" \
+    "add x23, %[cm], w7, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
-    "add x12, %[cm], w3, uxth\n\t" \
-    "ror x24, x7, #32\n\t" \
     "add x11, %[cm], w10, uxth\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "add x10, %[cm], x10, lsr #48\n\t" \
@@ -122,26 +123,26 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "ld1 {v5.b}[4], [x12]\n\t" \
     "add x18, %[cm], x18, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x20]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
     "add x24, %[cm], x24, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
-    "ld1 {v6.b}[5], [x21]\n\t" \
-    "add %[rp], %[rp], #32\n\t" \
-    "ld1 {v7.b}[5], [x24]\n\t" \
-    "add x5, %[cm], x5, lsr #48\n\t" \
-    "ld1 {v4.b}[6], [x11]\n\t" \
     "add x1, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v6.b}[5], [x21]\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "ld1 {v7.b}[5], [x24]\n\t" \
+    "ld1 {v4.b}[6], [x11]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
     "ld1 {v6.b}[6], [x22]\n\t" \
     "add x7, %[cm], x7, lsr #48\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
-    "ld1 {v5.b}[7], [x3]\n\t" \
     "add x8, %[d], %[w]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
+    "add %[rp], %[rp], #32\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
     "b 3f\n\t" \
     "3:\n\t"
@@ -151,8 +152,8 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
-    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
     "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
@@ -160,37 +161,37 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add v19.4s, v24.4s, v18.4s\n\t" \
     "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
-    "fmov x1, v0.d[1]\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "fmov x0, d0\n\t" \
     "fmov x6, d3\n\t" \
-    "add v23.4s, v28.4s, v17.4s\n\t" \
-    "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
-    "fmov x4, d2\n\t" \
-    "fmov x7, v3.d[1]\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
     "fmov x2, d1\n\t" \
+    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
     "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
     "fmov x5, v2.d[1]\n\t" \
-    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
     "ror x24, x6, #32\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
     "stp d6, d7, [x8]\n\t" \
+    "add x9, %[cm], w0, uxth\n\t" \
     "ror x21, x4, #32\n\t" \
+    "add x23, %[cm], w6, uxth\n\t" \
     "adds %[q], %[q], %[w]\n\t" \
     "ror x10, x0, #32\n\t" \
+    "ldr q26, [%[rp], #16]\n\t" \
     "ror x18, x2, #32\n\t" \
     "ld1 {v4.b}[0], [x9]\n\t" \
     "add x20, %[cm], w4, uxth\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
+    "ld1 {v7.b}[0], [x23]\n\t" \
     "add x25, %[cm], w24, uxth\n\t" \
-    "ldr q21, [%[rp]]\n\t" \
+    "add x12, %[cm], w2, uxth\n\t" \
+    "add x11, %[cm], w10, uxth\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
     "add x10, %[cm], x10, lsr #48\n\t" \
-    "ld1 {v7.b}[0], [x23]\n\t" \
+    "add x22, %[cm], w21, uxth\n\t" \
     "add x18, %[cm], x18, lsr #48\n\t" \
     "ld1 {v5.b}[0], [x12]\n\t" \
     "add x21, %[cm], x21, lsr #48\n\t" \
@@ -212,10 +213,10 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x20, %[cm], w5, uxth\n\t" \
     "ld1 {v6.b}[2], [x22]\n\t" \
     "add x6, %[cm], x6, lsr #48\n\t" \
-    "ror x24, x7, #32\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
     "add x22, %[cm], w21, uxth\n\t" \
+    "ror x24, x7, #32\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "add x11, %[cm], w10, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
@@ -224,7 +225,7 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x25, %[cm], w24, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
     "add x10, %[cm], x10, lsr #48\n\t" \
-    "ldr q26, [%[rp], #16]\n\t" \
+    "ldr q21, [%[rp]]\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
     "ld1 {v4.b}[4], [x9]\n\t" \
     "add x21, %[cm], x21, lsr #48\n\t" \
@@ -233,9 +234,8 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "ld1 {v5.b}[4], [x12]\n\t" \
     "add x24, %[cm], x24, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
-    "ld1 {v4.b}[5], [x10]\n\t" \
     "add %[d], %[d], %[w], lsl #1\n\t" \
+    "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v6.b}[5], [x21]\n\t" \
     "add x5, %[cm], x5, lsr #48\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
@@ -245,16 +245,17 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
     "add x7, %[cm], x7, lsr #48\n\t" \
-    "ld1 {v4.b}[6], [x11]\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
-    "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x11]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "ld1 {v4.b}[7], [x1]\n\t" \
     "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
-    "ld1 {v7.b}[7], [x7]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
-    "ld1 {v5.b}[7], [x3]\n\t" \
+    "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
     "add %[rp], %[rp], #32\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
+    "ld1 {v5.b}[7], [x3]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
     "b.ne 1b\n\t"
 
 // A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2, the numerators' << 2 in their weights

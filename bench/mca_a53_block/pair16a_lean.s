@@ -1,73 +1,73 @@
 // SB_M2L_A (asm/neon_block_mip2l.h: SB_PAIR16_A with the texel rows read at x14 and x14 + 16,
-// x14 += 32) as searched by bench/order_search.py --head=2 --kick=2 (operands: d x13, rp x14, q x15,
-// cm x16, w x17, ete x28, j0 v30, j1 v31): Cortex-A53 model 67 cycles (68 in SB_PAIR16_A's order).
+// x14 += 32) as searched by bench/order_search.py --head=2 (operands: d x13, rp x14, q x15, cm x16,
+// w x17, ete x28, j0 v30, j1 v31): Cortex-A53 model 66 cycles (68 in SB_PAIR16_A's order).
 stp d4, d5, [x13]
 stp d6, d7, [x8]
 add v27.4s, v22.4s, v16.4s
 add v28.4s, v23.4s, v17.4s
 tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v30.16b
-add v24.4s, v19.4s, v18.4s
 add v25.4s, v20.4s, v29.4s
+add v24.4s, v19.4s, v18.4s
 tbl v1.16b, {v19.16b, v20.16b, v21.16b}, v31.16b
 add v22.4s, v27.4s, v16.4s
 tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v30.16b
-fmov x1, v0.d[1]
 add v23.4s, v28.4s, v17.4s
+fmov x1, v0.d[1]
 tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v31.16b
-fmov x3, v1.d[1]
 add v20.4s, v25.4s, v29.4s
+fmov x3, v1.d[1]
+fmov x4, d2
 fmov x0, d0
 fmov x2, d1
 fmov x5, v2.d[1]
-fmov x4, d2
 fmov x7, v3.d[1]
 fmov x6, d3
 add v19.4s, v24.4s, v18.4s
 ldr q8, [x28, x15]
-ror x21, x4, #32
-add x12, x16, w2, uxth
 ror x10, x0, #32
+ror x21, x4, #32
 add x9, x16, w0, uxth
-add x0, x16, x0, lsr #48
-add x23, x16, w6, uxth
+add x12, x16, w2, uxth
 ror x18, x2, #32
-ld1 {v5.b}[0], [x12]
+add x0, x16, x0, lsr #48
 add x11, x16, w10, uxth
-ror x24, x6, #32
+add x23, x16, w6, uxth
 add x20, x16, w4, uxth
+ld1 {v5.b}[0], [x12]
+ror x24, x6, #32
 ld1 {v4.b}[0], [x9]
 add x22, x16, w21, uxth
+ld1 {v7.b}[0], [x23]
 add x21, x16, x21, lsr #48
-add x25, x16, w24, uxth
 add x10, x16, x10, lsr #48
 add x19, x16, w18, uxth
-ld1 {v7.b}[0], [x23]
 add x18, x16, x18, lsr #48
+add x25, x16, w24, uxth
 ld1 {v6.b}[0], [x20]
 add x24, x16, x24, lsr #48
-add x6, x16, x6, lsr #48
 add x2, x16, x2, lsr #48
-ld1 {v4.b}[1], [x10]
-add x20, x16, w5, uxth
+add x12, x16, w3, uxth
 ld1 {v5.b}[1], [x18]
+add x6, x16, x6, lsr #48
+ld1 {v4.b}[1], [x10]
 ror x10, x1, #32
 ld1 {v7.b}[1], [x24]
-add x9, x16, w1, uxth
+add x4, x16, x4, lsr #48
 ld1 {v6.b}[1], [x21]
 ror x18, x3, #32
-ld1 {v4.b}[2], [x11]
-ld1 {v5.b}[2], [x19]
-ror x21, x5, #32
 ldr q21, [x14]
-add x23, x16, w7, uxth
+add x9, x16, w1, uxth
+ld1 {v4.b}[2], [x11]
+ror x21, x5, #32
+ld1 {v5.b}[2], [x19]
+add x20, x16, w5, uxth
 ld1 {v6.b}[2], [x22]
-add x4, x16, x4, lsr #48
+ror x24, x7, #32
 ld1 {v7.b}[2], [x25]
 add x19, x16, w18, uxth
 ldr q26, [x14, #16]
+add x23, x16, w7, uxth
 ld1 {v4.b}[3], [x0]
-add x12, x16, w3, uxth
-ror x24, x7, #32
 add x11, x16, w10, uxth
 ld1 {v5.b}[3], [x2]
 add x10, x16, x10, lsr #48
@@ -80,25 +80,25 @@ add x21, x16, x21, lsr #48
 ld1 {v5.b}[4], [x12]
 add x18, x16, x18, lsr #48
 ld1 {v6.b}[4], [x20]
-add x13, x13, x17, lsl #1
+add x5, x16, x5, lsr #48
 ld1 {v7.b}[4], [x23]
 add x24, x16, x24, lsr #48
 ld1 {v4.b}[5], [x10]
 ld1 {v5.b}[5], [x18]
-add x3, x16, x3, lsr #48
-ld1 {v6.b}[5], [x21]
-add x14, x14, #32
-ld1 {v7.b}[5], [x24]
-add x5, x16, x5, lsr #48
-ld1 {v4.b}[6], [x11]
 add x1, x16, x1, lsr #48
+ld1 {v6.b}[5], [x21]
+add x13, x13, x17, lsl #1
+ld1 {v7.b}[5], [x24]
+ld1 {v4.b}[6], [x11]
+add x3, x16, x3, lsr #48
 ld1 {v5.b}[6], [x19]
 ld1 {v6.b}[6], [x22]
 add x7, x16, x7, lsr #48
 ld1 {v7.b}[6], [x25]
 ld1 {v4.b}[7], [x1]
-ld1 {v5.b}[7], [x3]
 add x8, x13, x17
+ld1 {v5.b}[7], [x3]
 ld1 {v6.b}[7], [x5]
+add x14, x14, #32
 ld1 {v7.b}[7], [x7]
 b 3f
