@@ -159,27 +159,27 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
-    "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
-    "fmov x0, d0\n\t" \
-    "fmov x6, d3\n\t" \
-    "fmov x2, d1\n\t" \
-    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
     "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
-    "fmov x5, v2.d[1]\n\t" \
+    "fmov x6, d3\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
     "fmov x4, d2\n\t" \
+    "fmov x0, d0\n\t" \
     "fmov x1, v0.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
     "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
+    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
-    "ror x24, x6, #32\n\t" \
-    "stp d6, d7, [x8]\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
-    "ror x21, x4, #32\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
     "adds %[q], %[q], %[w]\n\t" \
+    "stp d6, d7, [x8]\n\t" \
+    "ror x24, x6, #32\n\t" \
+    "add x9, %[cm], w0, uxth\n\t" \
+    "add x23, %[cm], w6, uxth\n\t" \
+    "ror x21, x4, #32\n\t" \
     "ror x10, x0, #32\n\t" \
     "ldr q26, [%[rp], #16]\n\t" \
     "ror x18, x2, #32\n\t" \
@@ -199,8 +199,8 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x24, %[cm], x24, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
     "add x23, %[cm], w7, uxth\n\t" \
-    "ror x10, x1, #32\n\t" \
     "add x12, %[cm], w3, uxth\n\t" \
+    "ror x10, x1, #32\n\t" \
     "ld1 {v5.b}[1], [x18]\n\t" \
     "add x0, %[cm], x0, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x21]\n\t" \
@@ -215,8 +215,8 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x6, %[cm], x6, lsr #48\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
     "add x22, %[cm], w21, uxth\n\t" \
-    "ror x24, x7, #32\n\t" \
     "add x9, %[cm], w1, uxth\n\t" \
+    "ror x24, x7, #32\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "add x11, %[cm], w10, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
@@ -234,28 +234,28 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "ld1 {v5.b}[4], [x12]\n\t" \
     "add x24, %[cm], x24, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v6.b}[5], [x21]\n\t" \
     "add x5, %[cm], x5, lsr #48\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
     "ld1 {v7.b}[5], [x24]\n\t" \
     "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
+    "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
     "ld1 {v6.b}[6], [x22]\n\t" \
     "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
-    "add x7, %[cm], x7, lsr #48\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x11]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
     "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
-    "ld1 {v4.b}[7], [x1]\n\t" \
-    "add %[rp], %[rp], #32\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
+    "ld1 {v4.b}[7], [x1]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
     "add x8, %[d], %[w]\n\t" \
+    "add %[rp], %[rp], #32\n\t" \
     "b.ne 1b\n\t"
 
 // A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2, the numerators' << 2 in their weights

@@ -12,27 +12,27 @@ smull v16.4s, v9.4h, v8.h[0]
 add v20.4s, v25.4s, v29.4s
 tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v31.16b
 add v19.4s, v24.4s, v18.4s
-smull v29.4s, v9.4h, v8.h[3]
 tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v30.16b
+smull v29.4s, v9.4h, v8.h[3]
 add v23.4s, v28.4s, v17.4s
-fmov x3, v1.d[1]
-fmov x0, d0
-fmov x6, d3
-fmov x2, d1
-smull v18.4s, v9.4h, v8.h[2]
 smlal2 v16.4s, v9.8h, v8.h[1]
-fmov x5, v2.d[1]
+fmov x6, d3
+fmov x3, v1.d[1]
 fmov x7, v3.d[1]
+fmov x5, v2.d[1]
 fmov x4, d2
+fmov x0, d0
 fmov x1, v0.d[1]
+fmov x2, d1
 smull v17.4s, v9.4h, v8.h[1]
+smull v18.4s, v9.4h, v8.h[2]
 stp d4, d5, [x13]
-ror x24, x6, #32
-stp d6, d7, [x8]
-add x9, x16, w0, uxth
-ror x21, x4, #32
-add x23, x16, w6, uxth
 adds x15, x15, x17
+stp d6, d7, [x8]
+ror x24, x6, #32
+add x9, x16, w0, uxth
+add x23, x16, w6, uxth
+ror x21, x4, #32
 ror x10, x0, #32
 ldr q26, [x14, #16]
 ror x18, x2, #32
@@ -52,8 +52,8 @@ ld1 {v6.b}[0], [x20]
 add x24, x16, x24, lsr #48
 ld1 {v4.b}[1], [x10]
 add x23, x16, w7, uxth
-ror x10, x1, #32
 add x12, x16, w3, uxth
+ror x10, x1, #32
 ld1 {v5.b}[1], [x18]
 add x0, x16, x0, lsr #48
 ld1 {v6.b}[1], [x21]
@@ -68,8 +68,8 @@ ld1 {v6.b}[2], [x22]
 add x6, x16, x6, lsr #48
 ld1 {v7.b}[2], [x25]
 add x22, x16, w21, uxth
-ror x24, x7, #32
 add x9, x16, w1, uxth
+ror x24, x7, #32
 ld1 {v5.b}[3], [x2]
 add x11, x16, w10, uxth
 ld1 {v4.b}[3], [x0]
@@ -87,26 +87,26 @@ add x18, x16, x18, lsr #48
 ld1 {v5.b}[4], [x12]
 add x24, x16, x24, lsr #48
 ld1 {v7.b}[4], [x23]
-add x13, x13, x17, lsl #1
+add x3, x16, x3, lsr #48
 ld1 {v4.b}[5], [x10]
 ld1 {v6.b}[5], [x21]
 add x5, x16, x5, lsr #48
 ld1 {v5.b}[5], [x18]
 ld1 {v7.b}[5], [x24]
 smlal2 v17.4s, v9.8h, v8.h[2]
+smlal2 v18.4s, v9.8h, v8.h[3]
 ld1 {v6.b}[6], [x22]
 add x1, x16, x1, lsr #48
 ld1 {v5.b}[6], [x19]
-add x7, x16, x7, lsr #48
+add x13, x13, x17, lsl #1
 ld1 {v7.b}[6], [x25]
-add x3, x16, x3, lsr #48
+add x7, x16, x7, lsr #48
 ld1 {v4.b}[6], [x11]
 ld1 {v6.b}[7], [x5]
-smlal2 v18.4s, v9.8h, v8.h[3]
 smlal2 v29.4s, v9.8h, v8.h[4]
-ld1 {v4.b}[7], [x1]
-add x14, x14, #32
 ld1 {v7.b}[7], [x7]
+ld1 {v4.b}[7], [x1]
 ld1 {v5.b}[7], [x3]
 add x8, x13, x17
+add x14, x14, #32
 b.ne 1b
