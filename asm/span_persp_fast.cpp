@@ -807,4 +807,9 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   persp_fast<true>(dest, n, texels, width, p);
 }
 
+void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int height) {
+  for (int i = 0; i < count; ++i)
+    surface_span_persp_fast(items[i].dest, items[i].n, texels, width, height, items[i].span);
+}
+
 }  // namespace sb::simd
