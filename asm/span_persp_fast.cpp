@@ -785,10 +785,10 @@ void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, cons
            uint32_t(lv.dd));
 }
 #endif
-}  // namespace
 
-void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
-                             const PerspSpan& p) {
+// The dispatcher: one span by its length and steps (surface_span_persp_fast), inlined into
+// the batch loop too (surface_spans_persp_fast: the registers saved once per batch).
+SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
   // Short spans (aarch64) go to persp_short from here, not past persp_fast's entry (which
   // saves the registers of the long-span loop).
@@ -807,9 +807,15 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   persp_fast<true>(dest, n, texels, width, p);
 }
 
-void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int height) {
-  for (int i = 0; i < count; ++i)
-    surface_span_persp_fast(items[i].dest, items[i].n, texels, width, height, items[i].span);
+}  // namespace
+
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+                             const PerspSpan& p) {
+  persp_one(dest, n, texels, width, p);
+}
+
+void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
+  for (int i = 0; i < count; ++i) persp_one(items[i].dest, items[i].n, texels, width, items[i].span);
 }
 
 }  // namespace sb::simd
