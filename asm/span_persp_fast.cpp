@@ -8,6 +8,7 @@
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
 #include "asm/span_persp_a64long.h"
+#include "asm/span_persp_a64pair.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/surface_span.h"
 
@@ -815,7 +816,32 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 }
 
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
+#if defined(__aarch64__) && defined(__GNUC__)
+  // aarch64: two neighbouring short second-order spans (persp_short_inl<true>'s) take their
+  // samples from one asm block (short_samples2, asm/span_persp_a64pair.h: the latency chains
+  // paid once for both), then each its rest (short_rest, one copy in the loop); other spans
+  // one by one.
+  auto pairable = [](const PerspItem& it) {
+    return it.n > 16 && it.n <= kShortMax && it.span.second_order && it.span.dzi != 0.0;
+  };
+  ShortSamples s[2];
+  for (int i = 0; i < count; ++i) {
+    if (i + 1 < count && pairable(items[i]) && pairable(items[i + 1])) {
+      short_samples2(items[i].span, items[i].n, items[i + 1].span, items[i + 1].n, s);
+#pragma GCC unroll 1
+      for (int j = 0; j < 2; ++j) {
+        const PerspItem& it = items[i + j];
+        const ShortSamples& q = s[j];
+        short_rest<true>(it.dest, it.n, texels, width, it.span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01, q.c23);
+      }
+      ++i;
+      continue;
+    }
+    persp_one(items[i].dest, items[i].n, texels, width, items[i].span);
+  }
+#else
   for (int i = 0; i < count; ++i) persp_one(items[i].dest, items[i].n, texels, width, items[i].span);
+#endif
 }
 
 }  // namespace sb::simd
