@@ -63,14 +63,14 @@ constexpr uint64_t kBiasBits = 0x4338000000000000;  // 2^52 + 2^51 (the deltas' 
 constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // The rest of persp_short_inl after its sample block (shared with the paired sample block of
 // asm/span_persp_a64pair.h): the steps and the runs of a span of n = 17 .. kShortMax pixels
-// from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23 (sums of
+// (runs = (n + 15) / 16 runs, the last one of last = n - 16 (runs - 1) pixels: computed by the
+// caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23 (sums of
 // neighbouring samples' z), c01, c23 (the full runs' curve factors) and zc (the span's dzi).
 template <bool kCurve>
-SB_INLINE void short_rest(uint8_t* dest, int n, const uint8_t* texels, int width, double zc, int32x4_t S01,
-                          int32x4_t S23, int32x4_t S44, float64x2_t zs01, float64x2_t zs23, float64x2_t c01,
-                          float64x2_t c23) {
+SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texels, int width, double zc,
+                          int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t zs01, float64x2_t zs23,
+                          float64x2_t c01, float64x2_t c23) {
   const uint32_t w = uint32_t(width);
-  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
   // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
   // picked without an index. The branch also ends the code block holding the asm block
   // soon after it (under 128 micro-ops: the A72 model's reorder buffer then holds the next
@@ -266,12 +266,14 @@ SB_INLINE void short_rest(uint8_t* dest, int n, const uint8_t* texels, int width
   }
 }
 // A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
-// u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below).
+// u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below); ShortSamples holds
+// them (asm/span_persp_a64pair.h's paired block stores them so).
 struct alignas(16) ShortSamples {
   int32x4_t S01, S23, S44;
   float64x2_t zs01, zs23, c01, c23;
 };
-SB_INLINE ShortSamples short_samples1(const PerspSpan& p, int n, double zc) {
+SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S01, int32x4_t& S23, int32x4_t& S44,
+                              float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23) {
   // One asm block, each operation the vector code's lane operation (the same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
   // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
@@ -442,7 +444,8 @@ SB_INLINE ShortSamples short_samples1(const PerspSpan& p, int n, double zc) {
       : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(zc), "m"(p), "m"(kMinZi)
       : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
         "v29", "v30", "v31");
-  return ShortSamples{rS01, rS23, rS44, rzs01, rzs23, rc01, rc23};
+  zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
+  S01 = rS01, S23 = rS23, S44 = rS44;
 }
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
@@ -450,8 +453,11 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
   } else {
     const double zc = p.second_order ? p.dzi : 0.0;
-    const ShortSamples s = short_samples1(p, n, zc);
-    short_rest<true>(dest, n, texels, width, zc, s.S01, s.S23, s.S44, s.zs01, s.zs23, s.c01, s.c23);
+    const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+    int32x4_t S01, S23, S44;
+    float64x2_t zs01, zs23, c01, c23;
+    short_samples1(p, n, zc, S01, S23, S44, zs01, zs23, c01, c23);
+    short_rest<true>(dest, runs, last, texels, width, zc, S01, S23, S44, zs01, zs23, c01, c23);
   }
 }
 // The same, out of line (persp_fast's linear instance keeps a call to it); the

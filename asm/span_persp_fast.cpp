@@ -816,31 +816,34 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 }
 
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
+  const PerspItem* it = items;
+  const PerspItem* const end = items + (count > 0 ? count : 0);
 #if defined(__aarch64__) && defined(__GNUC__)
   // aarch64: two neighbouring short second-order spans (persp_short_inl<true>'s) take their
   // samples from one asm block (short_samples2, asm/span_persp_a64pair.h: the latency chains
   // paid once for both), then each its rest (short_rest, one copy in the loop); other spans
   // one by one.
-  auto pairable = [](const PerspItem& it) {
-    return it.n > 16 && it.n <= kShortMax && it.span.second_order && it.span.dzi != 0.0;
+  auto pairable = [](const PerspItem& x) {
+    return x.n > 16 && x.n <= kShortMax && x.span.second_order && x.span.dzi != 0.0;
   };
   ShortSamples s[2];
-  for (int i = 0; i < count; ++i) {
-    if (i + 1 < count && pairable(items[i]) && pairable(items[i + 1])) {
-      short_samples2(items[i].span, items[i].n, items[i + 1].span, items[i + 1].n, s);
+  while (it != end) {
+    if (pairable(*it) && it + 1 != end && pairable(it[1])) {
+      short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
 #pragma GCC unroll 1
-      for (int j = 0; j < 2; ++j) {
-        const PerspItem& it = items[i + j];
+      for (int j = 0; j < 2; ++j, ++it) {
         const ShortSamples& q = s[j];
-        short_rest<true>(it.dest, it.n, texels, width, it.span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01, q.c23);
+        const int runs = (it->n + 15) >> 4, last = it->n - 16 * (runs - 1);
+        short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
+                         q.c01, q.c23);
       }
-      ++i;
       continue;
     }
-    persp_one(items[i].dest, items[i].n, texels, width, items[i].span);
+    persp_one(it->dest, it->n, texels, width, it->span);
+    ++it;
   }
 #else
-  for (int i = 0; i < count; ++i) persp_one(items[i].dest, items[i].n, texels, width, items[i].span);
+  for (; it != end; ++it) persp_one(it->dest, it->n, texels, width, it->span);
 #endif
 }
 

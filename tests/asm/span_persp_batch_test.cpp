@@ -262,7 +262,9 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     alignas(16) ShortSamples pair[2];
     std::memset(pair, 0x5a, sizeof pair);
     sb::simd::short_samples2(a, na, b, nb, pair);
-    const ShortSamples sa = sb::simd::short_samples1(a, na, a.dzi), sbb = sb::simd::short_samples1(b, nb, b.dzi);
+    ShortSamples sa, sbb;
+    sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23);
+    sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23);
     ASSERT_EQ(std::memcmp(&pair[0], &sa, sizeof sa), 0) << "span a, trial " << trial << " zi0 " << a.zi0 << " n " << na;
     ASSERT_EQ(std::memcmp(&pair[1], &sbb, sizeof sbb), 0) << "span b, trial " << trial << " zi0 " << b.zi0 << " n " << nb;
     uint64_t bits;
