@@ -182,6 +182,8 @@ class Disasm:
     def clean(self, s):
         name = self.t["name"]
         if name == "x86-64":
+            # a call target's symbol may hold '#' (C++ lambdas: "{lambda(...)#1}"): label it first
+            s = re.sub(r"\b(0x)?[0-9a-f]+ <.*>", ".Ltgt", s)
             s = s.split("#")[0]
         elif name == "aarch64":
             s = s.split("//")[0]
