@@ -90,7 +90,8 @@ void surface_spans_persp_scalar(const PerspItem* items, int count, const uint8_t
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& span);
 // Batch, tuned: surface_span_persp_fast per item, in order, in one function (register saves
-// once per batch).
+// once per batch); on aarch64 two neighbouring short second-order items (17 .. 64 pixels)
+// take their samples from one asm block (asm/span_persp_a64pair.h), the rest per item.
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int height);
 
 }  // namespace sb::simd
