@@ -177,6 +177,30 @@ TEST(AsmSpanPerspBatch, ShortSecondOrderPairsMatchWithEdgeDepths) {
   std::printf("[ asm      ] span_persp batch: %ld short spans in pairs, every variant identical\n", spans);
 }
 
+// Runs of long spans (aarch64: a long first item of the items left is reached and left with
+// tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
+// order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
+// shorter spans before, between and after them.
+TEST(AsmSpanPerspBatch, RunsOfLongSpansMatch) {
+  std::mt19937 rng(913);
+  const int sw = 61, sh = 23;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 7);
+  long spans = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 12);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = pick_span(rng, sw, sh);
+      const int n = rng() % 5 ? 65 + int(rng() % 336) : int(rng() % 65);
+      items.push_back(PerspItem{nullptr, n, p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of long ones, every variant identical\n", spans);
+}
+
 // Real faces' rows (LibreQuake maps from their own viewpoints; skipped without the data):
 // one batch per face, items built as engine/render/span_draw.cpp builds them.
 TEST(AsmSpanPerspBatch, MatchesOnRealFaces) {
