@@ -338,11 +338,12 @@ void expand_palette_avx2(const uint8_t* src, ptrdiff_t src_stride, int width, in
 }  // namespace
 
 const Kernels kAvx2 = {"avx2", surface_span_avx2, surface_block_avx2, z_span_avx2, expand_palette_avx2, alias_span_sse2,
-                        surface_span_persp_fast};
+                        surface_span_persp_fast, surface_spans_persp_fast};
 // The gather versions of the two texel-fetching kernels (slower on the Intel machines
 // measured so far; kept for AMD and for the benchmark).
 const Kernels kAvx2Gather = {"avx2g", surface_span_avx2_gather, surface_block_avx2_gather, z_span_avx2,
-                             expand_palette_avx2, alias_span_sse2, surface_span_persp_fast};
+                             expand_palette_avx2, alias_span_sse2, surface_span_persp_fast,
+                             surface_spans_persp_fast};
 
 }  // namespace sb::simd::detail
 

@@ -16,7 +16,7 @@ namespace sb::simd {
 namespace detail {
 
 const Kernels kScalar = {"scalar", surface_span_scalar, surface_block_scalar, z_span_scalar, expand_palette_scalar,
-                         alias_span_scalar, surface_span_persp_scalar};
+                         alias_span_scalar, surface_span_persp_scalar, surface_spans_persp_scalar};
 
 namespace {
 
@@ -78,13 +78,14 @@ bool cpu_in_order() {
 
 struct Choice {
   Kernels tuned;
-  char line[160];
+  char line[192];
 };
 
 Choice make_choice() {
   Choice c{kScalar, {}};
   c.tuned.name = "tuned";
   c.tuned.surface_span_persp = surface_span_persp_fast;  // portable C++: every target
+  c.tuned.surface_spans_persp = surface_spans_persp_fast;
 #if defined(SB_SIMD_X86)
   // The span kernel stays scalar: SSE2 loses to it on 16-pixel runs (its lane setup costs
   // more than it saves), and AVX2, 1.2x faster on full 16-pixel runs in asm_bench, made
@@ -132,7 +133,7 @@ Choice make_choice() {
   const char* alias = "scalar";
 #endif
   std::snprintf(c.line, sizeof c.line, "surface_span=%s surface_block=%s z_span=%s expand_palette=%s alias_span=%s "
-                "surface_span_persp=fast", span, block, z, pal, alias);
+                "surface_span_persp=fast surface_spans_persp=fast", span, block, z, pal, alias);
   return c;
 }
 

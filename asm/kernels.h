@@ -12,12 +12,15 @@
 //   expand_palette  asm/palette_expand.h   scalar, sse2, avx2 (gathers), neon
 //   alias_span      asm/alias_span.h       scalar, sse2, neon (avx2 tables: the sse2 one)
 //   surface_span_persp asm/span_persp.h    scalar (reference), fast (portable; every other table)
+//   surface_spans_persp asm/span_persp.h   the same per batch: scalar (a loop over the reference),
+//                                          fast (every other table; aarch64 pairs short spans)
 //   lit_span        asm/lit_span.h         scalar, fast, avx2 (gathers), avx2s (own dispatch: lit_span_active())
 // The tuned mix (asm/dispatch.cpp) on x86-64: scalar span (the vector ones did not speed
 // up whole frames), avx2 (else sse2) builder and z, sse2 palette and alias span; on ARM:
 // neon. Everywhere the fast whole-span drawer: the engine draws lit surfaces through
-// surface_span_persp (one call per span), whose scalar reference is the per-run walker over
-// surface_span (so force_scalar still means "the references everywhere").
+// surface_spans_persp (one call per batch of a surface's spans), whose scalar reference is
+// the per-run walker over surface_span (so force_scalar still means "the references
+// everywhere").
 //
 // Every variant of a kernel writes exactly the bytes its scalar reference writes
 // (tests/asm checks it on random and edge inputs).
@@ -44,6 +47,7 @@ struct Kernels {
   ExpandPaletteFn expand_palette;
   AliasSpanFn alias_span;
   SurfaceSpanPerspFn surface_span_persp;  // a whole span, the divide inside (asm/span_persp.h)
+  SurfaceSpansPerspFn surface_spans_persp;  // a batch of them (one surface's spans)
 };
 
 // The table the engine uses: the tuned mix for this CPU, or the scalar one when forced.

@@ -965,10 +965,11 @@ void expand_palette_neon(const uint8_t* src, ptrdiff_t src_stride, int width, in
 }  // namespace
 
 const Kernels kNeon = {"neon", surface_span_fast, surface_block_neon, z_span_neon, expand_palette_neon, alias_span_neon,
-                        surface_span_persp_fast};
+                        surface_span_persp_fast, surface_spans_persp_fast};
 #if defined(__aarch64__)
 const Kernels kNeonInOrder = {"neon_a53", surface_span_fast, surface_block_neon_inorder, z_span_neon,
-                              expand_palette_neon, alias_span_neon, surface_span_persp_fast};
+                              expand_palette_neon, alias_span_neon, surface_span_persp_fast,
+                              surface_spans_persp_fast};
 #endif
 
 }  // namespace sb::simd::detail

@@ -29,4 +29,9 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
   span_walk::walk_span(dest, p.px0, n, p.second_order ? zix : 0.0, exact, run);
 }
 
+void surface_spans_persp_scalar(const PerspItem* items, int count, const uint8_t* texels, int width, int height) {
+  for (int i = 0; i < count; ++i)
+    surface_span_persp_scalar(items[i].dest, items[i].n, texels, width, height, items[i].span);
+}
+
 }  // namespace sb::simd

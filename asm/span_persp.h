@@ -45,11 +45,29 @@ struct PerspSpan {
 using SurfaceSpanPerspFn = void (*)(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                                     const PerspSpan& span);
 
+// One span of a batch: dest, its length n and its gradients (SurfaceSpanPerspFn's arguments).
+struct PerspItem {
+  uint8_t* dest;
+  int32_t n;
+  PerspSpan span;
+};
+
+// A batch of spans of one surface (engine/render/span_draw.cpp draws a surface's spans so):
+// the same as count calls of a SurfaceSpanPerspFn, items[0] first, with these texels, width
+// and height. Contract: count >= 0; each item as SurfaceSpanPerspFn's contract above; the
+// items' dest ranges overlap neither each other nor texels. A batch lets a variant share
+// per-call work between spans (register saves; on aarch64 two short spans' samples in one
+// block).
+using SurfaceSpansPerspFn = void (*)(const PerspItem* items, int count, const uint8_t* texels, int width,
+                                     int height);
+
 // Reference (asm/span_persp.cpp): the engine's run walker (asm/span_walk.h), calling
 // surface_span_scalar per run, its run steps dividing by the run's step count like the
 // engine does.
 void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                                const PerspSpan& span);
+// Batch reference: surface_span_persp_scalar per item, in order.
+void surface_spans_persp_scalar(const PerspItem* items, int count, const uint8_t* texels, int width, int height);
 
 // Tuned, portable C++ (asm/span_persp_fast.cpp), in every non-scalar table. Per 16-pixel run
 // only the linear inner loop's work plus the run's setup: two runs per loop pass, each run
@@ -71,5 +89,9 @@ void surface_span_persp_scalar(uint8_t* dest, int n, const uint8_t* texels, int 
 // vectors and to_fixed as saturating integer clamps.
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& span);
+// Batch, tuned: surface_span_persp_fast per item, in order, in one function (register saves
+// once per batch); on aarch64 two neighbouring short second-order items (17 .. 64 pixels)
+// take their samples from one asm block (asm/span_persp_a64pair.h), the rest per item.
+void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int height);
 
 }  // namespace sb::simd

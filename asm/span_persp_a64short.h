@@ -61,191 +61,16 @@ constexpr int kShortMax = 64;
 alignas(16) constexpr uint32_t kShortConsts[8] = {120, 120, 120, 120, 1u << 25, 1u << 25, 1u << 25, 1u << 25};
 constexpr uint64_t kBiasBits = 0x4338000000000000;  // 2^52 + 2^51 (the deltas' double bias)
 constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
+// The rest of persp_short_inl after its sample block (shared with the paired sample block of
+// asm/span_persp_a64pair.h): the steps and the runs of a span of n = 17 .. kShortMax pixels
+// (runs = (n + 15) / 16 runs, the last one of last = n - 16 (runs - 1) pixels: computed by the
+// caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23 (sums of
+// neighbouring samples' z), c01, c23 (the full runs' curve factors) and zc (the span's dzi).
 template <bool kCurve>
-SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
-  if constexpr (!kCurve) {
-    persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
-    return;
-  }
-  const double zc = p.second_order ? p.dzi : 0.0;
+SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texels, int width, double zc,
+                          int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t zs01, float64x2_t zs23,
+                          float64x2_t c01, float64x2_t c23) {
   const uint32_t w = uint32_t(width);
-  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
-  // One asm block, each operation the vector code's lane operation (the same bits):
-  // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
-  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
-  // [u, v] products uvrow + uvx pos beside the depth chains; the reciprocals 1 / max(zi,
-  // kMinZi) (above: zA, zB in 2 lanes, zC scalar, the three chains level by level, the
-  // range and all-ones test in their latency gaps; the divides only on the branch), then
-  // the samples: to_fixed as fcvtzu #16 of (uv z), uqxtn, umin with [umax, vmax] (the
-  // clamp at 0 folded into the unsigned conversion; AsmSpanPersp.UnsignedFixedPoint...).
-  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
-  // for the in-order A53 (a consumer after its producer's latency; its model also completes
-  // in order, so each latency gap holds work of the same or shorter latency); the
-  // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
-  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
-  // Second order: the sums of neighbouring samples' z, zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
-  // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
-  // (the full runs' curve factors), also in the block (the conversions' latency gaps).
-  float64x2_t zs01 = vdupq_n_f64(0.0), zs23 = zs01, c01 = zs01, c23 = zs01;
-  int32x4_t S01, S23, S44;
-  double zck = 0.0;  // zc * -1/16 (second order: the runs' steps below), in the block's spare slots
-  if constexpr (kCurve) {
-    register float64x2_t rzs01 __asm__("v0");
-    register float64x2_t rzs23 __asm__("v1");
-    register float64x2_t rc01 __asm__("v3");
-    register float64x2_t rc23 __asm__("v16");
-    register int32x4_t rS01 __asm__("v5");
-    register int32x4_t rS23 __asm__("v19");
-    register int32x4_t rS44 __asm__("v7");
-    uint64_t t0, t1, t2, t5, t6, t7;
-    __asm__ volatile(
-        "sub %w[t5], %w[n], #1\n\t"
-        "cmp %w[t5], #32\n\t"
-        "mov %w[t7], #32\n\t"
-        "sub %w[t6], %w[n], #17\n\t"
-        "fmov d1, #16.0\n\t"
-        "ldr d0, [%[p], #48]\n\t"
-        "csel %w[t5], %w[t5], %w[t7], lt\n\t"
-        "cmp %w[t6], #32\n\t"
-        "add %[t0], %[p], #16\n\t"
-        "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
-        "ld1r {v26.2d}, [%[p]]\n\t"
-        "csel %w[t6], %w[t6], %w[t7], lt\n\t"
-        "fadd d2, d0, d1\n\t"
-        "sub %w[t7], %w[n], #33\n\t"
-        "scvtf d5, %w[t6]\n\t"
-        "scvtf d4, %w[t5]\n\t"
-        "ld1r {v27.2d}, [%[p]]\n\t"
-        "trn1 v0.2d, v0.2d, v2.2d\n\t"
-        "fadd d3, d2, d1\n\t"
-        "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
-        "fmov v1.2d, #1.0\n\t"
-        "scvtf d6, %w[t7]\n\t"
-        "trn1 v4.2d, v4.2d, v5.2d\n\t"
-        "ld1r {v31.2d}, [%[km]]\n\t"
-        "fmla v26.2d, v17.2d, v0.2d\n\t"
-        "fadd v7.2d, v0.2d, v4.2d\n\t"
-        "fadd d3, d3, d6\n\t"
-        "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
-        "mov %[t5], #0xbfb0000000000000\n\t"
-        "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
-        "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
-        "fmla v27.2d, v17.2d, v7.2d\n\t"
-        "fmadd d28, d17, d3, d16\n\t"
-        "fmla v20.2d, v21.2d, v0.d[1]\n\t"
-        "frecpe v2.2d, v26.2d\n\t"
-        "mov %[t2], v26.d[1]\n\t"
-        "fmov %d[zck], %[t5]\n\t"
-        "fmov %[t1], d26\n\t"
-        "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
-        "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
-        "fmaxnm d28, d28, d31\n\t"
-        "fmla v22.2d, v23.2d, v7.d[0]\n\t"
-        "frecps v5.2d, v26.2d, v2.2d\n\t"
-        "frecpe v6.2d, v27.2d\n\t"
-        "frecpe d4, d28\n\t"
-        "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
-        "fmax v31.2d, v26.2d, v27.2d\n\t"
-        "fmov %[t0], d28\n\t"
-        "fmov %[t7], d27\n\t"
-        "fmul v2.2d, v2.2d, v5.2d\n\t"
-        "frecps v16.2d, v27.2d, v6.2d\n\t"
-        "frecps d17, d28, d4\n\t"
-        "mov %[t6], v27.d[1]\n\t"
-        "fmaxp d31, v31.2d\n\t"
-        "add %[t1], %[t1], #1\n\t"
-        "add %[t0], %[t0], #1\n\t"
-        "lsl %[t1], %[t1], #12\n\t"
-        "lsl %[t0], %[t0], #12\n\t"
-        "add %[t6], %[t6], #1\n\t"
-        "frecps v5.2d, v26.2d, v2.2d\n\t"
-        "fmul d4, d4, d17\n\t"
-        "fmax d31, d31, d28\n\t"
-        "fmul v6.2d, v6.2d, v16.2d\n\t"
-        "add %[t2], %[t2], #1\n\t"
-        "add %[t7], %[t7], #1\n\t"
-        "lsl %[t2], %[t2], #12\n\t"
-        "lsl %[t6], %[t6], #12\n\t"
-        "lsl %[t7], %[t7], #12\n\t"
-        "frecps d17, d28, d4\n\t"
-        "frecps v16.2d, v27.2d, v6.2d\n\t"
-        "clz %[t1], %[t1]\n\t"
-        "clz %[t7], %[t7]\n\t"
-        "clz %[t6], %[t6]\n\t"
-        "fmul v2.2d, v2.2d, v5.2d\n\t"
-        "mov v5.16b, v1.16b\n\t"
-        "fmul %d[zck], %d[zc], %d[zck]\n\t"
-        "fmul d4, d4, d17\n\t"
-        "fmul v6.2d, v6.2d, v16.2d\n\t"
-        "mov v16.16b, v1.16b\n\t"
-        "fmov %[t5], d31\n\t"
-        "orr %[t7], %[t7], %[t6]\n\t"
-        "clz %[t2], %[t2]\n\t"
-        "orr %[t1], %[t1], %[t2]\n\t"
-        "fmsub d17, d28, d4, d1\n\t"
-        "fmls v5.2d, v26.2d, v2.2d\n\t"
-        "fmla v29.2d, v30.2d, v3.d[0]\n\t"
-        "fmls v16.2d, v27.2d, v6.2d\n\t"
-        "orr %[t1], %[t1], %[t7]\n\t"
-        "clz %[t0], %[t0]\n\t"
-        "lsr %[t5], %[t5], #52\n\t"
-        "fmla v2.2d, v2.2d, v5.2d\n\t"
-        "fmadd d4, d4, d17, d4\n\t"
-        "fmla v6.2d, v6.2d, v16.2d\n\t"
-        "mov v5.16b, v1.16b\n\t"
-        "mov v16.16b, v1.16b\n\t"
-        "add %[t5], %[t5], #0x19\n\t"
-        "orr %[t1], %[t1], %[t0]\n\t"
-        "lsr %[t5], %[t5], #5\n\t"
-        "fmla v18.2d, v19.2d, v0.d[0]\n\t"
-        "fmls v5.2d, v26.2d, v2.2d\n\t"
-        "fmls v16.2d, v27.2d, v6.2d\n\t"
-        "fmsub d17, d28, d4, d1\n\t"
-        "fmla v24.2d, v25.2d, v7.d[1]\n\t"
-        "orr %[t1], %[t1], %[t5]\n\t"
-        "fmla v2.2d, v2.2d, v5.2d\n\t"
-        "fmla v6.2d, v6.2d, v16.2d\n\t"
-        "fmadd d4, d4, d17, d4\n\t"
-        "tbz %[t1], #6, 2f\n\t"
-        "fdiv v2.2d, v1.2d, v26.2d\n\t"
-        "fdiv v6.2d, v1.2d, v27.2d\n\t"
-        "fdiv d4, d1, d28\n\t"
-        "2:\n\t"
-        "ext v1.16b, v6.16b, v4.16b, #8\n\t"
-        "fmul v22.2d, v22.2d, v6.d[0]\n\t"
-        "fmul v18.2d, v18.2d, v2.d[0]\n\t"
-        "fmul v24.2d, v24.2d, v6.d[1]\n\t"
-        "fmul v29.2d, v29.2d, v4.d[0]\n\t"
-        "fmul v20.2d, v20.2d, v2.d[1]\n\t"
-        "add %[t0], %[p], #56\n\t"
-        "fcvtzu v18.2d, v18.2d, #16\n\t"
-        "ext v0.16b, v2.16b, v6.16b, #8\n\t"
-        "fcvtzu v22.2d, v22.2d, #16\n\t"
-        "fcvtzu v29.2d, v29.2d, #16\n\t"
-        "fcvtzu v20.2d, v20.2d, #16\n\t"
-        "fcvtzu v24.2d, v24.2d, #16\n\t"
-        "uqxtn v5.2s, v18.2d\n\t"
-        "fadd v0.2d, v2.2d, v0.2d\n\t"
-        "uqxtn v19.2s, v22.2d\n\t"
-        "uqxtn v7.2s, v29.2d\n\t"
-        "fadd v1.2d, v6.2d, v1.2d\n\t"
-        "ld1r {v31.2d}, [%[t0]]\n\t"
-        "uqxtn2 v5.4s, v20.2d\n\t"
-        "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
-        "uqxtn2 v19.4s, v24.2d\n\t"
-        "uqxtn2 v7.4s, v29.2d\n\t"
-        "umin v5.4s, v5.4s, v31.4s\n\t"
-        "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
-        "umin v19.4s, v19.4s, v31.4s\n\t"
-        "umin v7.4s, v7.4s, v31.4s"
-        : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
-          [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
-        : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(kCurve ? zc : 0.0), "m"(p), "m"(kMinZi)
-        : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
-          "v29", "v30", "v31");
-    zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
-    S01 = rS01, S23 = rS23, S44 = rS44;
-  }
   // The rest for k = runs - 1 (1, 2, 3) as a constant: the last run's samples and deltas
   // picked without an index. The branch also ends the code block holding the asm block
   // soon after it (under 128 micro-ops: the A72 model's reorder buffer then holds the next
@@ -438,6 +263,201 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
     rest(std::integral_constant<int, 2>{});
   } else {
     rest(std::integral_constant<int, 3>{});
+  }
+}
+// A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
+// u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below); ShortSamples holds
+// them (asm/span_persp_a64pair.h's paired block stores them so).
+struct alignas(16) ShortSamples {
+  int32x4_t S01, S23, S44;
+  float64x2_t zs01, zs23, c01, c23;
+};
+SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S01, int32x4_t& S23, int32x4_t& S44,
+                              float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23) {
+  // One asm block, each operation the vector code's lane operation (the same bits):
+  // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
+  // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
+  // [u, v] products uvrow + uvx pos beside the depth chains; the reciprocals 1 / max(zi,
+  // kMinZi) (above: zA, zB in 2 lanes, zC scalar, the three chains level by level, the
+  // range and all-ones test in their latency gaps; the divides only on the branch), then
+  // the samples: to_fixed as fcvtzu #16 of (uv z), uqxtn, umin with [umax, vmax] (the
+  // clamp at 0 folded into the unsigned conversion; AsmSpanPersp.UnsignedFixedPoint...).
+  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
+  // for the in-order A53 (a consumer after its producer's latency; its model also completes
+  // in order, so each latency gap holds work of the same or shorter latency); the
+  // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
+  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
+  // Second order: the sums of neighbouring samples' z, zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
+  // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
+  // (the full runs' curve factors), also in the block (the conversions' latency gaps).
+  double zck;  // zc * -1/16 (the full runs' curve factors), in the block's spare slots
+  register float64x2_t rzs01 __asm__("v0");
+  register float64x2_t rzs23 __asm__("v1");
+  register float64x2_t rc01 __asm__("v3");
+  register float64x2_t rc23 __asm__("v16");
+  register int32x4_t rS01 __asm__("v5");
+  register int32x4_t rS23 __asm__("v19");
+  register int32x4_t rS44 __asm__("v7");
+  uint64_t t0, t1, t2, t5, t6, t7;
+  __asm__ volatile(
+      "sub %w[t5], %w[n], #1\n\t"
+      "cmp %w[t5], #32\n\t"
+      "mov %w[t7], #32\n\t"
+      "sub %w[t6], %w[n], #17\n\t"
+      "fmov d1, #16.0\n\t"
+      "ldr d0, [%[p], #48]\n\t"
+      "csel %w[t5], %w[t5], %w[t7], lt\n\t"
+      "cmp %w[t6], #32\n\t"
+      "add %[t0], %[p], #16\n\t"
+      "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+      "ld1r {v26.2d}, [%[p]]\n\t"
+      "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+      "fadd d2, d0, d1\n\t"
+      "sub %w[t7], %w[n], #33\n\t"
+      "scvtf d5, %w[t6]\n\t"
+      "scvtf d4, %w[t5]\n\t"
+      "ld1r {v27.2d}, [%[p]]\n\t"
+      "trn1 v0.2d, v0.2d, v2.2d\n\t"
+      "fadd d3, d2, d1\n\t"
+      "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+      "fmov v1.2d, #1.0\n\t"
+      "scvtf d6, %w[t7]\n\t"
+      "trn1 v4.2d, v4.2d, v5.2d\n\t"
+      "ld1r {v31.2d}, [%[km]]\n\t"
+      "fmla v26.2d, v17.2d, v0.2d\n\t"
+      "fadd v7.2d, v0.2d, v4.2d\n\t"
+      "fadd d3, d3, d6\n\t"
+      "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+      "mov %[t5], #0xbfb0000000000000\n\t"
+      "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+      "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+      "fmla v27.2d, v17.2d, v7.2d\n\t"
+      "fmadd d28, d17, d3, d16\n\t"
+      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+      "frecpe v2.2d, v26.2d\n\t"
+      "mov %[t2], v26.d[1]\n\t"
+      "fmov %d[zck], %[t5]\n\t"
+      "fmov %[t1], d26\n\t"
+      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+      "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+      "fmaxnm d28, d28, d31\n\t"
+      "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+      "frecps v5.2d, v26.2d, v2.2d\n\t"
+      "frecpe v6.2d, v27.2d\n\t"
+      "frecpe d4, d28\n\t"
+      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+      "fmax v31.2d, v26.2d, v27.2d\n\t"
+      "fmov %[t0], d28\n\t"
+      "fmov %[t7], d27\n\t"
+      "fmul v2.2d, v2.2d, v5.2d\n\t"
+      "frecps v16.2d, v27.2d, v6.2d\n\t"
+      "frecps d17, d28, d4\n\t"
+      "mov %[t6], v27.d[1]\n\t"
+      "fmaxp d31, v31.2d\n\t"
+      "add %[t1], %[t1], #1\n\t"
+      "add %[t0], %[t0], #1\n\t"
+      "lsl %[t1], %[t1], #12\n\t"
+      "lsl %[t0], %[t0], #12\n\t"
+      "add %[t6], %[t6], #1\n\t"
+      "frecps v5.2d, v26.2d, v2.2d\n\t"
+      "fmul d4, d4, d17\n\t"
+      "fmax d31, d31, d28\n\t"
+      "fmul v6.2d, v6.2d, v16.2d\n\t"
+      "add %[t2], %[t2], #1\n\t"
+      "add %[t7], %[t7], #1\n\t"
+      "lsl %[t2], %[t2], #12\n\t"
+      "lsl %[t6], %[t6], #12\n\t"
+      "lsl %[t7], %[t7], #12\n\t"
+      "frecps d17, d28, d4\n\t"
+      "frecps v16.2d, v27.2d, v6.2d\n\t"
+      "clz %[t1], %[t1]\n\t"
+      "clz %[t7], %[t7]\n\t"
+      "clz %[t6], %[t6]\n\t"
+      "fmul v2.2d, v2.2d, v5.2d\n\t"
+      "mov v5.16b, v1.16b\n\t"
+      "fmul %d[zck], %d[zc], %d[zck]\n\t"
+      "fmul d4, d4, d17\n\t"
+      "fmul v6.2d, v6.2d, v16.2d\n\t"
+      "mov v16.16b, v1.16b\n\t"
+      "fmov %[t5], d31\n\t"
+      "orr %[t7], %[t7], %[t6]\n\t"
+      "clz %[t2], %[t2]\n\t"
+      "orr %[t1], %[t1], %[t2]\n\t"
+      "fmsub d17, d28, d4, d1\n\t"
+      "fmls v5.2d, v26.2d, v2.2d\n\t"
+      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
+      "fmls v16.2d, v27.2d, v6.2d\n\t"
+      "orr %[t1], %[t1], %[t7]\n\t"
+      "clz %[t0], %[t0]\n\t"
+      "lsr %[t5], %[t5], #52\n\t"
+      "fmla v2.2d, v2.2d, v5.2d\n\t"
+      "fmadd d4, d4, d17, d4\n\t"
+      "fmla v6.2d, v6.2d, v16.2d\n\t"
+      "mov v5.16b, v1.16b\n\t"
+      "mov v16.16b, v1.16b\n\t"
+      "add %[t5], %[t5], #0x19\n\t"
+      "orr %[t1], %[t1], %[t0]\n\t"
+      "lsr %[t5], %[t5], #5\n\t"
+      "fmla v18.2d, v19.2d, v0.d[0]\n\t"
+      "fmls v5.2d, v26.2d, v2.2d\n\t"
+      "fmls v16.2d, v27.2d, v6.2d\n\t"
+      "fmsub d17, d28, d4, d1\n\t"
+      "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+      "orr %[t1], %[t1], %[t5]\n\t"
+      "fmla v2.2d, v2.2d, v5.2d\n\t"
+      "fmla v6.2d, v6.2d, v16.2d\n\t"
+      "fmadd d4, d4, d17, d4\n\t"
+      "tbz %[t1], #6, 2f\n\t"
+      "fdiv v2.2d, v1.2d, v26.2d\n\t"
+      "fdiv v6.2d, v1.2d, v27.2d\n\t"
+      "fdiv d4, d1, d28\n\t"
+      "2:\n\t"
+      "ext v1.16b, v6.16b, v4.16b, #8\n\t"
+      "fmul v22.2d, v22.2d, v6.d[0]\n\t"
+      "fmul v18.2d, v18.2d, v2.d[0]\n\t"
+      "fmul v24.2d, v24.2d, v6.d[1]\n\t"
+      "fmul v29.2d, v29.2d, v4.d[0]\n\t"
+      "fmul v20.2d, v20.2d, v2.d[1]\n\t"
+      "add %[t0], %[p], #56\n\t"
+      "fcvtzu v18.2d, v18.2d, #16\n\t"
+      "ext v0.16b, v2.16b, v6.16b, #8\n\t"
+      "fcvtzu v22.2d, v22.2d, #16\n\t"
+      "fcvtzu v29.2d, v29.2d, #16\n\t"
+      "fcvtzu v20.2d, v20.2d, #16\n\t"
+      "fcvtzu v24.2d, v24.2d, #16\n\t"
+      "uqxtn v5.2s, v18.2d\n\t"
+      "fadd v0.2d, v2.2d, v0.2d\n\t"
+      "uqxtn v19.2s, v22.2d\n\t"
+      "uqxtn v7.2s, v29.2d\n\t"
+      "fadd v1.2d, v6.2d, v1.2d\n\t"
+      "ld1r {v31.2d}, [%[t0]]\n\t"
+      "uqxtn2 v5.4s, v20.2d\n\t"
+      "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
+      "uqxtn2 v19.4s, v24.2d\n\t"
+      "uqxtn2 v7.4s, v29.2d\n\t"
+      "umin v5.4s, v5.4s, v31.4s\n\t"
+      "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
+      "umin v19.4s, v19.4s, v31.4s\n\t"
+      "umin v7.4s, v7.4s, v31.4s"
+      : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
+        [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
+      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(zc), "m"(p), "m"(kMinZi)
+      : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
+        "v29", "v30", "v31");
+  zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
+  S01 = rS01, S23 = rS23, S44 = rS44;
+}
+template <bool kCurve>
+SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  if constexpr (!kCurve) {
+    persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
+  } else {
+    const double zc = p.second_order ? p.dzi : 0.0;
+    const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+    int32x4_t S01, S23, S44;
+    float64x2_t zs01, zs23, c01, c23;
+    short_samples1(p, n, zc, S01, S23, S44, zs01, zs23, c01, c23);
+    short_rest<true>(dest, runs, last, texels, width, zc, S01, S23, S44, zs01, zs23, c01, c23);
   }
 }
 // The same, out of line (persp_fast's linear instance keeps a call to it); the

@@ -8,6 +8,7 @@
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
 #include "asm/span_persp_a64long.h"
+#include "asm/span_persp_a64pair.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/surface_span.h"
 
@@ -41,8 +42,15 @@ namespace {
 
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
 // row, whose curve factor is 0), the steps delta / 16 and no second-order adds per pixel.
+// aarch64: persp_fast_inl, inlined into persp_lin_a64 (below), and persp_fast calling it;
+// elsewhere this is persp_fast itself.
+#if defined(__aarch64__) && defined(__GNUC__)
+#define SB_PERSP_FAST_BODY SB_INLINE void persp_fast_inl
+#else
+#define SB_PERSP_FAST_BODY SB_V7_INLINE void persp_fast
+#endif
 template <bool kCurve>
-SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
   // span's last one) at pixel offset o_j = min(16 j, n - 1), its position computed as the
@@ -630,14 +638,20 @@ SB_V7_INLINE void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   }
 #endif
 }
+#undef SB_PERSP_FAST_BODY
 #if defined(__aarch64__) && defined(__GNUC__)
+template <bool kCurve>
+void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  persp_fast_inl<kCurve>(dest, n, texels, width, p);
+}
+
 // aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
 // samples, steps and runs with its passes as one asm loop (asm/span_persp_a64long.h). The
 // first samples in 2-lane vectors, each lane persp_fast's scalar operation (the same bits:
 // positions P_0, P_1 = P_0 + 16, sample j + 2 at P_j + 32; zrow + zix pos and uvrow + uvx pos
 // fused as there; 1 / max(zi, kMinZi) as recip2; to_fixed as the vector loop's unsigned
 // conversion, fcvtzu #16, uqxtn, umin); the tail after the passes as persp_fast's.
-void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double zc = zix;
   const uint32_t w = uint32_t(width);
@@ -784,11 +798,35 @@ void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width, cons
   draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
            uint32_t(lv.dd));
 }
+// persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
+// the single-span entry: next == end), through batch_from. Reached from batch_from and left
+// with tail branches (the compiler's sibling calls): a long first item of the items left
+// costs no call. A long item after a shorter one in the loop (spans_range, via persp_one) is
+// still called, with next == end. Without sibling calls (-O0) each chained long item nests
+// one frame.
+void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+// persp_one's long path (persp_long_a64); the three fields tested without branches between.
+SB_INLINE bool is_long_a64(const PerspItem& x) {
+  return (x.n > 80) & x.span.second_order & (x.span.dzi != 0.0);
+}
+__attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
+                                              const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
+  persp_long_a64_inl(dest, n, texels, width, p);
+  if (next != end) return batch_from(next, end, texels, width);
+}
+// A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first
+// of the batch's items left, then the rest: reached and left with tail branches, as above.
+__attribute__((noinline)) void persp_lin_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
+                                             const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
+  persp_fast_inl<false>(dest, n, texels, width, p);
+  if (next != end) return batch_from(next, end, texels, width);
+}
 #endif
-}  // namespace
 
-void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
-                             const PerspSpan& p) {
+// The dispatcher: one span by its length and steps (surface_span_persp_fast), inlined into
+// the batch loop too (surface_spans_persp_fast: the registers saved once per batch).
+SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
   // Short spans (aarch64) go to persp_short from here, not past persp_fast's entry (which
   // saves the registers of the long-span loop).
@@ -802,9 +840,77 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   if (n >= kMidMin && n <= kMidMax) return persp_mid_v7(dest, n, texels, width, p);  // ARMv7, four runs
 #endif
 #if defined(__aarch64__) && defined(__GNUC__)
-  if (n > 80) return persp_long_a64(dest, n, texels, width, p);
+  if (n > 80) return persp_long_a64(dest, n, texels, width, p, nullptr, nullptr);
 #endif
   persp_fast<true>(dest, n, texels, width, p);
+}
+
+#if defined(__aarch64__) && defined(__GNUC__)
+// Items [it, end) (surface_spans_persp_fast): a long first item reached with a tail branch
+// (this function saves no registers), else the batch loop; persp_long_a64 returns here with
+// a tail branch too.
+void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
+  if (it != end && is_long_a64(*it)) return persp_long_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
+  if (it != end && ((it->n > kShortMax) & ((!it->span.second_order) | (it->span.dzi == 0.0)))) {
+    return persp_lin_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
+  }
+  return spans_range(it, end, texels, width);
+}
+#endif
+
+// The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
+// return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
+#if defined(__aarch64__) && defined(__GNUC__)
+__attribute__((noinline))
+#else
+SB_INLINE
+#endif
+void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
+#if defined(__aarch64__) && defined(__GNUC__)
+  // aarch64: two neighbouring short second-order spans (persp_short_inl<true>'s) take their
+  // samples from one asm block (short_samples2, asm/span_persp_a64pair.h: the latency chains
+  // paid once for both), then each its rest (short_rest, one copy in the loop); other spans
+  // one by one.
+  auto pairable = [](const PerspItem& x) {
+    return x.n > 16 && x.n <= kShortMax && x.span.second_order && x.span.dzi != 0.0;
+  };
+  ShortSamples s[2];
+  // short_samples2 uses every vector register: d8 .. d15 are saved once here, at entry
+  // (without this the compiler saved and restored d12 .. d15 around each pair).
+  __asm__ volatile("" ::: "v8", "v9", "v10", "v11", "v12", "v13", "v14", "v15");
+  while (it != end) {
+    if (pairable(*it) && it + 1 != end && pairable(it[1])) {
+      short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
+#pragma GCC unroll 1
+      for (int j = 0; j < 2; ++j, ++it) {
+        const ShortSamples& q = s[j];
+        const int runs = (it->n + 15) >> 4, last = it->n - 16 * (runs - 1);
+        short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
+                         q.c01, q.c23);
+      }
+      continue;
+    }
+    persp_one(it->dest, it->n, texels, width, it->span);
+    ++it;
+  }
+#else
+  for (; it != end; ++it) persp_one(it->dest, it->n, texels, width, it->span);
+#endif
+}
+
+}  // namespace
+
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+                             const PerspSpan& p) {
+  persp_one(dest, n, texels, width, p);
+}
+
+void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
+#if defined(__aarch64__) && defined(__GNUC__)
+  batch_from(items, items + (count > 0 ? count : 0), texels, width);
+#else
+  spans_range(items, items + (count > 0 ? count : 0), texels, width);
+#endif
 }
 
 }  // namespace sb::simd

@@ -137,7 +137,7 @@ void expand_palette_sse2(const uint8_t* src, ptrdiff_t src_stride, int width, in
 }  // namespace
 
 const Kernels kSse2 = {"sse2", surface_span_sse2, surface_block_sse2, z_span_sse2, expand_palette_sse2, alias_span_sse2,
-                        surface_span_persp_fast};
+                        surface_span_persp_fast, surface_spans_persp_fast};
 
 }  // namespace sb::simd::detail
 

@@ -19,10 +19,14 @@
 //                worth), 296x194 skin, full light range
 //   alias1920h   one 1920-pixel alias span behind a z buffer that hides alternate runs of 16
 //   persp1920    the whole-span drawer (asm/span_persp.h): one 1920-pixel span of a 256x256
-//                surface in perspective, second-order steps, divides included
-//   persp64      the same over 30 spans of 64 pixels (per-span costs weigh more)
+//                surface in perspective, second-order steps, divides included, drawn as the
+//                engine draws a surface's spans: one surface_spans_persp call (a batch of 1)
+//   persp64      the same over 30 spans of 64 pixels (per-span costs weigh more), all 30 in
+//                one surface_spans_persp call (the engine's batches)
+//   persp64single persp64 with one surface_span_persp call per span (30 calls: the per-span
+//                entry, for comparison)
 //   persp1920lin persp1920 with linear steps (second_order off: Quake's stepping)
-//   persp64lin   persp64 with linear steps (the like-for-like short-span figure)
+//   persp64lin   persp64 with linear steps (the like-for-like short-span figure), batched
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
@@ -84,7 +88,7 @@ const Kernels* find_variant(const char* name) {
 
 const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "alias32", "alias1920h",
-                              "persp1920", "persp64", "persp1920lin", "persp64lin"};
+                              "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single"};
 
 long units_of(const char* c) {
   if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
@@ -183,11 +187,22 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     p.umax = (kSurf << 16) - 1;
     p.vmax = (kSurf << 16) - 1;
     p.second_order = !lin;
-    for (long r = 0; r < reps; ++r)
-      for (int x = 0; x < kSpan; x += len) {
-        p.px0 = x + 0.5;
-        k.surface_span_persp(dest.data() + x, len, surf.data(), kSurf, kSurf, p);
-      }
+    if (std::strstr(c, "single") != nullptr) {
+      for (long r = 0; r < reps; ++r)
+        for (int x = 0; x < kSpan; x += len) {
+          p.px0 = x + 0.5;
+          k.surface_span_persp(dest.data() + x, len, surf.data(), kSurf, kSurf, p);
+        }
+      return checksum(dest.data(), dest.size());
+    }
+    // One batch per repetition, filled once (the engine fills its items as it goes: a few
+    // stores a span, not counted here).
+    std::vector<sb::simd::PerspItem> items;
+    for (int x = 0; x < kSpan; x += len) {
+      p.px0 = x + 0.5;
+      items.push_back(sb::simd::PerspItem{dest.data() + x, len, p});
+    }
+    for (long r = 0; r < reps; ++r) k.surface_spans_persp(items.data(), int(items.size()), surf.data(), kSurf, kSurf);
     return checksum(dest.data(), dest.size());
   }
   if (std::strcmp(c, "palette") == 0) {

@@ -46,7 +46,8 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "alias32": "alias_span (32-px spans, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
           "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)",
           "persp1920lin": "surface_span_persp (1920 px, linear steps)",
-          "persp64lin": "surface_span_persp (64-px spans, linear steps)"}
+          "persp64lin": "surface_span_persp (64-px spans, linear steps)",
+          "persp64single": "surface_span_persp (64-px spans, one call each)"}
 UNIT = {"palette": "src px"}
 
 
@@ -181,6 +182,8 @@ class Disasm:
     def clean(self, s):
         name = self.t["name"]
         if name == "x86-64":
+            # a call target's symbol may hold '#' (C++ lambdas: "{lambda(...)#1}"): label it first
+            s = re.sub(r"\b(0x)?[0-9a-f]+ <.*>", ".Ltgt", s)
             s = s.split("#")[0]
         elif name == "aarch64":
             s = s.split("//")[0]
@@ -391,8 +394,11 @@ def main():
           "- armhf blocks are timed as Thumb-2 with IT instructions dropped (llvm-mca cannot time them) and "
           "register-list push/pop as single loads/stores.",
           "- **surface_span neon, surface_span_persp sse2/neon**: the portable tuned C++ those tables hold "
-          "(surface_span_fast, surface_span_persp_fast), not vector code; surface_span_persp scalar is the "
-          "reference run walker.", ""]
+          "(surface_span_fast, surface_span_persp_fast / surface_spans_persp_fast), not vector code; "
+          "surface_span_persp scalar is the reference run walker.",
+          "- **surface_span_persp rows**: drawn as the engine draws a surface's spans, one surface_spans_persp "
+          "call (a batch) per repetition: 1 item of 1920 px, or 30 items of 64 px; *one call each* is 30 "
+          "surface_span_persp calls per repetition (the per-span entry).", ""]
     header = "| kernel | target | variant | instr/unit | " + " | ".join(
         ["cyc znver3", "cyc skylake", "cyc cortex-a53", "cyc cortex-a72*", "cyc cortex-a9"]) + " | cover | x scalar (cyc) | Pentium Quake ÷ this (worst core) |"
     md += [header, "|" + "---|" * (header.count("|") - 1)]

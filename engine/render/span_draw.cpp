@@ -182,9 +182,13 @@ struct TurbRun {
 
 void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
                         int width, int height, Framebuffer& fb) {
-  // One asm/ call per span (asm/span_persp.h): the kernel walks the runs and divides itself,
-  // drawing the bytes draw_surface_spans_by_runs draws (the walker below, per run).
-  const simd::SurfaceSpanPerspFn fn = simd::active().surface_span_persp;
+  // One asm/ call per batch of up to kBatch spans (asm/span_persp.h, surface_spans_persp):
+  // the kernel walks the runs and divides itself, drawing the bytes
+  // draw_surface_spans_by_runs draws (the walker below, per run). Spans with no pixels are
+  // left out of the batch.
+  constexpr int kBatch = 32;
+  const simd::SurfaceSpansPerspFn fn = simd::active().surface_spans_persp;
+  simd::PerspItem items[kBatch];
   simd::PerspSpan p;
   p.dzi = g.zix;
   p.duz = g.ux;
@@ -192,6 +196,7 @@ void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& 
   p.umax = max_fixed(width);
   p.vmax = max_fixed(height);
   p.second_order = g.second_order;
+  int k = 0;
   for (uint32_t i = 0; i < count; ++i) {
     const int x0 = spans[i].x, y = spans[i].y, total = spans[i].count;
     if (total <= 0) continue;
@@ -200,8 +205,13 @@ void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& 
     p.uz0 = g.u0 + g.uy * py;
     p.vz0 = g.v0 + g.vy * py;
     p.px0 = x0 + 0.5;
-    fn(fb.pixels + ptrdiff_t(y) * fb.stride + x0, total, surface, width, height, p);
+    items[k++] = simd::PerspItem{fb.pixels + ptrdiff_t(y) * fb.stride + x0, total, p};
+    if (k == kBatch) {
+      fn(items, k, surface, width, height);
+      k = 0;
+    }
   }
+  if (k > 0) fn(items, k, surface, width, height);
   draw_z_spans(spans, count, g, fb);
   count_coverage(spans, count, fb);
 }

@@ -41,7 +41,8 @@ SpanGradients face_gradients(const BspWorld& world, const Face& face, const View
 void exact_uv(const SpanGradients& g, double px, double py, double* u, double* v);
 
 // Lit surface from the cache: texel (u, v) clamped to [0, width-1] x [0, height-1].
-// One asm/ surface_span_persp call per span (the runs and divides inside the kernel).
+// asm/ surface_spans_persp calls, a batch of up to 32 spans each (the runs and divides inside
+// the kernel).
 void draw_surface_spans(const Span* spans, uint32_t count, const SpanGradients& g, const uint8_t* surface,
                         int width, int height, Framebuffer& fb);
 

@@ -1,0 +1,168 @@
+#!/usr/bin/env python3
+# bench/mca_a53_pair/vsched.py: list_sched.py's greedy in-order schedule (bench/mca_a53_persp)
+# on a .vs block with virtual vector registers (`v@name`), so the order is free of the false
+# dependences a register allocation adds; then alloc.py allocates the result. Regions between
+# a branch and a label are scheduled separately (the branch ends its region, the fallback
+# lines up to the label stay as they are). Latencies from llvm-mca -instruction-info (on an
+# allocation of the input order).
+#   vsched.py IN.vs OUT.vs
+import re, subprocess, sys, os
+src, dst = sys.argv[1:3]
+here = os.path.dirname(os.path.abspath(__file__))
+lines = [l.rstrip() for l in open(src)]
+code = [l for l in lines if l.strip() and not l.strip().startswith("//")]
+hdr = [l for l in lines if l.strip().startswith("//")]
+subprocess.run([sys.executable, os.path.join(here, "../mca_a53_p64/alloc.py"), src, "/tmp/vsched_alloc.s", "",
+                ",".join(map(str, range(32)))], check=True, capture_output=True)
+alloc = [l for l in open("/tmp/vsched_alloc.s").read().split("\n") if l.strip() and not l.strip().startswith("//")]
+assert len(alloc) == len(code)
+txt = "\n".join(re.sub(r"\b(b\.\w+|cbz|cbnz|tbz|tbnz)\b(.*)\b\d+[fb]$", r"\1\2.+4", l) for l in alloc if not re.match(r"^\d+:$", l)) + "\n"
+o = subprocess.run(["llvm-mca-14", "-mtriple=aarch64", "-mcpu=cortex-a53", "-iterations=1", "-instruction-info"],
+                   input=txt, capture_output=True, text=True).stdout
+lat_list = [int(m.group(1)) for m in re.finditer(r"^\s*\d+\s+(\d+)\s+[\d.]+", o, re.M)]
+lat, k = [], 0
+for l in code:
+    if re.match(r"^\d+:$", l):
+        lat.append(0)
+    else:
+        lat.append(lat_list[k]); k += 1
+ACC = ("fmla", "fmls", "mla", "mls", "bit", "bif", "bsl", "ssra", "usra", "sqxtn2", "uqxtn2", "xtn2", "ins", "sli", "sri", "tbx")
+
+
+def regs(l):
+    body = l.split("//")[0]
+    op = body.split()[0]
+    toks = [t for t in re.split(r"[\s,\[\]{}]+", body.split(None, 1)[1] if " " in body.strip() else "") if t]
+    names = []
+    for t in toks:
+        m = re.match(r"[vqds]@(\w+)", t)
+        if m:
+            names.append("V" + m.group(1)); continue
+        m = re.fullmatch(r"[xw](\d+)", t)
+        if m:
+            names.append("x" + m.group(1)); continue
+        if t == "sp":
+            names.append("sp")
+    if not names:
+        return set(), set(), False
+    store = op.startswith("st")
+    lane = op == "ld1" and re.search(r"\}\[\d\]", body) is not None
+    if store:
+        return set(names), set(), True
+    if op in ("ldr", "ldp", "ld1", "ld1r", "ld2", "ld2r"):
+        nd = 2 if op in ("ldp",) else (len(re.findall(r"@", body.split("[")[0])) if "{" in body else 1)
+        w = set(names[:nd]); r = set(names[nd:])
+        if lane:
+            r |= w
+        return r, w, False
+    if op in ("cmp", "cmn", "tst"):
+        return set(names) | set(), {"flags"}, False
+    if op.startswith("b."):
+        return {"flags"}, set(), False
+    w = {names[0]}; r = set(names[1:])
+    if op in ACC:
+        r |= w
+    return r, w, False
+
+
+def unit(l):
+    op = l.split()[0]
+    if op.startswith("ld") or op.startswith("st"):
+        return "ls"
+    if "@" in l or op.startswith("f") or op in ("scvtf", "umaxv", "uminp"):
+        return "fp"
+    if op.startswith("b"):
+        return "br"
+    return "alu"
+
+
+CAP = dict(alu=2, ls=1, fp=1, br=1)
+LIMIT = int(sys.argv[3]) if len(sys.argv) > 3 else 30
+
+
+def sched(idx):
+    body = [code[i] for i in idx]
+    L = [lat[i] for i in idx]
+    info = [regs(l) for l in body]
+    n = len(body)
+    preds = [[] for _ in range(n)]
+    for j in range(n):
+        rj, wj, sj = info[j]
+        for i in range(j):
+            ri, wi, si = info[i]
+            if wi & rj:
+                preds[j].append((i, L[i]))
+            elif (wi & wj) or (ri & wj) or (si and sj):
+                preds[j].append((i, 0))
+    succ = [[] for _ in range(n)]
+    for j in range(n):
+        for i, d in preds[j]:
+            succ[i].append((j, d))
+    prio = [0] * n
+    for i in reversed(range(n)):
+        prio[i] = L[i] + max([prio[j] for j, d in succ[i]] + [0])
+    done, issue, order = set(), {}, []
+    t, used, lastW = 0, {}, 0
+    # register pressure: vector names live (written, uses left); a candidate that would
+    # raise the count above LIMIT waits while another can go
+    uses = {}
+    for j in range(n):
+        for x in info[j][0] | info[j][1]:
+            if x.startswith("V"):
+                uses[x] = uses.get(x, 0) + 1
+    live = set(x for x in uses if x.startswith("V") and not any(x in info[j][1] for j in range(n)))
+    left = dict(uses)
+
+    def net(j):
+        r, w, _ = info[j]
+        new = len([x for x in w if x.startswith("V") and x not in live])
+        dead = len([x for x in (r | w) if x.startswith("V") and left[x] == 1 and (x in live or x in w)])
+        return new - dead
+    while len(order) < n:
+        best = None
+        ok = [j for j in range(n) if j not in done and all(i in done for i, _ in preds[j])]
+        fit = [j for j in ok if len(live) + net(j) <= LIMIT]
+        for j in (fit or ok):
+            if False:
+                continue
+            e = max([t] + [issue[i] + d for i, d in preds[j]] + [lastW - L[j]])
+            while True:
+                u = used.get(e, {})
+                if sum(u.values()) < 2 and u.get(unit(body[j]), 0) < CAP[unit(body[j])]:
+                    break
+                e += 1
+            key = (e, -prio[j], j)
+            if best is None or key < best[0]:
+                best = (key, j, e)
+        (_, j, e) = best
+        for x in info[j][0] | info[j][1]:
+            if x.startswith("V"):
+                left[x] -= 1
+                if left[x] == 0:
+                    live.discard(x)
+                else:
+                    live.add(x)
+        done.add(j); issue[j] = e; order.append(j); t = e
+        used.setdefault(e, {})
+        used[e][unit(body[j])] = used[e].get(unit(body[j]), 0) + 1
+        lastW = max(lastW, e + L[j])
+    print("region of", n, "list schedule span", t + 1, file=sys.stderr)
+    return [idx[j] for j in order]
+
+
+out, reg = [], []
+i = 0
+while i < len(code):
+    l = code[i]
+    op = l.split()[0]
+    if op.startswith("b.") or op in ("cbz", "cbnz", "tbz", "tbnz"):
+        out += sched(reg) + [i]
+        reg = []
+        i += 1
+        while not re.match(r"^\d+:$", code[i]):
+            out.append(i); i += 1
+        out.append(i); i += 1
+        continue
+    reg.append(i); i += 1
+out += sched(reg)
+open(dst, "w").write("\n".join(hdr + [code[j] for j in out]) + "\n")

@@ -1,0 +1,305 @@
+// The whole-span drawer's batch entry (asm/span_persp.h, surface_spans_persp): every variant's
+// batch against surface_span_persp_scalar span by span, on batches mixing random and real
+// spans of every kind the kernels tell apart (lengths 0 .. 1920 around each run and path
+// boundary, second order and linear, dzi == 0, depths whose reciprocal needs the divide
+// fallback, non-finite and huge or tiny depths), each span's dest between guard bytes.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include "asm/kernels.h"
+#include "asm/span_persp.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include <arm_neon.h>
+#include <cstring>
+
+#include "asm/span_persp_arm.h"    // short_samples1 (asm/span_persp_a64short.h; this test's own copy)
+#include "asm/span_persp_a64pair.h"  // short_samples2
+#endif
+#include "engine/render/render_local.h"
+#include "engine/render/span_draw.h"
+#include "tests/support/quake_data.h"
+#include "tests/support/test_world.h"
+
+namespace {
+
+using sb::simd::PerspItem;
+using sb::simd::PerspSpan;
+
+constexpr int kGuard = 32;
+constexpr uint8_t kGuardByte = 0xa5;
+
+// A span length: the kernels' boundaries (one run, the short paths' 17 .. 64, the long
+// paths), or random.
+int pick_length(std::mt19937& rng) {
+  static const int kLengths[] = {0,  1,  2,  15, 16, 17, 18, 31, 32, 33, 47, 48, 49, 50, 55, 60,
+                                 63, 64, 64, 64, 65, 80, 81, 96, 97, 200, 1920};
+  switch (rng() % 4) {
+    case 0: return 48 + int(rng() % 17);  // 48 .. 64: the engine's default spans' lengths
+    case 1: return 17 + int(rng() % 48);  // the short paths
+    case 2: return int(rng() % 300);
+    default: return kLengths[rng() % (sizeof kLengths / sizeof kLengths[0])];
+  }
+}
+
+// A span's gradients: a plane's (1/z falling or rising along the row, u and v across the
+// surface), with some of them edge cases: dzi == 0, the reciprocal's divide fallback (a depth
+// with a significand of all ones, or >= 2^1000), non-finite or extreme depths and steps.
+PerspSpan pick_span(std::mt19937& rng, int sw, int sh) {
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  PerspSpan p{};
+  const double depth = 0.002 + 0.05 * (r(rng) + 1.0);
+  p.dzi = depth * r(rng) / 640.0;
+  p.zi0 = depth + std::fabs(p.dzi) * 640.0;
+  const double us = sw * (0.5 + r(rng)), vs = sh * (0.5 + r(rng));
+  p.uz0 = us * p.zi0 * (0.5 + 0.5 * r(rng));
+  p.duz = us * (p.dzi + r(rng) * depth / 640.0);
+  p.vz0 = vs * p.zi0 * (0.5 + 0.5 * r(rng));
+  p.dvz = vs * p.dzi * r(rng);
+  p.px0 = double(rng() % 600) + 0.5;
+  p.umax = int32_t((uint32_t(sw) << 16) - 1);
+  p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+  p.second_order = rng() % 4 != 0;
+  switch (rng() % 12) {
+    case 0: p.dzi = 0.0; break;
+    case 1: p.zi0 = depth * r(rng); break;  // edge-on or behind: clamped
+    case 2: p.dzi *= 40.0; break;           // steep
+    case 3: {                               // the reciprocal's divide fallback
+      const int k = int(rng() % 60) - 29;
+      p.zi0 = rng() % 8 ? std::ldexp(2.0 - 0x1p-52, k) : std::ldexp(1.5, 1000 + int(rng() % 20));
+      p.dzi = rng() & 1 ? 0.0 : std::ldexp(1.0, k - 80);
+      p.uz0 = std::ldexp(std::nextafter(double(1 + rng() % 30) * 65536.0, 0.0), k + 1 - 16);
+      p.vz0 = std::ldexp(double(rng() % 1000), k);
+      p.duz = p.dvz = 0.0;
+      break;
+    }
+    case 4: {  // non-finite, huge or tiny values somewhere
+      const double odd[] = {0.0, -0.0, 1e-300, -1e300, 1e300, inf, -inf, nan, 0x1p-1030, 0x1p1020};
+      const double x = odd[rng() % 10];
+      switch (rng() % 4) {
+        case 0: p.zi0 = x; break;
+        case 1: p.dzi = x; break;
+        case 2: p.uz0 = x; break;
+        default: p.dvz = x; break;
+      }
+      break;
+    }
+    default: break;
+  }
+  return p;
+}
+
+// Draws the batch with every supported variant's surface_spans_persp into a buffer holding
+// each item's dest between guard bytes, and with surface_span_persp_scalar item by item into
+// another: a failure naming the variant and item unless the buffers are the same.
+::testing::AssertionResult batch_matches(std::vector<PerspItem> items, const uint8_t* surf, int sw, int sh) {
+  size_t size = kGuard;
+  std::vector<size_t> offsets;
+  for (const PerspItem& it : items) {
+    offsets.push_back(size);
+    size += size_t(std::max(it.n, 0)) + kGuard;
+  }
+  std::vector<uint8_t> ref(size, kGuardByte), got(size);
+  for (size_t i = 0; i < items.size(); ++i)
+    sb::simd::surface_span_persp_scalar(ref.data() + offsets[i], items[i].n, surf, sw, sh, items[i].span);
+  for (int v = 0; v < sb::simd::variant_count(); ++v) {
+    const sb::simd::Variant var = sb::simd::variant(v);
+    if (!var.kernels || !var.supported) continue;
+    std::fill(got.begin(), got.end(), kGuardByte);
+    for (size_t i = 0; i < items.size(); ++i) items[i].dest = got.data() + offsets[i];
+    var.kernels->surface_spans_persp(items.data(), int(items.size()), surf, sw, sh);
+    const auto d = std::mismatch(ref.begin(), ref.end(), got.begin());
+    if (d.first != ref.end()) {
+      const size_t at = size_t(d.first - ref.begin());
+      const size_t item = size_t(std::upper_bound(offsets.begin(), offsets.end(), at) - offsets.begin());
+      auto r = ::testing::AssertionFailure() << var.kernels->name << " wrote " << int(*d.second) << " for "
+                                             << int(*d.first) << " at buffer byte " << at << " of a batch of "
+                                             << items.size();
+      if (item > 0) r << ", item " << item - 1 << " (n " << items[item - 1].n << ", byte " << at - offsets[item - 1] << ")";
+      return r;
+    }
+  }
+  return ::testing::AssertionSuccess();
+}
+
+TEST(AsmSpanPerspBatch, MatchesTheReferenceSpanBySpanOnMixedBatches) {
+  std::mt19937 rng(4242);
+  long spans = 0;
+  for (int trial = 0; trial < 1200; ++trial) {
+    const int sw = 1 + int(rng() % 300), sh = 1 + int(rng() % 200);
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    // Mostly the engine's batches (one plane, rows' values), some items of other planes.
+    const int count = trial % 10 == 0 ? int(rng() % 3) : int(rng() % 40);
+    const PerspSpan plane = pick_span(rng, sw, sh);
+    std::vector<PerspItem> items;
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = rng() % 3 ? plane : pick_span(rng, sw, sh);
+      if (rng() % 2) {  // another row of the plane: zi0, uz0, vz0 moved
+        const double dy = double(rng() % 50);
+        p.zi0 += dy * 1e-5, p.uz0 += dy * 0.01, p.vz0 -= dy * 0.02;
+      }
+      p.px0 = double(rng() % 600) + 0.5;
+      items.push_back(PerspItem{nullptr, pick_length(rng), p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in batches, every variant identical\n", spans);
+}
+
+// Pairs of short second-order spans side by side (the aarch64 paired samples): both spans of
+// each pair 17 .. 64 pixels, one of them at a depth needing the divide fallback, or
+// non-finite, or both ordinary; odd counts leave one span unpaired.
+TEST(AsmSpanPerspBatch, ShortSecondOrderPairsMatchWithEdgeDepths) {
+  std::mt19937 rng(77);
+  const int sw = 37, sh = 19;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i);
+  long spans = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 9);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = pick_span(rng, sw, sh);
+      p.second_order = rng() % 8 != 0;
+      items.push_back(PerspItem{nullptr, 17 + int(rng() % 48), p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld short spans in pairs, every variant identical\n", spans);
+}
+
+// Runs of long spans (aarch64: a long first item of the items left is reached and left with
+// tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
+// order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
+// shorter spans before, between and after them.
+TEST(AsmSpanPerspBatch, RunsOfLongSpansMatch) {
+  std::mt19937 rng(913);
+  const int sw = 61, sh = 23;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 7);
+  long spans = 0;
+  for (int trial = 0; trial < 600; ++trial) {
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 12);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = pick_span(rng, sw, sh);
+      const int n = rng() % 5 ? 65 + int(rng() % 336) : int(rng() % 65);
+      items.push_back(PerspItem{nullptr, n, p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of long ones, every variant identical\n", spans);
+}
+
+// Real faces' rows (LibreQuake maps from their own viewpoints; skipped without the data):
+// one batch per face, items built as engine/render/span_draw.cpp builds them.
+TEST(AsmSpanPerspBatch, MatchesOnRealFaces) {
+  SB_REQUIRE_QUAKE_DATA();
+  const int W = 640, H = 480;
+  long spans = 0;
+  sb::test::TestWorld tw("start");
+  ASSERT_NE(tw.world(), nullptr) << tw.error();
+  const sb::BspWorld& w = *tw.world();
+  std::mt19937 rng(31);
+  for (const sb::ViewParams& vp : sb::test::test_viewpoints(w, 2)) {
+    const sb::render::ViewState view = sb::render::setup_view(w, vp, W, H, 1);
+    for (uint32_t fi = 0; fi < w.num_faces; fi += 37) {
+      const sb::Face& f = w.faces[fi];
+      if (f.extents[0] <= 0 || f.extents[1] <= 0) continue;
+      const int mip = int(fi % 4);
+      sb::render::SpanGradients g = sb::render::face_gradients(w, f, view, mip);
+      g.second_order = (fi / 37) % 3 != 0;
+      const int sw = f.extents[0] >> mip, sh = f.extents[1] >> mip;
+      if (sw < 1 || sh < 1) continue;
+      std::vector<uint8_t> surf(size_t(sw) * sh);
+      for (auto& b : surf) b = uint8_t(rng());
+      std::vector<PerspItem> items;
+      for (int y = 0; y < H; y += 7) {
+        const int n = y % 3 ? pick_length(rng) % (W + 1) : W;
+        const int x0 = int(rng() % uint32_t(W - n + 1));
+        const double py = y + 0.5;
+        PerspSpan p{};
+        p.zi0 = g.zi0 + g.ziy * py, p.dzi = g.zix;
+        p.uz0 = g.u0 + g.uy * py, p.duz = g.ux;
+        p.vz0 = g.v0 + g.vy * py, p.dvz = g.vx;
+        p.px0 = x0 + 0.5;
+        p.umax = int32_t((uint32_t(sw) << 16) - 1), p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+        p.second_order = g.second_order;
+        items.push_back(PerspItem{nullptr, n, p});
+      }
+      ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " face " << fi;
+      spans += long(items.size());
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld rows of real faces, every variant identical\n", spans);
+}
+
+#if defined(__aarch64__) && defined(__GNUC__)
+// The paired sample block (short_samples2) against two runs of the single one
+// (short_samples1), every output bit for bit (unused samples' lanes too): both spans 17 .. 64
+// pixels, depths ordinary, NaN, infinite, huge (>= 2^1000: the divide), tiny or negative
+// (clamped), significands of all ones (the divide) in either span, other fields random or
+// non-finite.
+TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
+  using sb::simd::ShortSamples;
+  std::mt19937 rng(606);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  auto any = [&]() {
+    const double odd[] = {0.0, -0.0, 1e-300, -1e300, 1e300, inf, -inf, nan, 0x1p-1030, 3.5};
+    return rng() % 4 ? r(rng) * std::ldexp(1.0, int(rng() % 40) - 20) : odd[rng() % 10];
+  };
+  auto pick = [&](PerspSpan* p) {
+    *p = PerspSpan{};
+    switch (rng() % 8) {
+      case 0: p->zi0 = std::ldexp(2.0 - 0x1p-52, int(rng() % 120) - 60); break;  // all ones
+      case 1: p->zi0 = std::ldexp(1.0 + r(rng) * 0.5, 1000 + int(rng() % 24)); break;  // huge, inf
+      case 2: p->zi0 = any(); break;
+      case 3: p->zi0 = std::ldexp(1.0 + 0.5 * r(rng), -int(rng() % 1000)); break;  // tiny
+      default: p->zi0 = 0.01 * (1.5 + r(rng)); break;
+    }
+    p->dzi = rng() % 3 ? p->zi0 * 0.01 * r(rng) : (rng() % 2 ? std::ldexp(1.0, int(rng() % 40) - 100) : any());
+    if (p->dzi == 0.0) p->dzi = 1e-7;
+    p->uz0 = rng() % 5 ? p->zi0 * 65536.0 * 300.0 * r(rng) : any();
+    p->duz = rng() % 5 ? p->zi0 * 650.0 * r(rng) : any();
+    p->vz0 = rng() % 5 ? p->zi0 * 65536.0 * 300.0 * r(rng) : any();
+    p->dvz = rng() % 5 ? p->zi0 * 650.0 * r(rng) : any();
+    p->px0 = rng() % 7 ? double(rng() % 2000) + 0.5 : any();
+    p->umax = int32_t(rng() % 0x7fffffff), p->vmax = int32_t(rng() % 0x7fffffff);
+    p->second_order = true;
+  };
+  int fallback = 0, cases = 0;
+  for (int trial = 0; trial < 60000; ++trial) {
+    PerspSpan a, b;
+    pick(&a), pick(&b);
+    const int na = 17 + int(rng() % 48), nb = 17 + int(rng() % 48);
+    alignas(16) ShortSamples pair[2];
+    std::memset(pair, 0x5a, sizeof pair);
+    sb::simd::short_samples2(a, na, b, nb, pair);
+    ShortSamples sa, sbb;
+    sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23);
+    sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23);
+    ASSERT_EQ(std::memcmp(&pair[0], &sa, sizeof sa), 0) << "span a, trial " << trial << " zi0 " << a.zi0 << " n " << na;
+    ASSERT_EQ(std::memcmp(&pair[1], &sbb, sizeof sbb), 0) << "span b, trial " << trial << " zi0 " << b.zi0 << " n " << nb;
+    uint64_t bits;
+    std::memcpy(&bits, &a.zi0, 8);
+    fallback += ((bits + 1) << 12) == 0;
+    ++cases;
+  }
+  std::printf("[ asm      ] span_persp batch: %d paired sample blocks (%d with an all-ones depth in span a) identical\n",
+              cases, fallback);
+  EXPECT_GT(fallback, cases / 20);
+}
+#endif
+
+}  // namespace
