@@ -44,8 +44,11 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 // bench/mca_a53_block/pair16a_lean.s, pair16b_lean.s).
 #define SB_M2L_A \
     "stp d4, d5, [%[d]]\n\t" \
-    "stp d6, d7, [x8]\n\t" \
-    "2:\n\t" \
+    "stp d6, d7, [x8]\n\t" SB_M2L_A_BODY \
+    "b 3f\n\t" \
+    "3:\n\t"
+// (SB_M2L_A without its stores: also a group's first pair A, straight after its entry)
+#define SB_M2L_A_BODY \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
@@ -143,9 +146,7 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
     "add %[rp], %[rp], #32\n\t" \
-    "ld1 {v7.b}[7], [x7]\n\t" \
-    "b 3f\n\t" \
-    "3:\n\t"
+    "ld1 {v7.b}[7], [x7]\n\t"
 
 #define SB_M2L_B \
     "add v27.4s, v22.4s, v16.4s\n\t" \
@@ -633,8 +634,8 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
       "str x10, [sp, #16]\n\t" \
       "mov %[rp], x26\n\t" \
       "mov x26, %[d]\n\t" SB_M2L_LOADS \
-      "5:\n\t" SB_M2L_HEAD \
-      "b 2f\n\t" \
+      "5:\n\t" SB_M2L_HEAD SB_M2L_A_BODY \
+      "b 3f\n\t" \
       ".p2align 6\n" \
       "1:\n\t" SB_M2L_A SB_M2L_B \
       "stp d4, d5, [%[d]]\n\t" \
@@ -663,6 +664,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 }
 
 #undef SB_M2L_A
+#undef SB_M2L_A_BODY
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
 #undef SB_M2L_LOADS
