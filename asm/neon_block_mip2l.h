@@ -677,9 +677,9 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
   const uint8_t* ete = t + (nb + 2) * es;
   int64_t q = -int64_t(nb) * es;
   // x26: the group's output; [sp]: this group's rows (rp's start), dend, the next group's rows
-  // (tw 32: swapped at each exit, SWAP; else the same rows, ROWS). The group's exit: T's row-0
+  // (tw 32: swapped at each exit; else the same rows, one ldp). The group's exit: T's row-0
   // pointer and ete a group on (8 bytes), q = t0 + 2 w - ete (-nb w), rp = the next group's rows.
-#define SB_M2L_GROUPS(ROWS) \
+#define SB_M2L_GROUPS(EXIT) \
   asm volatile( \
       "ldp x26, x30, [%[rp]]\n\t" \
       "ldr x10, [%[rp], #16]\n\t" \
@@ -690,15 +690,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
       "5:\n\t" SB_M2L_HEAD SB_M2L_A_BODY \
       "b 3f\n\t" \
       ".p2align 6\n" \
-      "1:\n\t" SB_M2L_A SB_M2L_B \
-      "stp d4, d5, [%[d]]\n\t" \
-      "stp d6, d7, [x8]\n\t" ROWS \
-      "add x26, x26, #16\n\t" \
-      "add %[t0], %[t0], #8\n\t" \
-      "add %[ete], %[ete], #8\n\t" \
-      "add %[q], %[t0], %[w], lsl #1\n\t" \
-      "sub %[q], %[q], %[ete]\n\t" SB_M2L_LOADS \
-      "cmp x26, x30\n\t" \
+      "1:\n\t" SB_M2L_A SB_M2L_B EXIT \
       "b.ne 5b\n\t" \
       "add sp, sp, #32\n\t" \
       : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [t0] "+r"(t0r) \
@@ -707,12 +699,33 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
         "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
         "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory")
   if (tw == 32)
-    SB_M2L_GROUPS("ldp x10, x30, [sp]\n\t"
+    SB_M2L_GROUPS("stp d4, d5, [%[d]]\n\t"
+                  "stp d6, d7, [x8]\n\t"
+                  "ldp x10, x30, [sp]\n\t"
                   "ldr %[rp], [sp, #16]\n\t"
                   "str x10, [sp, #16]\n\t"
-                  "str %[rp], [sp]\n\t");
-  else
-    SB_M2L_GROUPS("ldp %[rp], x30, [sp]\n\t");
+                  "str %[rp], [sp]\n\t"
+                  "add x26, x26, #16\n\t"
+                  "add %[t0], %[t0], #8\n\t"
+                  "add %[ete], %[ete], #8\n\t"
+                  "add %[q], %[t0], %[w], lsl #1\n\t"
+                  "sub %[q], %[q], %[ete]\n\t" SB_M2L_LOADS
+                  "cmp x26, x30\n\t");
+  else  // (the same steps with one ldp for the rows, order searched: Cortex-A53 model 13 -> 11)
+    SB_M2L_GROUPS("add %[t0], %[t0], #8\n\t"
+                  "stp d4, d5, [%[d]]\n\t"
+                  "ldp %[rp], x30, [sp]\n\t"
+                  "add %[ete], %[ete], #8\n\t"
+                  "add %[q], %[t0], %[w], lsl #1\n\t"
+                  "ldr q0, [%[t0]]\n\t"
+                  "sub %[q], %[q], %[ete]\n\t"
+                  "ldr q8, [%[t0], %[w]]\n\t"
+                  "add x26, x26, #16\n\t"
+                  "ldr q21, [%[rp]]\n\t"
+                  "stp d6, d7, [x8]\n\t"
+                  "cmp x26, x30\n\t"
+                  "ldr q26, [%[rp], #16]\n\t"
+                  "add %[rp], %[rp], #32\n\t");
 #undef SB_M2L_GROUPS
 }
 
