@@ -31,6 +31,13 @@ namespace {
 #if defined(__aarch64__)
 
 constexpr int kM2LMaxHeight = 512;  // surface rows at most (the layout buffer: + 2 rows)
+// tw 32's second row buffer at L + kM2LL2Off (past L's (kM2LMaxHeight + 16) rows; an add
+// immediate: a multiple of 4096)
+#define SB_M2L_L2OFF 12288
+#define SB_M2L_STR2(x) #x
+#define SB_M2L_STR(x) SB_M2L_STR2(x)
+constexpr int kM2LL2Off = SB_M2L_L2OFF;
+static_assert(kM2LL2Off >= (kM2LMaxHeight + 16) * 16 && kM2LL2Off % 4096 == 0 && kM2LL2Off < (4096 << 12));
 // (asm/neon.cpp's kIota32 and kTix16, and mip 2's row-step weights (4 - k, k) << 4, k = 0..3:
 // asm/neon.cpp defines its tables after its includes.)
 constexpr uint8_t kM2LIota[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
@@ -647,8 +654,9 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
     return surface_block_inorder(grid, gw, texels, tw, th, mip, soff, toff, width, height, colormap, out);
   const int nb = height >> 2;
   alignas(16) uint8_t t[kA53TableBytes];
-  alignas(16) uint8_t L[(kM2LMaxHeight + 16) * 16];  // (m2l_repeat: up to 12 rows past)
-  alignas(16) uint8_t L2[(kM2LMaxHeight + 2) * 16];  // (tw 32: the odd groups' rows)
+  // L: the rows (m2l_repeat: up to 12 rows past); L2 = L + kM2LL2Off: tw 32, the odd groups' rows
+  alignas(16) uint8_t L[kM2LL2Off + (kM2LMaxHeight + 2) * 16];
+  uint8_t* const L2 = L + kM2LL2Off;
   const int c0 = soff & (tw - 1), t0 = (th & (th - 1)) == 0 ? toff & (th - 1) : wrap(toff, th);
   const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
   if (tw == 16 && th == 16)
@@ -670,22 +678,17 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
   const int16x8_t wt = vld1q_s16(kM2LWt[0]), wt4 = vld1q_s16(kM2LWt[1]);  // (wt4: the numerators', << 2)
   const uint8x16_t J0 = vld1q_u8(kM2LTix[0]), J1 = vld1q_u8(kM2LTix[1]);
   uint8_t* d = out;
-  // (the stack's: group 0's rows, the outputs' end, group 1's rows)
-  const uint8_t* const ld[3] = {L, out + width, tw == 32 ? L2 : L};
-  const uint8_t* rp = reinterpret_cast<const uint8_t*>(ld);
+  const uint8_t* rp = L;
   const uint8_t* t0r = t;
   const uint8_t* ete = t + (nb + 2) * es;
   int64_t q = -int64_t(nb) * es;
-  // x26: the group's output; [sp]: this group's rows (rp's start), dend, the next group's rows
-  // (tw 32: swapped at each exit; else the same rows, one ldp). The group's exit: T's row-0
+  // x26: the group's output; [sp]: this group's rows (rp's start), dend = d + w, (tw 32) the
+  // next group's rows (swapped at each exit; else the same rows, one ldp; ENTRY stores them). The group's exit: T's row-0
   // pointer and ete a group on (8 bytes), q = t0 + 2 w - ete (-nb w), rp = the next group's rows.
-#define SB_M2L_GROUPS(EXIT) \
+#define SB_M2L_GROUPS(ENTRY, EXIT) \
   asm volatile( \
-      "ldp x26, x30, [%[rp]]\n\t" \
-      "ldr x10, [%[rp], #16]\n\t" \
-      "stp x26, x30, [sp, #-32]!\n\t" \
-      "str x10, [sp, #16]\n\t" \
-      "mov %[rp], x26\n\t" \
+      "add x30, %[d], %[w]\n\t" \
+      "stp %[rp], x30, [sp, #-32]!\n\t" ENTRY \
       "mov x26, %[d]\n\t" SB_M2L_LOADS \
       "5:\n\t" SB_M2L_HEAD SB_M2L_A_BODY \
       "b 3f\n\t" \
@@ -699,7 +702,9 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
         "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
         "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory")
   if (tw == 32)
-    SB_M2L_GROUPS("stp d4, d5, [%[d]]\n\t"
+    SB_M2L_GROUPS("add x10, %[rp], #" SB_M2L_STR(SB_M2L_L2OFF) "\n\t"
+                  "str x10, [sp, #16]\n\t",
+                  "stp d4, d5, [%[d]]\n\t"
                   "stp d6, d7, [x8]\n\t"
                   "ldp x10, x30, [sp]\n\t"
                   "ldr %[rp], [sp, #16]\n\t"
@@ -712,7 +717,7 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
                   "sub %[q], %[q], %[ete]\n\t" SB_M2L_LOADS
                   "cmp x26, x30\n\t");
   else  // (the same steps with one ldp for the rows, order searched: Cortex-A53 model 13 -> 11)
-    SB_M2L_GROUPS("add %[t0], %[t0], #8\n\t"
+    SB_M2L_GROUPS("", "add %[t0], %[t0], #8\n\t"
                   "stp d4, d5, [%[d]]\n\t"
                   "ldp %[rp], x30, [sp]\n\t"
                   "add %[ete], %[ete], #8\n\t"
@@ -730,6 +735,9 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 }
 
 #undef SB_M2L_A
+#undef SB_M2L_STR
+#undef SB_M2L_STR2
+#undef SB_M2L_L2OFF
 #undef SB_M2L_A_BODY
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
