@@ -41,6 +41,8 @@ static_assert(kM2LL2Off >= (kM2LMaxHeight + 16) * 16 && kM2LL2Off % 4096 == 0 &&
 // (asm/neon.cpp's kIota32 and kTix16, and mip 2's row-step weights (4 - k, k) << 4, k = 0..3:
 // asm/neon.cpp defines its tables after its includes.)
 constexpr uint8_t kM2LIota[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+constexpr uint8_t kM2LIota2[32] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15,
+                                   0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 constexpr uint8_t kM2LTix[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6, 42, 7, 46},
                                     {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
 constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 128, 64, 0, 64, 128, 192}};
@@ -658,7 +660,8 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
   alignas(16) uint8_t L[kM2LL2Off + (kM2LMaxHeight + 2) * 16];
   uint8_t* const L2 = L + kM2LL2Off;
   const int c0 = soff & (tw - 1), t0 = (th & (th - 1)) == 0 ? toff & (th - 1) : wrap(toff, th);
-  const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
+  // (byte k: (c0 + k) mod tw, tw 4, 8 or 16 dividing 16: one load of kM2LIota2 at c0 < tw)
+  const uint8x16_t I = vandq_u8(vld1q_u8(kM2LIota2 + (c0 & 15)), vdupq_n_u8(uint8_t(tw - 1)));
   if (tw == 16 && th == 16)
     m2l_rows16x16(texels, t0, I, L, L + 16 * height);
   else if (tw == 32)
