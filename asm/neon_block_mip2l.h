@@ -31,9 +31,18 @@ namespace {
 #if defined(__aarch64__)
 
 constexpr int kM2LMaxHeight = 512;  // surface rows at most (the layout buffer: + 2 rows)
+// tw 32's second row buffer at L + kM2LL2Off (past L's (kM2LMaxHeight + 16) rows; an add
+// immediate: a multiple of 4096)
+#define SB_M2L_L2OFF 12288
+#define SB_M2L_STR2(x) #x
+#define SB_M2L_STR(x) SB_M2L_STR2(x)
+constexpr int kM2LL2Off = SB_M2L_L2OFF;
+static_assert(kM2LL2Off >= (kM2LMaxHeight + 16) * 16 && kM2LL2Off % 4096 == 0 && kM2LL2Off < (4096 << 12));
 // (asm/neon.cpp's kIota32 and kTix16, and mip 2's row-step weights (4 - k, k) << 4, k = 0..3:
 // asm/neon.cpp defines its tables after its includes.)
 constexpr uint8_t kM2LIota[16] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
+constexpr uint8_t kM2LIota2[32] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15,
+                                   0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
 constexpr uint8_t kM2LTix[2][16] = {{0, 18, 1, 22, 2, 26, 3, 30, 4, 34, 5, 38, 6, 42, 7, 46},
                                     {40, 2, 41, 6, 42, 10, 43, 14, 44, 18, 45, 22, 46, 26, 47, 30}};
 constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 128, 64, 0, 64, 128, 192}};
@@ -44,8 +53,11 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 // bench/mca_a53_block/pair16a_lean.s, pair16b_lean.s).
 #define SB_M2L_A \
     "stp d4, d5, [%[d]]\n\t" \
-    "stp d6, d7, [x8]\n\t" \
-    "2:\n\t" \
+    "stp d6, d7, [x8]\n\t" SB_M2L_A_BODY \
+    "b 3f\n\t" \
+    "3:\n\t"
+// (SB_M2L_A without its stores: also a group's first pair A, straight after its entry)
+#define SB_M2L_A_BODY \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
@@ -143,9 +155,7 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
     "add %[rp], %[rp], #32\n\t" \
-    "ld1 {v7.b}[7], [x7]\n\t" \
-    "b 3f\n\t" \
-    "3:\n\t"
+    "ld1 {v7.b}[7], [x7]\n\t"
 
 #define SB_M2L_B \
     "add v27.4s, v22.4s, v16.4s\n\t" \
@@ -451,14 +461,9 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
 // column of one entry (by core loads: widths a multiple of 64 end on one), in one pass: grid
 // entries at s0, s1, s2 (rows gw entries apart) to T at o0, o1, o2 (rows es bytes apart), rows
 // 0..nb.
-#define SB_M2L_COLS(H0, H1, H2, H3, H4) \
-  asm volatile( \
-      "ldr q0, [%[s0]]\n\t" \
-      "ldr q16, [%[s1]]\n\t" H0 \
-      "str q0, [%[o0]]\n\t" \
-      "str q16, [%[o1]]\n\t" \
-      "cbz %[n4], 2f\n" \
-      "1:\n\t" \
+// Four rows of the two columns (SB_M2L_COLS' loop body), without and with the third column
+// (_H: order searched by bench/order_search.py, Cortex-A53 model 43 -> 38 cycles).
+#define SB_M2L_STEP4 \
       "ldr q1, [%[s0], %[g1]]\n\t" \
       "ldr q2, [%[s0], %[g2]]\n\t" \
       "ldr q3, [%[s0], %[g3]]\n\t" \
@@ -466,10 +471,10 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
       "ldr q17, [%[s1], %[g1]]\n\t" \
       "ldr q18, [%[s1], %[g2]]\n\t" \
       "ldr q19, [%[s1], %[g3]]\n\t" \
-      "ldr q20, [%[s1], %[g4]]\n\t" H1 \
+      "ldr q20, [%[s1], %[g4]]\n\t" \
       "add %[s0], %[s0], %[g4]\n\t" \
       "add %[s1], %[s1], %[g4]\n\t" \
-      "subs %[n4], %[n4], #1\n\t" H2 \
+      "subs %[n4], %[n4], #1\n\t" \
       "sub v5.8h, v1.8h, v0.8h\n\t" \
       "sub v6.8h, v2.8h, v1.8h\n\t" \
       "sub v7.8h, v3.8h, v2.8h\n\t" \
@@ -487,9 +492,65 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
       "str q7, [%[o0], %[e3]]\n\t" \
       "str q23, [%[o1], %[e3]]\n\t" \
       "str q25, [%[o0], %[e4]]\n\t" \
-      "str q24, [%[o1], %[e4]]\n\t" H3 \
+      "str q24, [%[o1], %[e4]]\n\t" \
       "add %[o0], %[o0], %[e4]\n\t" \
+      "add %[o1], %[o1], %[e4]\n\t"
+#define SB_M2L_STEP4_H \
+      "ldr q2, [%[s0], %[g2]]\n\t" \
+      "ldr q4, [%[s0], %[g4]]\n\t" \
+      "ldr q3, [%[s0], %[g3]]\n\t" \
+      "ldr q1, [%[s0], %[g1]]\n\t" \
+      "ldr q19, [%[s1], %[g3]]\n\t" \
+      "add %[s0], %[s0], %[g4]\n\t" \
+      "ldrh w12, [%[s2], %[g3]]\n\t" \
+      "subs %[n4], %[n4], #1\n\t" \
+      "ldrh w13, [%[s2], %[g4]]\n\t" \
+      "ldr q17, [%[s1], %[g1]]\n\t" \
+      "ldrh w11, [%[s2], %[g2]]\n\t" \
+      "ldr q20, [%[s1], %[g4]]\n\t" \
+      "ldrh w10, [%[s2], %[g1]]\n\t" \
+      "sub v25.8h, v4.8h, v3.8h\n\t" \
+      "ldr q18, [%[s1], %[g2]]\n\t" \
+      "sub w14, w13, w12\n\t" \
+      "sub w12, w12, w11\n\t" \
+      "sub w11, w11, w10\n\t" \
+      "sub v5.8h, v1.8h, v0.8h\n\t" \
+      "sub v6.8h, v2.8h, v1.8h\n\t" \
+      "sub v21.8h, v17.8h, v16.8h\n\t" \
+      "sub v22.8h, v18.8h, v17.8h\n\t" \
+      "sub v24.8h, v20.8h, v19.8h\n\t" \
+      "sub v7.8h, v3.8h, v2.8h\n\t" \
+      "str q5, [%[o0], %[e1]]\n\t" \
+      "str q21, [%[o1], %[e1]]\n\t" \
+      "sub v23.8h, v19.8h, v18.8h\n\t" \
+      "mov v0.16b, v4.16b\n\t" \
+      "mov v16.16b, v20.16b\n\t" \
+      "str q6, [%[o0], %[e2]]\n\t" \
+      "str q22, [%[o1], %[e2]]\n\t" \
+      "str q7, [%[o0], %[e3]]\n\t" \
+      "sub w10, w10, w9\n\t" \
+      "str q23, [%[o1], %[e3]]\n\t" \
+      "str q25, [%[o0], %[e4]]\n\t" \
+      "str q24, [%[o1], %[e4]]\n\t" \
+      "mov w9, w13\n\t" \
+      "strh w10, [%[o2], %[e1]]\n\t" \
+      "add %[o0], %[o0], %[e4]\n\t" \
+      "strh w11, [%[o2], %[e2]]\n\t" \
+      "add %[s1], %[s1], %[g4]\n\t" \
+      "strh w12, [%[o2], %[e3]]\n\t" \
+      "add %[s2], %[s2], %[g4]\n\t" \
+      "strh w14, [%[o2], %[e4]]\n\t" \
       "add %[o1], %[o1], %[e4]\n\t" \
+      "add %[o2], %[o2], %[e4]\n\t"
+#define SB_M2L_COLS(H0, STEP4, H4) \
+  asm volatile( \
+      "ldr q0, [%[s0]]\n\t" \
+      "ldr q16, [%[s1]]\n\t" H0 \
+      "str q0, [%[o0]]\n\t" \
+      "str q16, [%[o1]]\n\t" \
+      "cbz %[n4], 2f\n" \
+      "1:\n\t" \
+      STEP4 \
       "b.ne 1b\n" \
       "2:\n\t" \
       "cbz %[n1], 4f\n" \
@@ -522,11 +583,13 @@ inline void m2l_cols2(const uint16_t* s0, const uint16_t* s1, int gw, int nb, ui
   const int64_t e2 = 2 * es, e3 = 3 * es, e4 = 4 * es;
   int64_t n4 = nb >> 2, n1 = nb & 3;
   if constexpr (kH)
-    SB_M2L_COLS("ldrh w9, [%[s2]]\n\t" "strh w9, [%[o2]]\n\t", "ldrh w10, [%[s2], %[g1]]\n\t" "ldrh w11, [%[s2], %[g2]]\n\t" "ldrh w12, [%[s2], %[g3]]\n\t" "ldrh w13, [%[s2], %[g4]]\n\t" "add %[s2], %[s2], %[g4]\n\t", "sub w14, w13, w12\n\t" "sub w12, w12, w11\n\t" "sub w11, w11, w10\n\t" "sub w10, w10, w9\n\t" "mov w9, w13\n\t", "strh w10, [%[o2], %[e1]]\n\t" "strh w11, [%[o2], %[e2]]\n\t" "strh w12, [%[o2], %[e3]]\n\t" "strh w14, [%[o2], %[e4]]\n\t" "add %[o2], %[o2], %[e4]\n\t", "ldrh w10, [%[s2], %[g1]]\n\t" "add %[s2], %[s2], %[g1]\n\t" "sub w11, w10, w9\n\t" "mov w9, w10\n\t" "strh w11, [%[o2], %[e1]]\n\t" "add %[o2], %[o2], %[e1]\n\t");
+    SB_M2L_COLS("ldrh w9, [%[s2]]\n\t" "strh w9, [%[o2]]\n\t", SB_M2L_STEP4_H, "ldrh w10, [%[s2], %[g1]]\n\t" "add %[s2], %[s2], %[g1]\n\t" "sub w11, w10, w9\n\t" "mov w9, w10\n\t" "strh w11, [%[o2], %[e1]]\n\t" "add %[o2], %[o2], %[e1]\n\t");
   else
-    SB_M2L_COLS("", "", "", "", "");
+    SB_M2L_COLS("", SB_M2L_STEP4, "");
 }
 #undef SB_M2L_COLS
+#undef SB_M2L_STEP4
+#undef SB_M2L_STEP4_H
 
 // T's entries 0..ne - 1 (ne >= 8, ne <= gw): columns of 8 in pairs (and a last single entry
 // with the last pair), a last column alone by a53_table (the last column ends at entry ne - 1,
@@ -593,10 +656,12 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
     return surface_block_inorder(grid, gw, texels, tw, th, mip, soff, toff, width, height, colormap, out);
   const int nb = height >> 2;
   alignas(16) uint8_t t[kA53TableBytes];
-  alignas(16) uint8_t L[(kM2LMaxHeight + 16) * 16];  // (m2l_repeat: up to 12 rows past)
-  alignas(16) uint8_t L2[(kM2LMaxHeight + 2) * 16];  // (tw 32: the odd groups' rows)
+  // L: the rows (m2l_repeat: up to 12 rows past); L2 = L + kM2LL2Off: tw 32, the odd groups' rows
+  alignas(16) uint8_t L[kM2LL2Off + (kM2LMaxHeight + 2) * 16];
+  uint8_t* const L2 = L + kM2LL2Off;
   const int c0 = soff & (tw - 1), t0 = (th & (th - 1)) == 0 ? toff & (th - 1) : wrap(toff, th);
-  const uint8x16_t I = vandq_u8(vaddq_u8(vld1q_u8(kM2LIota), vdupq_n_u8(uint8_t(c0))), vdupq_n_u8(uint8_t(tw - 1)));
+  // (byte k: (c0 + k) mod tw, tw 4, 8 or 16 dividing 16: one load of kM2LIota2 at c0 < tw)
+  const uint8x16_t I = vandq_u8(vld1q_u8(kM2LIota2 + (c0 & 15)), vdupq_n_u8(uint8_t(tw - 1)));
   if (tw == 16 && th == 16)
     m2l_rows16x16(texels, t0, I, L, L + 16 * height);
   else if (tw == 32)
@@ -616,35 +681,22 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
   const int16x8_t wt = vld1q_s16(kM2LWt[0]), wt4 = vld1q_s16(kM2LWt[1]);  // (wt4: the numerators', << 2)
   const uint8x16_t J0 = vld1q_u8(kM2LTix[0]), J1 = vld1q_u8(kM2LTix[1]);
   uint8_t* d = out;
-  // (the stack's: group 0's rows, the outputs' end, group 1's rows)
-  const uint8_t* const ld[3] = {L, out + width, tw == 32 ? L2 : L};
-  const uint8_t* rp = reinterpret_cast<const uint8_t*>(ld);
+  const uint8_t* rp = L;
   const uint8_t* t0r = t;
   const uint8_t* ete = t + (nb + 2) * es;
   int64_t q = -int64_t(nb) * es;
-  // x26: the group's output; [sp]: this group's rows (rp's start), dend, the next group's rows
-  // (tw 32: swapped at each exit, SWAP; else the same rows, ROWS). The group's exit: T's row-0
+  // x26: the group's output; [sp]: this group's rows (rp's start), dend = d + w, (tw 32) the
+  // next group's rows (swapped at each exit; else the same rows, one ldp; ENTRY stores them). The group's exit: T's row-0
   // pointer and ete a group on (8 bytes), q = t0 + 2 w - ete (-nb w), rp = the next group's rows.
-#define SB_M2L_GROUPS(ROWS) \
+#define SB_M2L_GROUPS(ENTRY, EXIT) \
   asm volatile( \
-      "ldp x26, x30, [%[rp]]\n\t" \
-      "ldr x10, [%[rp], #16]\n\t" \
-      "stp x26, x30, [sp, #-32]!\n\t" \
-      "str x10, [sp, #16]\n\t" \
-      "mov %[rp], x26\n\t" \
+      "add x30, %[d], %[w]\n\t" \
+      "stp %[rp], x30, [sp, #-32]!\n\t" ENTRY \
       "mov x26, %[d]\n\t" SB_M2L_LOADS \
-      "5:\n\t" SB_M2L_HEAD \
-      "b 2f\n\t" \
+      "5:\n\t" SB_M2L_HEAD SB_M2L_A_BODY \
+      "b 3f\n\t" \
       ".p2align 6\n" \
-      "1:\n\t" SB_M2L_A SB_M2L_B \
-      "stp d4, d5, [%[d]]\n\t" \
-      "stp d6, d7, [x8]\n\t" ROWS \
-      "add x26, x26, #16\n\t" \
-      "add %[t0], %[t0], #8\n\t" \
-      "add %[ete], %[ete], #8\n\t" \
-      "add %[q], %[t0], %[w], lsl #1\n\t" \
-      "sub %[q], %[q], %[ete]\n\t" SB_M2L_LOADS \
-      "cmp x26, x30\n\t" \
+      "1:\n\t" SB_M2L_A SB_M2L_B EXIT \
       "b.ne 5b\n\t" \
       "add sp, sp, #32\n\t" \
       : [d] "+r"(d), [rp] "+r"(rp), [q] "+r"(q), [ete] "+r"(ete), [t0] "+r"(t0r) \
@@ -653,16 +705,43 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
         "x22", "x23", "x24", "x25", "x26", "x30", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v8", "v16", "v17", \
         "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "cc", "memory")
   if (tw == 32)
-    SB_M2L_GROUPS("ldp x10, x30, [sp]\n\t"
+    SB_M2L_GROUPS("add x10, %[rp], #" SB_M2L_STR(SB_M2L_L2OFF) "\n\t"
+                  "str x10, [sp, #16]\n\t",
+                  "stp d4, d5, [%[d]]\n\t"
+                  "stp d6, d7, [x8]\n\t"
+                  "ldp x10, x30, [sp]\n\t"
                   "ldr %[rp], [sp, #16]\n\t"
                   "str x10, [sp, #16]\n\t"
-                  "str %[rp], [sp]\n\t");
-  else
-    SB_M2L_GROUPS("ldp %[rp], x30, [sp]\n\t");
+                  "str %[rp], [sp]\n\t"
+                  "add x26, x26, #16\n\t"
+                  "add %[t0], %[t0], #8\n\t"
+                  "add %[ete], %[ete], #8\n\t"
+                  "add %[q], %[t0], %[w], lsl #1\n\t"
+                  "sub %[q], %[q], %[ete]\n\t" SB_M2L_LOADS
+                  "cmp x26, x30\n\t");
+  else  // (the same steps with one ldp for the rows, order searched: Cortex-A53 model 13 -> 11)
+    SB_M2L_GROUPS("", "add %[t0], %[t0], #8\n\t"
+                  "stp d4, d5, [%[d]]\n\t"
+                  "ldp %[rp], x30, [sp]\n\t"
+                  "add %[ete], %[ete], #8\n\t"
+                  "add %[q], %[t0], %[w], lsl #1\n\t"
+                  "ldr q0, [%[t0]]\n\t"
+                  "sub %[q], %[q], %[ete]\n\t"
+                  "ldr q8, [%[t0], %[w]]\n\t"
+                  "add x26, x26, #16\n\t"
+                  "ldr q21, [%[rp]]\n\t"
+                  "stp d6, d7, [x8]\n\t"
+                  "cmp x26, x30\n\t"
+                  "ldr q26, [%[rp], #16]\n\t"
+                  "add %[rp], %[rp], #32\n\t");
 #undef SB_M2L_GROUPS
 }
 
 #undef SB_M2L_A
+#undef SB_M2L_STR
+#undef SB_M2L_STR2
+#undef SB_M2L_L2OFF
+#undef SB_M2L_A_BODY
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
 #undef SB_M2L_LOADS
