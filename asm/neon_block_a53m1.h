@@ -14,28 +14,28 @@
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
-    "stp d4, d5, [%[d]]\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "stp d4, d5, [%[d]]\n\t" \
     "fmov x0, d0\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
     "fmov x1, v0.d[1]\n\t" \
-    "add v19.4s, v24.4s, v18.4s\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
-    "fmov x2, d1\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
     "fmov x3, v1.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
     "fmov x4, d2\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "add v23.4s, v28.4s, v17.4s\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x5, v2.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "2:\n\t" \
-    "ror x20, x2, #32\n\t" \
     "ror x18, x0, #32\n\t" \
     "add x9, %[cm], w0, uxth\n\t" \
+    "ror x20, x2, #32\n\t" \
     "ldr x8, [%[rp]]\n\t" \
     "add x10, %[cm], w2, uxth\n\t" \
     "ror x22, x4, #32\n\t" \
@@ -43,9 +43,9 @@
     "add x0, %[cm], x0, lsr #48\n\t" \
     "add x11, %[cm], w4, uxth\n\t" \
     "ror x24, x6, #32\n\t" \
-    "add x21, %[cm], w20, uxth\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
     "add x23, %[cm], w22, uxth\n\t" \
+    "add x19, %[cm], w18, uxth\n\t" \
+    "add x21, %[cm], w20, uxth\n\t" \
     "ldr b4, [x9]\n\t" \
     "add x25, %[cm], w24, uxth\n\t" \
     "ldr b6, [x11]\n\t" \
@@ -53,38 +53,38 @@
     "ldr b7, [x12]\n\t" \
     "add x22, %[cm], x22, lsr #48\n\t" \
     "ldr b5, [x10]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
     "ldr q21, [x8, %[goff]]\n\t" \
     "add x20, %[cm], x20, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x18]\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
+    "add x24, %[cm], x24, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x22]\n\t" \
     "ror x22, x3, #32\n\t" \
-    "ldr x8, [%[rp], #8]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "ldr %[q], [%[rp], #8]\n\t" \
     "ld1 {v5.b}[1], [x20]\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v4.b}[2], [x19]\n\t" \
-    "add x2, %[cm], x2, lsr #48\n\t" \
-    "add x10, %[cm], w3, uxth\n\t" \
     "add x11, %[cm], w5, uxth\n\t" \
-    "ld1 {v7.b}[1], [x24]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
     "ror x19, x5, #32\n\t" \
+    "ld1 {v7.b}[1], [x24]\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
     "ld1 {v5.b}[2], [x21]\n\t" \
     "add x6, %[cm], x6, lsr #48\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
+    "add x9, %[cm], w1, uxth\n\t" \
     "ld1 {v6.b}[2], [x23]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
     "ror x18, x1, #32\n\t" \
-    "ror x23, x7, #32\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "add x21, %[cm], w19, uxth\n\t" \
     "add x24, %[cm], w22, uxth\n\t" \
+    "ror x23, x7, #32\n\t" \
+    "add x21, %[cm], w19, uxth\n\t" \
     "add x19, %[cm], x19, lsr #48\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "add x22, %[cm], x22, lsr #48\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
     "add x20, %[cm], w18, uxth\n\t" \
-    "ldr q26, [x8, %[goff]]\n\t" \
+    "ldr q26, [%[q], %[goff]]\n\t" \
     "add x25, %[cm], w23, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
     "add x12, %[cm], w7, uxth\n\t" \
@@ -96,58 +96,57 @@
     "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x12]\n\t" \
     "ld1 {v4.b}[5], [x18]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v5.b}[5], [x22]\n\t" \
     "add x5, %[cm], x5, lsr #48\n\t" \
     "ld1 {v6.b}[5], [x19]\n\t" \
     "ld1 {v7.b}[5], [x23]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x20]\n\t" \
     "ld1 {v5.b}[6], [x24]\n\t" \
-    "add x7, %[cm], x7, lsr #48\n\t" \
     "ld1 {v6.b}[6], [x21]\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
+    "add x7, %[cm], x7, lsr #48\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "add %[rp], %[rp], #16\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
-    "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
-    "stp d4, d5, [%[d]]\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
     "fmov x0, d0\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
-    "fmov x1, v0.d[1]\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
-    "fmov x2, d1\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
-    "fmov x4, d2\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
+    "fmov x2, d1\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "fmov x4, d2\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x5, v2.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
+    "stp d4, d5, [%[d]]\n\t" \
+    "add x10, %[cm], w2, uxth\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "ror x20, x2, #32\n\t" \
-    "ror x18, x0, #32\n\t" \
     "add x9, %[cm], w0, uxth\n\t" \
-    "ldr x8, [%[rp]]\n\t" \
-    "add x10, %[cm], w2, uxth\n\t" \
-    "ror x22, x4, #32\n\t" \
+    "ror x18, x0, #32\n\t" \
+    "ldr x8, [%[rp], #16]\n\t" \
     "add x12, %[cm], w6, uxth\n\t" \
     "add x0, %[cm], x0, lsr #48\n\t" \
     "add x11, %[cm], w4, uxth\n\t" \
+    "ror x22, x4, #32\n\t" \
     "ror x24, x6, #32\n\t" \
     "add x21, %[cm], w20, uxth\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
-    "add x23, %[cm], w22, uxth\n\t" \
     "ldr b4, [x9]\n\t" \
+    "add x23, %[cm], w22, uxth\n\t" \
     "add x25, %[cm], w24, uxth\n\t" \
     "ldr b6, [x11]\n\t" \
     "add x18, %[cm], x18, lsr #48\n\t" \
@@ -161,31 +160,31 @@
     "add x9, %[cm], w1, uxth\n\t" \
     "ld1 {v6.b}[1], [x22]\n\t" \
     "ror x22, x3, #32\n\t" \
-    "ldr x8, [%[rp], #8]\n\t" \
+    "ldr %[q], [%[rp], #24]\n\t" \
     "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v5.b}[1], [x20]\n\t" \
     "ld1 {v4.b}[2], [x19]\n\t" \
     "add x2, %[cm], x2, lsr #48\n\t" \
-    "add x10, %[cm], w3, uxth\n\t" \
-    "add x11, %[cm], w5, uxth\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
+    "add x10, %[cm], w3, uxth\n\t" \
     "ror x19, x5, #32\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
     "ld1 {v5.b}[2], [x21]\n\t" \
-    "add x6, %[cm], x6, lsr #48\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
+    "add x6, %[cm], x6, lsr #48\n\t" \
     "ld1 {v6.b}[2], [x23]\n\t" \
     "add x4, %[cm], x4, lsr #48\n\t" \
     "ror x18, x1, #32\n\t" \
     "ror x23, x7, #32\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
     "add x21, %[cm], w19, uxth\n\t" \
-    "add x24, %[cm], w22, uxth\n\t" \
     "add x19, %[cm], x19, lsr #48\n\t" \
+    "add x24, %[cm], w22, uxth\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "add x22, %[cm], x22, lsr #48\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
     "add x20, %[cm], w18, uxth\n\t" \
-    "ldr q26, [x8, %[goff]]\n\t" \
+    "ldr q26, [%[q], %[goff]]\n\t" \
     "add x25, %[cm], w23, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
     "add x12, %[cm], w7, uxth\n\t" \
@@ -196,13 +195,13 @@
     "ld1 {v6.b}[4], [x11]\n\t" \
     "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x12]\n\t" \
-    "ld1 {v4.b}[5], [x18]\n\t" \
     "add x8, %[d], %[w]\n\t" \
-    "ld1 {v5.b}[5], [x22]\n\t" \
+    "ld1 {v4.b}[5], [x18]\n\t" \
     "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v5.b}[5], [x22]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v6.b}[5], [x19]\n\t" \
     "ld1 {v7.b}[5], [x23]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x20]\n\t" \
     "ld1 {v5.b}[6], [x24]\n\t" \
     "add x7, %[cm], x7, lsr #48\n\t" \
@@ -210,41 +209,40 @@
     "ld1 {v7.b}[6], [x25]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "add %[rp], %[rp], #16\n\t" \
-    "ld1 {v7.b}[7], [x7]\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
-    "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "ld1 {v7.b}[7], [x7]\n\t" \
     "fmov x0, d0\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
     "fmov x1, v0.d[1]\n\t" \
-    "add v19.4s, v24.4s, v18.4s\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
     "fmov x2, d1\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
     "fmov x3, v1.d[1]\n\t" \
     "fmov x4, d2\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "add v23.4s, v28.4s, v17.4s\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x5, v2.d[1]\n\t" \
-    "fmov x7, v3.d[1]\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "ror x20, x2, #32\n\t" \
-    "ror x18, x0, #32\n\t" \
     "add x9, %[cm], w0, uxth\n\t" \
-    "ldr x8, [%[rp]]\n\t" \
+    "ror x18, x0, #32\n\t" \
+    "ldr x8, [%[rp], #32]\n\t" \
     "add x10, %[cm], w2, uxth\n\t" \
+    "ror x24, x6, #32\n\t" \
     "ror x22, x4, #32\n\t" \
     "add x12, %[cm], w6, uxth\n\t" \
     "add x0, %[cm], x0, lsr #48\n\t" \
     "add x11, %[cm], w4, uxth\n\t" \
-    "ror x24, x6, #32\n\t" \
     "add x21, %[cm], w20, uxth\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
     "add x23, %[cm], w22, uxth\n\t" \
@@ -262,31 +260,31 @@
     "add x9, %[cm], w1, uxth\n\t" \
     "ld1 {v6.b}[1], [x22]\n\t" \
     "ror x22, x3, #32\n\t" \
-    "ldr x8, [%[rp], #8]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
-    "ld1 {v5.b}[1], [x20]\n\t" \
-    "ld1 {v4.b}[2], [x19]\n\t" \
-    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ldr %[q], [%[rp], #40]\n\t" \
     "add x10, %[cm], w3, uxth\n\t" \
-    "add x11, %[cm], w5, uxth\n\t" \
+    "ld1 {v5.b}[1], [x20]\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
+    "add x2, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v4.b}[2], [x19]\n\t" \
     "ror x19, x5, #32\n\t" \
+    "add x11, %[cm], w5, uxth\n\t" \
     "ld1 {v5.b}[2], [x21]\n\t" \
     "add x6, %[cm], x6, lsr #48\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
     "ld1 {v6.b}[2], [x23]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
     "ror x18, x1, #32\n\t" \
     "ror x23, x7, #32\n\t" \
+    "add x4, %[cm], x4, lsr #48\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "add x21, %[cm], w19, uxth\n\t" \
     "add x24, %[cm], w22, uxth\n\t" \
+    "add x21, %[cm], w19, uxth\n\t" \
     "add x19, %[cm], x19, lsr #48\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "add x22, %[cm], x22, lsr #48\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
     "add x20, %[cm], w18, uxth\n\t" \
-    "ldr q26, [x8, %[goff]]\n\t" \
+    "ldr q26, [%[q], %[goff]]\n\t" \
     "add x25, %[cm], w23, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
     "add x12, %[cm], w7, uxth\n\t" \
@@ -295,24 +293,23 @@
     "ld1 {v5.b}[4], [x10]\n\t" \
     "add x23, %[cm], x23, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x11]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x12]\n\t" \
+    "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x18]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
     "ld1 {v5.b}[5], [x22]\n\t" \
-    "add x5, %[cm], x5, lsr #48\n\t" \
-    "ld1 {v6.b}[5], [x19]\n\t" \
-    "ld1 {v7.b}[5], [x23]\n\t" \
     "add x1, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v6.b}[5], [x19]\n\t" \
+    "add x5, %[cm], x5, lsr #48\n\t" \
+    "ld1 {v7.b}[5], [x23]\n\t" \
     "ld1 {v4.b}[6], [x20]\n\t" \
-    "ld1 {v5.b}[6], [x24]\n\t" \
     "add x7, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v5.b}[6], [x24]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
     "ld1 {v6.b}[6], [x21]\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "add %[rp], %[rp], #16\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
@@ -323,15 +320,15 @@
     "add v23.4s, v28.4s, v17.4s\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "smull2 v29.4s, %[wb].8h, v8.h[1]\n\t" \
     "fmov x2, d1\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
     "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "smull2 v29.4s, %[wb].8h, v8.h[1]\n\t" \
-    "fmov x0, d0\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
     "smull v18.4s, %[wb].4h, v8.h[1]\n\t" \
     "fmov x5, v2.d[1]\n\t" \
+    "fmov x0, d0\n\t" \
     "fmov x4, d2\n\t" \
     "smlal2 v29.4s, %[wd].8h, v8.h[2]\n\t" \
     "fmov x6, d3\n\t" \
@@ -339,22 +336,22 @@
     "fmov x3, v1.d[1]\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
     "ror x22, x4, #32\n\t" \
-    "ror x20, x2, #32\n\t" \
-    "ror x24, x6, #32\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
     "ror x18, x0, #32\n\t" \
+    "ror x20, x2, #32\n\t" \
+    "add x9, %[cm], w0, uxth\n\t" \
+    "ror x24, x6, #32\n\t" \
     "smlal v18.4s, %[wd].4h, v8.h[2]\n\t" \
     "smlal v16.4s, %[wc].4h, v8.h[1]\n\t" \
-    "smlal2 v17.4s, %[wc].8h, v8.h[1]\n\t" \
     "fmov x1, v0.d[1]\n\t" \
+    "smlal2 v17.4s, %[wc].8h, v8.h[1]\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "add x10, %[cm], w2, uxth\n\t" \
-    "ldr x8, [%[rp]]\n\t" \
+    "ldr x8, [%[rp], #48]\n\t" \
     "add x11, %[cm], w4, uxth\n\t" \
     "add x19, %[cm], w18, uxth\n\t" \
-    "add x12, %[cm], w6, uxth\n\t" \
     "add x18, %[cm], x18, lsr #48\n\t" \
     "add x21, %[cm], w20, uxth\n\t" \
+    "add x12, %[cm], w6, uxth\n\t" \
     "ldr b5, [x10]\n\t" \
     "add x23, %[cm], w22, uxth\n\t" \
     "ldr q21, [x8, %[goff]]\n\t" \
@@ -363,7 +360,7 @@
     "add x9, %[cm], w3, uxth\n\t" \
     "ldr b6, [x11]\n\t" \
     "add x22, %[cm], x22, lsr #48\n\t" \
-    "ldr x8, [%[rp], #8]\n\t" \
+    "ldr %[q], [%[rp], #56]\n\t" \
     "add x20, %[cm], x20, lsr #48\n\t" \
     "ldr b7, [x12]\n\t" \
     "add x24, %[cm], x24, lsr #48\n\t" \
@@ -374,31 +371,32 @@
     "ld1 {v5.b}[1], [x20]\n\t" \
     "add x26, %[cm], w1, uxth\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
-    "add %[rp], %[rp], #16\n\t" \
+    "add %[rp], %[rp], #64\n\t" \
     "ld1 {v4.b}[2], [x19]\n\t" \
     "add x0, %[cm], x0, lsr #48\n\t" \
     "fmov x7, v3.d[1]\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "ror x24, x5, #32\n\t" \
-    "ld1 {v6.b}[2], [x23]\n\t" \
-    "add x10, %[cm], w5, uxth\n\t" \
-    "ror x12, x1, #32\n\t" \
-    "ld1 {v5.b}[2], [x21]\n\t" \
     "add x2, %[cm], x2, lsr #48\n\t" \
-    "ld1 {v7.b}[3], [x6]\n\t" \
+    "ld1 {v6.b}[2], [x23]\n\t" \
+    "ror x24, x5, #32\n\t" \
+    "ror x12, x1, #32\n\t" \
     "ror x20, x3, #32\n\t" \
+    "ld1 {v5.b}[2], [x21]\n\t" \
+    "add x10, %[cm], w5, uxth\n\t" \
+    "ld1 {v7.b}[3], [x6]\n\t" \
+    "add x19, %[cm], w24, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
     "add x11, %[cm], w7, uxth\n\t" \
-    "ld1 {v6.b}[3], [x4]\n\t" \
-    "add x19, %[cm], w24, uxth\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
     "ror x21, x7, #32\n\t" \
-    "ldr q26, [x8, %[goff]]\n\t" \
+    "ldr q26, [%[q], %[goff]]\n\t" \
     "add x18, %[cm], w12, uxth\n\t" \
     "add x12, %[cm], x12, lsr #48\n\t" \
     "add x22, %[cm], w20, uxth\n\t" \
-    "ld1 {v7.b}[4], [x11]\n\t" \
+    "ld1 {v6.b}[3], [x4]\n\t" \
     "add x20, %[cm], x20, lsr #48\n\t" \
+    "ld1 {v7.b}[4], [x11]\n\t" \
+    "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v4.b}[4], [x26]\n\t" \
     "add x24, %[cm], x24, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x9]\n\t" \
@@ -412,14 +410,13 @@
     "ld1 {v5.b}[5], [x20]\n\t" \
     "add x3, %[cm], x3, lsr #48\n\t" \
     "ld1 {v6.b}[5], [x24]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
     "ld1 {v7.b}[5], [x21]\n\t" \
     "ld1 {v4.b}[6], [x18]\n\t" \
     "ld1 {v5.b}[6], [x22]\n\t" \
     "ld1 {v6.b}[6], [x19]\n\t" \
     "ld1 {v7.b}[6], [x23]\n\t" \
-    "adds x30, x30, %[w]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
+    "adds x30, x30, %[w]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
     "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \

@@ -15,7 +15,9 @@
 # rewrites rA from the listed registers and returns), which reads those registers and its own
 # and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow).
 # --cuts=A,B (body line indexes, labels not counted) scores the sum over the blocks cut
-# there, as qemu's translation blocks are timed by bench/count.sh. --mem keeps loads in order
+# there, as qemu's translation blocks are timed by bench/count.sh. --qcuts=P: cuts as qemu 7.2 with
+# the hotblocks plugin makes them for each order (bench/qemu_cuts.py: op counts, a page end at body
+# index P, 0 for none): for straight loop bodies longer than qemu translates in one block. --mem keeps loads in order
 # with stores too (for blocks that reload what they store: stack state, layout buffers);
 # without it only stores keep their order. sp is a register like the others.
 # ARMv7 (--arch=armv7; lines starting with `.` are dropped, `@` starts a comment): one
@@ -38,7 +40,7 @@
 import random, re, subprocess, sys
 
 BRANCHES = ("b", "cbz", "cbnz", "tbz", "tbnz")  # and b.cond (not bif, bit, bsl)
-V7, REGION = False, None  # --arch=armv7, --runs (set by main)
+V7, REGION, QCUTS = False, None, None  # --arch=armv7, --runs, --qcuts (set by main)
 ACCUMULATE = ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "sri", "fmla", "fmls", "mls", "mla",
               "bit", "bif", "bsl", "ssra", "usra", "sqxtn2", "uqxtn2", "xtn2")
 
@@ -237,7 +239,12 @@ def cycles(orders, cpu):
         body = [lines[i] for i in o if not lines[i].endswith(":")]
         b = [0] + CUTS + [len(body)]
         return [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
-    parts = [blocks(o) if CUTS else [[lines[i] for i in o]] for o in orders]
+    if QCUTS is not None:
+        def blocks(o):
+            body = [lines[i] for i in o if not lines[i].endswith(":")]
+            b = [0] + qemu_cuts.cuts(body, page=QCUTS) + [len(body)]
+            return [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+    parts = [blocks(o) if CUTS or QCUTS is not None else [[lines[i] for i in o]] for o in orders]
     cmt, strip = ("@", "@") if V7 else ("#", "//")
 
     def text_of(blk):
@@ -252,10 +259,11 @@ def cycles(orders, cpu):
         target = ["-mtriple=aarch64", f"-mcpu={cpu}"]
     r = subprocess.run(["llvm-mca-14", *target, f"-iterations={ITER}"], input=text, capture_output=True, text=True)
     c = [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
-    if len(c) != len(orders) * len(parts[0]):
+    ns = [len(p) for p in parts]
+    if len(c) != sum(ns):
         sys.exit(r.stderr[:400])
-    n = len(parts[0])
-    return [sum(c[k * n:(k + 1) * n]) for k in range(len(orders))]
+    starts = [sum(ns[:k]) for k in range(len(orders))]
+    return [sum(c[s0:s0 + n]) for s0, n in zip(starts, ns)]
 
 
 def score(orders):
@@ -302,6 +310,11 @@ if __name__ == "__main__":
     ITER = int(opt.get("iter", 100 if V7 else 60))
     W57 = float(opt.get("a57", 0))  # 0: A57 breaks ties only
     CUTS = [int(c) for c in opt["cuts"].split(",")] if "cuts" in opt else []
+    QCUTS = int(opt["qcuts"]) if "qcuts" in opt else None
+    if QCUTS is not None:
+        import os
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import qemu_cuts
     lines = [l.strip() for l in open(inp) if l.strip() and not l.strip().startswith("//")]
     if V7:
         lines = [l for l in lines if not l.startswith((".", "@"))]

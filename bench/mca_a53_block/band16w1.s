@@ -5,28 +5,28 @@ tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v9.16b
 add v25.4s, v20.4s, v29.4s
 add v27.4s, v22.4s, v16.4s
 add v28.4s, v23.4s, v17.4s
-stp d4, d5, [x17]
 add v24.4s, v19.4s, v18.4s
 tbl v1.16b, {v19.16b, v20.16b, v21.16b}, v10.16b
+stp d4, d5, [x17]
 fmov x0, d0
 add v20.4s, v25.4s, v29.4s
+add v23.4s, v28.4s, v17.4s
 tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v9.16b
 fmov x1, v0.d[1]
-add v19.4s, v24.4s, v18.4s
 tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v10.16b
-fmov x2, d1
+add v19.4s, v24.4s, v18.4s
 fmov x3, v1.d[1]
+fmov x2, d1
 fmov x4, d2
 add v22.4s, v27.4s, v16.4s
-add v23.4s, v28.4s, v17.4s
 fmov x6, d3
 fmov x5, v2.d[1]
 fmov x7, v3.d[1]
 stp d6, d7, [x8]
 2:
-ror x20, x2, #32
 ror x18, x0, #32
 add x9, x27, w0, uxth
+ror x20, x2, #32
 ldr x8, [x28]
 add x10, x27, w2, uxth
 ror x22, x4, #32
@@ -34,9 +34,9 @@ add x12, x27, w6, uxth
 add x0, x27, x0, lsr #48
 add x11, x27, w4, uxth
 ror x24, x6, #32
-add x21, x27, w20, uxth
-add x19, x27, w18, uxth
 add x23, x27, w22, uxth
+add x19, x27, w18, uxth
+add x21, x27, w20, uxth
 ldr b4, [x9]
 add x25, x27, w24, uxth
 ldr b6, [x11]
@@ -44,38 +44,38 @@ add x18, x27, x18, lsr #48
 ldr b7, [x12]
 add x22, x27, x22, lsr #48
 ldr b5, [x10]
-add x24, x27, x24, lsr #48
+add x10, x27, w3, uxth
 ldr q21, [x8, x15]
 add x20, x27, x20, lsr #48
 ld1 {v4.b}[1], [x18]
-add x9, x27, w1, uxth
+add x24, x27, x24, lsr #48
 ld1 {v6.b}[1], [x22]
 ror x22, x3, #32
-ldr x8, [x28, #8]
-add x17, x17, x13, lsl #1
+ldr x14, [x28, #8]
 ld1 {v5.b}[1], [x20]
+add x17, x17, x13, lsl #1
 ld1 {v4.b}[2], [x19]
-add x2, x27, x2, lsr #48
-add x10, x27, w3, uxth
 add x11, x27, w5, uxth
-ld1 {v7.b}[1], [x24]
+add x2, x27, x2, lsr #48
 ror x19, x5, #32
+ld1 {v7.b}[1], [x24]
+add x4, x27, x4, lsr #48
 ld1 {v5.b}[2], [x21]
 add x6, x27, x6, lsr #48
 ld1 {v4.b}[3], [x0]
+add x9, x27, w1, uxth
 ld1 {v6.b}[2], [x23]
-add x4, x27, x4, lsr #48
 ror x18, x1, #32
-ror x23, x7, #32
 ld1 {v7.b}[2], [x25]
-add x21, x27, w19, uxth
 add x24, x27, w22, uxth
+ror x23, x7, #32
+add x21, x27, w19, uxth
 add x19, x27, x19, lsr #48
 ld1 {v5.b}[3], [x2]
 add x22, x27, x22, lsr #48
 ld1 {v6.b}[3], [x4]
 add x20, x27, w18, uxth
-ldr q26, [x8, x15]
+ldr q26, [x14, x15]
 add x25, x27, w23, uxth
 ld1 {v7.b}[3], [x6]
 add x12, x27, w7, uxth
@@ -87,58 +87,57 @@ ld1 {v6.b}[4], [x11]
 add x3, x27, x3, lsr #48
 ld1 {v7.b}[4], [x12]
 ld1 {v4.b}[5], [x18]
-add x8, x17, x13
+add x1, x27, x1, lsr #48
 ld1 {v5.b}[5], [x22]
 add x5, x27, x5, lsr #48
 ld1 {v6.b}[5], [x19]
 ld1 {v7.b}[5], [x23]
-add x1, x27, x1, lsr #48
 ld1 {v4.b}[6], [x20]
 ld1 {v5.b}[6], [x24]
-add x7, x27, x7, lsr #48
 ld1 {v6.b}[6], [x21]
 ld1 {v7.b}[6], [x25]
+add x8, x17, x13
 ld1 {v4.b}[7], [x1]
+add x7, x27, x7, lsr #48
 ld1 {v5.b}[7], [x3]
 ld1 {v6.b}[7], [x5]
-add x28, x28, #16
+add v27.4s, v22.4s, v16.4s
 ld1 {v7.b}[7], [x7]
 tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v9.16b
 add v25.4s, v20.4s, v29.4s
-add v27.4s, v22.4s, v16.4s
 add v28.4s, v23.4s, v17.4s
-stp d4, d5, [x17]
 add v24.4s, v19.4s, v18.4s
 tbl v1.16b, {v19.16b, v20.16b, v21.16b}, v10.16b
 fmov x0, d0
 add v20.4s, v25.4s, v29.4s
 tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v9.16b
-fmov x1, v0.d[1]
 add v19.4s, v24.4s, v18.4s
 tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v10.16b
-fmov x2, d1
-fmov x3, v1.d[1]
-fmov x4, d2
 add v22.4s, v27.4s, v16.4s
+fmov x2, d1
+fmov x1, v0.d[1]
+fmov x4, d2
 add v23.4s, v28.4s, v17.4s
+fmov x3, v1.d[1]
 fmov x6, d3
 fmov x5, v2.d[1]
 fmov x7, v3.d[1]
+stp d4, d5, [x17]
+add x10, x27, w2, uxth
 stp d6, d7, [x8]
 ror x20, x2, #32
-ror x18, x0, #32
 add x9, x27, w0, uxth
-ldr x8, [x28]
-add x10, x27, w2, uxth
-ror x22, x4, #32
+ror x18, x0, #32
+ldr x8, [x28, #16]
 add x12, x27, w6, uxth
 add x0, x27, x0, lsr #48
 add x11, x27, w4, uxth
+ror x22, x4, #32
 ror x24, x6, #32
 add x21, x27, w20, uxth
 add x19, x27, w18, uxth
-add x23, x27, w22, uxth
 ldr b4, [x9]
+add x23, x27, w22, uxth
 add x25, x27, w24, uxth
 ldr b6, [x11]
 add x18, x27, x18, lsr #48
@@ -152,31 +151,31 @@ ld1 {v4.b}[1], [x18]
 add x9, x27, w1, uxth
 ld1 {v6.b}[1], [x22]
 ror x22, x3, #32
-ldr x8, [x28, #8]
+ldr x14, [x28, #24]
 add x17, x17, x13, lsl #1
 ld1 {v5.b}[1], [x20]
 ld1 {v4.b}[2], [x19]
 add x2, x27, x2, lsr #48
-add x10, x27, w3, uxth
-add x11, x27, w5, uxth
 ld1 {v7.b}[1], [x24]
+add x10, x27, w3, uxth
 ror x19, x5, #32
+add x11, x27, w5, uxth
 ld1 {v5.b}[2], [x21]
-add x6, x27, x6, lsr #48
 ld1 {v4.b}[3], [x0]
+add x6, x27, x6, lsr #48
 ld1 {v6.b}[2], [x23]
 add x4, x27, x4, lsr #48
 ror x18, x1, #32
 ror x23, x7, #32
 ld1 {v7.b}[2], [x25]
 add x21, x27, w19, uxth
-add x24, x27, w22, uxth
 add x19, x27, x19, lsr #48
+add x24, x27, w22, uxth
 ld1 {v5.b}[3], [x2]
 add x22, x27, x22, lsr #48
 ld1 {v6.b}[3], [x4]
 add x20, x27, w18, uxth
-ldr q26, [x8, x15]
+ldr q26, [x14, x15]
 add x25, x27, w23, uxth
 ld1 {v7.b}[3], [x6]
 add x12, x27, w7, uxth
@@ -187,13 +186,13 @@ add x23, x27, x23, lsr #48
 ld1 {v6.b}[4], [x11]
 add x3, x27, x3, lsr #48
 ld1 {v7.b}[4], [x12]
-ld1 {v4.b}[5], [x18]
 add x8, x17, x13
-ld1 {v5.b}[5], [x22]
+ld1 {v4.b}[5], [x18]
 add x5, x27, x5, lsr #48
+ld1 {v5.b}[5], [x22]
+add x1, x27, x1, lsr #48
 ld1 {v6.b}[5], [x19]
 ld1 {v7.b}[5], [x23]
-add x1, x27, x1, lsr #48
 ld1 {v4.b}[6], [x20]
 ld1 {v5.b}[6], [x24]
 add x7, x27, x7, lsr #48
@@ -201,41 +200,40 @@ ld1 {v6.b}[6], [x21]
 ld1 {v7.b}[6], [x25]
 ld1 {v4.b}[7], [x1]
 ld1 {v5.b}[7], [x3]
+add v27.4s, v22.4s, v16.4s
 ld1 {v6.b}[7], [x5]
-add x28, x28, #16
-ld1 {v7.b}[7], [x7]
 tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v9.16b
 add v25.4s, v20.4s, v29.4s
-add v27.4s, v22.4s, v16.4s
 add v28.4s, v23.4s, v17.4s
 stp d4, d5, [x17]
 add v24.4s, v19.4s, v18.4s
 tbl v1.16b, {v19.16b, v20.16b, v21.16b}, v10.16b
+ld1 {v7.b}[7], [x7]
 fmov x0, d0
 add v20.4s, v25.4s, v29.4s
 tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v9.16b
+add v23.4s, v28.4s, v17.4s
 fmov x1, v0.d[1]
-add v19.4s, v24.4s, v18.4s
 tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v10.16b
 fmov x2, d1
+add v19.4s, v24.4s, v18.4s
 fmov x3, v1.d[1]
 fmov x4, d2
 add v22.4s, v27.4s, v16.4s
-add v23.4s, v28.4s, v17.4s
+fmov x7, v3.d[1]
 fmov x6, d3
 fmov x5, v2.d[1]
-fmov x7, v3.d[1]
 stp d6, d7, [x8]
 ror x20, x2, #32
-ror x18, x0, #32
 add x9, x27, w0, uxth
-ldr x8, [x28]
+ror x18, x0, #32
+ldr x8, [x28, #32]
 add x10, x27, w2, uxth
+ror x24, x6, #32
 ror x22, x4, #32
 add x12, x27, w6, uxth
 add x0, x27, x0, lsr #48
 add x11, x27, w4, uxth
-ror x24, x6, #32
 add x21, x27, w20, uxth
 add x19, x27, w18, uxth
 add x23, x27, w22, uxth
@@ -253,31 +251,31 @@ ld1 {v4.b}[1], [x18]
 add x9, x27, w1, uxth
 ld1 {v6.b}[1], [x22]
 ror x22, x3, #32
-ldr x8, [x28, #8]
-add x17, x17, x13, lsl #1
-ld1 {v5.b}[1], [x20]
-ld1 {v4.b}[2], [x19]
-add x2, x27, x2, lsr #48
+ldr x14, [x28, #40]
 add x10, x27, w3, uxth
-add x11, x27, w5, uxth
+ld1 {v5.b}[1], [x20]
+add x17, x17, x13, lsl #1
 ld1 {v7.b}[1], [x24]
+add x2, x27, x2, lsr #48
+ld1 {v4.b}[2], [x19]
 ror x19, x5, #32
+add x11, x27, w5, uxth
 ld1 {v5.b}[2], [x21]
 add x6, x27, x6, lsr #48
 ld1 {v4.b}[3], [x0]
 ld1 {v6.b}[2], [x23]
-add x4, x27, x4, lsr #48
 ror x18, x1, #32
 ror x23, x7, #32
+add x4, x27, x4, lsr #48
 ld1 {v7.b}[2], [x25]
-add x21, x27, w19, uxth
 add x24, x27, w22, uxth
+add x21, x27, w19, uxth
 add x19, x27, x19, lsr #48
 ld1 {v5.b}[3], [x2]
 add x22, x27, x22, lsr #48
 ld1 {v6.b}[3], [x4]
 add x20, x27, w18, uxth
-ldr q26, [x8, x15]
+ldr q26, [x14, x15]
 add x25, x27, w23, uxth
 ld1 {v7.b}[3], [x6]
 add x12, x27, w7, uxth
@@ -286,24 +284,23 @@ add x18, x27, x18, lsr #48
 ld1 {v5.b}[4], [x10]
 add x23, x27, x23, lsr #48
 ld1 {v6.b}[4], [x11]
-add x3, x27, x3, lsr #48
 ld1 {v7.b}[4], [x12]
+add x3, x27, x3, lsr #48
 ld1 {v4.b}[5], [x18]
-add x8, x17, x13
 ld1 {v5.b}[5], [x22]
-add x5, x27, x5, lsr #48
-ld1 {v6.b}[5], [x19]
-ld1 {v7.b}[5], [x23]
 add x1, x27, x1, lsr #48
+ld1 {v6.b}[5], [x19]
+add x5, x27, x5, lsr #48
+ld1 {v7.b}[5], [x23]
 ld1 {v4.b}[6], [x20]
-ld1 {v5.b}[6], [x24]
 add x7, x27, x7, lsr #48
+ld1 {v5.b}[6], [x24]
+add x8, x17, x13
 ld1 {v6.b}[6], [x21]
 ld1 {v7.b}[6], [x25]
 ld1 {v4.b}[7], [x1]
 ld1 {v5.b}[7], [x3]
 ld1 {v6.b}[7], [x5]
-add x28, x28, #16
 ld1 {v7.b}[7], [x7]
 add v28.4s, v23.4s, v17.4s
 add v25.4s, v20.4s, v29.4s
@@ -314,15 +311,15 @@ tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v9.16b
 add v23.4s, v28.4s, v17.4s
 add v20.4s, v25.4s, v29.4s
 tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v9.16b
+smull2 v29.4s, v12.8h, v8.h[1]
 fmov x2, d1
 tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v10.16b
 smull2 v17.4s, v31.8h, v8.h[0]
 add v22.4s, v27.4s, v16.4s
-smull2 v29.4s, v12.8h, v8.h[1]
-fmov x0, d0
 add v19.4s, v24.4s, v18.4s
 smull v18.4s, v12.4h, v8.h[1]
 fmov x5, v2.d[1]
+fmov x0, d0
 fmov x4, d2
 smlal2 v29.4s, v13.8h, v8.h[2]
 fmov x6, d3
@@ -330,22 +327,22 @@ smull v16.4s, v31.4h, v8.h[0]
 fmov x3, v1.d[1]
 stp d4, d5, [x17]
 ror x22, x4, #32
-ror x20, x2, #32
-ror x24, x6, #32
-add x9, x27, w0, uxth
 ror x18, x0, #32
+ror x20, x2, #32
+add x9, x27, w0, uxth
+ror x24, x6, #32
 smlal v18.4s, v13.4h, v8.h[2]
 smlal v16.4s, v30.4h, v8.h[1]
-smlal2 v17.4s, v30.8h, v8.h[1]
 fmov x1, v0.d[1]
+smlal2 v17.4s, v30.8h, v8.h[1]
 stp d6, d7, [x8]
 add x10, x27, w2, uxth
-ldr x8, [x28]
+ldr x8, [x28, #48]
 add x11, x27, w4, uxth
 add x19, x27, w18, uxth
-add x12, x27, w6, uxth
 add x18, x27, x18, lsr #48
 add x21, x27, w20, uxth
+add x12, x27, w6, uxth
 ldr b5, [x10]
 add x23, x27, w22, uxth
 ldr q21, [x8, x15]
@@ -354,7 +351,7 @@ ldr b4, [x9]
 add x9, x27, w3, uxth
 ldr b6, [x11]
 add x22, x27, x22, lsr #48
-ldr x8, [x28, #8]
+ldr x14, [x28, #56]
 add x20, x27, x20, lsr #48
 ldr b7, [x12]
 add x24, x27, x24, lsr #48
@@ -365,31 +362,32 @@ add x4, x27, x4, lsr #48
 ld1 {v5.b}[1], [x20]
 add x26, x27, w1, uxth
 ld1 {v7.b}[1], [x24]
-add x28, x28, #16
+add x28, x28, #64
 ld1 {v4.b}[2], [x19]
 add x0, x27, x0, lsr #48
 fmov x7, v3.d[1]
 ld1 {v7.b}[2], [x25]
-ror x24, x5, #32
-ld1 {v6.b}[2], [x23]
-add x10, x27, w5, uxth
-ror x12, x1, #32
-ld1 {v5.b}[2], [x21]
 add x2, x27, x2, lsr #48
-ld1 {v7.b}[3], [x6]
+ld1 {v6.b}[2], [x23]
+ror x24, x5, #32
+ror x12, x1, #32
 ror x20, x3, #32
+ld1 {v5.b}[2], [x21]
+add x10, x27, w5, uxth
+ld1 {v7.b}[3], [x6]
+add x19, x27, w24, uxth
 ld1 {v4.b}[3], [x0]
 add x11, x27, w7, uxth
-ld1 {v6.b}[3], [x4]
-add x19, x27, w24, uxth
 ld1 {v5.b}[3], [x2]
 ror x21, x7, #32
-ldr q26, [x8, x15]
+ldr q26, [x14, x15]
 add x18, x27, w12, uxth
 add x12, x27, x12, lsr #48
 add x22, x27, w20, uxth
-ld1 {v7.b}[4], [x11]
+ld1 {v6.b}[3], [x4]
 add x20, x27, x20, lsr #48
+ld1 {v7.b}[4], [x11]
+add x1, x27, x1, lsr #48
 ld1 {v4.b}[4], [x26]
 add x24, x27, x24, lsr #48
 ld1 {v5.b}[4], [x9]
@@ -403,14 +401,13 @@ add x7, x27, x7, lsr #48
 ld1 {v5.b}[5], [x20]
 add x3, x27, x3, lsr #48
 ld1 {v6.b}[5], [x24]
-add x1, x27, x1, lsr #48
 ld1 {v7.b}[5], [x21]
 ld1 {v4.b}[6], [x18]
 ld1 {v5.b}[6], [x22]
 ld1 {v6.b}[6], [x19]
 ld1 {v7.b}[6], [x23]
-adds x30, x30, x13
 ld1 {v4.b}[7], [x1]
+adds x30, x30, x13
 ld1 {v5.b}[7], [x3]
 add x17, x17, x13, lsl #1
 ld1 {v6.b}[7], [x5]
