@@ -255,7 +255,7 @@ __attribute__((always_inline)) inline void a53_full_groups(const uint16_t* r, in
       asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD01("0", "1", "1", "4"), SB_PAIR_LOOP_16 SB_PAIR_LOOP_16W0, "2")
                        SB_A53_OPERANDS01);
     } else {
-      asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD01("1", "1", "2", "3"), SB_BAND_16W1, "4")
+      asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD1, SB_BAND_16W1, "4")
                        SB_A53_OPERANDS01);
     }
 #undef SB_A53_OPERANDS01

@@ -41,6 +41,7 @@ import random, re, subprocess, sys
 
 BRANCHES = ("b", "cbz", "cbnz", "tbz", "tbnz")  # and b.cond (not bif, bit, bsl)
 V7, REGION, QCUTS = False, None, None  # --arch=armv7, --runs, --qcuts (set by main)
+CACHE = {}  # per cpu: cycles of blocks already timed
 ACCUMULATE = ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "sri", "fmla", "fmls", "mls", "mla",
               "bit", "bif", "bsl", "ssra", "usra", "sqxtn2", "uqxtn2", "xtn2")
 
@@ -250,20 +251,24 @@ def cycles(orders, cpu):
     def text_of(blk):
         body = [l.split(strip)[0].strip() for l in blk]
         return "\n".join(body if V7 else [re.sub(r" \d+[bf]$", " .+4", l) for l in body])
-    text = "".join(f"{cmt} LLVM-MCA-BEGIN r{k}_{j}\n" + text_of(blk) + f"\n{cmt} LLVM-MCA-END\n"
-                   for k, p in enumerate(parts) for j, blk in enumerate(p))
-    if V7:
-        text = ".syntax unified\n.thumb\n" + text
-        target = ["-mtriple=thumbv7-linux-gnueabihf", f"-mcpu={cpu}", "-mattr=+neon,+vfp4"]
-    else:
-        target = ["-mtriple=aarch64", f"-mcpu={cpu}"]
-    r = subprocess.run(["llvm-mca-14", *target, f"-iterations={ITER}"], input=text, capture_output=True, text=True)
-    c = [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
-    ns = [len(p) for p in parts]
-    if len(c) != sum(ns):
-        sys.exit(r.stderr[:400])
-    starts = [sum(ns[:k]) for k in range(len(orders))]
-    return [sum(c[s0:s0 + n]) for s0, n in zip(starts, ns)]
+    texts = [[text_of(blk) for blk in p] for p in parts]
+    cache = CACHE.setdefault(cpu, {})  # block text -> cycles: a move changes one or two cut blocks
+    if len(cache) > 50000:
+        cache.clear()
+    todo = sorted({t for ts in texts for t in ts if t not in cache})
+    if todo:
+        text = "".join(f"{cmt} LLVM-MCA-BEGIN r{k}\n" + t + f"\n{cmt} LLVM-MCA-END\n" for k, t in enumerate(todo))
+        if V7:
+            text = ".syntax unified\n.thumb\n" + text
+            target = ["-mtriple=thumbv7-linux-gnueabihf", f"-mcpu={cpu}", "-mattr=+neon,+vfp4"]
+        else:
+            target = ["-mtriple=aarch64", f"-mcpu={cpu}"]
+        r = subprocess.run(["llvm-mca-14", *target, f"-iterations={ITER}"], input=text, capture_output=True, text=True)
+        c = [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
+        if len(c) != len(todo):
+            sys.exit(r.stderr[:400])
+        cache.update(zip(todo, c))
+    return [sum(cache[t] for t in ts) for ts in texts]
 
 
 def score(orders):
