@@ -15,9 +15,10 @@
 # rewrites rA from the listed registers and returns), which reads those registers and its own
 # and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow).
 # --cuts=A,B (body line indexes, labels not counted) scores the sum over the blocks cut
-# there, as qemu's translation blocks are timed by bench/count.sh. --qcuts=P: cuts as qemu 7.2 with
-# the hotblocks plugin makes them for each order (bench/qemu_cuts.py: op counts, a page end at body
-# index P, 0 for none): for straight loop bodies longer than qemu translates in one block. --mem keeps loads in order
+# there, as qemu's translation blocks are timed by bench/count.sh. --qcuts=P[,P2..]: cuts as qemu 7.2
+# with the hotblocks plugin makes them for each order (bench/qemu_cuts.py: op counts, a page end at
+# body index P, 0 for none; several: the sum over those code placements): for straight loop bodies
+# longer than qemu translates in one block. --mem keeps loads in order
 # with stores too (for blocks that reload what they store: stack state, layout buffers);
 # without it only stores keep their order. sp is a register like the others.
 # ARMv7 (--arch=armv7; lines starting with `.` are dropped, `@` starts a comment): one
@@ -243,8 +244,11 @@ def cycles(orders, cpu):
     if QCUTS is not None:
         def blocks(o):
             body = [lines[i] for i in o if not lines[i].endswith(":")]
-            b = [0] + qemu_cuts.cuts(body, page=QCUTS) + [len(body)]
-            return [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+            res = []
+            for page in QCUTS:  # (several: the sum over those placements)
+                b = [0] + qemu_cuts.cuts(body, page=page) + [len(body)]
+                res += [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+            return res
     parts = [blocks(o) if CUTS or QCUTS is not None else [[lines[i] for i in o]] for o in orders]
     cmt, strip = ("@", "@") if V7 else ("#", "//")
 
@@ -315,7 +319,7 @@ if __name__ == "__main__":
     ITER = int(opt.get("iter", 100 if V7 else 60))
     W57 = float(opt.get("a57", 0))  # 0: A57 breaks ties only
     CUTS = [int(c) for c in opt["cuts"].split(",")] if "cuts" in opt else []
-    QCUTS = int(opt["qcuts"]) if "qcuts" in opt else None
+    QCUTS = [int(c) for c in opt["qcuts"].split(",")] if "qcuts" in opt else None
     if QCUTS is not None:
         import os
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
