@@ -1,6 +1,14 @@
-# bench/qemu_cuts.py: qemu 7.2 (hotblocks plugin) translation-block cuts of a straight loop body: a block stops after the
-# instruction that brings its TCG op count (as generated, with the plugin's placeholders) to 4000,
-# or at a page boundary (PAGE: body index where the page ends, from the loop's address).
+#!/usr/bin/env python3
+# bench/qemu_cuts.py: where qemu 7.2 (qemu-aarch64 with bench/count.sh's hotblocks plugin) cuts a
+# long straight loop body into translation blocks, which bench/count.sh then times one by one
+# (each as a loop of its own). qemu ends a block after the instruction that brings its TCG op
+# count to 4000 (tcg_op_buf_full), counted as generated: the instruction's own ops (vis below,
+# read from `qemu-aarch64 -d op`), 19 plugin placeholder ops an instruction and 13 a memory
+# access (removed again before -d op prints), 21 at the block's start; or at a page end (page:
+# the body index where the loop's page ends, 0 for none). Checked against the mip-1 band of
+# asm/neon_block_a53m1.h (cuts 137 / 256 (page) / 386, and 153 from its entry at 2:). Knows
+# only the instruction forms of asm/neon_block_a53*.h's loops (others raise ValueError).
+#   qemu_cuts.py BODY.s [START]   prints the cuts from 0 and from START (no page end)
 import re
 def vis(l):
     op = l.split()[0]
