@@ -71,40 +71,40 @@
 // x18-x26 (least recently freed first). Entered at 2: (in the first pair, after its NEON run);
 // x30 steps a table row towards 0 at the band end, which ends the group.
 #define SB_BAND_16W1 \
-    "add v28.4s, v23.4s, v17.4s\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
-    "add v23.4s, v28.4s, v17.4s\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "fmov x0, d0\n\t" \
+    "add v23.4s, v28.4s, v17.4s\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
-    "fmov x1, v0.d[1]\n\t" \
     "fmov x2, d1\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "add v19.4s, v24.4s, v18.4s\n\t" \
-    "fmov x5, v2.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x4, d2\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "2:\n\t" \
     "ror x9, x0, #32\n\t" \
-    "add x19, %[cm], x0, lsr #48\n\t" \
-    "ror x11, x2, #32\n\t" \
     "add x10, %[cm], w0, uxth\n\t" \
+    "ror x11, x2, #32\n\t" \
+    "add x19, %[cm], x0, lsr #48\n\t" \
     "ror x18, x4, #32\n\t" \
-    "ldr x8, [%[rp]]\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
     "add x20, %[cm], w6, uxth\n\t" \
+    "add x12, %[cm], w2, uxth\n\t" \
+    "ldr x8, [%[rp]]\n\t" \
     "add x23, %[cm], w9, uxth\n\t" \
-    "add x21, %[cm], w4, uxth\n\t" \
     "ror x22, x6, #32\n\t" \
+    "add x21, %[cm], w4, uxth\n\t" \
     "ldr b4, [x10]\n\t" \
     "add x24, %[cm], w18, uxth\n\t" \
     "ldr b7, [x20]\n\t" \
@@ -112,8 +112,8 @@
     "ldr b5, [x12]\n\t" \
     "add x26, %[cm], w22, uxth\n\t" \
     "ldr b6, [x21]\n\t" \
-    "add x9, %[cm], x11, lsr #48\n\t" \
     "add x21, %[cm], x18, lsr #48\n\t" \
+    "add x9, %[cm], x11, lsr #48\n\t" \
     "add x25, %[cm], w11, uxth\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
     "ror x18, x3, #32\n\t" \
@@ -125,6 +125,7 @@
     "ror x10, x5, #32\n\t" \
     "ld1 {v4.b}[2], [x23]\n\t" \
     "add x9, %[cm], x6, lsr #48\n\t" \
+    "ldr q26, [%[q], %[goff]]\n\t" \
     "add x11, %[cm], x2, lsr #48\n\t" \
     "ld1 {v7.b}[1], [x20]\n\t" \
     "add x22, %[cm], w3, uxth\n\t" \
@@ -135,8 +136,8 @@
     "ld1 {v6.b}[2], [x24]\n\t" \
     "add x19, %[cm], w10, uxth\n\t" \
     "ld1 {v7.b}[2], [x26]\n\t" \
-    "add x21, %[cm], x4, lsr #48\n\t" \
     "ror x20, x1, #32\n\t" \
+    "add x21, %[cm], x4, lsr #48\n\t" \
     "ror x24, x7, #32\n\t" \
     "ld1 {v4.b}[4], [x23]\n\t" \
     "add x26, %[cm], x10, lsr #48\n\t" \
@@ -148,10 +149,9 @@
     "add x11, %[cm], w24, uxth\n\t" \
     "ldr q21, [x8, %[goff]]\n\t" \
     "add x18, %[cm], w7, uxth\n\t" \
-    "ldr q26, [%[q], %[goff]]\n\t" \
-    "add x21, %[cm], x20, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x22]\n\t" \
     "add x8, %[d], %[w]\n\t" \
+    "add x21, %[cm], x20, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x12]\n\t" \
     "add x9, %[cm], x24, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x18]\n\t" \
@@ -172,74 +172,74 @@
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "ld1 {v4.b}[7], [x22]\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
-    "add v28.4s, v23.4s, v17.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
-    "ld1 {v5.b}[7], [x20]\n\t" \
-    "fmov x1, v0.d[1]\n\t" \
     "fmov x0, d0\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
+    "ld1 {v5.b}[7], [x20]\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
     "ld1 {v7.b}[7], [x12]\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
-    "add v19.4s, v24.4s, v18.4s\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "ld1 {v6.b}[7], [x24]\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
-    "fmov x2, d1\n\t" \
     "fmov x5, v2.d[1]\n\t" \
+    "fmov x2, d1\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x4, d2\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
-    "add x9, %[cm], w6, uxth\n\t" \
-    "add x26, %[cm], w0, uxth\n\t" \
-    "ror x19, x4, #32\n\t" \
     "ror x23, x0, #32\n\t" \
+    "add x26, %[cm], w0, uxth\n\t" \
+    "add x9, %[cm], w6, uxth\n\t" \
+    "ld1 {v6.b}[7], [x24]\n\t" \
     "add x18, %[cm], w2, uxth\n\t" \
-    "ror x21, x2, #32\n\t" \
+    "ror x19, x4, #32\n\t" \
     "add x25, %[cm], w4, uxth\n\t" \
-    "stp d6, d7, [x8]\n\t" \
+    "ror x21, x2, #32\n\t" \
     "add x10, %[cm], x0, lsr #48\n\t" \
+    "ldr b4, [x26]\n\t" \
     "ror x11, x6, #32\n\t" \
+    "stp d6, d7, [x8]\n\t" \
     "add x24, %[cm], w23, uxth\n\t" \
     "ldr x8, [%[rp], #16]\n\t" \
     "add x22, %[cm], w21, uxth\n\t" \
     "ldr b6, [x25]\n\t" \
-    "ldr b4, [x26]\n\t" \
     "add x20, %[cm], w11, uxth\n\t" \
     "ldr b7, [x9]\n\t" \
-    "add x26, %[cm], x23, lsr #48\n\t" \
     "add x9, %[cm], x21, lsr #48\n\t" \
+    "add x26, %[cm], x23, lsr #48\n\t" \
     "add x25, %[cm], x19, lsr #48\n\t" \
     "add x12, %[cm], w19, uxth\n\t" \
-    "ldr b5, [x18]\n\t" \
     "ror x21, x5, #32\n\t" \
+    "ldr b5, [x18]\n\t" \
     "ld1 {v4.b}[1], [x26]\n\t" \
-    "add x23, %[cm], x11, lsr #48\n\t" \
     "ldr %[q], [%[rp], #24]\n\t" \
+    "add x23, %[cm], x11, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x25]\n\t" \
-    "ld1 {v5.b}[1], [x9]\n\t" \
-    "add x25, %[cm], w5, uxth\n\t" \
-    "ld1 {v4.b}[2], [x24]\n\t" \
-    "add x9, %[cm], x6, lsr #48\n\t" \
-    "ld1 {v7.b}[1], [x23]\n\t" \
-    "add x11, %[cm], x2, lsr #48\n\t" \
-    "ld1 {v6.b}[2], [x12]\n\t" \
     "add x26, %[cm], w3, uxth\n\t" \
+    "ld1 {v5.b}[1], [x9]\n\t" \
+    "add x11, %[cm], x2, lsr #48\n\t" \
+    "ld1 {v4.b}[2], [x24]\n\t" \
+    "ld1 {v7.b}[1], [x23]\n\t" \
+    "add x25, %[cm], w5, uxth\n\t" \
+    "ld1 {v6.b}[2], [x12]\n\t" \
+    "ror x18, x3, #32\n\t" \
     "ld1 {v5.b}[2], [x22]\n\t" \
     "add x19, %[cm], w1, uxth\n\t" \
     "ld1 {v4.b}[3], [x10]\n\t" \
-    "add x12, %[cm], x21, lsr #48\n\t" \
-    "ror x22, x7, #32\n\t" \
     "add x24, %[cm], x4, lsr #48\n\t" \
-    "ld1 {v7.b}[2], [x20]\n\t" \
-    "ror x18, x3, #32\n\t" \
     "ldr q21, [x8, %[goff]]\n\t" \
+    "add x9, %[cm], x6, lsr #48\n\t" \
+    "ld1 {v7.b}[2], [x20]\n\t" \
+    "ror x22, x7, #32\n\t" \
     "ror x23, x1, #32\n\t" \
-    "ld1 {v5.b}[3], [x11]\n\t" \
     "add x10, %[cm], w21, uxth\n\t" \
+    "ld1 {v5.b}[3], [x11]\n\t" \
+    "add x12, %[cm], x21, lsr #48\n\t" \
     "ld1 {v6.b}[3], [x24]\n\t" \
     "add x24, %[cm], w7, uxth\n\t" \
     "ld1 {v4.b}[4], [x19]\n\t" \
@@ -260,56 +260,56 @@
     "ld1 {v6.b}[5], [x12]\n\t" \
     "add x18, %[cm], w22, uxth\n\t" \
     "ld1 {v7.b}[5], [x19]\n\t" \
-    "add x26, %[cm], x5, lsr #48\n\t" \
-    "ld1 {v4.b}[6], [x11]\n\t" \
     "add x22, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v4.b}[6], [x11]\n\t" \
     "ld1 {v5.b}[6], [x20]\n\t" \
     "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v6.b}[6], [x10]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
+    "add x26, %[cm], x5, lsr #48\n\t" \
     "ld1 {v7.b}[6], [x18]\n\t" \
+    "add x8, %[d], %[w]\n\t" \
     "ld1 {v4.b}[7], [x22]\n\t" \
     "ld1 {v5.b}[7], [x23]\n\t" \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
-    "ld1 {v6.b}[7], [x26]\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
-    "fmov x0, d0\n\t" \
     "ld1 {v7.b}[7], [x25]\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "fmov x0, d0\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "ld1 {v6.b}[7], [x26]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
     "fmov x2, d1\n\t" \
-    "fmov x3, v1.d[1]\n\t" \
-    "add v19.4s, v24.4s, v18.4s\n\t" \
-    "fmov x5, v2.d[1]\n\t" \
-    "fmov x7, v3.d[1]\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
     "fmov x4, d2\n\t" \
     "fmov x1, v0.d[1]\n\t" \
+    "fmov x3, v1.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "stp d6, d7, [x8]\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
     "add x9, %[cm], w0, uxth\n\t" \
+    "add x12, %[cm], w2, uxth\n\t" \
     "ror x11, x4, #32\n\t" \
-    "add x18, %[cm], w4, uxth\n\t" \
     "ror x24, x2, #32\n\t" \
+    "add x18, %[cm], w4, uxth\n\t" \
     "ldr x8, [%[rp], #32]\n\t" \
     "ror x21, x0, #32\n\t" \
     "ror x19, x6, #32\n\t" \
-    "ldr b4, [x9]\n\t" \
-    "add x10, %[cm], x0, lsr #48\n\t" \
-    "add x20, %[cm], w6, uxth\n\t" \
-    "add x25, %[cm], w19, uxth\n\t" \
     "add x22, %[cm], w24, uxth\n\t" \
-    "add x26, %[cm], w11, uxth\n\t" \
+    "ldr b4, [x9]\n\t" \
+    "add x20, %[cm], w6, uxth\n\t" \
     "ldr b6, [x18]\n\t" \
+    "add x10, %[cm], x0, lsr #48\n\t" \
+    "add x26, %[cm], w11, uxth\n\t" \
+    "add x25, %[cm], w19, uxth\n\t" \
     "add x9, %[cm], x21, lsr #48\n\t" \
     "ldr b7, [x20]\n\t" \
     "add x18, %[cm], x11, lsr #48\n\t" \
@@ -326,26 +326,26 @@
     "ld1 {v7.b}[1], [x21]\n\t" \
     "ror x21, x1, #32\n\t" \
     "ld1 {v5.b}[1], [x20]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
-    "ror x12, x3, #32\n\t" \
     "add x24, %[cm], x2, lsr #48\n\t" \
-    "ldr q26, [%[q], %[goff]]\n\t" \
     "ld1 {v4.b}[2], [x23]\n\t" \
+    "ror x12, x3, #32\n\t" \
+    "ldr q26, [%[q], %[goff]]\n\t" \
+    "add x18, %[cm], x6, lsr #48\n\t" \
     "ld1 {v5.b}[2], [x22]\n\t" \
     "add x20, %[cm], w7, uxth\n\t" \
     "ld1 {v6.b}[2], [x26]\n\t" \
-    "add x18, %[cm], x6, lsr #48\n\t" \
+    "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
     "add x22, %[cm], x4, lsr #48\n\t" \
     "ld1 {v4.b}[3], [x10]\n\t" \
     "ld1 {v5.b}[3], [x24]\n\t" \
+    "add x25, %[cm], x9, lsr #48\n\t" \
     "ror x23, x7, #32\n\t" \
     "add x26, %[cm], w9, uxth\n\t" \
-    "add x25, %[cm], x9, lsr #48\n\t" \
     "ld1 {v7.b}[3], [x18]\n\t" \
-    "add x10, %[cm], w12, uxth\n\t" \
-    "add x9, %[cm], w5, uxth\n\t" \
     "add x24, %[cm], w21, uxth\n\t" \
+    "add x9, %[cm], w5, uxth\n\t" \
+    "add x10, %[cm], w12, uxth\n\t" \
     "ld1 {v6.b}[3], [x22]\n\t" \
     "add x22, %[cm], w23, uxth\n\t" \
     "ldr q21, [x8, %[goff]]\n\t" \
@@ -355,47 +355,46 @@
     "ld1 {v5.b}[4], [x19]\n\t" \
     "add x11, %[cm], x23, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x9]\n\t" \
-    "add x21, %[cm], x3, lsr #48\n\t" \
-    "ld1 {v7.b}[4], [x20]\n\t" \
-    "add x23, %[cm], x1, lsr #48\n\t" \
-    "ld1 {v4.b}[5], [x12]\n\t" \
-    "add x19, %[cm], x7, lsr #48\n\t" \
-    "ld1 {v5.b}[5], [x18]\n\t" \
-    "ld1 {v6.b}[5], [x25]\n\t" \
     "add x9, %[cm], x5, lsr #48\n\t" \
-    "ld1 {v7.b}[5], [x11]\n\t" \
+    "ld1 {v7.b}[4], [x20]\n\t" \
+    "ld1 {v4.b}[5], [x12]\n\t" \
     "add x8, %[d], %[w]\n\t" \
+    "ld1 {v5.b}[5], [x18]\n\t" \
+    "add x19, %[cm], x7, lsr #48\n\t" \
+    "ld1 {v6.b}[5], [x25]\n\t" \
+    "add x23, %[cm], x1, lsr #48\n\t" \
+    "ld1 {v7.b}[5], [x11]\n\t" \
+    "add x21, %[cm], x3, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x24]\n\t" \
     "ld1 {v5.b}[6], [x10]\n\t" \
-    "add v28.4s, v23.4s, v17.4s\n\t" \
     "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
-    "ld1 {v6.b}[6], [x26]\n\t" \
-    "ld1 {v7.b}[6], [x22]\n\t" \
-    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "add v28.4s, v23.4s, v17.4s\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
-    "ld1 {v5.b}[7], [x21]\n\t" \
+    "add v27.4s, v22.4s, v16.4s\n\t" \
+    "ld1 {v6.b}[6], [x26]\n\t" \
     "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
     "smull2 v29.4s, %[wb].8h, v8.h[1]\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
+    "ld1 {v5.b}[7], [x21]\n\t" \
     "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "ld1 {v4.b}[7], [x23]\n\t" \
+    "fmov x0, d0\n\t" \
     "fmov x3, v1.d[1]\n\t" \
     "smull2 v17.4s, %[wa].8h, v8.h[0]\n\t" \
-    "fmov x0, d0\n\t" \
-    "ld1 {v4.b}[7], [x23]\n\t" \
     "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
-    "fmov x1, v0.d[1]\n\t" \
-    "add v22.4s, v27.4s, v16.4s\n\t" \
+    "ld1 {v7.b}[6], [x22]\n\t" \
     "fmov x4, d2\n\t" \
-    "fmov x5, v2.d[1]\n\t" \
     "ld1 {v6.b}[7], [x9]\n\t" \
-    "add v19.4s, v24.4s, v18.4s\n\t" \
-    "fmov x7, v3.d[1]\n\t" \
-    "fmov x6, d3\n\t" \
     "fmov x2, d1\n\t" \
-    "smlal2 v17.4s, %[wc].8h, v8.h[1]\n\t" \
-    "smull v18.4s, %[wb].4h, v8.h[1]\n\t" \
+    "fmov x5, v2.d[1]\n\t" \
+    "add v19.4s, v24.4s, v18.4s\n\t" \
+    "fmov x6, d3\n\t" \
+    "add v22.4s, v27.4s, v16.4s\n\t" \
     "smull v16.4s, %[wa].4h, v8.h[0]\n\t" \
+    "smull v18.4s, %[wb].4h, v8.h[1]\n\t" \
+    "fmov x1, v0.d[1]\n\t" \
+    "smlal2 v17.4s, %[wc].8h, v8.h[1]\n\t" \
     "stp d4, d5, [%[d]]\n\t" \
     "add x25, %[cm], w0, uxth\n\t" \
     "ror x12, x4, #32\n\t" \
@@ -406,81 +405,82 @@
     "ldr b4, [x25]\n\t" \
     "smlal v16.4s, %[wc].4h, v8.h[1]\n\t" \
     "stp d6, d7, [x8]\n\t" \
-    "add x24, %[cm], w2, uxth\n\t" \
-    "ldr x8, [%[rp], #48]\n\t" \
-    "add x22, %[cm], x20, lsr #48\n\t" \
-    "add x10, %[cm], w4, uxth\n\t" \
-    "add x21, %[cm], w18, uxth\n\t" \
     "add x9, %[cm], w6, uxth\n\t" \
+    "add x24, %[cm], w2, uxth\n\t" \
+    "add x22, %[cm], x20, lsr #48\n\t" \
+    "add x21, %[cm], w18, uxth\n\t" \
+    "add x10, %[cm], w4, uxth\n\t" \
+    "ldr x8, [%[rp], #48]\n\t" \
     "add x19, %[cm], w12, uxth\n\t" \
     "ldr b5, [x24]\n\t" \
-    "add x23, %[cm], w11, uxth\n\t" \
-    "add x24, %[cm], x12, lsr #48\n\t" \
     "add x25, %[cm], x18, lsr #48\n\t" \
+    "add x24, %[cm], x12, lsr #48\n\t" \
+    "add x23, %[cm], w11, uxth\n\t" \
     "ldr b6, [x10]\n\t" \
     "add x10, %[cm], x11, lsr #48\n\t" \
     "ldr b7, [x9]\n\t" \
-    "add x12, %[cm], x6, lsr #48\n\t" \
+    "add x9, %[cm], x0, lsr #48\n\t" \
     "ldr %[q], [%[rp], #56]\n\t" \
+    "ror x11, x5, #32\n\t" \
     "ld1 {v5.b}[1], [x25]\n\t" \
     "add %[rp], %[rp], #64\n\t" \
     "ld1 {v4.b}[1], [x22]\n\t" \
     "add x26, %[cm], w20, uxth\n\t" \
     "ld1 {v7.b}[1], [x10]\n\t" \
     "ld1 {v6.b}[1], [x24]\n\t" \
+    "fmov x7, v3.d[1]\n\t" \
     "smlal v18.4s, %[wd].4h, v8.h[2]\n\t" \
     "smlal2 v29.4s, %[wd].8h, v8.h[2]\n\t" \
     "ld1 {v4.b}[2], [x26]\n\t" \
-    "add x9, %[cm], x0, lsr #48\n\t" \
+    "add x12, %[cm], x6, lsr #48\n\t" \
     "ld1 {v7.b}[2], [x23]\n\t" \
     "add x25, %[cm], x2, lsr #48\n\t" \
     "ld1 {v5.b}[2], [x21]\n\t" \
-    "ror x11, x5, #32\n\t" \
-    "ror x10, x7, #32\n\t" \
     "ror x22, x1, #32\n\t" \
-    "add x18, %[cm], x4, lsr #48\n\t" \
-    "ror x24, x3, #32\n\t" \
-    "ld1 {v7.b}[3], [x12]\n\t" \
-    "add x26, %[cm], w11, uxth\n\t" \
     "ld1 {v6.b}[2], [x19]\n\t" \
+    "add x26, %[cm], w11, uxth\n\t" \
+    "ror x24, x3, #32\n\t" \
     "add x20, %[cm], w3, uxth\n\t" \
+    "ld1 {v7.b}[3], [x12]\n\t" \
+    "add x18, %[cm], x4, lsr #48\n\t" \
     "ld1 {v5.b}[3], [x25]\n\t" \
     "add x12, %[cm], x22, lsr #48\n\t" \
     "ld1 {v4.b}[3], [x9]\n\t" \
     "add x23, %[cm], w7, uxth\n\t" \
-    "ldr q21, [x8, %[goff]]\n\t" \
-    "add x21, %[cm], w22, uxth\n\t" \
     "ldr q26, [%[q], %[goff]]\n\t" \
+    "ror x10, x7, #32\n\t" \
+    "add x21, %[cm], w22, uxth\n\t" \
     "add x22, %[cm], w1, uxth\n\t" \
     "ldr q8, [%[ete], x30]\n\t" \
     "add x19, %[cm], w5, uxth\n\t" \
     "ld1 {v6.b}[3], [x18]\n\t" \
-    "add x25, %[cm], x24, lsr #48\n\t" \
-    "ld1 {v7.b}[4], [x23]\n\t" \
     "add x9, %[cm], w24, uxth\n\t" \
+    "ld1 {v7.b}[4], [x23]\n\t" \
     "ld1 {v4.b}[4], [x22]\n\t" \
-    "add x24, %[cm], x11, lsr #48\n\t" \
+    "add x25, %[cm], x24, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x20]\n\t" \
+    "add x24, %[cm], x11, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x19]\n\t" \
     "add x11, %[cm], x10, lsr #48\n\t" \
+    "ldr q21, [x8, %[goff]]\n\t" \
     "add x22, %[cm], w10, uxth\n\t" \
     "ld1 {v4.b}[5], [x12]\n\t" \
     "add %[d], %[d], %[w], lsl #1\n\t" \
     "ld1 {v5.b}[5], [x25]\n\t" \
-    "add x20, %[cm], x7, lsr #48\n\t" \
     "ld1 {v6.b}[5], [x24]\n\t" \
-    "adds x30, x30, %[w]\n\t" \
+    "add x20, %[cm], x7, lsr #48\n\t" \
     "ld1 {v7.b}[5], [x11]\n\t" \
-    "add x18, %[cm], x1, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x21]\n\t" \
-    "add x19, %[cm], x3, lsr #48\n\t" \
+    "add x18, %[cm], x1, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x9]\n\t" \
+    "add x19, %[cm], x3, lsr #48\n\t" \
     "ld1 {v6.b}[6], [x26]\n\t" \
     "add x23, %[cm], x5, lsr #48\n\t" \
     "ld1 {v7.b}[6], [x22]\n\t" \
     "ld1 {v4.b}[7], [x18]\n\t" \
     "add x8, %[d], %[w]\n\t" \
     "ld1 {v5.b}[7], [x19]\n\t" \
+    "adds x30, x30, %[w]\n\t" \
     "ld1 {v6.b}[7], [x23]\n\t" \
     "ld1 {v7.b}[7], [x20]\n\t" \
     "b.ne 1b\n\t"
