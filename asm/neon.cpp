@@ -196,14 +196,17 @@ void surface_block_groups(const uint16_t* grid, int grid_width, const uint8_t* t
 #if defined(__aarch64__)
     } else if (umod) {  // rows in place or laid out at buf + t stride: run[] by pointer steps
       if (uplace) {
-      } else if (tw == 32) {  // (the common width: both loads first)
+      } else if (tw == 32) {  // (the common width: two rows a step, th even, the loads first)
         const uint8_t* r = texels;
-        for (uint8_t* o = buf; o < buf + th * stride; o += stride, r += 32) {
-          uint8x16_t a = vld1q_u8(r), b = vld1q_u8(r + 16);
-          asm("" : "+w"(a), "+w"(b));
+        for (uint8_t* o = buf; o < buf + th * stride; o += 2 * stride, r += 64) {
+          uint8x16_t a = vld1q_u8(r), b = vld1q_u8(r + 16), c = vld1q_u8(r + 32), d = vld1q_u8(r + 48);
+          asm("" : "+w"(a), "+w"(b), "+w"(c), "+w"(d));
           vst1q_u8(o, a);
           vst1q_u8(o + 16, b);
           vst1q_u8(o + 32, a);
+          vst1q_u8(o + stride, c);
+          vst1q_u8(o + stride + 16, d);
+          vst1q_u8(o + stride + 32, c);
         }
       } else {
         for (int t = 0; t < th; ++t) tile_row_u(buf + t * stride, texels + t * tw, tw);

@@ -20,6 +20,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "asm/neon_block_a53m1.h"
 #include "asm/neon_block_util.h"
 #include "asm/variants.h"
 
@@ -48,7 +49,7 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
 // table offset register; G2: 2 G, the table step a group). ete and goff stay in their
 // registers from group to group (the row loops only read them); the next group's output,
 // row 0, offset and runs are set before its entry (5:).
-#define SB_A53_GROUPS(OFF, HEAD, LOOP, G2) \
+#define SB_A53_GROUPS_X(OFF, HEAD, LOOP, EXIT) \
   "sub sp, sp, #64\n\t" \
   "ldp x0, x1, [%[q]]\n\t" \
   "ldp x2, x3, [%[q], #16]\n\t" \
@@ -63,7 +64,13 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "5:\n\t" HEAD \
   "b 2f\n\t" \
   ".p2align 10\n" \
-  "1:\n\t" LOOP \
+  "1:\n\t" LOOP EXIT \
+  "b.ne 5b\n\t" \
+  "add sp, sp, #64\n\t"
+
+// The group exit: the last pair's rows stored, the next group's state (output, row 0, table offset,
+// runs, goff) set from the stack, flags ne while groups remain.
+#define SB_A53_EXIT(OFF, G2) \
   "stp d4, d5, [%[d]]\n\t" \
   "stp d6, d7, [x8]\n\t" \
   "ldp x0, x11, [sp]\n\t" \
@@ -79,9 +86,8 @@ static_assert(offsetof(A53Groups, d) == 0 && offsetof(A53Groups, p0) == 8 && off
   "csel %[goff], x4, %[goff], hs\n\t" \
   "stp x0, x11, [sp]\n\t" \
   "mov %[d], x0\n\t" \
-  "cmp x0, x5\n\t" \
-  "b.ne 5b\n\t" \
-  "add sp, sp, #64\n\t"
+  "cmp x0, x5\n\t"
+#define SB_A53_GROUPS(OFF, HEAD, LOOP, G2) SB_A53_GROUPS_X(OFF, HEAD, LOOP, SB_A53_EXIT(OFF, G2))
 
 // Mips 0-1: numerators from row 0 (v0), the first band's step from row 1 (v8, SB_WEIGH01's
 // products interleaved: no accumulate waits on its product), row 2 preloaded (v8); x30 = the
@@ -254,7 +260,7 @@ __attribute__((always_inline)) inline void a53_full_groups(const uint16_t* r, in
       asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD01("0", "1", "1", "4"), SB_PAIR_LOOP_16 SB_PAIR_LOOP_16W0, "2")
                        SB_A53_OPERANDS01);
     } else {
-      asm volatile(SB_A53_GROUPS("x30", SB_A53_HEAD01("1", "1", "2", "3"), SB_PAIR_LOOP_16 SB_PAIR_LOOP_16W1, "4")
+      asm volatile(SB_A53_GROUPS_X("x30", SB_A53_HEAD1, SB_BAND_16W1, SB_A53_EXIT1)
                        SB_A53_OPERANDS01);
     }
 #undef SB_A53_OPERANDS01
@@ -272,6 +278,8 @@ __attribute__((always_inline)) inline void a53_full_groups(const uint16_t* r, in
 }
 
 #undef SB_A53_GROUPS
+#undef SB_A53_GROUPS_X
+#undef SB_A53_EXIT
 #undef SB_A53_HEAD01
 #undef SB_A53_HEAD2
 

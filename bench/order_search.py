@@ -15,7 +15,10 @@
 # rewrites rA from the listed registers and returns), which reads those registers and its own
 # and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow).
 # --cuts=A,B (body line indexes, labels not counted) scores the sum over the blocks cut
-# there, as qemu's translation blocks are timed by bench/count.sh. --mem keeps loads in order
+# there, as qemu's translation blocks are timed by bench/count.sh. --qcuts=P[,P2..]: cuts as qemu 7.2
+# with the hotblocks plugin makes them for each order (bench/qemu_cuts.py: op counts, a page end at
+# body index P, 0 for none; several: the sum over those code placements): for straight loop bodies
+# longer than qemu translates in one block. --mem keeps loads in order
 # with stores too (for blocks that reload what they store: stack state, layout buffers);
 # without it only stores keep their order. sp is a register like the others.
 # ARMv7 (--arch=armv7; lines starting with `.` are dropped, `@` starts a comment): one
@@ -38,7 +41,8 @@
 import random, re, subprocess, sys
 
 BRANCHES = ("b", "cbz", "cbnz", "tbz", "tbnz")  # and b.cond (not bif, bit, bsl)
-V7, REGION = False, None  # --arch=armv7, --runs (set by main)
+V7, REGION, QCUTS = False, None, None  # --arch=armv7, --runs, --qcuts (set by main)
+CACHE = {}  # per cpu: cycles of blocks already timed
 ACCUMULATE = ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "sri", "fmla", "fmls", "mls", "mla",
               "bit", "bif", "bsl", "ssra", "usra", "sqxtn2", "uqxtn2", "xtn2")
 
@@ -237,25 +241,38 @@ def cycles(orders, cpu):
         body = [lines[i] for i in o if not lines[i].endswith(":")]
         b = [0] + CUTS + [len(body)]
         return [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
-    parts = [blocks(o) if CUTS else [[lines[i] for i in o]] for o in orders]
+    if QCUTS is not None:
+        def blocks(o):
+            body = [lines[i] for i in o if not lines[i].endswith(":")]
+            res = []
+            for page in QCUTS:  # (several: the sum over those placements)
+                b = [0] + qemu_cuts.cuts(body, page=page) + [len(body)]
+                res += [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+            return res
+    parts = [blocks(o) if CUTS or QCUTS is not None else [[lines[i] for i in o]] for o in orders]
     cmt, strip = ("@", "@") if V7 else ("#", "//")
 
     def text_of(blk):
         body = [l.split(strip)[0].strip() for l in blk]
         return "\n".join(body if V7 else [re.sub(r" \d+[bf]$", " .+4", l) for l in body])
-    text = "".join(f"{cmt} LLVM-MCA-BEGIN r{k}_{j}\n" + text_of(blk) + f"\n{cmt} LLVM-MCA-END\n"
-                   for k, p in enumerate(parts) for j, blk in enumerate(p))
-    if V7:
-        text = ".syntax unified\n.thumb\n" + text
-        target = ["-mtriple=thumbv7-linux-gnueabihf", f"-mcpu={cpu}", "-mattr=+neon,+vfp4"]
-    else:
-        target = ["-mtriple=aarch64", f"-mcpu={cpu}"]
-    r = subprocess.run(["llvm-mca-14", *target, f"-iterations={ITER}"], input=text, capture_output=True, text=True)
-    c = [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
-    if len(c) != len(orders) * len(parts[0]):
-        sys.exit(r.stderr[:400])
-    n = len(parts[0])
-    return [sum(c[k * n:(k + 1) * n]) for k in range(len(orders))]
+    texts = [[text_of(blk) for blk in p] for p in parts]
+    cache = CACHE.setdefault(cpu, {})  # block text -> cycles: a move changes one or two cut blocks
+    if len(cache) > 50000:
+        cache.clear()
+    todo = sorted({t for ts in texts for t in ts if t not in cache})
+    if todo:
+        text = "".join(f"{cmt} LLVM-MCA-BEGIN r{k}\n" + t + f"\n{cmt} LLVM-MCA-END\n" for k, t in enumerate(todo))
+        if V7:
+            text = ".syntax unified\n.thumb\n" + text
+            target = ["-mtriple=thumbv7-linux-gnueabihf", f"-mcpu={cpu}", "-mattr=+neon,+vfp4"]
+        else:
+            target = ["-mtriple=aarch64", f"-mcpu={cpu}"]
+        r = subprocess.run(["llvm-mca-14", *target, f"-iterations={ITER}"], input=text, capture_output=True, text=True)
+        c = [int(x) for x in re.findall(r"Total Cycles:\s+(\d+)", r.stdout)]
+        if len(c) != len(todo):
+            sys.exit(r.stderr[:400])
+        cache.update(zip(todo, c))
+    return [sum(cache[t] for t in ts) for ts in texts]
 
 
 def score(orders):
@@ -302,6 +319,11 @@ if __name__ == "__main__":
     ITER = int(opt.get("iter", 100 if V7 else 60))
     W57 = float(opt.get("a57", 0))  # 0: A57 breaks ties only
     CUTS = [int(c) for c in opt["cuts"].split(",")] if "cuts" in opt else []
+    QCUTS = [int(c) for c in opt["qcuts"].split(",")] if "qcuts" in opt else None
+    if QCUTS is not None:
+        import os
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import qemu_cuts
     lines = [l.strip() for l in open(inp) if l.strip() and not l.strip().startswith("//")]
     if V7:
         lines = [l for l in lines if not l.startswith((".", "@"))]
