@@ -34,7 +34,7 @@ struct alignas(16) MidSteps {
   uint32_t s[4], sm1[4], t[4], c[4], h[4];
   double y[2], k[2];
 };
-static_assert(sizeof(MidSteps) == 112 && offsetof(MidSteps, t) == 32 && offsetof(MidSteps, h) == 64 &&
+static_assert(sizeof(MidSteps) == 112 && offsetof(MidSteps, s) == 0 && offsetof(MidSteps, t) == 32 && offsetof(MidSteps, h) == 64 &&
               offsetof(MidSteps, y) == 80 && offsetof(MidSteps, k) == 96);
 constexpr MidSteps mid_steps(uint32_t s) {
   const uint32_t t = s * (s - 1) / 2, c = t ? 0xffffffffu / t : 0xffffffffu;
@@ -196,7 +196,7 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // (lengths 49 .. 64) and MatchesTheRunWalkerOnShortSpans the span against the walker.
 SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
                                   int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
-                                  float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {
+                                  float64x2_t zs23, int s, double zc, uint64_t (&st)[6], bool& full) {
   register uint64_t ra_uv __asm__("x13"), ra_d __asm__("x9"), ra_dd __asm__("x10");
   register uint64_t rb_uv __asm__("x23"), rb_d __asm__("x24"), rb_dd __asm__("x25");
   register int32x4_t rS44 __asm__("v7") = S44;
@@ -522,6 +522,7 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "ldrb w8, [%[tx], w8, uxtw]\n\t"
       "fmov x9, d17\n\t"
       "mov x24, v17.d[1]\n\t"
+      "ldr w1, [%[y], #8]\n\t"
       "orr x21, x5, x6, lsl #8\n\t"
       "orr x22, x7, x8, lsl #8\n\t"
       "str w15, [%[d], #24]\n\t"
@@ -531,6 +532,7 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "fmov x13, d19\n\t"
       "mov x23, v19.d[1]\n\t"
       "str w15, [%[d], #28]\n\t"
+      "cmp w1, #15\n\t"
       "and x11, x9, #0xffffffff00000000\n\t"
       "add x9, x11, w9, sxtw\n\t"
       "and x12, x24, #0xffffffff00000000\n\t"
@@ -541,7 +543,7 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "add x25, x12, w25, sxtw"
 // END steps_k3v_pass
       : "=&r"(ra_uv), "=&r"(ra_d), "=&r"(ra_dd), "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rS44), "+&w"(rc01),
-        "+&w"(rc23), "+&w"(rzs), "+&w"(rzc)
+        "+&w"(rc23), "+&w"(rzs), "+&w"(rzc), "=@cceq"(full)
       : "w"(rS01), "w"(rS23), [kp] "r"(kMidConsts), [y] "r"(&kMidSteps[s]), [st] "r"(st), [d] "r"(dest),
         [tx] "r"(texels), [w] "r"(width)
       : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x11", "x12", "x14", "x15", "x16", "x17", "x19",
@@ -560,9 +562,10 @@ SB_INLINE uint64_t mid_pack(uint64_t x) {
 SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int width, int32x4_t S01, int32x4_t S23,
                             int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zc) {
   uint64_t st[6];
-  const MidFirst second =
-      steps_k3v_pass(dest, texels, uint64_t(width), S01, S23, S44, c01, c23, zs23, last > 2 ? last - 1 : 1, zc, st);
-  if (last == 16) {
+  bool full;  // last == 16
+  const MidFirst second = steps_k3v_pass(dest, texels, uint64_t(width), S01, S23, S44, c01, c23, zs23,
+                                         last > 2 ? last - 1 : 1, zc, st, full);
+  if (full) {
     short_pass<true>(dest + 32, texels, uint64_t(width), second.a_uv, second.a_d, second.a_dd, second.b_uv,
                      second.b_d, second.b_dd);
     return;

@@ -312,6 +312,7 @@ ldrb w6, [x18, w6, uxtw]
 ldrb w8, [x18, w8, uxtw]
 fmov x9, d17
 mov x24, v17.d[1]
+ldr w1, [x27, #8]
 orr x21, x5, x6, lsl #8
 orr x22, x7, x8, lsl #8
 str w15, [x28, #24]
@@ -321,6 +322,7 @@ mov x25, v1.d[1]
 fmov x13, d19
 mov x23, v19.d[1]
 str w15, [x28, #28]
+cmp w1, #15
 and x11, x9, #0xffffffff00000000
 add x9, x11, w9, sxtw
 and x12, x24, #0xffffffff00000000
