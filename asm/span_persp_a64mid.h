@@ -188,11 +188,15 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // the two blocks one after the other plus the packing, then ordered by
 // bench/order_search.py). Draws dest[0 .. 31]; st as short_steps_k3v's. Returns the second
 // pass's arguments (st's values, the steps packed) in x13, x9, x10, x23, x24, x25, where
-// short_pass takes them: moved from the vectors st is stored from and packed in the block's
-// tail, after the first pass's last reads of those registers (not loaded back from st). The
+// short_pass takes them: loaded back from st (stored by the block before the first pass) and
+// packed after the first pass's last reads of those registers (b_d, b_dd once run 1 has
+// started, the rest in the tail); loads, not lane moves: in LLVM's Cortex-A53 model a move
+// out of a vector holds back the core instructions behind it. Sets
+// full iff s == 15 (last == 16: kMidSteps[s].s[2] loaded and compared in the block's tail, the
+// flags returned as an asm flag output, so the caller branches without reloading last). The
 // same instructions as short_steps_k3v (steps_k3v.s) and short_pass<true>, reordered with
 // their dependences kept; AsmSpanPersp.ShortStepsK3vMatchTheirParts checks its st, its packed
-// results and the pixels of runs 0, 1 against the parts, FourRunSpansMatchOnExtremeGradients
+// results, full and the pixels of runs 0, 1 against the parts, FourRunSpansMatchOnExtremeGradients
 // (lengths 49 .. 64) and MatchesTheRunWalkerOnShortSpans the span against the walker.
 SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
                                   int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
@@ -430,6 +434,8 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "lsr w9, w23, #16\n\t"
       "add x17, x17, x20\n\t"
       "lsr x5, x23, #48\n\t"
+      "ldr x24, [%[st], #24]\n\t"
+      "ldr x25, [%[st], #40]\n\t"
       "madd w3, w3, %w[w], w11\n\t"
       "ldrb w8, [%[tx], w8, uxtw]\n\t"
       "madd w5, w5, %w[w], w9\n\t"
@@ -520,26 +526,23 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "orr x15, x21, x22, lsl #16\n\t"
       "ldrb w6, [%[tx], w6, uxtw]\n\t"
       "ldrb w8, [%[tx], w8, uxtw]\n\t"
-      "fmov x9, d17\n\t"
-      "mov x24, v17.d[1]\n\t"
-      "fmov x10, d1\n\t"
+      "and x13, x24, #0xffffffff00000000\n\t"
+      "add x24, x13, w24, sxtw\n\t"
+      "and x13, x25, #0xffffffff00000000\n\t"
+      "add x25, x13, w25, sxtw\n\t"
       "str w15, [%[d], #24]\n\t"
       "orr x22, x7, x8, lsl #8\n\t"
       "orr x21, x5, x6, lsl #8\n\t"
       "ldr w1, [%[y], #8]\n\t"
       "orr x15, x21, x22, lsl #16\n\t"
-      "mov x25, v1.d[1]\n\t"
-      "fmov x13, d19\n\t"
-      "mov x23, v19.d[1]\n\t"
+      "ldr x9, [%[st], #16]\n\t"
+      "ldr x10, [%[st], #32]\n\t"
+      "ldp x13, x23, [%[st]]\n\t"
       "str w15, [%[d], #28]\n\t"
-      "and x12, x24, #0xffffffff00000000\n\t"
       "cmp w1, #15\n\t"
       "and x11, x9, #0xffffffff00000000\n\t"
       "add x9, x11, w9, sxtw\n\t"
       "and x11, x10, #0xffffffff00000000\n\t"
-      "add x24, x12, w24, sxtw\n\t"
-      "and x12, x25, #0xffffffff00000000\n\t"
-      "add x25, x12, w25, sxtw\n\t"
       "add x10, x11, w10, sxtw"
 // END steps_k3v_pass
       : "=&r"(ra_uv), "=&r"(ra_d), "=&r"(ra_dd), "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rS44), "+&w"(rc01),

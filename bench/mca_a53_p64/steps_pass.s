@@ -220,6 +220,8 @@ add x19, x19, x20
 lsr w9, w23, #16
 add x17, x17, x20
 lsr x5, x23, #48
+ldr x24, [x0, #24]
+ldr x25, [x0, #40]
 madd w3, w3, w30, w11
 ldrb w8, [x18, w8, uxtw]
 madd w5, w5, w30, w9
@@ -310,24 +312,21 @@ str w15, [x28, #20]
 orr x15, x21, x22, lsl #16
 ldrb w6, [x18, w6, uxtw]
 ldrb w8, [x18, w8, uxtw]
-fmov x9, d17
-mov x24, v17.d[1]
-fmov x10, d1
+and x13, x24, #0xffffffff00000000
+add x24, x13, w24, sxtw
+and x13, x25, #0xffffffff00000000
+add x25, x13, w25, sxtw
 str w15, [x28, #24]
 orr x22, x7, x8, lsl #8
 orr x21, x5, x6, lsl #8
 ldr w1, [x27, #8]
 orr x15, x21, x22, lsl #16
-mov x25, v1.d[1]
-fmov x13, d19
-mov x23, v19.d[1]
+ldr x9, [x0, #16]
+ldr x10, [x0, #32]
+ldp x13, x23, [x0]
 str w15, [x28, #28]
-and x12, x24, #0xffffffff00000000
 cmp w1, #15
 and x11, x9, #0xffffffff00000000
 add x9, x11, w9, sxtw
 and x11, x10, #0xffffffff00000000
-add x24, x12, w24, sxtw
-and x12, x25, #0xffffffff00000000
-add x25, x12, w25, sxtw
 add x10, x11, w10, sxtw
