@@ -318,12 +318,13 @@ and x13, x25, #0xffffffff00000000
 add x25, x13, w25, sxtw
 str w15, [x28, #24]
 orr x22, x7, x8, lsl #8
+ldr x13, [x0]
 orr x21, x5, x6, lsl #8
 ldr w1, [x27, #8]
 orr x15, x21, x22, lsl #16
 ldr x9, [x0, #16]
 ldr x10, [x0, #32]
-ldp x13, x23, [x0]
+ldr x23, [x0, #8]
 str w15, [x28, #28]
 cmp w1, #15
 and x11, x9, #0xffffffff00000000
