@@ -216,5 +216,5 @@ orr x15, x21, x22, lsl #16
 orr x22, x7, x8, lsl #8
 orr x21, x5, x6, lsl #8
 str w15, [x26, #24]
-orr x15, x21, x22, lsl #16
-str w15, [x26, #28]
+strh w21, [x26, #28]
+strh w22, [x26, #30]
