@@ -13,8 +13,8 @@
 // Slot J (0 .. 9): gather group J - 2's bytes (set J % 2) into two pairs and group J - 3's
 // pairs into a word and store it; the shifts and chain steps of group J into set J % 2; the
 // address multiply-adds of group J beside the byte loads of group J - 1 (set (J - 1) % 2, in
-// place). After slot 3 the chains restart on run b. kCurve: the last group's two pairs are
-// stored as two halfwords (no word merge: one dependent level fewer at the pass's end, the
+// place). After slot 3 the chains restart on run b. The last group's two pairs are stored
+// as two halfwords (no word merge: one dependent level fewer at the pass's end, the
 // same bytes). Generated (the order scored with llvm-mca
 // Cortex-A53; no chain steps after a run's last group, whose results nothing reads; then
 // ordered by bench/order_search.py: bench/mca_a53_p64/short_pass1.s (linear), short_pass2.s
@@ -456,8 +456,8 @@ inline __attribute__((always_inline)) void short_pass(uint8_t* __restrict d, con
         "str w9, [%[d], #24]\n\t"
         "orr x21, x5, x6, lsl #8\n\t"
         "orr x22, x7, x8, lsl #8\n\t"
-        "orr x9, x21, x22, lsl #16\n\t"
-        "str w9, [%[d], #28]"
+        "strh w21, [%[d], #28]\n\t"
+        "strh w22, [%[d], #30]"
         : "=m"(*reinterpret_cast<uint8_t(*)[32]>(d)), "+r"(r13), "+r"(r9), "+r"(r23), "+r"(r24)
         : [d] "r"(d), [tx] "r"(tx), [w] "r"(w)
         : "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x10", "x11", "x12", "x14", "x15", "x16", "x17",
