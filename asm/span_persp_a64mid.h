@@ -34,8 +34,8 @@ struct alignas(16) MidSteps {
   uint32_t s[4], sm1[4], t[4], c[4], h[4];
   double y[2], k[2];
 };
-static_assert(sizeof(MidSteps) == 112 && offsetof(MidSteps, s) == 0 && offsetof(MidSteps, t) == 32 && offsetof(MidSteps, h) == 64 &&
-              offsetof(MidSteps, y) == 80 && offsetof(MidSteps, k) == 96);
+static_assert(sizeof(MidSteps) == 112 && offsetof(MidSteps, s) == 0 && offsetof(MidSteps, t) == 32 &&
+              offsetof(MidSteps, h) == 64 && offsetof(MidSteps, y) == 80 && offsetof(MidSteps, k) == 96);
 constexpr MidSteps mid_steps(uint32_t s) {
   const uint32_t t = s * (s - 1) / 2, c = t ? 0xffffffffu / t : 0xffffffffu;
   return MidSteps{{16, 16, s, s}, {15, 15, s - 1, s - 1}, {120, 120, t, t}, {35791394, 35791394, c, c},
