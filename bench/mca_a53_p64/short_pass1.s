@@ -188,5 +188,5 @@ ldrb w8, [x18, w8, uxtw]
 str w9, [x26, #24]
 orr x21, x5, x6, lsl #8
 orr x22, x7, x8, lsl #8
-orr x9, x21, x22, lsl #16
-str w9, [x26, #28]
+strh w21, [x26, #28]
+strh w22, [x26, #30]

@@ -1,11 +1,10 @@
 ext v7.16b, v19.16b, v7.16b, #8
 ext v0.16b, v5.16b, v19.16b, #8
-fmul d31, d31, v1.d[1]
-ldp q6, q17, [x26, #32]
 mov x23, v5.d[1]
+ldp q6, q17, [x26, #32]
 sub v7.4s, v7.4s, v19.4s
 sub v0.4s, v0.4s, v5.4s
-ldp q18, q20, [x27]
+ldp q2, q4, [x26]
 ldp q23, q24, [x27, #64]
 saddw2 v29.2d, v6.2d, v7.4s
 saddw v26.2d, v6.2d, v0.2s
@@ -15,37 +14,40 @@ fsub v29.2d, v29.2d, v6.2d
 fsub v26.2d, v26.2d, v6.2d
 fsub v27.2d, v27.2d, v6.2d
 fsub v28.2d, v28.2d, v6.2d
-ldp q2, q4, [x26]
+ldp q18, q20, [x27]
 fmul v30.2d, v29.2d, v24.d[0]
+ldr q25, [x27, #96]
+fmul d31, d31, v1.d[1]
 fmul v28.2d, v28.2d, v16.d[0]
 fmul v26.2d, v26.2d, v3.d[0]
 fmul v27.2d, v27.2d, v3.d[1]
 fmls v29.2d, v30.2d, v24.d[1]
 fcvtzs v26.2d, v26.2d
-movi v16.2d, #0xffffffffffffffff
+fmul d31, d31, v25.d[0]
 fcvtzs v28.2d, v28.2d
-ldr q25, [x27, #96]
 ldp q21, q22, [x27, #32]
 fcvtzs v27.2d, v27.2d
-fmla v30.2d, v29.2d, v24.d[0]
-fmul d31, d31, v25.d[0]
 sqxtn v6.2s, v26.2d
-sshr v29.4s, v7.4s, #31
-sqxtn v1.2s, v28.2d
+fmla v30.2d, v29.2d, v24.d[0]
 abs v26.4s, v0.4s
+str q19, [x0]
+sqxtn v1.2s, v28.2d
+fmov x13, d5
+sshr v29.4s, v7.4s, #31
+sqxtn2 v6.4s, v27.2d
 fcvtzs v25.2d, v30.2d
 fmul v30.2d, v30.2d, v31.d[0]
-sqxtn2 v6.4s, v27.2d
-abs v27.4s, v7.4s
 ushr v24.4s, v26.4s, #4
 sshr v28.4s, v0.4s, #31
+movi v16.2d, #0xffffffffffffffff
+abs v27.4s, v7.4s
 abs v25.2d, v25.2d
 facgt v3.2d, v17.2d, v30.2d
 fcvtzs v30.2d, v30.2d
-mov v7.16b, v26.16b
 ushr v31.4s, v27.4s, #4
 eor v24.16b, v24.16b, v28.16b
 xtn2 v16.4s, v3.2d
+mov v7.16b, v26.16b
 sqxtn2 v1.4s, v30.2d
 eor v30.16b, v6.16b, v28.16b
 abs v3.4s, v6.4s
@@ -60,64 +62,62 @@ eor v17.16b, v31.16b, v29.16b
 mls v25.4s, v18.4s, v31.4s
 umin v0.4s, v0.4s, v22.4s
 mls v7.4s, v30.4s, v2.s[0]
-mul v3.4s, v3.4s, v2.4s
 sshr v22.4s, v4.4s, #1
-sub v17.4s, v17.4s, v29.4s
+mul v3.4s, v3.4s, v2.4s
 cmhi v25.4s, v23.4s, v25.4s
 mul v0.4s, v0.4s, v21.4s
 ushr v7.4s, v7.4s, #4
+sub v17.4s, v17.4s, v29.4s
 shl v4.4s, v4.4s, #31
 cmhs v3.4s, v26.4s, v3.4s
-sub v21.4s, v17.4s, v22.4s
 eor v25.16b, v25.16b, v29.16b
 cmhs v0.4s, v27.4s, v0.4s
 eor v7.16b, v7.16b, v28.16b
+sub v21.4s, v17.4s, v22.4s
+and v6.16b, v6.16b, v3.16b
 and v25.16b, v25.16b, v4.16b
 and v0.16b, v0.16b, v16.16b
 sub v7.4s, v7.4s, v28.4s
-and v6.16b, v6.16b, v3.16b
 ssra v21.4s, v25.4s, #31
-and v1.16b, v1.16b, v0.16b
 bit v24.16b, v7.16b, v3.16b
-str q19, [x0]
-mov x25, v6.d[1]
+and v1.16b, v1.16b, v0.16b
 fmov x10, d6
+mov x25, v6.d[1]
 bit v17.16b, v21.16b, v0.16b
-fmov x13, d5
 fmov x9, d24
 mov x24, v24.d[1]
-and x2, x10, #0xffffffff00000000
 and x4, x25, #0xffffffff00000000
-add x10, x2, w10, sxtw
 stp q17, q1, [x0, #16]
 add x25, x4, w25, sxtw
 and x1, x9, #0xffffffff00000000
-lsl x20, x10, #2
+and x2, x10, #0xffffffff00000000
+add x10, x2, w10, sxtw
 add x9, x1, w9, sxtw
+lsl x20, x10, #2
 and x3, x24, #0xffffffff00000000
-lsr x1, x13, #48
-add x17, x10, x9, lsl #1
 add x14, x13, x9
-add x15, x13, x17
+add x17, x10, x9, lsl #1
 add x24, x3, w24, sxtw
-add x19, x17, x10, lsl #1
+add x15, x13, x17
+lsr x1, x13, #48
 lsr w9, w13, #16
+add x19, x17, x10, lsl #1
 add x17, x17, x20
 add x13, x15, x17
 madd w1, w1, w30, w9
 add x16, x14, x19
 add x19, x19, x20
-lsr x3, x15, #48
-lsr x5, x13, #48
-lsr w11, w15, #16
 lsr x2, x14, #48
+add x17, x17, x20
+lsr w11, w15, #16
+lsr x5, x13, #48
 lsr w10, w14, #16
-add x17, x17, x20
-add x15, x13, x17
+lsr x3, x15, #48
 add x14, x16, x19
+add x15, x13, x17
 lsr w9, w13, #16
-add x19, x19, x20
 add x17, x17, x20
+add x19, x19, x20
 madd w2, w2, w30, w10
 ldrb w1, [x18, w1, uxtw]
 madd w3, w3, w30, w11
@@ -126,109 +126,110 @@ add x17, x17, x20
 lsr x4, x16, #48
 lsr w12, w16, #16
 add x16, x14, x19
-madd w5, w5, w30, w9
-ldrb w3, [x18, w3, uxtw]
-ldrb w2, [x18, w2, uxtw]
-madd w4, w4, w30, w12
 add x19, x19, x20
+lsr x6, x14, #48
+ldrb w3, [x18, w3, uxtw]
+madd w5, w5, w30, w9
+madd w4, w4, w30, w12
+ldrb w2, [x18, w2, uxtw]
+lsr x8, x16, #48
+lsr w10, w14, #16
 lsr w11, w15, #16
 lsr x7, x15, #48
-lsr x6, x14, #48
-lsr w10, w14, #16
-madd w7, w7, w30, w11
 ldrb w4, [x18, w4, uxtw]
-orr x21, x1, x2, lsl #8
-madd w6, w6, w30, w10
-add x14, x16, x19
+madd w7, w7, w30, w11
 add x15, x13, x17
 add x17, x17, x20
+madd w6, w6, w30, w10
+add x14, x16, x19
+orr x21, x1, x2, lsl #8
+lsr w9, w13, #16
+orr x22, x3, x4, lsl #8
+lsr x3, x15, #48
 add x19, x19, x20
 lsr x1, x13, #48
-lsr w9, w13, #16
 lsr w11, w15, #16
-lsr x8, x16, #48
-add x13, x15, x17
-orr x22, x3, x4, lsl #8
 lsr w12, w16, #16
-add x16, x14, x19
-lsr x3, x15, #48
+add x13, x15, x17
 orr x15, x21, x22, lsl #16
 madd w8, w8, w30, w12
 ldrb w6, [x18, w6, uxtw]
-madd w3, w3, w30, w11
-ldrb w5, [x18, w5, uxtw]
 madd w1, w1, w30, w9
-str w15, [x28, #0]
+ldrb w5, [x18, w5, uxtw]
+madd w3, w3, w30, w11
+add x16, x14, x19
+str w15, [x28]
 add x19, x19, x20
 ldrb w7, [x18, w7, uxtw]
 add x17, x17, x20
 ldrb w8, [x18, w8, uxtw]
-orr x21, x5, x6, lsl #8
 add x15, x13, x17
+orr x21, x5, x6, lsl #8
 lsr w10, w14, #16
 lsr x2, x14, #48
 add x14, x16, x19
 add x19, x19, x20
-lsr x4, x16, #48
-lsr w12, w16, #16
 lsr x5, x13, #48
-madd w4, w4, w30, w12
-orr x22, x7, x8, lsl #8
-add x16, x14, x19
-lsr w9, w13, #16
-lsr x7, x15, #48
-lsr w11, w15, #16
-madd w2, w2, w30, w10
-orr x15, x21, x22, lsl #16
-add x17, x25, x24, lsl #1
+lsr x4, x16, #48
 lsr x6, x14, #48
+lsr w12, w16, #16
+orr x22, x7, x8, lsl #8
+lsr w11, w15, #16
+lsr x7, x15, #48
+lsr w9, w13, #16
+madd w2, w2, w30, w10
+add x16, x14, x19
+orr x15, x21, x22, lsl #16
 lsr w10, w14, #16
+add x17, x25, x24, lsl #1
 ldrb w1, [x18, w1, uxtw]
-madd w7, w7, w30, w11
+madd w4, w4, w30, w12
 str w15, [x28, #4]
 madd w5, w5, w30, w9
 add x14, x23, x24
-ldrb w3, [x18, w3, uxtw]
 ldrb w2, [x18, w2, uxtw]
 madd w6, w6, w30, w10
-add x19, x17, x25, lsl #1
+ldrb w3, [x18, w3, uxtw]
+madd w7, w7, w30, w11
 ldrb w4, [x18, w4, uxtw]
-ldrb w5, [x18, w5, uxtw]
-add x15, x23, x17
-lsr x8, x16, #48
+add x19, x17, x25, lsl #1
 lsl x20, x25, #2
 orr x21, x1, x2, lsl #8
-ldrb w6, [x18, w6, uxtw]
+lsr x8, x16, #48
+ldrb w5, [x18, w5, uxtw]
 orr x22, x3, x4, lsl #8
+ldrb w6, [x18, w6, uxtw]
+add x15, x23, x17
 add x17, x17, x20
+lsr x3, x15, #48
 lsr w11, w15, #16
+lsr x2, x14, #48
 lsr w12, w16, #16
 lsr x1, x23, #48
-lsr x3, x15, #48
 lsr w9, w23, #16
-add x16, x14, x19
 add x23, x15, x17
 orr x15, x21, x22, lsl #16
 orr x21, x5, x6, lsl #8
+add x16, x14, x19
+lsr x5, x23, #48
 madd w1, w1, w30, w9
-add x17, x17, x20
 ldrb w7, [x18, w7, uxtw]
 madd w8, w8, w30, w12
+add x17, x17, x20
 str w15, [x28, #8]
 add x15, x23, x17
-lsr x5, x23, #48
-ldrb w1, [x18, w1, uxtw]
 add x19, x19, x20
-add x17, x17, x20
 lsr w9, w23, #16
+ldr x24, [x0, #24]
+add x17, x17, x20
 madd w3, w3, w30, w11
-ldrb w8, [x18, w8, uxtw]
 madd w5, w5, w30, w9
+ldrb w8, [x18, w8, uxtw]
 add x23, x15, x17
 add x17, x17, x20
-lsr x2, x14, #48
-lsr w11, w15, #16
 lsr w10, w14, #16
+lsr w11, w15, #16
+ldrb w1, [x18, w1, uxtw]
 madd w2, w2, w30, w10
 add x14, x16, x19
 orr x22, x7, x8, lsl #8
@@ -240,92 +241,93 @@ lsr w12, w16, #16
 lsr x4, x16, #48
 madd w4, w4, w30, w12
 ldrb w2, [x18, w2, uxtw]
-madd w7, w7, w30, w11
 str w15, [x28, #12]
+madd w7, w7, w30, w11
 add x16, x14, x19
-add x15, x23, x17
+ldr x25, [x0, #40]
 add x19, x19, x20
 ldrb w3, [x18, w3, uxtw]
-add x17, x17, x20
+add x15, x23, x17
 ldrb w4, [x18, w4, uxtw]
+add x17, x17, x20
 orr x21, x1, x2, lsl #8
-lsr w10, w14, #16
 lsr x8, x16, #48
-lsr x6, x14, #48
 lsr w11, w15, #16
+lsr x6, x14, #48
+lsr w10, w14, #16
 madd w6, w6, w30, w10
 ldrb w5, [x18, w5, uxtw]
 orr x22, x3, x4, lsl #8
 add x14, x16, x19
-lsr x1, x23, #48
-lsr x3, x15, #48
 lsr w12, w16, #16
-add x23, x15, x17
+lsr x3, x15, #48
 lsr x2, x14, #48
+lsr x1, x23, #48
+add x23, x15, x17
+madd w8, w8, w30, w12
 orr x15, x21, x22, lsl #16
 add x19, x19, x20
-madd w1, w1, w30, w9
-madd w8, w8, w30, w12
-madd w3, w3, w30, w11
 ldrb w6, [x18, w6, uxtw]
+madd w3, w3, w30, w11
 add x16, x14, x19
-add x19, x19, x20
-lsr w12, w16, #16
 ldrb w7, [x18, w7, uxtw]
-add x17, x17, x20
+madd w1, w1, w30, w9
 ldrb w8, [x18, w8, uxtw]
+add x19, x19, x20
+add x17, x17, x20
+lsr w12, w16, #16
 str w15, [x28, #16]
-lsr w10, w14, #16
-lsr x4, x16, #48
 lsr w9, w23, #16
-add x14, x16, x19
+lsr w10, w14, #16
 orr x21, x5, x6, lsl #8
-orr x22, x7, x8, lsl #8
+lsr x4, x16, #48
+add x14, x16, x19
 lsr x5, x23, #48
+madd w4, w4, w30, w12
 madd w2, w2, w30, w10
 ldrb w1, [x18, w1, uxtw]
-madd w4, w4, w30, w12
 add x19, x19, x20
 ldrb w3, [x18, w3, uxtw]
+orr x22, x7, x8, lsl #8
 add x15, x23, x17
 lsr w11, w15, #16
 lsr x7, x15, #48
-ldrb w4, [x18, w4, uxtw]
 madd w5, w5, w30, w9
 ldrb w2, [x18, w2, uxtw]
 madd w7, w7, w30, w11
-orr x15, x21, x22, lsl #16
+ldrb w4, [x18, w4, uxtw]
 add x16, x14, x19
+orr x15, x21, x22, lsl #16
 lsr w10, w14, #16
-lsr w12, w16, #16
 lsr x6, x14, #48
 lsr x8, x16, #48
-orr x22, x3, x4, lsl #8
+lsr w12, w16, #16
 madd w6, w6, w30, w10
+str w15, [x28, #20]
 madd w8, w8, w30, w12
 ldrb w5, [x18, w5, uxtw]
 orr x21, x1, x2, lsl #8
-str w15, [x28, #20]
+orr x22, x3, x4, lsl #8
 ldrb w7, [x18, w7, uxtw]
 orr x15, x21, x22, lsl #16
 ldrb w6, [x18, w6, uxtw]
+and x13, x24, #0xffffffff00000000
 ldrb w8, [x18, w8, uxtw]
-fmov x9, d17
-mov x24, v17.d[1]
-orr x21, x5, x6, lsl #8
-orr x22, x7, x8, lsl #8
+add x24, x13, w24, sxtw
+ldr x9, [x0, #16]
+and x13, x25, #0xffffffff00000000
 str w15, [x28, #24]
+add x25, x13, w25, sxtw
+ldr x13, [x0]
+orr x22, x7, x8, lsl #8
+ldr w1, [x27, #8]
+orr x21, x5, x6, lsl #8
+ldr x10, [x0, #32]
 orr x15, x21, x22, lsl #16
-fmov x10, d1
-mov x25, v1.d[1]
-fmov x13, d19
-mov x23, v19.d[1]
-str w15, [x28, #28]
 and x11, x9, #0xffffffff00000000
+ldr x23, [x0, #8]
+cmp w1, #0xf
 add x9, x11, w9, sxtw
-and x12, x24, #0xffffffff00000000
 and x11, x10, #0xffffffff00000000
-add x24, x12, w24, sxtw
-and x12, x25, #0xffffffff00000000
+str w15, [x28, #28]
 add x10, x11, w10, sxtw
-add x25, x12, w25, sxtw

@@ -426,15 +426,16 @@ TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
     sb::simd::last_steps(steps, du3, dv3, vld1q_f64(fd), zc * 0.5 * zk, &su, &sv);
     wrong += st[3] != unpacked(su, sv, false) || st[5] != unpacked(su, sv, true);
     // The engine's block (steps_k3v_pass: the same steps with the first pass drawn inside):
-    // the same st, the second pass's arguments packed from it, and runs 0, 1 drawn as the
+    // the same st, the second pass's arguments packed from it, full iff s = 15, and runs 0, 1 drawn as the
     // reference draws them with the steps checked above (texture 1 texel wide: every
     // (v >> 16) + (u >> 16) lies inside the guarded texel buffer).
     uint64_t st2[6];
     uint8_t drawn[32], want[32];
+    bool full = false;
     const sb::simd::MidFirst g = sb::simd::steps_k3v_pass(
         drawn, texels, 1, vld1q_s32(s01), vld1q_s32(s23), vld1q_s32(s44), vld1q_f64(c01), vld1q_f64(c23),
-        vld1q_f64(zs23), s, zc, st2);
-    wrong_pass += !std::equal(st, st + 6, st2);
+        vld1q_f64(zs23), s, zc, st2, full);
+    wrong_pass += !std::equal(st, st + 6, st2) || full != (s == 15);
     wrong_pass += g.a_uv != st[0] || g.b_uv != st[1] || g.a_d != sb::simd::mid_pack(st[2]) ||
                   g.b_d != sb::simd::mid_pack(st[3]) || g.a_dd != sb::simd::mid_pack(st[4]) ||
                   g.b_dd != sb::simd::mid_pack(st[5]);
