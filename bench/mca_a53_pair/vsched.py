@@ -9,6 +9,8 @@
 import re, subprocess, sys, os
 src, dst = sys.argv[1:3]
 here = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(here, "../mca_a53_persp"))
+import list_sched  # greedy(): the schedule itself
 lines = [l.rstrip() for l in open(src)]
 code = [l for l in lines if l.strip() and not l.strip().startswith("//")]
 hdr = [l for l in lines if l.strip().startswith("//")]
@@ -82,71 +84,8 @@ LIMIT = int(sys.argv[3]) if len(sys.argv) > 3 else 30
 
 def sched(idx):
     body = [code[i] for i in idx]
-    L = [lat[i] for i in idx]
-    info = [regs(l) for l in body]
-    n = len(body)
-    preds = [[] for _ in range(n)]
-    for j in range(n):
-        rj, wj, sj = info[j]
-        for i in range(j):
-            ri, wi, si = info[i]
-            if wi & rj:
-                preds[j].append((i, L[i]))
-            elif (wi & wj) or (ri & wj) or (si and sj):
-                preds[j].append((i, 0))
-    succ = [[] for _ in range(n)]
-    for j in range(n):
-        for i, d in preds[j]:
-            succ[i].append((j, d))
-    prio = [0] * n
-    for i in reversed(range(n)):
-        prio[i] = L[i] + max([prio[j] for j, d in succ[i]] + [0])
-    done, issue, order = set(), {}, []
-    t, used, lastW = 0, {}, 0
-    # register pressure: vector names live (written, uses left); a candidate that would
-    # raise the count above LIMIT waits while another can go
-    uses = {}
-    for j in range(n):
-        for x in info[j][0] | info[j][1]:
-            if x.startswith("V"):
-                uses[x] = uses.get(x, 0) + 1
-    live = set(x for x in uses if x.startswith("V") and not any(x in info[j][1] for j in range(n)))
-    left = dict(uses)
-
-    def net(j):
-        r, w, _ = info[j]
-        new = len([x for x in w if x.startswith("V") and x not in live])
-        dead = len([x for x in (r | w) if x.startswith("V") and left[x] == 1 and (x in live or x in w)])
-        return new - dead
-    while len(order) < n:
-        best = None
-        ok = [j for j in range(n) if j not in done and all(i in done for i, _ in preds[j])]
-        fit = [j for j in ok if len(live) + net(j) <= LIMIT]
-        for j in (fit or ok):
-            if False:
-                continue
-            e = max([t] + [issue[i] + d for i, d in preds[j]] + [lastW - L[j]])
-            while True:
-                u = used.get(e, {})
-                if sum(u.values()) < 2 and u.get(unit(body[j]), 0) < CAP[unit(body[j])]:
-                    break
-                e += 1
-            key = (e, -prio[j], j)
-            if best is None or key < best[0]:
-                best = (key, j, e)
-        (_, j, e) = best
-        for x in info[j][0] | info[j][1]:
-            if x.startswith("V"):
-                left[x] -= 1
-                if left[x] == 0:
-                    live.discard(x)
-                else:
-                    live.add(x)
-        done.add(j); issue[j] = e; order.append(j); t = e
-        used.setdefault(e, {})
-        used[e][unit(body[j])] = used[e].get(unit(body[j]), 0) + 1
-        lastW = max(lastW, e + L[j])
-    print("region of", n, "list schedule span", t + 1, file=sys.stderr)
+    order, span = list_sched.greedy(body, [lat[i] for i in idx], [regs(l) for l in body], unit, CAP, LIMIT)
+    print("region of", len(body), "list schedule span", span, file=sys.stderr)
     return [idx[j] for j in order]
 
 
