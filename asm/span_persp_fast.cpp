@@ -806,9 +806,22 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
 // one frame.
 void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+// dzi != 0.0 on its bits (integer ops: no FP compare; NaN and the infinities are non-zero),
+// loaded into a core register by its own load (not moved from the FP register the span's
+// code loads it into: fmov waits for that load's writeback).
+SB_INLINE bool nonzero_bits(const double& d) {
+  uint64_t bits;
+  __asm__("ldr %x0, %1" : "=r"(bits) : "m"(d));
+  return (bits << 1) != 0;
+}
 // persp_one's long path (persp_long_a64); the three fields tested without branches between.
 SB_INLINE bool is_long_a64(const PerspItem& x) {
-  return (x.n > 80) & x.span.second_order & (x.span.dzi != 0.0);
+  return (x.n > 80) & x.span.second_order & nonzero_bits(x.span.dzi);
+}
+// spans_range's pair test for one item: persp_short_inl<true>'s spans (16 < n <= kShortMax,
+// second order, dzi != 0), without branches.
+SB_INLINE bool pairable_a64(const PerspItem& x) {
+  return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
 __attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
@@ -826,12 +839,14 @@ __attribute__((noinline)) void persp_lin_a64(uint8_t* dest, int n, const uint8_t
 
 // The dispatcher: one span by its length and steps (surface_span_persp_fast), inlined into
 // the batch loop too (surface_spans_persp_fast: the registers saved once per batch).
-SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+// is_short: 16 < n <= kShortMax; curve: second_order with dzi != 0 (persp_one computes them;
+// the batch loop passes the ones its pair test computed).
+SB_INLINE void persp_one_c(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p,
+                           bool is_short, bool curve) {
   // curve = zc (z_a + z_b) / 2 with zc = 0 is 0 (the depths are finite): the linear steps.
   // Short spans (aarch64) go to persp_short from here, not past persp_fast's entry (which
   // saves the registers of the long-span loop).
-  const bool is_short = n > 16 && n <= kShortMax;
-  if (!p.second_order || p.dzi == 0.0) {
+  if (!curve) {
     if (is_short) return persp_short_inl<false>(dest, n, texels, width, p);
     return persp_fast<false>(dest, n, texels, width, p);
   }
@@ -843,6 +858,16 @@ SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width,
   if (n > 80) return persp_long_a64(dest, n, texels, width, p, nullptr, nullptr);
 #endif
   persp_fast<true>(dest, n, texels, width, p);
+}
+SB_INLINE bool is_short_n(int n) { return uint32_t(n) - 17u < uint32_t(kShortMax - 16); }
+// The single-span entry's dispatcher (and the batch loop's off aarch64): the tests one by one.
+SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const bool is_short = n > 16 && n <= kShortMax;
+  if (!p.second_order || p.dzi == 0.0) {
+    if (is_short) return persp_short_inl<false>(dest, n, texels, width, p);
+    return persp_fast<false>(dest, n, texels, width, p);
+  }
+  persp_one_c(dest, n, texels, width, p, is_short, true);
 }
 
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -871,15 +896,24 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
   // samples from one asm block (short_samples2, asm/span_persp_a64pair.h: the latency chains
   // paid once for both), then each its rest (short_rest, one copy in the loop); other spans
   // one by one.
-  auto pairable = [](const PerspItem& x) {
-    return x.n > 16 && x.n <= kShortMax && x.span.second_order && x.span.dzi != 0.0;
-  };
   ShortSamples s[2];
   // short_samples2 uses every vector register: d8 .. d15 are saved once here, at entry
   // (without this the compiler saved and restored d12 .. d15 around each pair).
   __asm__ volatile("" ::: "v8", "v9", "v10", "v11", "v12", "v13", "v14", "v15");
   while (it != end) {
-    if (pairable(*it) && it + 1 != end && pairable(it[1])) {
+    // Pairable: both it[0] and it[1] short second-order spans, it[1] inside the batch. Tested
+    // without branches between (one qemu block): b is it[1], or it[0] again at the batch's
+    // last item (no read past end; has_next false then).
+    const bool sa = is_short_n(it->n);
+    if (!it->span.second_order) {
+      persp_one_c(it->dest, it->n, texels, width, it->span, sa, false);
+      ++it;
+      continue;
+    }
+    const bool ca = nonzero_bits(it->span.dzi);
+    const bool has_next = it + 1 != end;
+    const PerspItem& b = has_next ? it[1] : it[0];
+    if (sa & ca & pairable_a64(b) & has_next) {
       short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
 #pragma GCC unroll 1
       for (int j = 0; j < 2; ++j, ++it) {
@@ -890,7 +924,7 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       }
       continue;
     }
-    persp_one(it->dest, it->n, texels, width, it->span);
+    persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);
     ++it;
   }
 #else
