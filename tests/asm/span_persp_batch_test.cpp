@@ -201,6 +201,38 @@ TEST(AsmSpanPerspBatch, RunsOfLongSpansMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of long ones, every variant identical\n", spans);
 }
 
+// A long batch of long spans only (aarch64: each one reached and left by tail branches,
+// batch_from -> persp_long_a64 / persp_lin_a64 -> batch_from): 100000 items in one call
+// must not nest a frame per item (that would overflow the stack and crash here); the tuned
+// table's bytes checked against the reference on every 499th item.
+TEST(AsmSpanPerspBatch, LongBatchOfLongSpansNestsNoFrames) {
+  std::mt19937 rng(2718);
+  const int sw = 64, sh = 64, kItems = 100000;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  std::vector<PerspItem> items;
+  size_t size = 0;
+  for (int i = 0; i < kItems; ++i) {
+    PerspSpan p{};
+    p.zi0 = 0.01, p.dzi = -1e-6, p.uz0 = 0.3, p.duz = 1e-4, p.vz0 = 0.2, p.dvz = 2e-5;
+    p.px0 = double(i % 500) + 0.5;
+    p.umax = int32_t((uint32_t(sw) << 16) - 1), p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = i % 2 == 0;  // second order over 80 px, linear over 64: both long paths
+    const int n = p.second_order ? 81 + int(rng() % 40) : 65 + int(rng() % 40);
+    items.push_back(PerspItem{nullptr, n, p});
+    size += size_t(n);
+  }
+  std::vector<uint8_t> got(size, 0);
+  size_t at = 0;
+  for (PerspItem& it : items) it.dest = got.data() + at, at += size_t(it.n);
+  sb::simd::active().surface_spans_persp(items.data(), kItems, surf.data(), sw, sh);
+  for (int i = 0; i < kItems; i += 499) {
+    std::vector<uint8_t> ref(size_t(items[i].n));
+    sb::simd::surface_span_persp_scalar(ref.data(), items[i].n, surf.data(), sw, sh, items[i].span);
+    ASSERT_TRUE(std::equal(ref.begin(), ref.end(), items[i].dest)) << " item " << i;
+  }
+}
+
 // Real faces' rows (LibreQuake maps from their own viewpoints; skipped without the data):
 // one batch per face, items built as engine/render/span_draw.cpp builds them.
 TEST(AsmSpanPerspBatch, MatchesOnRealFaces) {
