@@ -51,8 +51,21 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 // rp + 16 (rp += 32 a pair) instead of through two run pointers, reordered by
 // bench/order_search.py (Cortex-A53 model: A 68 -> 66, B 75 -> 74 cycles;
 // bench/mca_a53_block/pair16a_lean.s, pair16b_lean.s).
+// The loops' registers by name (expanded where the text is used): the C++ function's asm
+// operands here; asm/neon_block_mip2f.h redefines them as fixed registers.
+#define SB_M2L_D "%[d]"
+#define SB_M2L_RP "%[rp]"
+#define SB_M2L_Q "%[q]"
+#define SB_M2L_ETE "%[ete]"
+#define SB_M2L_T0 "%[t0]"
+#define SB_M2L_CM "%[cm]"
+#define SB_M2L_W "%[w]"
+#define SB_M2L_J0 "%[j0]"
+#define SB_M2L_J1 "%[j1]"
+#define SB_M2L_WT "%[wt]"
+#define SB_M2L_WT4 "%[wt4]"
 #define SB_M2L_A \
-    "stp d4, d5, [%[d]]\n\t" \
+    "stp d4, d5, [" SB_M2L_D "]\n\t" \
     "stp d6, d7, [x8]\n\t" SB_M2L_A_BODY \
     "b 3f\n\t" \
     "3:\n\t"
@@ -60,15 +73,15 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 #define SB_M2L_A_BODY \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
-    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, " SB_M2L_J0 ".16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
-    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, " SB_M2L_J0 ".16b\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
     "fmov x1, v0.d[1]\n\t" \
-    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "fmov x3, v1.d[1]\n\t" \
     "fmov x4, d2\n\t" \
@@ -78,101 +91,101 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "fmov x7, v3.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
-    "ldr q8, [%[ete], %[q]]\n\t" \
+    "ldr q8, [" SB_M2L_ETE ", " SB_M2L_Q "]\n\t" \
     "ror x10, x0, #32\n\t" \
     "ror x21, x4, #32\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
+    "add x9, " SB_M2L_CM ", w0, uxth\n\t" \
+    "add x12, " SB_M2L_CM ", w2, uxth\n\t" \
     "ror x18, x2, #32\n\t" \
-    "add x0, %[cm], x0, lsr #48\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
-    "add x20, %[cm], w4, uxth\n\t" \
+    "add x0, " SB_M2L_CM ", x0, lsr #48\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
+    "add x23, " SB_M2L_CM ", w6, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w4, uxth\n\t" \
     "ld1 {v5.b}[0], [x12]\n\t" \
     "ror x24, x6, #32\n\t" \
     "ld1 {v4.b}[0], [x9]\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
     "ld1 {v7.b}[0], [x23]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
     "ld1 {v6.b}[0], [x20]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
-    "add x2, %[cm], x2, lsr #48\n\t" \
-    "add x12, %[cm], w3, uxth\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
+    "add x2, " SB_M2L_CM ", x2, lsr #48\n\t" \
+    "add x12, " SB_M2L_CM ", w3, uxth\n\t" \
     "ld1 {v5.b}[1], [x18]\n\t" \
-    "add x6, %[cm], x6, lsr #48\n\t" \
+    "add x6, " SB_M2L_CM ", x6, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
     "ror x10, x1, #32\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
+    "add x4, " SB_M2L_CM ", x4, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x21]\n\t" \
     "ror x18, x3, #32\n\t" \
-    "ldr q21, [%[rp]]\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
+    "ldr q21, [" SB_M2L_RP "]\n\t" \
+    "add x9, " SB_M2L_CM ", w1, uxth\n\t" \
     "ld1 {v4.b}[2], [x11]\n\t" \
     "ror x21, x5, #32\n\t" \
     "ld1 {v5.b}[2], [x19]\n\t" \
-    "add x20, %[cm], w5, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w5, uxth\n\t" \
     "ld1 {v6.b}[2], [x22]\n\t" \
     "ror x24, x7, #32\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
-    "ldr q26, [%[rp], #16]\n\t" \
-    "add x23, %[cm], w7, uxth\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
+    "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
+    "add x23, " SB_M2L_CM ", w7, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
     "ld1 {v4.b}[4], [x9]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x12]\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x20]\n\t" \
-    "add x5, %[cm], x5, lsr #48\n\t" \
+    "add x5, " SB_M2L_CM ", x5, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
+    "add x1, " SB_M2L_CM ", x1, lsr #48\n\t" \
     "ld1 {v6.b}[5], [x21]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add " SB_M2L_D ", " SB_M2L_D ", " SB_M2L_W ", lsl #1\n\t" \
     "ld1 {v7.b}[5], [x24]\n\t" \
     "ld1 {v4.b}[6], [x11]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
+    "add x3, " SB_M2L_CM ", x3, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
     "ld1 {v6.b}[6], [x22]\n\t" \
-    "add x7, %[cm], x7, lsr #48\n\t" \
+    "add x7, " SB_M2L_CM ", x7, lsr #48\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
+    "add x8, " SB_M2L_D ", " SB_M2L_W "\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "add %[rp], %[rp], #32\n\t" \
+    "add " SB_M2L_RP ", " SB_M2L_RP ", #32\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t"
 
 #define SB_M2L_B \
     "add v27.4s, v22.4s, v16.4s\n\t" \
-    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, " SB_M2L_J0 ".16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
-    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+    "smull v16.4s, " SB_M2L_WT ".4h, v8.h[0]\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
-    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
-    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
-    "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, " SB_M2L_J0 ".16b\n\t" \
+    "smull v29.4s, " SB_M2L_WT ".4h, v8.h[3]\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
-    "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
+    "smlal2 v16.4s, " SB_M2L_WT ".8h, v8.h[1]\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x3, v1.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
@@ -181,91 +194,91 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "fmov x0, d0\n\t" \
     "fmov x1, v0.d[1]\n\t" \
     "fmov x2, d1\n\t" \
-    "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
-    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
-    "stp d4, d5, [%[d]]\n\t" \
-    "adds %[q], %[q], %[w]\n\t" \
+    "smull v17.4s, " SB_M2L_WT ".4h, v8.h[1]\n\t" \
+    "smull v18.4s, " SB_M2L_WT ".4h, v8.h[2]\n\t" \
+    "stp d4, d5, [" SB_M2L_D "]\n\t" \
+    "adds " SB_M2L_Q ", " SB_M2L_Q ", " SB_M2L_W "\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "ror x24, x6, #32\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
+    "add x9, " SB_M2L_CM ", w0, uxth\n\t" \
+    "add x23, " SB_M2L_CM ", w6, uxth\n\t" \
     "ror x21, x4, #32\n\t" \
     "ror x10, x0, #32\n\t" \
-    "ldr q26, [%[rp], #16]\n\t" \
+    "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
     "ror x18, x2, #32\n\t" \
     "ld1 {v4.b}[0], [x9]\n\t" \
-    "add x20, %[cm], w4, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w4, uxth\n\t" \
     "ld1 {v7.b}[0], [x23]\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
+    "add x12, " SB_M2L_CM ", w2, uxth\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
     "ld1 {v5.b}[0], [x12]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
     "ld1 {v6.b}[0], [x20]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
-    "add x23, %[cm], w7, uxth\n\t" \
-    "add x12, %[cm], w3, uxth\n\t" \
+    "add x23, " SB_M2L_CM ", w7, uxth\n\t" \
+    "add x12, " SB_M2L_CM ", w3, uxth\n\t" \
     "ror x10, x1, #32\n\t" \
     "ld1 {v5.b}[1], [x18]\n\t" \
-    "add x0, %[cm], x0, lsr #48\n\t" \
+    "add x0, " SB_M2L_CM ", x0, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x21]\n\t" \
-    "add x2, %[cm], x2, lsr #48\n\t" \
+    "add x2, " SB_M2L_CM ", x2, lsr #48\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
+    "add x4, " SB_M2L_CM ", x4, lsr #48\n\t" \
     "ld1 {v4.b}[2], [x11]\n\t" \
     "ror x21, x5, #32\n\t" \
     "ld1 {v5.b}[2], [x19]\n\t" \
-    "add x20, %[cm], w5, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w5, uxth\n\t" \
     "ld1 {v6.b}[2], [x22]\n\t" \
-    "add x6, %[cm], x6, lsr #48\n\t" \
+    "add x6, " SB_M2L_CM ", x6, lsr #48\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
+    "add x9, " SB_M2L_CM ", w1, uxth\n\t" \
     "ror x24, x7, #32\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
     "ror x18, x3, #32\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
-    "ldr q21, [%[rp]]\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
+    "ldr q21, [" SB_M2L_RP "]\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
     "ld1 {v4.b}[4], [x9]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x20]\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x12]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
+    "add x3, " SB_M2L_CM ", x3, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v6.b}[5], [x21]\n\t" \
-    "add x5, %[cm], x5, lsr #48\n\t" \
+    "add x5, " SB_M2L_CM ", x5, lsr #48\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
     "ld1 {v7.b}[5], [x24]\n\t" \
-    "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
-    "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
+    "smlal2 v17.4s, " SB_M2L_WT ".8h, v8.h[2]\n\t" \
+    "smlal2 v18.4s, " SB_M2L_WT ".8h, v8.h[3]\n\t" \
     "ld1 {v6.b}[6], [x22]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
+    "add x1, " SB_M2L_CM ", x1, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add " SB_M2L_D ", " SB_M2L_D ", " SB_M2L_W ", lsl #1\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
-    "add x7, %[cm], x7, lsr #48\n\t" \
+    "add x7, " SB_M2L_CM ", x7, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x11]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
+    "smlal2 v29.4s, " SB_M2L_WT ".8h, v8.h[4]\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
-    "add %[rp], %[rp], #32\n\t" \
+    "add x8, " SB_M2L_D ", " SB_M2L_W "\n\t" \
+    "add " SB_M2L_RP ", " SB_M2L_RP ", #32\n\t" \
     "b.ne 1b\n\t"
 
 // A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2, the numerators' << 2 in their weights
@@ -274,29 +287,29 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 // loaded before it (SB_M2L_LOADS: at the previous group's exit, so their latency overlaps its
 // stores and state steps).
 #define SB_M2L_LOADS \
-  "ldr q0, [%[t0]]\n\t" \
-  "ldr q8, [%[t0], %[w]]\n\t" \
-  "ldr q21, [%[rp]]\n\t" \
-  "ldr q26, [%[rp], #16]\n\t" \
-  "add %[rp], %[rp], #32\n\t"
+  "ldr q0, [" SB_M2L_T0 "]\n\t" \
+  "ldr q8, [" SB_M2L_T0 ", " SB_M2L_W "]\n\t" \
+  "ldr q21, [" SB_M2L_RP "]\n\t" \
+  "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
+  "add " SB_M2L_RP ", " SB_M2L_RP ", #32\n\t"
 #define SB_M2L_HEAD \
-  "sub %[d], x26, %[w], lsl #1\n\t" \
-  "smull v22.4s, %[wt4].4h, v0.h[0]\n\t" \
-  "smull v23.4s, %[wt4].4h, v0.h[1]\n\t" \
-  "smull v19.4s, %[wt4].4h, v0.h[2]\n\t" \
-  "smull v20.4s, %[wt4].4h, v0.h[3]\n\t" \
-  "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
-  "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
-  "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
-  "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
-  "smlal2 v22.4s, %[wt4].8h, v0.h[1]\n\t" \
-  "smlal2 v23.4s, %[wt4].8h, v0.h[2]\n\t" \
-  "smlal2 v19.4s, %[wt4].8h, v0.h[3]\n\t" \
-  "smlal2 v20.4s, %[wt4].8h, v0.h[4]\n\t" \
-  "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
-  "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
-  "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
-  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t"
+  "sub " SB_M2L_D ", x26, " SB_M2L_W ", lsl #1\n\t" \
+  "smull v22.4s, " SB_M2L_WT4 ".4h, v0.h[0]\n\t" \
+  "smull v23.4s, " SB_M2L_WT4 ".4h, v0.h[1]\n\t" \
+  "smull v19.4s, " SB_M2L_WT4 ".4h, v0.h[2]\n\t" \
+  "smull v20.4s, " SB_M2L_WT4 ".4h, v0.h[3]\n\t" \
+  "smull v16.4s, " SB_M2L_WT ".4h, v8.h[0]\n\t" \
+  "smull v17.4s, " SB_M2L_WT ".4h, v8.h[1]\n\t" \
+  "smull v18.4s, " SB_M2L_WT ".4h, v8.h[2]\n\t" \
+  "smull v29.4s, " SB_M2L_WT ".4h, v8.h[3]\n\t" \
+  "smlal2 v22.4s, " SB_M2L_WT4 ".8h, v0.h[1]\n\t" \
+  "smlal2 v23.4s, " SB_M2L_WT4 ".8h, v0.h[2]\n\t" \
+  "smlal2 v19.4s, " SB_M2L_WT4 ".8h, v0.h[3]\n\t" \
+  "smlal2 v20.4s, " SB_M2L_WT4 ".8h, v0.h[4]\n\t" \
+  "smlal2 v16.4s, " SB_M2L_WT ".8h, v8.h[1]\n\t" \
+  "smlal2 v17.4s, " SB_M2L_WT ".8h, v8.h[2]\n\t" \
+  "smlal2 v18.4s, " SB_M2L_WT ".8h, v8.h[3]\n\t" \
+  "smlal2 v29.4s, " SB_M2L_WT ".8h, v8.h[4]\n\t"
 
 // The rows from L + 16 TH to e (> L + 16 TH) as repeats of the TH rows at L (TH 4, 8 or 16),
 // stored from registers, a period a step (up to 16 TH - 64 bytes past e: the buffer has room).
@@ -495,22 +508,38 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
       "str q24, [%[o1], %[e4]]\n\t" \
       "add %[o0], %[o0], %[e4]\n\t" \
       "add %[o1], %[o1], %[e4]\n\t"
+// (SB_M2L_STEP4_H's registers by name, as the loops': asm/neon_block_mip2f.h redefines them)
+#define SB_M2L_TB_E1 "%[e1]"
+#define SB_M2L_TB_E2 "%[e2]"
+#define SB_M2L_TB_E3 "%[e3]"
+#define SB_M2L_TB_E4 "%[e4]"
+#define SB_M2L_TB_G1 "%[g1]"
+#define SB_M2L_TB_G2 "%[g2]"
+#define SB_M2L_TB_G3 "%[g3]"
+#define SB_M2L_TB_G4 "%[g4]"
+#define SB_M2L_TB_N4 "%[n4]"
+#define SB_M2L_TB_O0 "%[o0]"
+#define SB_M2L_TB_O1 "%[o1]"
+#define SB_M2L_TB_O2 "%[o2]"
+#define SB_M2L_TB_S0 "%[s0]"
+#define SB_M2L_TB_S1 "%[s1]"
+#define SB_M2L_TB_S2 "%[s2]"
 #define SB_M2L_STEP4_H \
-      "ldr q2, [%[s0], %[g2]]\n\t" \
-      "ldr q4, [%[s0], %[g4]]\n\t" \
-      "ldr q3, [%[s0], %[g3]]\n\t" \
-      "ldr q1, [%[s0], %[g1]]\n\t" \
-      "ldr q19, [%[s1], %[g3]]\n\t" \
-      "add %[s0], %[s0], %[g4]\n\t" \
-      "ldrh w12, [%[s2], %[g3]]\n\t" \
-      "subs %[n4], %[n4], #1\n\t" \
-      "ldrh w13, [%[s2], %[g4]]\n\t" \
-      "ldr q17, [%[s1], %[g1]]\n\t" \
-      "ldrh w11, [%[s2], %[g2]]\n\t" \
-      "ldr q20, [%[s1], %[g4]]\n\t" \
-      "ldrh w10, [%[s2], %[g1]]\n\t" \
+      "ldr q2, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G2 "]\n\t" \
+      "ldr q4, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G4 "]\n\t" \
+      "ldr q3, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G3 "]\n\t" \
+      "ldr q1, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G1 "]\n\t" \
+      "ldr q19, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G3 "]\n\t" \
+      "add " SB_M2L_TB_S0 ", " SB_M2L_TB_S0 ", " SB_M2L_TB_G4 "\n\t" \
+      "ldrh w12, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G3 "]\n\t" \
+      "subs " SB_M2L_TB_N4 ", " SB_M2L_TB_N4 ", #1\n\t" \
+      "ldrh w13, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G4 "]\n\t" \
+      "ldr q17, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G1 "]\n\t" \
+      "ldrh w11, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G2 "]\n\t" \
+      "ldr q20, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G4 "]\n\t" \
+      "ldrh w10, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G1 "]\n\t" \
       "sub v25.8h, v4.8h, v3.8h\n\t" \
-      "ldr q18, [%[s1], %[g2]]\n\t" \
+      "ldr q18, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G2 "]\n\t" \
       "sub w14, w13, w12\n\t" \
       "sub w12, w12, w11\n\t" \
       "sub w11, w11, w10\n\t" \
@@ -520,28 +549,28 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
       "sub v22.8h, v18.8h, v17.8h\n\t" \
       "sub v24.8h, v20.8h, v19.8h\n\t" \
       "sub v7.8h, v3.8h, v2.8h\n\t" \
-      "str q5, [%[o0], %[e1]]\n\t" \
-      "str q21, [%[o1], %[e1]]\n\t" \
+      "str q5, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E1 "]\n\t" \
+      "str q21, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E1 "]\n\t" \
       "sub v23.8h, v19.8h, v18.8h\n\t" \
       "mov v0.16b, v4.16b\n\t" \
       "mov v16.16b, v20.16b\n\t" \
-      "str q6, [%[o0], %[e2]]\n\t" \
-      "str q22, [%[o1], %[e2]]\n\t" \
-      "str q7, [%[o0], %[e3]]\n\t" \
+      "str q6, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E2 "]\n\t" \
+      "str q22, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E2 "]\n\t" \
+      "str q7, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E3 "]\n\t" \
       "sub w10, w10, w9\n\t" \
-      "str q23, [%[o1], %[e3]]\n\t" \
-      "str q25, [%[o0], %[e4]]\n\t" \
-      "str q24, [%[o1], %[e4]]\n\t" \
+      "str q23, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E3 "]\n\t" \
+      "str q25, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E4 "]\n\t" \
+      "str q24, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E4 "]\n\t" \
       "mov w9, w13\n\t" \
-      "strh w10, [%[o2], %[e1]]\n\t" \
-      "add %[o0], %[o0], %[e4]\n\t" \
-      "strh w11, [%[o2], %[e2]]\n\t" \
-      "add %[s1], %[s1], %[g4]\n\t" \
-      "strh w12, [%[o2], %[e3]]\n\t" \
-      "add %[s2], %[s2], %[g4]\n\t" \
-      "strh w14, [%[o2], %[e4]]\n\t" \
-      "add %[o1], %[o1], %[e4]\n\t" \
-      "add %[o2], %[o2], %[e4]\n\t"
+      "strh w10, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E1 "]\n\t" \
+      "add " SB_M2L_TB_O0 ", " SB_M2L_TB_O0 ", " SB_M2L_TB_E4 "\n\t" \
+      "strh w11, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E2 "]\n\t" \
+      "add " SB_M2L_TB_S1 ", " SB_M2L_TB_S1 ", " SB_M2L_TB_G4 "\n\t" \
+      "strh w12, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E3 "]\n\t" \
+      "add " SB_M2L_TB_S2 ", " SB_M2L_TB_S2 ", " SB_M2L_TB_G4 "\n\t" \
+      "strh w14, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E4 "]\n\t" \
+      "add " SB_M2L_TB_O1 ", " SB_M2L_TB_O1 ", " SB_M2L_TB_E4 "\n\t" \
+      "add " SB_M2L_TB_O2 ", " SB_M2L_TB_O2 ", " SB_M2L_TB_E4 "\n\t"
 #define SB_M2L_COLS(H0, STEP4, H4) \
   asm volatile( \
       "ldr q0, [%[s0]]\n\t" \
@@ -589,7 +618,6 @@ inline void m2l_cols2(const uint16_t* s0, const uint16_t* s1, int gw, int nb, ui
 }
 #undef SB_M2L_COLS
 #undef SB_M2L_STEP4
-#undef SB_M2L_STEP4_H
 
 // T's entries 0..ne - 1 (ne >= 8, ne <= gw): columns of 8 in pairs (and a last single entry
 // with the last pair), a last column alone by a53_table (the last column ends at entry ne - 1,
@@ -640,6 +668,9 @@ inline void m2l_rows32(const uint8_t* texels, int th, int t0, int h, int c0, uin
 // on mip 2 by a branch, under the symbol SB_M2L_SYM, with surface_block's arguments; the shapes
 // it does not take go on (tail call, arguments untouched) to surface_block_inorder (asm/neon.cpp).
 #define SB_M2L_SYM "_ZN2sb4simd6detail23surface_block_mip2_leanEPKtiPKhiiiiiiiS5_Ph"
+// (this C++ function's own symbol: asm/neon_block_mip2f.h's assembly is SB_M2L_SYM, and comes here
+// for the shapes it does not take)
+#define SB_M2L_CXX "_ZN2sb4simd6detail27surface_block_mip2_lean_cxxEPKtiPKhiiiiiiiS5_Ph"
 namespace {  // (asm/neon.cpp defines it in this nested unnamed namespace)
 __attribute__((noipa, used)) void surface_block_inorder(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
                                                         int th, int mip, int soff, int toff, int width, int height,
@@ -648,7 +679,7 @@ __attribute__((noipa, used)) void surface_block_inorder(const uint16_t* grid, in
 }  // namespace
 __attribute__((noipa, used)) void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
                                                           int th, int mip, int soff, int toff, int width, int height,
-                                                          const uint8_t* colormap, uint8_t* out) asm(SB_M2L_SYM);
+                                                          const uint8_t* colormap, uint8_t* out) asm(SB_M2L_CXX);
 void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw, int th, int mip, int soff,
                              int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
   if ((tw != 4 && tw != 8 && tw != 16 && tw != 32) || (width & 15) || width < 16 || height <= 0 || height > kM2LMaxHeight ||
@@ -737,6 +768,8 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 #undef SB_M2L_GROUPS
 }
 
+#include "asm/neon_block_mip2f.h"
+
 #undef SB_M2L_A
 #undef SB_M2L_STR
 #undef SB_M2L_STR2
@@ -745,6 +778,34 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
 #undef SB_M2L_LOADS
+#undef SB_M2L_STEP4_H
+#undef SB_M2L_TB_E1
+#undef SB_M2L_TB_E2
+#undef SB_M2L_TB_E3
+#undef SB_M2L_TB_E4
+#undef SB_M2L_TB_G1
+#undef SB_M2L_TB_G2
+#undef SB_M2L_TB_G3
+#undef SB_M2L_TB_G4
+#undef SB_M2L_TB_N4
+#undef SB_M2L_TB_O0
+#undef SB_M2L_TB_O1
+#undef SB_M2L_TB_O2
+#undef SB_M2L_TB_S0
+#undef SB_M2L_TB_S1
+#undef SB_M2L_TB_S2
+#undef SB_M2L_D
+#undef SB_M2L_RP
+#undef SB_M2L_Q
+#undef SB_M2L_ETE
+#undef SB_M2L_T0
+#undef SB_M2L_CM
+#undef SB_M2L_W
+#undef SB_M2L_J0
+#undef SB_M2L_J1
+#undef SB_M2L_WT
+#undef SB_M2L_WT4
+#undef SB_M2L_CXX
 
 #endif  // __aarch64__
 
