@@ -508,38 +508,22 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
       "str q24, [%[o1], %[e4]]\n\t" \
       "add %[o0], %[o0], %[e4]\n\t" \
       "add %[o1], %[o1], %[e4]\n\t"
-// (SB_M2L_STEP4_H's registers by name, as the loops': asm/neon_block_mip2f.h redefines them)
-#define SB_M2L_TB_E1 "%[e1]"
-#define SB_M2L_TB_E2 "%[e2]"
-#define SB_M2L_TB_E3 "%[e3]"
-#define SB_M2L_TB_E4 "%[e4]"
-#define SB_M2L_TB_G1 "%[g1]"
-#define SB_M2L_TB_G2 "%[g2]"
-#define SB_M2L_TB_G3 "%[g3]"
-#define SB_M2L_TB_G4 "%[g4]"
-#define SB_M2L_TB_N4 "%[n4]"
-#define SB_M2L_TB_O0 "%[o0]"
-#define SB_M2L_TB_O1 "%[o1]"
-#define SB_M2L_TB_O2 "%[o2]"
-#define SB_M2L_TB_S0 "%[s0]"
-#define SB_M2L_TB_S1 "%[s1]"
-#define SB_M2L_TB_S2 "%[s2]"
 #define SB_M2L_STEP4_H \
-      "ldr q2, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G2 "]\n\t" \
-      "ldr q4, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G4 "]\n\t" \
-      "ldr q3, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G3 "]\n\t" \
-      "ldr q1, [" SB_M2L_TB_S0 ", " SB_M2L_TB_G1 "]\n\t" \
-      "ldr q19, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G3 "]\n\t" \
-      "add " SB_M2L_TB_S0 ", " SB_M2L_TB_S0 ", " SB_M2L_TB_G4 "\n\t" \
-      "ldrh w12, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G3 "]\n\t" \
-      "subs " SB_M2L_TB_N4 ", " SB_M2L_TB_N4 ", #1\n\t" \
-      "ldrh w13, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G4 "]\n\t" \
-      "ldr q17, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G1 "]\n\t" \
-      "ldrh w11, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G2 "]\n\t" \
-      "ldr q20, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G4 "]\n\t" \
-      "ldrh w10, [" SB_M2L_TB_S2 ", " SB_M2L_TB_G1 "]\n\t" \
+      "ldr q2, [%[s0], %[g2]]\n\t" \
+      "ldr q4, [%[s0], %[g4]]\n\t" \
+      "ldr q3, [%[s0], %[g3]]\n\t" \
+      "ldr q1, [%[s0], %[g1]]\n\t" \
+      "ldr q19, [%[s1], %[g3]]\n\t" \
+      "add %[s0], %[s0], %[g4]\n\t" \
+      "ldrh w12, [%[s2], %[g3]]\n\t" \
+      "subs %[n4], %[n4], #1\n\t" \
+      "ldrh w13, [%[s2], %[g4]]\n\t" \
+      "ldr q17, [%[s1], %[g1]]\n\t" \
+      "ldrh w11, [%[s2], %[g2]]\n\t" \
+      "ldr q20, [%[s1], %[g4]]\n\t" \
+      "ldrh w10, [%[s2], %[g1]]\n\t" \
       "sub v25.8h, v4.8h, v3.8h\n\t" \
-      "ldr q18, [" SB_M2L_TB_S1 ", " SB_M2L_TB_G2 "]\n\t" \
+      "ldr q18, [%[s1], %[g2]]\n\t" \
       "sub w14, w13, w12\n\t" \
       "sub w12, w12, w11\n\t" \
       "sub w11, w11, w10\n\t" \
@@ -549,28 +533,28 @@ __attribute__((always_inline)) inline void m2l_rows(const uint8_t* texels, int t
       "sub v22.8h, v18.8h, v17.8h\n\t" \
       "sub v24.8h, v20.8h, v19.8h\n\t" \
       "sub v7.8h, v3.8h, v2.8h\n\t" \
-      "str q5, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E1 "]\n\t" \
-      "str q21, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E1 "]\n\t" \
+      "str q5, [%[o0], %[e1]]\n\t" \
+      "str q21, [%[o1], %[e1]]\n\t" \
       "sub v23.8h, v19.8h, v18.8h\n\t" \
       "mov v0.16b, v4.16b\n\t" \
       "mov v16.16b, v20.16b\n\t" \
-      "str q6, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E2 "]\n\t" \
-      "str q22, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E2 "]\n\t" \
-      "str q7, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E3 "]\n\t" \
+      "str q6, [%[o0], %[e2]]\n\t" \
+      "str q22, [%[o1], %[e2]]\n\t" \
+      "str q7, [%[o0], %[e3]]\n\t" \
       "sub w10, w10, w9\n\t" \
-      "str q23, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E3 "]\n\t" \
-      "str q25, [" SB_M2L_TB_O0 ", " SB_M2L_TB_E4 "]\n\t" \
-      "str q24, [" SB_M2L_TB_O1 ", " SB_M2L_TB_E4 "]\n\t" \
+      "str q23, [%[o1], %[e3]]\n\t" \
+      "str q25, [%[o0], %[e4]]\n\t" \
+      "str q24, [%[o1], %[e4]]\n\t" \
       "mov w9, w13\n\t" \
-      "strh w10, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E1 "]\n\t" \
-      "add " SB_M2L_TB_O0 ", " SB_M2L_TB_O0 ", " SB_M2L_TB_E4 "\n\t" \
-      "strh w11, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E2 "]\n\t" \
-      "add " SB_M2L_TB_S1 ", " SB_M2L_TB_S1 ", " SB_M2L_TB_G4 "\n\t" \
-      "strh w12, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E3 "]\n\t" \
-      "add " SB_M2L_TB_S2 ", " SB_M2L_TB_S2 ", " SB_M2L_TB_G4 "\n\t" \
-      "strh w14, [" SB_M2L_TB_O2 ", " SB_M2L_TB_E4 "]\n\t" \
-      "add " SB_M2L_TB_O1 ", " SB_M2L_TB_O1 ", " SB_M2L_TB_E4 "\n\t" \
-      "add " SB_M2L_TB_O2 ", " SB_M2L_TB_O2 ", " SB_M2L_TB_E4 "\n\t"
+      "strh w10, [%[o2], %[e1]]\n\t" \
+      "add %[o0], %[o0], %[e4]\n\t" \
+      "strh w11, [%[o2], %[e2]]\n\t" \
+      "add %[s1], %[s1], %[g4]\n\t" \
+      "strh w12, [%[o2], %[e3]]\n\t" \
+      "add %[s2], %[s2], %[g4]\n\t" \
+      "strh w14, [%[o2], %[e4]]\n\t" \
+      "add %[o1], %[o1], %[e4]\n\t" \
+      "add %[o2], %[o2], %[e4]\n\t"
 #define SB_M2L_COLS(H0, STEP4, H4) \
   asm volatile( \
       "ldr q0, [%[s0]]\n\t" \
@@ -618,6 +602,7 @@ inline void m2l_cols2(const uint16_t* s0, const uint16_t* s1, int gw, int nb, ui
 }
 #undef SB_M2L_COLS
 #undef SB_M2L_STEP4
+#undef SB_M2L_STEP4_H
 
 // T's entries 0..ne - 1 (ne >= 8, ne <= gw): columns of 8 in pairs (and a last single entry
 // with the last pair), a last column alone by a53_table (the last column ends at entry ne - 1,
@@ -778,22 +763,6 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
 #undef SB_M2L_LOADS
-#undef SB_M2L_STEP4_H
-#undef SB_M2L_TB_E1
-#undef SB_M2L_TB_E2
-#undef SB_M2L_TB_E3
-#undef SB_M2L_TB_E4
-#undef SB_M2L_TB_G1
-#undef SB_M2L_TB_G2
-#undef SB_M2L_TB_G3
-#undef SB_M2L_TB_G4
-#undef SB_M2L_TB_N4
-#undef SB_M2L_TB_O0
-#undef SB_M2L_TB_O1
-#undef SB_M2L_TB_O2
-#undef SB_M2L_TB_S0
-#undef SB_M2L_TB_S1
-#undef SB_M2L_TB_S2
 #undef SB_M2L_D
 #undef SB_M2L_RP
 #undef SB_M2L_Q
