@@ -170,11 +170,11 @@ asm(".pushsection .text.sb_neon_a53_m2f, \"ax\", %progbits\n\t"
     ".Lsb_m2f_laid:\n\t"
     // The table: w / 64 passes (w2 left; grid x0, T x1 a pass's start, 32 bytes a pass on) of
     // three columns (entries 0-7 and 8-15 by q registers, 16 by ldrh / strh), rows 0..nb, nb =
-    // h / 4 (x30, the link register saved in the frame): row 0, n4 = nb / 4 steps of four rows (grid rows at x3-x6, T rows at x7, x8,
-    // x23, x24, each a register stepped 4 rows: one stp q and one strh a row), nb mod 4 single
-    // rows (x3, x7). Two steps a loop iteration, the previous row alternating between v0, v16, w9
-    // and v4, v20, w13 (no copies), each step's order searched (bench/order_search.py): Cortex-A53
-    // model 41 -> 35 (one step with the copies) -> 32.
+    // h / 4 (x30: the link register is in the frame): row 0, n4 = nb / 4 steps of four rows (grid
+    // rows at x3-x6, T rows at x7, x8, x23, x24, each a register stepped 4 rows: one stp q and one
+    // strh a row), nb mod 4 single rows (x3, x7). Two steps a loop iteration, the previous row
+    // alternating between v0, v16, w9 and v4, v20, w13 (no copies), each step's order searched
+    // (bench/order_search.py): Cortex-A53 model 41 -> 35 (one step with the copies) -> 32.
     ".Lsb_m2f_pass:\n\t"
     "adr x10, .Lsb_m2f_consts\n\t"
     "ldp q0, q16, [x0]\n\t"

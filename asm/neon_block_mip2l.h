@@ -3,8 +3,9 @@
 // surfaces whose width is a multiple of 16, up to kM2LMaxHeight rows, whose grid table fits
 // kA53TableBytes. Only asm/neon.cpp includes this (after asm/neon_block_a53.h and
 // asm/neon_block_a53g.h, whose band loop and grid table it uses); the assembly entry
-// surface_block_neon_inorder (asm/neon_block_mip3l.h) branches here on mip 2, and the shapes
-// this does not take go on to surface_block_inorder (the general surface_block_groups<2>, whose
+// surface_block_neon_inorder (asm/neon_block_mip3l.h) branches on mip 2 to asm/neon_block_mip2f.h's
+// 16 x 16 block in assembly (included at the end), which comes here for the other shapes; the
+// shapes this does not take go on to surface_block_inorder (the general surface_block_groups<2>, whose
 // set-up (texture runs, run pointers, strips, the group state's copies) this skips).
 //
 // Every group reads the same 16 bytes of a texture row (byte k: texel (c0 + k) mod tw; 32 wide:
@@ -649,8 +650,9 @@ inline void m2l_rows32(const uint8_t* texels, int th, int t0, int h, int c0, uin
   }
 }
 
-// The lean path (see the top), entered from surface_block_neon_inorder (asm/neon_block_mip3l.h)
-// on mip 2 by a branch, under the symbol SB_M2L_SYM, with surface_block's arguments; the shapes
+// The lean path (see the top), entered from asm/neon_block_mip2f.h's assembly (SB_M2L_SYM, the
+// target of surface_block_neon_inorder's mip-2 branch) by a branch, under the symbol SB_M2L_CXX,
+// with surface_block's arguments; the shapes
 // it does not take go on (tail call, arguments untouched) to surface_block_inorder (asm/neon.cpp).
 #define SB_M2L_SYM "_ZN2sb4simd6detail23surface_block_mip2_leanEPKtiPKhiiiiiiiS5_Ph"
 // (this C++ function's own symbol: asm/neon_block_mip2f.h's assembly is SB_M2L_SYM, and comes here
