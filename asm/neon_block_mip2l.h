@@ -102,17 +102,17 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
     "add x23, " SB_M2L_CM ", w6, uxth\n\t" \
     "add x20, " SB_M2L_CM ", w4, uxth\n\t" \
-    "ld1 {v5.b}[0], [x12]\n\t" \
+    "ldr b5, [x12]\n\t" \
     "ror x24, x6, #32\n\t" \
-    "ld1 {v4.b}[0], [x9]\n\t" \
+    "ldr b4, [x9]\n\t" \
     "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
-    "ld1 {v7.b}[0], [x23]\n\t" \
+    "ldr b7, [x23]\n\t" \
     "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
     "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
     "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
     "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
     "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
-    "ld1 {v6.b}[0], [x20]\n\t" \
+    "ldr b6, [x20]\n\t" \
     "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "add x2, " SB_M2L_CM ", x2, lsr #48\n\t" \
     "add x12, " SB_M2L_CM ", w3, uxth\n\t" \
@@ -207,9 +207,9 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "ror x10, x0, #32\n\t" \
     "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
     "ror x18, x2, #32\n\t" \
-    "ld1 {v4.b}[0], [x9]\n\t" \
+    "ldr b4, [x9]\n\t" \
     "add x20, " SB_M2L_CM ", w4, uxth\n\t" \
-    "ld1 {v7.b}[0], [x23]\n\t" \
+    "ldr b7, [x23]\n\t" \
     "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
     "add x12, " SB_M2L_CM ", w2, uxth\n\t" \
     "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
@@ -217,9 +217,9 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
     "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
     "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
-    "ld1 {v5.b}[0], [x12]\n\t" \
+    "ldr b5, [x12]\n\t" \
     "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
-    "ld1 {v6.b}[0], [x20]\n\t" \
+    "ldr b6, [x20]\n\t" \
     "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
     "add x23, " SB_M2L_CM ", w7, uxth\n\t" \
