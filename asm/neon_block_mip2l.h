@@ -3,8 +3,9 @@
 // surfaces whose width is a multiple of 16, up to kM2LMaxHeight rows, whose grid table fits
 // kA53TableBytes. Only asm/neon.cpp includes this (after asm/neon_block_a53.h and
 // asm/neon_block_a53g.h, whose band loop and grid table it uses); the assembly entry
-// surface_block_neon_inorder (asm/neon_block_mip3l.h) branches here on mip 2, and the shapes
-// this does not take go on to surface_block_inorder (the general surface_block_groups<2>, whose
+// surface_block_neon_inorder (asm/neon_block_mip3l.h) branches on mip 2 to asm/neon_block_mip2f.h's
+// 16 x 16 block in assembly (included at the end), which comes here for the other shapes; the
+// shapes this does not take go on to surface_block_inorder (the general surface_block_groups<2>, whose
 // set-up (texture runs, run pointers, strips, the group state's copies) this skips).
 //
 // Every group reads the same 16 bytes of a texture row (byte k: texel (c0 + k) mod tw; 32 wide:
@@ -51,8 +52,21 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 // rp + 16 (rp += 32 a pair) instead of through two run pointers, reordered by
 // bench/order_search.py (Cortex-A53 model: A 68 -> 66, B 75 -> 74 cycles;
 // bench/mca_a53_block/pair16a_lean.s, pair16b_lean.s).
+// The loops' registers by name (expanded where the text is used): the C++ function's asm
+// operands here; asm/neon_block_mip2f.h redefines them as fixed registers.
+#define SB_M2L_D "%[d]"
+#define SB_M2L_RP "%[rp]"
+#define SB_M2L_Q "%[q]"
+#define SB_M2L_ETE "%[ete]"
+#define SB_M2L_T0 "%[t0]"
+#define SB_M2L_CM "%[cm]"
+#define SB_M2L_W "%[w]"
+#define SB_M2L_J0 "%[j0]"
+#define SB_M2L_J1 "%[j1]"
+#define SB_M2L_WT "%[wt]"
+#define SB_M2L_WT4 "%[wt4]"
 #define SB_M2L_A \
-    "stp d4, d5, [%[d]]\n\t" \
+    "stp d4, d5, [" SB_M2L_D "]\n\t" \
     "stp d6, d7, [x8]\n\t" SB_M2L_A_BODY \
     "b 3f\n\t" \
     "3:\n\t"
@@ -60,15 +74,15 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 #define SB_M2L_A_BODY \
     "add v27.4s, v22.4s, v16.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
-    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, " SB_M2L_J0 ".16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
-    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, " SB_M2L_J0 ".16b\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
     "fmov x1, v0.d[1]\n\t" \
-    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
     "fmov x3, v1.d[1]\n\t" \
     "fmov x4, d2\n\t" \
@@ -78,101 +92,101 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "fmov x7, v3.d[1]\n\t" \
     "fmov x6, d3\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
-    "ldr q8, [%[ete], %[q]]\n\t" \
+    "ldr q8, [" SB_M2L_ETE ", " SB_M2L_Q "]\n\t" \
     "ror x10, x0, #32\n\t" \
     "ror x21, x4, #32\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
+    "add x9, " SB_M2L_CM ", w0, uxth\n\t" \
+    "add x12, " SB_M2L_CM ", w2, uxth\n\t" \
     "ror x18, x2, #32\n\t" \
-    "add x0, %[cm], x0, lsr #48\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
-    "add x20, %[cm], w4, uxth\n\t" \
-    "ld1 {v5.b}[0], [x12]\n\t" \
+    "add x0, " SB_M2L_CM ", x0, lsr #48\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
+    "add x23, " SB_M2L_CM ", w6, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w4, uxth\n\t" \
+    "ldr b5, [x12]\n\t" \
     "ror x24, x6, #32\n\t" \
-    "ld1 {v4.b}[0], [x9]\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
-    "ld1 {v7.b}[0], [x23]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
-    "ld1 {v6.b}[0], [x20]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
-    "add x2, %[cm], x2, lsr #48\n\t" \
-    "add x12, %[cm], w3, uxth\n\t" \
+    "ldr b4, [x9]\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
+    "ldr b7, [x23]\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
+    "ldr b6, [x20]\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
+    "add x2, " SB_M2L_CM ", x2, lsr #48\n\t" \
+    "add x12, " SB_M2L_CM ", w3, uxth\n\t" \
     "ld1 {v5.b}[1], [x18]\n\t" \
-    "add x6, %[cm], x6, lsr #48\n\t" \
+    "add x6, " SB_M2L_CM ", x6, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
     "ror x10, x1, #32\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
+    "add x4, " SB_M2L_CM ", x4, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x21]\n\t" \
     "ror x18, x3, #32\n\t" \
-    "ldr q21, [%[rp]]\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
+    "ldr q21, [" SB_M2L_RP "]\n\t" \
+    "add x9, " SB_M2L_CM ", w1, uxth\n\t" \
     "ld1 {v4.b}[2], [x11]\n\t" \
     "ror x21, x5, #32\n\t" \
     "ld1 {v5.b}[2], [x19]\n\t" \
-    "add x20, %[cm], w5, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w5, uxth\n\t" \
     "ld1 {v6.b}[2], [x22]\n\t" \
     "ror x24, x7, #32\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
-    "ldr q26, [%[rp], #16]\n\t" \
-    "add x23, %[cm], w7, uxth\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
+    "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
+    "add x23, " SB_M2L_CM ", w7, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
     "ld1 {v4.b}[4], [x9]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x12]\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x20]\n\t" \
-    "add x5, %[cm], x5, lsr #48\n\t" \
+    "add x5, " SB_M2L_CM ", x5, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
+    "add x1, " SB_M2L_CM ", x1, lsr #48\n\t" \
     "ld1 {v6.b}[5], [x21]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add " SB_M2L_D ", " SB_M2L_D ", " SB_M2L_W ", lsl #1\n\t" \
     "ld1 {v7.b}[5], [x24]\n\t" \
     "ld1 {v4.b}[6], [x11]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
+    "add x3, " SB_M2L_CM ", x3, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
     "ld1 {v6.b}[6], [x22]\n\t" \
-    "add x7, %[cm], x7, lsr #48\n\t" \
+    "add x7, " SB_M2L_CM ", x7, lsr #48\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
+    "add x8, " SB_M2L_D ", " SB_M2L_W "\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "add %[rp], %[rp], #32\n\t" \
+    "add " SB_M2L_RP ", " SB_M2L_RP ", #32\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t"
 
 #define SB_M2L_B \
     "add v27.4s, v22.4s, v16.4s\n\t" \
-    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, %[j0].16b\n\t" \
+    "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, " SB_M2L_J0 ".16b\n\t" \
     "add v25.4s, v20.4s, v29.4s\n\t" \
     "add v24.4s, v19.4s, v18.4s\n\t" \
     "add v28.4s, v23.4s, v17.4s\n\t" \
-    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, %[j1].16b\n\t" \
+    "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v22.4s, v27.4s, v16.4s\n\t" \
-    "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
+    "smull v16.4s, " SB_M2L_WT ".4h, v8.h[0]\n\t" \
     "add v20.4s, v25.4s, v29.4s\n\t" \
-    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, %[j1].16b\n\t" \
+    "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, " SB_M2L_J1 ".16b\n\t" \
     "add v19.4s, v24.4s, v18.4s\n\t" \
-    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, %[j0].16b\n\t" \
-    "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
+    "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, " SB_M2L_J0 ".16b\n\t" \
+    "smull v29.4s, " SB_M2L_WT ".4h, v8.h[3]\n\t" \
     "add v23.4s, v28.4s, v17.4s\n\t" \
-    "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
+    "smlal2 v16.4s, " SB_M2L_WT ".8h, v8.h[1]\n\t" \
     "fmov x6, d3\n\t" \
     "fmov x3, v1.d[1]\n\t" \
     "fmov x7, v3.d[1]\n\t" \
@@ -181,91 +195,91 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
     "fmov x0, d0\n\t" \
     "fmov x1, v0.d[1]\n\t" \
     "fmov x2, d1\n\t" \
-    "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
-    "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
-    "stp d4, d5, [%[d]]\n\t" \
-    "adds %[q], %[q], %[w]\n\t" \
+    "smull v17.4s, " SB_M2L_WT ".4h, v8.h[1]\n\t" \
+    "smull v18.4s, " SB_M2L_WT ".4h, v8.h[2]\n\t" \
+    "stp d4, d5, [" SB_M2L_D "]\n\t" \
+    "adds " SB_M2L_Q ", " SB_M2L_Q ", " SB_M2L_W "\n\t" \
     "stp d6, d7, [x8]\n\t" \
     "ror x24, x6, #32\n\t" \
-    "add x9, %[cm], w0, uxth\n\t" \
-    "add x23, %[cm], w6, uxth\n\t" \
+    "add x9, " SB_M2L_CM ", w0, uxth\n\t" \
+    "add x23, " SB_M2L_CM ", w6, uxth\n\t" \
     "ror x21, x4, #32\n\t" \
     "ror x10, x0, #32\n\t" \
-    "ldr q26, [%[rp], #16]\n\t" \
+    "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
     "ror x18, x2, #32\n\t" \
-    "ld1 {v4.b}[0], [x9]\n\t" \
-    "add x20, %[cm], w4, uxth\n\t" \
-    "ld1 {v7.b}[0], [x23]\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
-    "add x12, %[cm], w2, uxth\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
-    "ld1 {v5.b}[0], [x12]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
-    "ld1 {v6.b}[0], [x20]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "ldr b4, [x9]\n\t" \
+    "add x20, " SB_M2L_CM ", w4, uxth\n\t" \
+    "ldr b7, [x23]\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
+    "add x12, " SB_M2L_CM ", w2, uxth\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
+    "ldr b5, [x12]\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
+    "ldr b6, [x20]\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v4.b}[1], [x10]\n\t" \
-    "add x23, %[cm], w7, uxth\n\t" \
-    "add x12, %[cm], w3, uxth\n\t" \
+    "add x23, " SB_M2L_CM ", w7, uxth\n\t" \
+    "add x12, " SB_M2L_CM ", w3, uxth\n\t" \
     "ror x10, x1, #32\n\t" \
     "ld1 {v5.b}[1], [x18]\n\t" \
-    "add x0, %[cm], x0, lsr #48\n\t" \
+    "add x0, " SB_M2L_CM ", x0, lsr #48\n\t" \
     "ld1 {v6.b}[1], [x21]\n\t" \
-    "add x2, %[cm], x2, lsr #48\n\t" \
+    "add x2, " SB_M2L_CM ", x2, lsr #48\n\t" \
     "ld1 {v7.b}[1], [x24]\n\t" \
-    "add x4, %[cm], x4, lsr #48\n\t" \
+    "add x4, " SB_M2L_CM ", x4, lsr #48\n\t" \
     "ld1 {v4.b}[2], [x11]\n\t" \
     "ror x21, x5, #32\n\t" \
     "ld1 {v5.b}[2], [x19]\n\t" \
-    "add x20, %[cm], w5, uxth\n\t" \
+    "add x20, " SB_M2L_CM ", w5, uxth\n\t" \
     "ld1 {v6.b}[2], [x22]\n\t" \
-    "add x6, %[cm], x6, lsr #48\n\t" \
+    "add x6, " SB_M2L_CM ", x6, lsr #48\n\t" \
     "ld1 {v7.b}[2], [x25]\n\t" \
-    "add x22, %[cm], w21, uxth\n\t" \
-    "add x9, %[cm], w1, uxth\n\t" \
+    "add x22, " SB_M2L_CM ", w21, uxth\n\t" \
+    "add x9, " SB_M2L_CM ", w1, uxth\n\t" \
     "ror x24, x7, #32\n\t" \
     "ld1 {v5.b}[3], [x2]\n\t" \
-    "add x11, %[cm], w10, uxth\n\t" \
+    "add x11, " SB_M2L_CM ", w10, uxth\n\t" \
     "ld1 {v4.b}[3], [x0]\n\t" \
     "ror x18, x3, #32\n\t" \
     "ld1 {v6.b}[3], [x4]\n\t" \
-    "add x25, %[cm], w24, uxth\n\t" \
+    "add x25, " SB_M2L_CM ", w24, uxth\n\t" \
     "ld1 {v7.b}[3], [x6]\n\t" \
-    "add x10, %[cm], x10, lsr #48\n\t" \
-    "ldr q21, [%[rp]]\n\t" \
-    "add x19, %[cm], w18, uxth\n\t" \
+    "add x10, " SB_M2L_CM ", x10, lsr #48\n\t" \
+    "ldr q21, [" SB_M2L_RP "]\n\t" \
+    "add x19, " SB_M2L_CM ", w18, uxth\n\t" \
     "ld1 {v4.b}[4], [x9]\n\t" \
-    "add x21, %[cm], x21, lsr #48\n\t" \
+    "add x21, " SB_M2L_CM ", x21, lsr #48\n\t" \
     "ld1 {v6.b}[4], [x20]\n\t" \
-    "add x18, %[cm], x18, lsr #48\n\t" \
+    "add x18, " SB_M2L_CM ", x18, lsr #48\n\t" \
     "ld1 {v5.b}[4], [x12]\n\t" \
-    "add x24, %[cm], x24, lsr #48\n\t" \
+    "add x24, " SB_M2L_CM ", x24, lsr #48\n\t" \
     "ld1 {v7.b}[4], [x23]\n\t" \
-    "add x3, %[cm], x3, lsr #48\n\t" \
+    "add x3, " SB_M2L_CM ", x3, lsr #48\n\t" \
     "ld1 {v4.b}[5], [x10]\n\t" \
     "ld1 {v6.b}[5], [x21]\n\t" \
-    "add x5, %[cm], x5, lsr #48\n\t" \
+    "add x5, " SB_M2L_CM ", x5, lsr #48\n\t" \
     "ld1 {v5.b}[5], [x18]\n\t" \
     "ld1 {v7.b}[5], [x24]\n\t" \
-    "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
-    "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
+    "smlal2 v17.4s, " SB_M2L_WT ".8h, v8.h[2]\n\t" \
+    "smlal2 v18.4s, " SB_M2L_WT ".8h, v8.h[3]\n\t" \
     "ld1 {v6.b}[6], [x22]\n\t" \
-    "add x1, %[cm], x1, lsr #48\n\t" \
+    "add x1, " SB_M2L_CM ", x1, lsr #48\n\t" \
     "ld1 {v5.b}[6], [x19]\n\t" \
-    "add %[d], %[d], %[w], lsl #1\n\t" \
+    "add " SB_M2L_D ", " SB_M2L_D ", " SB_M2L_W ", lsl #1\n\t" \
     "ld1 {v7.b}[6], [x25]\n\t" \
-    "add x7, %[cm], x7, lsr #48\n\t" \
+    "add x7, " SB_M2L_CM ", x7, lsr #48\n\t" \
     "ld1 {v4.b}[6], [x11]\n\t" \
     "ld1 {v6.b}[7], [x5]\n\t" \
-    "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t" \
+    "smlal2 v29.4s, " SB_M2L_WT ".8h, v8.h[4]\n\t" \
     "ld1 {v7.b}[7], [x7]\n\t" \
     "ld1 {v4.b}[7], [x1]\n\t" \
     "ld1 {v5.b}[7], [x3]\n\t" \
-    "add x8, %[d], %[w]\n\t" \
-    "add %[rp], %[rp], #32\n\t" \
+    "add x8, " SB_M2L_D ", " SB_M2L_W "\n\t" \
+    "add " SB_M2L_RP ", " SB_M2L_RP ", #32\n\t" \
     "b.ne 1b\n\t"
 
 // A group's entry (asm/neon_block_a53g.h's SB_A53_HEAD2, the numerators' << 2 in their weights
@@ -274,29 +288,29 @@ constexpr int16_t kM2LWt[2][8] = {{64, 48, 32, 16, 0, 16, 32, 48}, {256, 192, 12
 // loaded before it (SB_M2L_LOADS: at the previous group's exit, so their latency overlaps its
 // stores and state steps).
 #define SB_M2L_LOADS \
-  "ldr q0, [%[t0]]\n\t" \
-  "ldr q8, [%[t0], %[w]]\n\t" \
-  "ldr q21, [%[rp]]\n\t" \
-  "ldr q26, [%[rp], #16]\n\t" \
-  "add %[rp], %[rp], #32\n\t"
+  "ldr q0, [" SB_M2L_T0 "]\n\t" \
+  "ldr q8, [" SB_M2L_T0 ", " SB_M2L_W "]\n\t" \
+  "ldr q21, [" SB_M2L_RP "]\n\t" \
+  "ldr q26, [" SB_M2L_RP ", #16]\n\t" \
+  "add " SB_M2L_RP ", " SB_M2L_RP ", #32\n\t"
 #define SB_M2L_HEAD \
-  "sub %[d], x26, %[w], lsl #1\n\t" \
-  "smull v22.4s, %[wt4].4h, v0.h[0]\n\t" \
-  "smull v23.4s, %[wt4].4h, v0.h[1]\n\t" \
-  "smull v19.4s, %[wt4].4h, v0.h[2]\n\t" \
-  "smull v20.4s, %[wt4].4h, v0.h[3]\n\t" \
-  "smull v16.4s, %[wt].4h, v8.h[0]\n\t" \
-  "smull v17.4s, %[wt].4h, v8.h[1]\n\t" \
-  "smull v18.4s, %[wt].4h, v8.h[2]\n\t" \
-  "smull v29.4s, %[wt].4h, v8.h[3]\n\t" \
-  "smlal2 v22.4s, %[wt4].8h, v0.h[1]\n\t" \
-  "smlal2 v23.4s, %[wt4].8h, v0.h[2]\n\t" \
-  "smlal2 v19.4s, %[wt4].8h, v0.h[3]\n\t" \
-  "smlal2 v20.4s, %[wt4].8h, v0.h[4]\n\t" \
-  "smlal2 v16.4s, %[wt].8h, v8.h[1]\n\t" \
-  "smlal2 v17.4s, %[wt].8h, v8.h[2]\n\t" \
-  "smlal2 v18.4s, %[wt].8h, v8.h[3]\n\t" \
-  "smlal2 v29.4s, %[wt].8h, v8.h[4]\n\t"
+  "sub " SB_M2L_D ", x26, " SB_M2L_W ", lsl #1\n\t" \
+  "smull v22.4s, " SB_M2L_WT4 ".4h, v0.h[0]\n\t" \
+  "smull v23.4s, " SB_M2L_WT4 ".4h, v0.h[1]\n\t" \
+  "smull v19.4s, " SB_M2L_WT4 ".4h, v0.h[2]\n\t" \
+  "smull v20.4s, " SB_M2L_WT4 ".4h, v0.h[3]\n\t" \
+  "smull v16.4s, " SB_M2L_WT ".4h, v8.h[0]\n\t" \
+  "smull v17.4s, " SB_M2L_WT ".4h, v8.h[1]\n\t" \
+  "smull v18.4s, " SB_M2L_WT ".4h, v8.h[2]\n\t" \
+  "smull v29.4s, " SB_M2L_WT ".4h, v8.h[3]\n\t" \
+  "smlal2 v22.4s, " SB_M2L_WT4 ".8h, v0.h[1]\n\t" \
+  "smlal2 v23.4s, " SB_M2L_WT4 ".8h, v0.h[2]\n\t" \
+  "smlal2 v19.4s, " SB_M2L_WT4 ".8h, v0.h[3]\n\t" \
+  "smlal2 v20.4s, " SB_M2L_WT4 ".8h, v0.h[4]\n\t" \
+  "smlal2 v16.4s, " SB_M2L_WT ".8h, v8.h[1]\n\t" \
+  "smlal2 v17.4s, " SB_M2L_WT ".8h, v8.h[2]\n\t" \
+  "smlal2 v18.4s, " SB_M2L_WT ".8h, v8.h[3]\n\t" \
+  "smlal2 v29.4s, " SB_M2L_WT ".8h, v8.h[4]\n\t"
 
 // The rows from L + 16 TH to e (> L + 16 TH) as repeats of the TH rows at L (TH 4, 8 or 16),
 // stored from registers, a period a step (up to 16 TH - 64 bytes past e: the buffer has room).
@@ -636,10 +650,14 @@ inline void m2l_rows32(const uint8_t* texels, int th, int t0, int h, int c0, uin
   }
 }
 
-// The lean path (see the top), entered from surface_block_neon_inorder (asm/neon_block_mip3l.h)
-// on mip 2 by a branch, under the symbol SB_M2L_SYM, with surface_block's arguments; the shapes
+// The lean path (see the top), entered from asm/neon_block_mip2f.h's assembly (SB_M2L_SYM, the
+// target of surface_block_neon_inorder's mip-2 branch) by a branch, under the symbol SB_M2L_CXX,
+// with surface_block's arguments; the shapes
 // it does not take go on (tail call, arguments untouched) to surface_block_inorder (asm/neon.cpp).
 #define SB_M2L_SYM "_ZN2sb4simd6detail23surface_block_mip2_leanEPKtiPKhiiiiiiiS5_Ph"
+// (this C++ function's own symbol: asm/neon_block_mip2f.h's assembly is SB_M2L_SYM, and comes here
+// for the shapes it does not take)
+#define SB_M2L_CXX "_ZN2sb4simd6detail27surface_block_mip2_lean_cxxEPKtiPKhiiiiiiiS5_Ph"
 namespace {  // (asm/neon.cpp defines it in this nested unnamed namespace)
 __attribute__((noipa, used)) void surface_block_inorder(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
                                                         int th, int mip, int soff, int toff, int width, int height,
@@ -648,7 +666,7 @@ __attribute__((noipa, used)) void surface_block_inorder(const uint16_t* grid, in
 }  // namespace
 __attribute__((noipa, used)) void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw,
                                                           int th, int mip, int soff, int toff, int width, int height,
-                                                          const uint8_t* colormap, uint8_t* out) asm(SB_M2L_SYM);
+                                                          const uint8_t* colormap, uint8_t* out) asm(SB_M2L_CXX);
 void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels, int tw, int th, int mip, int soff,
                              int toff, int width, int height, const uint8_t* colormap, uint8_t* out) {
   if ((tw != 4 && tw != 8 && tw != 16 && tw != 32) || (width & 15) || width < 16 || height <= 0 || height > kM2LMaxHeight ||
@@ -737,6 +755,8 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 #undef SB_M2L_GROUPS
 }
 
+#include "asm/neon_block_mip2f.h"
+
 #undef SB_M2L_A
 #undef SB_M2L_STR
 #undef SB_M2L_STR2
@@ -745,6 +765,18 @@ void surface_block_mip2_lean(const uint16_t* grid, int gw, const uint8_t* texels
 #undef SB_M2L_B
 #undef SB_M2L_HEAD
 #undef SB_M2L_LOADS
+#undef SB_M2L_D
+#undef SB_M2L_RP
+#undef SB_M2L_Q
+#undef SB_M2L_ETE
+#undef SB_M2L_T0
+#undef SB_M2L_CM
+#undef SB_M2L_W
+#undef SB_M2L_J0
+#undef SB_M2L_J1
+#undef SB_M2L_WT
+#undef SB_M2L_WT4
+#undef SB_M2L_CXX
 
 #endif  // __aarch64__
 

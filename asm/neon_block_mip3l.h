@@ -768,8 +768,9 @@ namespace {
 
 // The neon_a53 variant's surface_block (asm/surface_block.h's contract), all in assembly:
 // mips 0-1 and the mip-3 shapes the lean path does not take go on to surface_block_inorder
-// (asm/neon.cpp) with the arguments untouched, mip 2 to asm/neon_block_mip2l.h's lean path
-// (which goes on there for the shapes it does not take). The lean path: mip 3, texture width 2..16 and
+// (asm/neon.cpp) with the arguments untouched, mip 2 to asm/neon_block_mip2f.h (SB_M2L_SYM:
+// its 16 x 16 block, else the lean C++ path of asm/neon_block_mip2l.h, which goes on there for
+// the shapes it does not take). The lean path: mip 3, texture width 2..16 and
 // height 2..64 powers of two with tw th >= 16, surface width 16..512 a multiple of 16, height
 // > 0. Its frame: [sp, 64) the groups' state (t0 at 24, bands at 32, rows 2 and 3's offsets at
 // 48, 56), [64, 160) the saved x19-x24, x26, x28, x29, x30, then the buffer of laid-out rows
@@ -867,7 +868,7 @@ asm(".pushsection .text.sb_neon_a53_block, \"ax\", %progbits\n\t"
     "3:\n\t"  // (a group enters with x1, x6, x7, x10, x11 set; the bands keep x6, x7, x29)
     SB_MIP3L_ENTRY "b.ne 1b\n\t"
     "b 9b\n\t"
-    ".Lsb_m3l_mip012:\n\t"  // (mip 2: asm/neon_block_mip2l.h's lean path, which goes on to REST itself)
+    ".Lsb_m3l_mip012:\n\t"  // (mip 2: SB_M2L_SYM, asm/neon_block_mip2f.h; it goes on to REST itself)
     "cmp w5, #2\n\t"
     "b.eq " SB_M2L_SYM "\n\t"
     "b " SB_MIP3L_REST "\n\t"

@@ -447,6 +447,45 @@ TEST(AsmSurfaceBlock, Mip2LeanPath) {
   std::printf("[ asm      ] surface_block mip 2 lean path: %d cases compared\n", cases);
 }
 
+// AArch64 neon_a53's mip-2 16 x 16 block in assembly (asm/neon_block_mip2f.h): every column
+// and row offset (multiples of 4, negative too), widths a multiple of 64 (one to
+// eight table passes), band counts of every remainder mod 4 (the table's four-row steps and
+// single rows), heights up to the limits (512 rows; the table's (h / 4 + 3) w <= 16384 bytes)
+// and just past them, and the shapes next to it (widths 16, 48, 80; 8- and 32-tall textures;
+// row offsets not a multiple of 4 are outside the contract).
+TEST(AsmSurfaceBlock, Mip2SixteenSquareTextures) {
+  std::mt19937 rng(1616);
+  int cases = 0;
+  for (const Kernels* k : tuned_variants("surface_block")) {
+    for (int i = 0; i < 32; ++i) {
+      const int soff = 4 * (i % 8 - 4), toff = 4 * (int(rng() % 9) - 4);
+      const int ws[] = {64, 128, 192, 256, 320, 448, 512};
+      const int hs[] = {4, 8, 12, 16, 20, 24, 28, 64, 68};
+      const int w = ws[rng() % 7], h = hs[rng() % 9];
+      check_block(k, rng, BlockCase{2, w, h, 16, 16, soff, toff, w / 4 + 1 + int(rng() % 3)}, Light(rng() % 6), false);
+      ++cases;
+    }
+    for (int toff = -16; toff < 16; toff += 4) {
+      check_block(k, rng, BlockCase{2, 64, 64, 16, 16, 4, toff, 17}, Light::kRandom, false);
+      ++cases;
+    }
+    const BlockCase edge[] = {
+        {2, 64, 512, 16, 16, 4, -8, 17},     {2, 64, 516, 16, 16, 4, -8, 17},     // rows: 512, past
+        {2, 512, 116, 16, 16, -4, 12, 129},  {2, 512, 120, 16, 16, -4, 12, 129},  // table: at, past
+        {2, 448, 132, 16, 16, 8, 4, 113},    {2, 448, 136, 16, 16, 8, 4, 113},
+        {2, 128, 500, 16, 16, 8, -4, 33},    {2, 128, 504, 16, 16, 8, -4, 33},
+        {2, 16, 64, 16, 16, 0, 0, 5},        {2, 48, 64, 16, 16, 0, 4, 13},       // not a multiple of 64
+        {2, 80, 36, 16, 16, 8, 8, 21},       {2, 64, 36, 16, 8, 8, 8, 17},        // th 8
+        {2, 64, 36, 16, 32, 8, 8, 17},       {2, 64, 36, 32, 16, 8, 8, 17},       // th 32, tw 32
+    };
+    for (const BlockCase& c : edge) {
+      check_block(k, rng, c, Light(rng() % 6), false);
+      ++cases;
+    }
+  }
+  std::printf("[ asm      ] surface_block mip 2, 16 x 16 textures: %d cases compared\n", cases);
+}
+
 // ---------------------------------------------------------------- z span
 
 TEST(AsmZSpan, EveryVariantMatchesScalar) {
