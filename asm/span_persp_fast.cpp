@@ -625,7 +625,18 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
-  if constexpr (kCurve && kLastSteps) {
+#if defined(__aarch64__)
+  constexpr bool kLinDiv = !kCurve;
+#else
+  constexpr bool kLinDiv = false;
+#endif
+  if constexpr (kLinDiv) {
+    // aarch64 linear (zc is 0 here, so curve is 0: run_steps' linear steps): delta / steps
+    // truncated, two sdiv (no jump table, no call); steps 0 (s2 = s1, delta 0) gives 0.
+    // 0 <= u, v < 2^31: the deltas fit int32.
+    const int32_t sd = steps > 0 ? steps : 1;
+    lu = RunSteps{(s2.u - s1.u) / sd, 0}, lv = RunSteps{(s2.v - s1.v) / sd, 0};
+  } else if constexpr (kCurve && kLastSteps) {
     last_steps(steps, s1, s2, curve, &lu, &lv);
   } else {
     run_steps_uv(steps, s1, s2, curve, &lu, &lv);
