@@ -834,10 +834,17 @@ SB_INLINE bool is_long_a64(const PerspItem& x) {
 SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
+// Consecutive long items are drawn in this function's loop (one frame for the run of them).
 __attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
-  persp_long_a64_inl(dest, n, texels, width, p);
-  if (next != end) return batch_from(next, end, texels, width);
+  const PerspSpan* q = &p;
+  for (;;) {
+    persp_long_a64_inl(dest, n, texels, width, *q);
+    if (next == end) return;
+    if (!is_long_a64(*next)) return batch_from(next, end, texels, width);
+    dest = next->dest, n = next->n, q = &next->span;
+    ++next;
+  }
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first
 // of the batch's items left, then the rest: reached and left with tail branches, as above.
