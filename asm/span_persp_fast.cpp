@@ -835,6 +835,10 @@ SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
 // Consecutive long items are drawn in this function's loop (one frame for the run of them).
+// persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
+SB_INLINE bool is_lin_a64(const PerspItem& x) {
+  return (x.n > kShortMax) & ((!x.span.second_order) | (x.span.dzi == 0.0));
+}
 __attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   const PerspSpan* q = &p;
@@ -848,10 +852,17 @@ __attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first
 // of the batch's items left, then the rest: reached and left with tail branches, as above.
+// Consecutive such items are drawn in this function's loop.
 __attribute__((noinline)) void persp_lin_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                              const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
-  persp_fast_inl<false>(dest, n, texels, width, p);
-  if (next != end) return batch_from(next, end, texels, width);
+  const PerspSpan* q = &p;
+  for (;;) {
+    persp_fast_inl<false>(dest, n, texels, width, *q);
+    if (next == end) return;
+    if (!is_lin_a64(*next)) return batch_from(next, end, texels, width);
+    dest = next->dest, n = next->n, q = &next->span;
+    ++next;
+  }
 }
 #endif
 
@@ -894,7 +905,7 @@ SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width,
 // a tail branch too.
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   if (it != end && is_long_a64(*it)) return persp_long_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
-  if (it != end && ((it->n > kShortMax) & ((!it->span.second_order) | (it->span.dzi == 0.0)))) {
+  if (it != end && is_lin_a64(*it)) {
     return persp_lin_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
   }
   return spans_range(it, end, texels, width);
