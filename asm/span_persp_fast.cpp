@@ -222,6 +222,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   constexpr bool kEarlyB = false;
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
+  // aarch64 linear: the tail's samples r + 2, r + 3 as the vector loop converted them (that
+  // loop always runs there: n > kShortMax = 64 > 48), and its last steps by sdiv (below).
+#if defined(__aarch64__) && defined(__GNUC__)
+  constexpr bool kPre = !kCurve;
+#else
+  constexpr bool kPre = false;
+#endif
+  Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
   {
     // aarch64: the passes drawn by lin_slot (above); the samples' double arithmetic in
@@ -282,6 +290,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
       }
       const uint64_t w64 = uint64_t(width);
+      uint64_t xo0 = 0, xo1 = 0;  // linear: samples r, r + 1 packed as the last pass read them
       do {
         int32x2_t n4, n5;
         uint64_t x1p = 0, x2p = 0, x3p = 0;
@@ -427,17 +436,31 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         slot(integral_constant<int, 9>{});
         dest += 32;
         left -= 32;
+        if constexpr (kPre) xo0 = x2p, xo1 = x3p;  // n2, n3 clamped (stage 0)
         n0 = n2, n1 = n3, n2 = n4, n3 = n5;
         if constexpr (kCurve) zp = z23, zs = zsn;
         z23 = z45, pos23 = pos45;
       } while (left > 48);
       // The state the tail below reads (it takes no position from P); run r's steps again.
-      s0 = Sample{vget_lane_s32(n0, 0), vget_lane_s32(n0, 1), vgetq_lane_f64(zp, 0)};
-      s1 = Sample{vget_lane_s32(n1, 0), vget_lane_s32(n1, 1), vgetq_lane_f64(zp, 1)};
+      if constexpr (kPre) {  // n0, n1 not kept: one vector register fewer through the loop
+        s0 = Sample{int32_t(uint32_t(xo0)), int32_t(uint32_t(xo0 >> 32)), vgetq_lane_f64(zp, 0)};
+        s1 = Sample{int32_t(uint32_t(xo1)), int32_t(uint32_t(xo1 >> 32)), vgetq_lane_f64(zp, 1)};
+      } else {
+        s0 = Sample{vget_lane_s32(n0, 0), vget_lane_s32(n0, 1), vgetq_lane_f64(zp, 0)};
+        s1 = Sample{vget_lane_s32(n1, 0), vget_lane_s32(n1, 1), vgetq_lane_f64(zp, 1)};
+      }
       su = steps16<kCurve>(s0.u, s1.u, zc * 0.5 * (s0.z + s1.z));
       sv = steps16<kCurve>(s0.v, s1.v, zc * 0.5 * (s0.z + s1.z));
       z2 = vgetq_lane_f64(z23, 0), z3 = vgetq_lane_f64(z23, 1);
       pos2 = vgetq_lane_f64(pos23, 0), pos3 = vgetq_lane_f64(pos23, 1);
+      if constexpr (kPre) {
+        // n2, n3 converted (fcvtzu #16, uqxtn), here min-clamped: sample(pos2, z2) and
+        // sample(pos3, z3), the same bits (as the loop's next pass would use them, see above).
+        const int32x2_t m2 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n2), kMaxU));
+        const int32x2_t m3 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n3), kMaxU));
+        t2 = Sample{vget_lane_s32(m2, 0), vget_lane_s32(m2, 1), z2};
+        t3 = Sample{vget_lane_s32(m3, 0), vget_lane_s32(m3, 1), z3};
+      }
     }
   }
 #endif
@@ -560,7 +583,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   }
 #endif
   if (left > 32) {  // one run more whose next run is full and not the last
-    const Sample s2 = sample(pos2, z2);
+    const Sample s2 = kPre ? t2 : sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
     const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
     draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
@@ -573,6 +596,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     sv = v1;
     z2 = z3;
     pos2 = pos3;
+    t2 = t3;
   }
   // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
@@ -622,10 +646,16 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
-  const Sample s2 = steps > 0 ? sample(pos2, z2) : s1;
+  const Sample s2 = steps > 0 ? (kPre ? t2 : sample(pos2, z2)) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
-  if constexpr (kCurve && kLastSteps) {
+  if constexpr (kPre) {
+    // aarch64 linear (zc is 0 here, so curve is 0: run_steps' linear steps): delta / steps
+    // truncated, two sdiv (no jump table, no call); steps 0 (s2 = s1, delta 0) gives 0.
+    // 0 <= u, v < 2^31: the deltas fit int32.
+    const int32_t sd = steps > 0 ? steps : 1;
+    lu = RunSteps{(s2.u - s1.u) / sd, 0}, lv = RunSteps{(s2.v - s1.v) / sd, 0};
+  } else if constexpr (kCurve && kLastSteps) {
     last_steps(steps, s1, s2, curve, &lu, &lv);
   } else {
     run_steps_uv(steps, s1, s2, curve, &lu, &lv);
@@ -823,17 +853,35 @@ SB_INLINE bool is_long_a64(const PerspItem& x) {
 SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
+// Consecutive long items are drawn in this function's loop (one frame for the run of them).
+// persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
+SB_INLINE bool is_lin_a64(const PerspItem& x) {
+  return (x.n > kShortMax) & ((!x.span.second_order) | (x.span.dzi == 0.0));
+}
 __attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
-  persp_long_a64_inl(dest, n, texels, width, p);
-  if (next != end) return batch_from(next, end, texels, width);
+  const PerspSpan* q = &p;
+  for (;;) {
+    persp_long_a64_inl(dest, n, texels, width, *q);
+    if (next == end) return;
+    if (!is_long_a64(*next)) return batch_from(next, end, texels, width);
+    dest = next->dest, n = next->n, q = &next->span;
+    ++next;
+  }
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first
 // of the batch's items left, then the rest: reached and left with tail branches, as above.
+// Consecutive such items are drawn in this function's loop.
 __attribute__((noinline)) void persp_lin_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                              const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
-  persp_fast_inl<false>(dest, n, texels, width, p);
-  if (next != end) return batch_from(next, end, texels, width);
+  const PerspSpan* q = &p;
+  for (;;) {
+    persp_fast_inl<false>(dest, n, texels, width, *q);
+    if (next == end) return;
+    if (!is_lin_a64(*next)) return batch_from(next, end, texels, width);
+    dest = next->dest, n = next->n, q = &next->span;
+    ++next;
+  }
 }
 #endif
 
@@ -876,7 +924,7 @@ SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width,
 // a tail branch too.
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   if (it != end && is_long_a64(*it)) return persp_long_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
-  if (it != end && ((it->n > kShortMax) & ((!it->span.second_order) | (it->span.dzi == 0.0)))) {
+  if (it != end && is_lin_a64(*it)) {
     return persp_lin_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
   }
   return spans_range(it, end, texels, width);

@@ -201,6 +201,36 @@ TEST(AsmSpanPerspBatch, RunsOfLongSpansMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of long ones, every variant identical\n", spans);
 }
 
+// Batches of long spans all of one kind (aarch64: consecutive second-order spans over 80 px
+// drawn in persp_long_a64's loop, consecutive linear ones over 64 px in persp_lin_a64's, one
+// frame for the run), every length 65 .. 300 (each tail length after the passes), then a
+// span of another kind or length ending the run; the batch's items against the reference.
+TEST(AsmSpanPerspBatch, RunsOfOneKindOfLongSpanMatch) {
+  std::mt19937 rng(1921);
+  const int sw = 61, sh = 23;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 13 + (i >> 5));
+  long spans = 0;
+  for (int kind = 0; kind < 3; ++kind) {  // second order, linear (second_order off), dzi == 0
+    for (int n0 = 65; n0 <= 300; n0 += 5) {
+      std::vector<PerspItem> items;
+      const int count = 2 + int(rng() % 6);
+      for (int i = 0; i < count; ++i) {
+        PerspSpan p = pick_span(rng, sw, sh);
+        p.second_order = kind != 1;
+        if (kind == 2) p.dzi = 0.0;
+        if (kind == 0 && p.dzi == 0.0) p.dzi = 1e-5;
+        items.push_back(PerspItem{nullptr, n0 + i % 5, p});
+      }
+      PerspSpan last = pick_span(rng, sw, sh);  // another kind ends the run, or none
+      if (rng() % 2) items.push_back(PerspItem{nullptr, int(rng() % 300), last});
+      ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " kind " << kind << " n " << n0;
+      spans += long(items.size());
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of one long kind, every variant identical\n", spans);
+}
+
 // A long batch of long spans only (aarch64: each one reached and left by tail branches,
 // batch_from -> persp_long_a64 / persp_lin_a64 -> batch_from): 100000 items in one call
 // must not nest a frame per item (that would overflow the stack and crash here); the tuned
