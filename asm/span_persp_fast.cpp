@@ -823,6 +823,20 @@ SB_INLINE bool is_long_a64(const PerspItem& x) {
 SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
+// The pair chain's next pair (spans_range): has2 = it[2] and it[3] inside the batch (it + 3 <
+// end), xp = it + 2 then, else it (items read again, never past end). csel, not a branch:
+// the test stays in the block of the pair's samples.
+SB_INLINE void next_pair_at(const PerspItem* it, const PerspItem* end, const PerspItem*& xp, uint32_t& has2) {
+  uint64_t t;
+  __asm__("add %[t], %[it], %[o3]\n\t"
+          "cmp %[e], %[t]\n\t"
+          "add %[t], %[it], %[o2]\n\t"
+          "csel %[xp], %[t], %[it], hi\n\t"
+          "cset %w[h], hi"
+          : [t] "=&r"(t), [xp] "=&r"(xp), [h] "=r"(has2)
+          : [it] "r"(it), [e] "r"(end), [o3] "i"(3 * sizeof(PerspItem)), [o2] "i"(2 * sizeof(PerspItem))
+          : "cc");
+}
 __attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   persp_long_a64_inl(dest, n, texels, width, p);
@@ -914,14 +928,25 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     const bool has_next = it + 1 != end;
     const PerspItem& b = has_next ? it[1] : it[0];
     if (sa & ca & pairable_a64(b) & has_next) {
-      short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
+      // A chain of pairs: the next pair's test (it[2], it[3] both pairable, inside the batch)
+      // computed before this pair's samples block, without branches (x, y are it[2], it[3],
+      // or it[0], it[1] again when fewer than two items follow: no read past end), so the
+      // loop goes from pair to pair on one flag.
+      bool again;
+      do {
+        const PerspItem* xp;
+        uint32_t has2;
+        next_pair_at(it, end, xp, has2);
+        again = has2 & pairable_a64(xp[0]) & pairable_a64(xp[1]);
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
 #pragma GCC unroll 1
-      for (int j = 0; j < 2; ++j, ++it) {
-        const ShortSamples& q = s[j];
-        const int runs = (it->n + 15) >> 4, last = it->n - 16 * (runs - 1);
-        short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
-                         q.c01, q.c23);
-      }
+        for (int j = 0; j < 2; ++j, ++it) {
+          const ShortSamples& q = s[j];
+          const int runs = (it->n + 15) >> 4, last = it->n - 16 * (runs - 1);
+          short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
+                           q.c01, q.c23);
+        }
+      } while (again);
       continue;
     }
     persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);
