@@ -928,17 +928,25 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     const bool has_next = it + 1 != end;
     const PerspItem& b = has_next ? it[1] : it[0];
     if (sa & ca & pairable_a64(b) & has_next) {
-      // A chain of pairs: the next pair's test (it[2], it[3] both pairable, inside the batch)
-      // computed before this pair's samples block, without branches (x, y are it[2], it[3],
-      // or it[0], it[1] again when fewer than two items follow: no read past end), so the
-      // loop goes from pair to pair on one flag.
-      bool again;
+      // A chain of pairs: the next pair's test (xp[0], xp[1] = it[2], it[3] both pairable_a64,
+      // it + 3 < end) without branches, its fields loaded before this pair's samples block
+      // and tested after it (the empty asm keeps the tests there: the A53 waits on no load),
+      // so the loop goes from pair to pair on one flag. Fewer than two items after the pair:
+      // xp = it (read again, never past end), has2 false.
+      uint32_t again;
       do {
         const PerspItem* xp;
         uint32_t has2;
         next_pair_at(it, end, xp, has2);
-        again = has2 & pairable_a64(xp[0]) & pairable_a64(xp[1]);
+        uint32_t n0 = uint32_t(xp[0].n), n1 = uint32_t(xp[1].n);
+        uint32_t so = xp[0].span.second_order & xp[1].span.second_order;
+        uint64_t z0, z1;
+        __asm__("ldr %x0, %1" : "=r"(z0) : "m"(xp[0].span.dzi));
+        __asm__("ldr %x0, %1" : "=r"(z1) : "m"(xp[1].span.dzi));
         short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
+        __asm__ volatile("" : "+r"(n0), "+r"(n1), "+r"(so), "+r"(z0), "+r"(z1), "+r"(has2));
+        again = has2 & so & (n0 - 17u < uint32_t(kShortMax - 16)) & (n1 - 17u < uint32_t(kShortMax - 16)) &
+                ((z0 << 1) != 0) & ((z1 << 1) != 0);
 #pragma GCC unroll 1
         for (int j = 0; j < 2; ++j, ++it) {
           const ShortSamples& q = s[j];
