@@ -803,7 +803,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
 // with tail branches (the compiler's sibling calls): a long first item of the items left
 // costs no call. A long item after a shorter one in the loop (spans_range, via persp_one) is
 // still called, with next == end. Without sibling calls (-O0) each chained long item nests
-// one frame.
+// one frame. Page-aligned: where its loop's code falls against 4 KiB pages (where qemu cuts
+// the blocks bench/count.sh times) does not move with the size of the code before it.
 void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 // dzi != 0.0 on its bits (integer ops: no FP compare; NaN and the infinities are non-zero),
@@ -837,7 +838,7 @@ SB_INLINE void next_pair_at(const PerspItem* it, const PerspItem* end, const Per
           : [it] "r"(it), [e] "r"(end), [o3] "i"(3 * sizeof(PerspItem)), [o2] "i"(2 * sizeof(PerspItem))
           : "cc");
 }
-__attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
+__attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   persp_long_a64_inl(dest, n, texels, width, p);
   if (next != end) return batch_from(next, end, texels, width);
