@@ -944,16 +944,18 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
         uint64_t z0, z1;
         __asm__("ldr %x0, %1" : "=r"(z0) : "m"(xp[0].span.dzi));
         __asm__("ldr %x0, %1" : "=r"(z1) : "m"(xp[1].span.dzi));
-        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
+        ShortSamples q;
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1]);
         __asm__ volatile("" : "+r"(n0), "+r"(n1), "+r"(so), "+r"(z0), "+r"(z1), "+r"(has2));
         again = has2 & so & (n0 - 17u < uint32_t(kShortMax - 16)) & (n1 - 17u < uint32_t(kShortMax - 16)) &
                 ((z0 << 1) != 0) & ((z1 << 1) != 0);
+        // Span a's rest on the block's registers, then span b's on its stored samples.
 #pragma GCC unroll 1
         for (int j = 0; j < 2; ++j, ++it) {
-          const ShortSamples& q = s[j];
           const int runs = (it->n + 15) >> 4, last = it->n - 16 * (runs - 1);
           short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
                            q.c01, q.c23);
+          q = s[1];
         }
       } while (again);
       continue;
