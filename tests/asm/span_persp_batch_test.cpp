@@ -177,6 +177,56 @@ TEST(AsmSpanPerspBatch, ShortSecondOrderPairsMatchWithEdgeDepths) {
   std::printf("[ asm      ] span_persp batch: %ld short spans in pairs, every variant identical\n", spans);
 }
 
+// Chains of pairs (aarch64: the batch loop goes from pair to pair on one flag, the next pair's
+// test computed inside the pair before): runs of 0 .. 11 pairable spans (17 .. 64 pixels,
+// second order, dzi != 0), each run ended by one span that fails exactly one of the tests
+// (n 16 or 65 or 0, linear, dzi +-0, or none: a NaN dzi pairs), so the chain breaks at
+// either span of a next pair, at the batch's end with 0 .. 3 items left, or not at all.
+TEST(AsmSpanPerspBatch, ChainsOfPairsMatchWhereTheyBreak) {
+  std::mt19937 rng(1357);
+  const int sw = 45, sh = 29;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 13 + 5);
+  auto pairable = [&]() {
+    PerspSpan p{};
+    const double depth = 0.002 + 0.05 * double(rng() % 1000) / 1000.0;
+    p.dzi = depth * (double(rng() % 2001) - 1000.0) / 640000.0;
+    if (p.dzi == 0.0) p.dzi = 1e-7;
+    p.zi0 = depth + std::fabs(p.dzi) * 640.0;
+    p.uz0 = sw * p.zi0 * 0.7, p.duz = sw * p.dzi * 0.9;
+    p.vz0 = sh * p.zi0 * 0.4, p.dvz = -sh * p.dzi * 0.3;
+    p.px0 = double(rng() % 600) + 0.5;
+    p.umax = int32_t((uint32_t(sw) << 16) - 1), p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = true;
+    return PerspItem{nullptr, 17 + int(rng() % 48), p};
+  };
+  long spans = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<PerspItem> items;
+    const int runs = 1 + int(rng() % 4);
+    for (int r = 0; r < runs; ++r) {
+      const int len = int(rng() % 12);
+      for (int i = 0; i < len; ++i) items.push_back(pairable());
+      if (r == runs - 1 && rng() % 2) break;  // the batch ends in the chain
+      PerspItem x = pairable();
+      switch (rng() % 8) {
+        case 0: x.n = 16; break;
+        case 1: x.n = 65; break;
+        case 2: x.n = 0; break;
+        case 3: x.span.second_order = false; break;
+        case 4: x.span.dzi = 0.0; break;
+        case 5: x.span.dzi = -0.0; break;
+        case 6: x.span.dzi = std::numeric_limits<double>::quiet_NaN(); break;
+        default: break;
+      }
+      items.push_back(x);
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in chains of pairs, every variant identical\n", spans);
+}
+
 // Runs of long spans (aarch64: a long first item of the items left is reached and left with
 // tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
 // order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
