@@ -25,6 +25,13 @@ static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && 
                   offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
                   offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
               "short_samples2's loads");
+// The next pair's test (short_samples2's core work): item fields at these offsets (next
+// items at it + 2 (176), it + 3 (264): n at 8, second_order at 80, dzi at 24 from an item);
+// the n range 17 .. kShortMax as n - 17 < 48 in 32 bits (the 64-bit difference with 48 negative).
+static_assert(sizeof(PerspItem) == 88 && offsetof(PerspItem, n) == 8 && offsetof(PerspItem, span) == 16 &&
+                  offsetof(PerspSpan, second_order) == 64 && sizeof(PerspItem::span.second_order) == 1 &&
+                  kShortMax - 16 == 48,
+              "short_samples2's next-pair test");
 // The block's constants (two lanes each): 16 (run to run), 1 (the Newton steps' 1 - b y),
 // the significand test's mask (the high word's sign and exponent bits), 2^1000's bits (the
 // range test), -1/16 (zck), kMinZi.
@@ -74,12 +81,19 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // [z_2 + z_3, z_3 + z_4] (the sums of the pair vectors, then trn1 / trn2 to each span), c =
 // zs (dzi * -1/16) by lane. Ordered for the in-order A53 (bench/mca_a53_pair: gen_pair.py,
 // vsched.py, order_search.py); the accumulators are loaded (ldr d, ld1 lane), not copied.
+// With it (this pair's items: it[0] = a's, it[1] = b's) and end, next = the loop's next pair
+// test: it + 3 < end and it[2], it[3] both pairable_a64 (n 17 .. kShortMax, second_order,
+// dzi's bits other than the sign not all 0), without branches: x7 = it + 2, or it again when
+// fewer than two items follow (read again, never past end); the fields loaded at the
+// block's start (among its loads), tested after its last NEON instruction (core work between
+// NEON instructions waits for their writebacks on the A53).
 // Span a's samples are left in registers (outa: for its short_rest straight after the block,
 // no store and load back), span b's stored (outb). The register names are bench/mca_a53_pair's
 // order's (pair_cur.s) renamed (v1 -> v16, v3 -> v4, v4 -> v7, v7 -> v17, v16 -> v20, v17 ->
 // v1, v20 -> v3): span a's outputs where the batch loop's short_rest takes them (fewer moves).
 SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, int nb, ShortSamples& outa,
-                              ShortSamples& outb) {
+                              ShortSamples& outb, const PerspItem* it, const PerspItem* end, uint32_t& next) {
+  uint64_t t_h, t_n0, t_n1, t_s1, t_z0, t_z1;
   register int32x4_t rS01 __asm__("v4");
   register int32x4_t rS23 __asm__("v19");
   register int32x4_t rS44 __asm__("v7");
@@ -90,18 +104,29 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
   __asm__ volatile(
 // BEGIN short_samples2
         "add x15, %[ob], #16\n\t"
+        "add x7, %[it], #264\n\t"
         "ldr d0, [%[pa], #48]\n\t"
+        "cmp %[end], x7\n\t"
         "add x12, %[pb], #48\n\t"
+        "add x7, %[it], #176\n\t"
         "ldr d5, [%[pa]]\n\t"
+        "csel x7, x7, %[it], hi\n\t"
         "ldr q16, [%[kc]]\n\t"
+        "cset %w[h], hi\n\t"
         "add x6, %[pa], #32\n\t"
+        "ldr %w[n0], [x7, #8]\n\t"
         "ldr d15, [%[pa], #8]\n\t"
         "add x14, %[ob], #8\n\t"
+        "ldr %w[n1], [x7, #96]\n\t"
         "ld1 {v0.d}[1], [x12]\n\t"
         "ldr d7, [%[oa], #16]\n\t"
+        "ldrb %w[fl], [x7, #80]\n\t"
         "ldr d4, [%[oa], #8]\n\t"
+        "ldrb %w[s1], [x7, #168]\n\t"
         "ldr d2, [%[oa]]\n\t"
+        "ldr %x[z0], [x7, #24]\n\t"
         "ldr q18, [%[kc], #16]\n\t"
+        "ldr %x[z1], [x7, #112]\n\t"
         "fadd v6.2d, v0.2d, v16.2d\n\t"
         "ld1 {v4.d}[1], [x14]\n\t"
         "ld1 {v5.d}[1], [%[pb]]\n\t"
@@ -295,13 +320,27 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmul v27.2d, v5.2d, v14.d[1]\n\t"
         "umin v13.4s, v13.4s, v18.4s\n\t"
         "stp q10, q11, [%[out], #0]\n\t"
+        "sub %w[n0], %w[n0], #17\n\t"
         "stp q13, q5, [%[out], #32]\n\t"
+        "sub %w[n1], %w[n1], #17\n\t"
         "stp q22, q27, [%[out], #64]\n\t"
-        "str q28, [%[out], #96]"
+        "lsl %x[z1], %x[z1], #1\n\t"
+        "str q28, [%[out], #96]\n\t"
+        "sub %x[n0], %x[n0], #48\n\t"
+        "sub %x[n1], %x[n1], #48\n\t"
+        "and %w[fl], %w[fl], %w[s1]\n\t"
+        "and %x[n0], %x[n0], %x[n1]\n\t"
+        "and %w[fl], %w[fl], %w[h]\n\t"
+        "tst %x[z0], #0x7fffffffffffffff\n\t"
+        "lsr %x[n0], %x[n0], #63\n\t"
+        "ccmp %x[z1], #0, #4, ne\n\t"
+        "and %w[fl], %w[fl], %w[n0]\n\t"
+        "csel %w[fl], %w[fl], wzr, ne"
 // END short_samples2
-      : "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23)
+      : "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), [fl] "=&r"(next),
+        [h] "=&r"(t_h), [n0] "=&r"(t_n0), [n1] "=&r"(t_n1), [s1] "=&r"(t_s1), [z0] "=&r"(t_z0), [z1] "=&r"(t_z1)
       : [pa] "r"(&a), [pb] "r"(&b), [out] "r"(&outb), [kc] "r"(&kPairConsts), [oa] "r"(&kShortOffsets.at[na]),
-        [ob] "r"(&kShortOffsets.at[nb])
+        [ob] "r"(&kShortOffsets.at[nb]), [it] "r"(it), [end] "r"(end)
       : "memory", "cc", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "v0", "v2", "v5", "v6",
         "v8", "v9", "v10", "v11", "v13", "v14", "v15", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26",
         "v27", "v28", "v29", "v30", "v31");
@@ -309,8 +348,9 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
   outa.zs01 = rzs01, outa.zs23 = rzs23, outa.c01 = rc01, outa.c23 = rc23;
 }
 // The same, both spans' samples in memory (out[0]: span a, out[1]: span b).
-SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, int nb, ShortSamples (&out)[2]) {
-  short_samples2(a, na, b, nb, out[0], out[1]);
+SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, int nb, ShortSamples (&out)[2],
+                              const PerspItem* it, const PerspItem* end, uint32_t& next) {
+  short_samples2(a, na, b, nb, out[0], out[1], it, end, next);
 }
 #endif
 

@@ -824,20 +824,6 @@ SB_INLINE bool is_long_a64(const PerspItem& x) {
 SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
-// The pair chain's next pair (spans_range): has2 = it[2] and it[3] inside the batch (it + 3 <
-// end), xp = it + 2 then, else it (items read again, never past end). csel, not a branch:
-// the test stays in the block of the pair's samples.
-SB_INLINE void next_pair_at(const PerspItem* it, const PerspItem* end, const PerspItem*& xp, uint32_t& has2) {
-  uint64_t t;
-  __asm__("add %[t], %[it], %[o3]\n\t"
-          "cmp %[e], %[t]\n\t"
-          "add %[t], %[it], %[o2]\n\t"
-          "csel %[xp], %[t], %[it], hi\n\t"
-          "cset %w[h], hi"
-          : [t] "=&r"(t), [xp] "=&r"(xp), [h] "=r"(has2)
-          : [it] "r"(it), [e] "r"(end), [o3] "i"(3 * sizeof(PerspItem)), [o2] "i"(2 * sizeof(PerspItem))
-          : "cc");
-}
 __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   persp_long_a64_inl(dest, n, texels, width, p);
@@ -929,26 +915,13 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     const bool has_next = it + 1 != end;
     const PerspItem& b = has_next ? it[1] : it[0];
     if (sa & ca & pairable_a64(b) & has_next) {
-      // A chain of pairs: the next pair's test (xp[0], xp[1] = it[2], it[3] both pairable_a64,
-      // it + 3 < end) without branches, its fields loaded before this pair's samples block
-      // and tested after it (the empty asm keeps the tests there: the A53 waits on no load),
-      // so the loop goes from pair to pair on one flag. Fewer than two items after the pair:
-      // xp = it (read again, never past end), has2 false.
+      // A chain of pairs: the next pair's test (it[2], it[3] both pairable_a64, it + 3 < end)
+      // in this pair's samples block (short_samples2: the fields loaded at its start, tested
+      // after its last NEON work), so the loop goes from pair to pair on one flag.
       uint32_t again;
       do {
-        const PerspItem* xp;
-        uint32_t has2;
-        next_pair_at(it, end, xp, has2);
-        uint32_t n0 = uint32_t(xp[0].n), n1 = uint32_t(xp[1].n);
-        uint32_t so = xp[0].span.second_order & xp[1].span.second_order;
-        uint64_t z0, z1;
-        __asm__("ldr %x0, %1" : "=r"(z0) : "m"(xp[0].span.dzi));
-        __asm__("ldr %x0, %1" : "=r"(z1) : "m"(xp[1].span.dzi));
         ShortSamples q;
-        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1]);
-        __asm__ volatile("" : "+r"(n0), "+r"(n1), "+r"(so), "+r"(z0), "+r"(z1), "+r"(has2));
-        again = has2 & so & (n0 - 17u < uint32_t(kShortMax - 16)) & (n1 - 17u < uint32_t(kShortMax - 16)) &
-                ((z0 << 1) != 0) & ((z1 << 1) != 0);
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again);
         // Span a's rest on the block's registers, then span b's on its stored samples.
 #pragma GCC unroll 1
         for (int j = 0; j < 2; ++j, ++it) {

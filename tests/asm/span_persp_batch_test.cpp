@@ -361,13 +361,16 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     p->second_order = true;
   };
   int fallback = 0, cases = 0;
+  sb::simd::PerspItem two[2] = {};
   for (int trial = 0; trial < 60000; ++trial) {
     PerspSpan a, b;
     pick(&a), pick(&b);
     const int na = 17 + int(rng() % 48), nb = 17 + int(rng() % 48);
     alignas(16) ShortSamples pair[2];
     std::memset(pair, 0x5a, sizeof pair);
-    sb::simd::short_samples2(a, na, b, nb, pair);
+    uint32_t next = 7;
+    sb::simd::short_samples2(a, na, b, nb, pair, two, two + 2, next);
+    ASSERT_EQ(next, 0u);  // no items after the pair
     ShortSamples sa, sbb;
     sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23);
     sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23);
