@@ -47,7 +47,9 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)",
           "persp1920lin": "surface_span_persp (1920 px, linear steps)",
           "persp64lin": "surface_span_persp (64-px spans, linear steps)",
-          "persp64single": "surface_span_persp (64-px spans, one call each)"}
+          "persp64single": "surface_span_persp (64-px spans, one call each)",
+          "persp192": "surface_span_persp (192-px spans)",
+          "persp192lin": "surface_span_persp (192-px spans, linear steps)"}
 UNIT = {"palette": "src px"}
 
 
