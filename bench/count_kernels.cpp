@@ -181,7 +181,9 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     std::vector<uint8_t> surf(size_t(kSurf) * kSurf), dest(kSpan);
     for (auto& t : surf) t = uint8_t(rng.next() >> 24);
     const bool lin = std::strstr(c, "lin") != nullptr;
-    const int len = std::strncmp(c, "persp64", 7) == 0 ? 64 : std::strncmp(c, "persp192", 8) == 0 ? 192 : kSpan;
+    // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
+    const bool len192 = std::strcmp(c, "persp192") == 0 || std::strcmp(c, "persp192lin") == 0;
+    const int len = std::strncmp(c, "persp64", 7) == 0 ? 64 : len192 ? 192 : kSpan;
     sb::simd::PerspSpan p{};
     p.zi0 = 0.004;
     p.dzi = -0.003 / kSpan;
