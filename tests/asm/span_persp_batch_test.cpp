@@ -369,8 +369,11 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     alignas(16) ShortSamples pair[2];
     std::memset(pair, 0x5a, sizeof pair);
     uint32_t next = 7;
-    sb::simd::short_samples2(a, na, b, nb, pair, two, two + 2, next);
+    int runs_a = -1, last_a = -1;
+    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a);
     ASSERT_EQ(next, 0u);  // no items after the pair
+    ASSERT_EQ(runs_a, (na + 15) >> 4);
+    ASSERT_EQ(last_a, na - 16 * (runs_a - 1));
     ShortSamples sa, sbb;
     sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23);
     sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23);
