@@ -833,7 +833,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
 // with tail branches (the compiler's sibling calls): a long first item of the items left
 // costs no call. A long item after a shorter one in the loop (spans_range, via persp_one) is
 // still called, with next == end. Without sibling calls (-O0) each chained long item nests
-// one frame.
+// one frame. Page-aligned: where its loop's code falls against 4 KiB pages (where qemu cuts
+// the blocks bench/count.sh times) does not move with the size of the code before it.
 void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 // dzi != 0.0 on its bits (integer ops: no FP compare; NaN and the infinities are non-zero),
@@ -858,7 +859,7 @@ SB_INLINE bool pairable_a64(const PerspItem& x) {
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
   return (x.n > kShortMax) & ((!x.span.second_order) | (x.span.dzi == 0.0));
 }
-__attribute__((noinline)) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
+__attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
                                               const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   const PerspSpan* q = &p;
   for (;;) {
@@ -962,14 +963,23 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     const bool has_next = it + 1 != end;
     const PerspItem& b = has_next ? it[1] : it[0];
     if (sa & ca & pairable_a64(b) & has_next) {
-      short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, s);
+      // A chain of pairs: the next pair's test (it[2], it[3] both pairable_a64, it + 3 < end)
+      // in this pair's samples block (short_samples2: the fields loaded at its start, tested
+      // after its last NEON work), so the loop goes from pair to pair on one flag.
+      uint32_t again;
+      do {
+        ShortSamples q;
+        int runs, last;  // span a's, from the block
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last);
+        // Span a's rest on the block's registers, then span b's on its stored samples.
 #pragma GCC unroll 1
-      for (int j = 0; j < 2; ++j, ++it) {
-        const ShortSamples& q = s[j];
-        const int runs = (it->n + 15) >> 4, last = it->n - 16 * (runs - 1);
-        short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
-                         q.c01, q.c23);
-      }
+        for (int j = 0; j < 2; ++j, ++it) {
+          short_rest<true>(it->dest, runs, last, texels, width, it->span.dzi, q.S01, q.S23, q.S44, q.zs01, q.zs23,
+                           q.c01, q.c23);
+          const int nb = it[1 - j].n;  // span b's n (span b itself after it: never past the pair)
+          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1);
+        }
+      } while (again);
       continue;
     }
     persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);

@@ -177,6 +177,56 @@ TEST(AsmSpanPerspBatch, ShortSecondOrderPairsMatchWithEdgeDepths) {
   std::printf("[ asm      ] span_persp batch: %ld short spans in pairs, every variant identical\n", spans);
 }
 
+// Chains of pairs (aarch64: the batch loop goes from pair to pair on one flag, the next pair's
+// test computed inside the pair before): runs of 0 .. 11 pairable spans (17 .. 64 pixels,
+// second order, dzi != 0), each run ended by one span that fails exactly one of the tests
+// (n 16 or 65 or 0, linear, dzi +-0, or none: a NaN dzi pairs), so the chain breaks at
+// either span of a next pair, at the batch's end with 0 .. 3 items left, or not at all.
+TEST(AsmSpanPerspBatch, ChainsOfPairsMatchWhereTheyBreak) {
+  std::mt19937 rng(1357);
+  const int sw = 45, sh = 29;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 13 + 5);
+  auto pairable = [&]() {
+    PerspSpan p{};
+    const double depth = 0.002 + 0.05 * double(rng() % 1000) / 1000.0;
+    p.dzi = depth * (double(rng() % 2001) - 1000.0) / 640000.0;
+    if (p.dzi == 0.0) p.dzi = 1e-7;
+    p.zi0 = depth + std::fabs(p.dzi) * 640.0;
+    p.uz0 = sw * p.zi0 * 0.7, p.duz = sw * p.dzi * 0.9;
+    p.vz0 = sh * p.zi0 * 0.4, p.dvz = -sh * p.dzi * 0.3;
+    p.px0 = double(rng() % 600) + 0.5;
+    p.umax = int32_t((uint32_t(sw) << 16) - 1), p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = true;
+    return PerspItem{nullptr, 17 + int(rng() % 48), p};
+  };
+  long spans = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<PerspItem> items;
+    const int runs = 1 + int(rng() % 4);
+    for (int r = 0; r < runs; ++r) {
+      const int len = int(rng() % 12);
+      for (int i = 0; i < len; ++i) items.push_back(pairable());
+      if (r == runs - 1 && rng() % 2) break;  // the batch ends in the chain
+      PerspItem x = pairable();
+      switch (rng() % 8) {
+        case 0: x.n = 16; break;
+        case 1: x.n = 65; break;
+        case 2: x.n = 0; break;
+        case 3: x.span.second_order = false; break;
+        case 4: x.span.dzi = 0.0; break;
+        case 5: x.span.dzi = -0.0; break;
+        case 6: x.span.dzi = std::numeric_limits<double>::quiet_NaN(); break;
+        default: break;
+      }
+      items.push_back(x);
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in chains of pairs, every variant identical\n", spans);
+}
+
 // Runs of long spans (aarch64: a long first item of the items left is reached and left with
 // tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
 // order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
@@ -341,13 +391,19 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     p->second_order = true;
   };
   int fallback = 0, cases = 0;
+  sb::simd::PerspItem two[2] = {};
   for (int trial = 0; trial < 60000; ++trial) {
     PerspSpan a, b;
     pick(&a), pick(&b);
     const int na = 17 + int(rng() % 48), nb = 17 + int(rng() % 48);
     alignas(16) ShortSamples pair[2];
     std::memset(pair, 0x5a, sizeof pair);
-    sb::simd::short_samples2(a, na, b, nb, pair);
+    uint32_t next = 7;
+    int runs_a = -1, last_a = -1;
+    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a);
+    ASSERT_EQ(next, 0u);  // no items after the pair
+    ASSERT_EQ(runs_a, (na + 15) >> 4);
+    ASSERT_EQ(last_a, na - 16 * (runs_a - 1));
     ShortSamples sa, sbb;
     sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23);
     sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23);
