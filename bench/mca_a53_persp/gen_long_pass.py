@@ -5,7 +5,9 @@
 # names, registers allocated by a linear scan over the chosen order.
 #
 #   gen_long_pass.py body OUT.s          the body in its slot order (for order_search.py)
-#   gen_long_pass.py header IN.s OUT.h   the header from a (searched) body
+#   gen_long_pass.py header IN.s OUT.h   the header from a (searched) body (--setup: the
+#        present form, with long_setup.s and the folded last pass: the header is made by
+#        gen_long_pass.py header long_pass_rv.s ../../asm/span_persp_a64long.h --setup)
 # The body's last line is the loop branch; order_search keeps register, flag and store order.
 import os, re, sys
 

@@ -2,8 +2,8 @@
 # bench/mca_a53_persp/like_order.py: a changed long pass (gen_long_pass.py with its switches set)
 # in the order of a searched body of the unchanged one: each line kept takes its searched
 # position, a replaced line the position of the line it replaces (difflib over the slot-order
-# bodies), an inserted one follows its slot-order predecessor; registers allocated as gen_long_pass.py
-# body does (slot order). A start for bench/order_search.py that keeps what the last search found.
+# bodies), an inserted one follows its slot-order predecessor; registers allocated anew
+# over that order (gen_long_pass.py's linear scan). A start for bench/order_search.py that keeps what the last search found.
 #   like_order.py OLD_SEARCHED.s OUT.s SWITCH=1 [SWITCH=1 ..]   (e.g. REUSE=1)
 import difflib, os, sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -40,9 +40,9 @@ for j in range(len(new)):
     if key[j] is None:
         key[j] = (key[j - 1] if j else -1) + 0.001
 order = sorted(range(len(new)), key=lambda j: (key[j], j))
-alloc, reg = g.allocate(new)  # in slot order, as gen_long_pass.py body does
-lines = [alloc[j] for j in order]
+lines = [new[j] for j in order]
 br = [l for l in lines if l.startswith("b.lo")]
 lines = [l for l in lines if not l.startswith("b.lo")] + br
-open(sys.argv[2], "w").write(".Lloop:\n" + "\n".join(lines) + "\n")
+out, reg = g.allocate(lines)  # over this order (an allocation in slot order need not hold in it)
+open(sys.argv[2], "w").write(".Lloop:\n" + "\n".join(out) + "\n")
 print(len(old), "->", len(new), "lines")

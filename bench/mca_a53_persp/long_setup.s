@@ -4,54 +4,54 @@
 // nC x27), run 0's chains (c1 x14, e0 x17, e1 x19, dd4 x20), pp v24, z23 v26, cc v27, zsn v29,
 // k16 v18, k32 v19, kOne v20, and the stack slots [sp] kZrow, [sp, #16] kUVrow, [sp, #32] lim,
 // [sp, #48] offl (sp already lowered by 64).
-ldr d0, [x1, #0]
-ldr q1, [x1, #32]
-ldr q2, [x1, #32]
 fmov v18.2d, #16.0
-ldr q3, [x1, #48]
+ldr d0, [x1, #0]
 fadd d5, d0, d18
+ldr q3, [x1, #48]
 ldr q4, [x1, #48]
-fadd v19.2d, v18.2d, v18.2d
-ldr q6, [x1, #48]
-str q1, [sp]
-ldr q25, [x1, #48]
+ldr q1, [x1, #32]
 mov v0.d[1], v5.d[0]
-str q3, [sp, #16]
-ldr q7, [x1, #64]
 fadd d24, d5, d18
-ldr x2, [x1, #8]
+fadd v19.2d, v18.2d, v18.2d
+ldr q25, [x1, #48]
+str q1, [sp]
+fmov v20.2d, #1.0
 fmla v1.2d, v16.2d, v0.2d
 fadd v30.2d, v0.2d, v19.2d
-fmov v20.2d, #1.0
-fadd d28, d24, d18
-str q7, [sp, #48]
-str x2, [sp, #32]
-fmla v2.2d, v16.2d, v30.2d
-fmla v3.2d, v17.2d, v0.d[0]
-fmla v4.2d, v17.2d, v0.d[1]
+str q3, [sp, #16]
+ldr q7, [x1, #64]
+ldr q2, [x1, #32]
+ldr q6, [x1, #48]
 fmaxnm v1.2d, v1.2d, v21.2d
+fadd d28, d24, d18
+fmla v3.2d, v17.2d, v0.d[0]
+fmla v2.2d, v16.2d, v30.2d
+fmla v4.2d, v17.2d, v0.d[1]
 fmla v6.2d, v17.2d, v30.d[0]
 fmla v25.2d, v17.2d, v30.d[1]
-mov v24.d[1], v28.d[0]
-fmaxnm v2.2d, v2.2d, v21.2d
 fdiv v31.2d, v20.2d, v1.2d
-fdiv v26.2d, v20.2d, v2.2d
-fmul v3.2d, v3.2d, v31.d[0]
+fmaxnm v2.2d, v2.2d, v21.2d
+ldr x2, [x1, #8]
+str q7, [sp, #48]
+mov v24.d[1], v28.d[0]
+str x2, [sp, #32]
 fmul v4.2d, v4.2d, v31.d[1]
-faddp d1, v31.2d
+fmul v3.2d, v3.2d, v31.d[0]
+fdiv v26.2d, v20.2d, v2.2d
 fcvtzu v3.2d, v3.2d, #16
 fcvtzu v4.2d, v4.2d, #16
-fmul v6.2d, v6.2d, v26.d[0]
-fmul v25.2d, v25.2d, v26.d[1]
-fmul d1, d1, v23.d[0]
+faddp d1, v31.2d
 uqxtn v3.2s, v3.2d
-fcvtzu v6.2d, v6.2d, #16
+fmul v6.2d, v6.2d, v26.d[0]
 uqxtn2 v3.4s, v4.2d
-fcvtzu v25.2d, v25.2d, #16
+fmul v25.2d, v25.2d, v26.d[1]
 ext v29.16b, v31.16b, v26.16b, #8
+fmul d1, d1, v23.d[0]
+fcvtzu v6.2d, v6.2d, #16
 umin v3.4s, v3.4s, v22.4s
-uqxtn v6.2s, v6.2d
 fadd v2.2d, v29.2d, v26.2d
+fcvtzu v25.2d, v25.2d, #16
+uqxtn v6.2s, v6.2d
 fmov x13, d3
 mov x25, v3.d[1]
 uqxtn2 v6.4s, v25.2d
@@ -60,43 +60,43 @@ lsr x3, x25, #32
 sub x3, x3, x13, lsr #32
 scvtf d4, w2
 scvtf d5, w3
-sxtw x2, w2
-fmul v27.2d, v2.2d, v23.d[0]
 umin v6.4s, v6.4s, v22.4s
+sxtw x2, w2
 fmul d4, d4, d1
 fmul d5, d5, d1
+cmp x2, #0
 fcvtzs w4, d4
-fcvtzs w5, d5
-fmov x26, d6
 mov x27, v6.d[1]
+fcvtzs w5, d5
+cneg x7, x2, lt
 sbfiz x6, x4, #7, #32
 sub x6, x6, w4, sxtw #3
-cmp x2, #0
-cneg x7, x2, lt
 add x8, x6, x7
 cmp x8, x7, lsl #1
+fmov x26, d6
 csel w9, w4, wzr, ls
 csel x6, x6, xzr, ls
+sbfiz x10, x5, #7, #32
+cmp x3, #0
+sub x10, x10, w5, sxtw #3
 sub x6, x2, x6
 asr x8, x6, #63
-add x6, x6, x8, lsr #60
-asr x6, x6, #4
-sbfiz x10, x5, #7, #32
-sub x10, x10, w5, sxtw #3
-cmp x3, #0
 cneg x11, x3, lt
 add x12, x10, x11
+add x6, x6, x8, lsr #60
 cmp x12, x11, lsl #1
-csel w15, w5, wzr, ls
+fmul v27.2d, v2.2d, v23.d[0]
 csel x10, x10, xzr, ls
 sub x10, x3, x10
+csel w15, w5, wzr, ls
 asr x12, x10, #63
+asr x6, x6, #4
 add x10, x10, x12, lsr #60
 asr x10, x10, #4
-add x10, x6, x10, lsl #32
 lsl x11, x15, #32
+add x10, x6, x10, lsl #32
 add x11, x11, w9, sxtw
 add x14, x13, x10
 add x17, x11, x10, lsl #1
-add x19, x17, x11, lsl #1
 lsl x20, x11, #2
+add x19, x17, x11, lsl #1
