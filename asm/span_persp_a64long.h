@@ -7,13 +7,14 @@
 // by llvm-mca Cortex-A53 then Cortex-A57; the set-up from long_setup.s there): do not
 // edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
 //
-// Contract (long_passes2; LongPass's inputs read on entry, its outputs written on exit):
-// inputs d (dest), tx, w (the texels and their row length), P = px0, lim = d + 32 k with
-// k >= 1 the number of full passes (left >= 81: both sample offsets 32; the loop runs while
-// d < lim), offl = [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them
-// (left' = left - 32 k in 49 .. 80), constants kZrow = [zrow, zrow], kZix, kUVrow = [urow,
-// vrow], kUVx = [ux, vx], kMin = [kMinZi, kMinZi], kMax4 = [umax, vmax, umax, vmax] (uint32),
-// kZck = [zck, zck] (zck = zc * -1/16). The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
+// Contract (long_passes2(st, p, n); LongPass's inputs read on entry, its outputs written on
+// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length),
+// kMin = [kMinZi, kMinZi]; with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
+// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 81) / 32 + 1 the number of full
+// passes (left >= 81: both sample offsets 32; the loop runs while d < lim), offl =
+// [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in
+// 49 .. 80), [umax, vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
+// The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
 // for samples 2, 3, depths 1 / max(zrow + zix pos, kMinZi) (fmla, fmaxnm, fdiv), each sample's
 // [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16, uqxtn, umin (to_fixed, see
 // persp_fast), packed v 2^32 + u; run 0's steps as the loop takes a run's (below), with cc =
@@ -33,8 +34,7 @@
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}]. Operands in the loop's registers; P, lim, kZrow, kUVrow and offl in a
-// LongIn block. Uses 64 bytes below sp.
+// [z_{r+2}, z_{r+3}]. Operands in the loop's registers. Uses 64 bytes below sp.
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -46,39 +46,23 @@ namespace sb::simd {
 namespace {
 
 struct LongPass {
-  uint64_t d, tx, w, lim, c0, c1, dd4, nA, nB, nC;
-  double P;
-  float64x2_t kZrow, kUVrow, kZix, kUVx, kMin, kZck;
-  uint32x4_t kMax4;
-  float64x2_t offl, z23, zsn;
+  uint64_t d, tx, w, c0, c1, dd4, nA, nB, nC;
+  float64x2_t kMin, z23, zsn;
 };
-// The inputs the asm loads from memory (offsets below are the asm's).
-struct alignas(16) LongIn {
-  double P;
-  uint64_t lim;
-  uint64_t pad0;
-  uint64_t pad1;
-  float64x2_t kZrow;
-  float64x2_t kUVrow;
-  float64x2_t offl;
-};
-static_assert(offsetof(LongIn, P) == 0);
-static_assert(offsetof(LongIn, lim) == 8);
-static_assert(offsetof(LongIn, pad0) == 16);
-static_assert(offsetof(LongIn, pad1) == 24);
-static_assert(offsetof(LongIn, kZrow) == 32);
-static_assert(offsetof(LongIn, kUVrow) == 48);
-static_assert(offsetof(LongIn, offl) == 64);
+// PerspSpan's fields as the set-up loads them.
+static_assert(offsetof(PerspSpan, zi0) == 0);
+static_assert(offsetof(PerspSpan, dzi) == 8);
+static_assert(offsetof(PerspSpan, uz0) == 16);
+static_assert(offsetof(PerspSpan, duz) == 24);
+static_assert(offsetof(PerspSpan, vz0) == 32);
+static_assert(offsetof(PerspSpan, dvz) == 40);
+static_assert(offsetof(PerspSpan, px0) == 48);
+static_assert(offsetof(PerspSpan, umax) == 56);
+static_assert(offsetof(PerspSpan, vmax) == 60);
 
-inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
-  LongIn in;
-  in.P = st.P;
-  in.lim = st.lim;
-  in.kZrow = st.kZrow;
-  in.kUVrow = st.kUVrow;
-  in.offl = st.offl;
-  in.pad0 = in.pad1 = 0;
-  register LongIn* r_in __asm__("x1") = &in;
+inline __attribute__((always_inline)) void long_passes2(LongPass& st, const PerspSpan& p, int n) {
+  register const PerspSpan* r_p __asm__("x1") = &p;
+  register int r_n __asm__("x2") = n;
   register uint64_t r_d __asm__("x0") = st.d;
   register uint64_t r_c0 __asm__("x13");
   register uint64_t r_c1 __asm__("x14");
@@ -90,36 +74,38 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
   register float64x2_t r_zsn __asm__("v29");
   register uint64_t r_tx __asm__("x23") = st.tx;
   register uint64_t r_w __asm__("x24") = st.w;
-  register float64x2_t r_kZix __asm__("v16") = st.kZix;
-  register float64x2_t r_kUVx __asm__("v17") = st.kUVx;
   register float64x2_t r_kMin __asm__("v21") = st.kMin;
-  register uint32x4_t r_kMax4 __asm__("v22") = st.kMax4;
-  register float64x2_t r_kZck __asm__("v23") = st.kZck;
   __asm__ volatile(
-      "sub sp, sp, #64\n\t" "fmov v18.2d, #16.0\n\t" "ldr d0, [x1, #0]\n\t" "fadd d5, d0, d18\n\t"
-      "ldr q3, [x1, #48]\n\t" "ldr q4, [x1, #48]\n\t" "ldr q1, [x1, #32]\n\t" "mov v0.d[1], v5.d[0]\n\t"
-      "fadd d24, d5, d18\n\t" "fadd v19.2d, v18.2d, v18.2d\n\t" "ldr q25, [x1, #48]\n\t" "str q1, [sp]\n\t"
-      "fmov v20.2d, #1.0\n\t" "fmla v1.2d, v16.2d, v0.2d\n\t" "fadd v30.2d, v0.2d, v19.2d\n\t" "str q3, [sp, #16]\n\t"
-      "ldr q7, [x1, #64]\n\t" "ldr q2, [x1, #32]\n\t" "ldr q6, [x1, #48]\n\t" "fmaxnm v1.2d, v1.2d, v21.2d\n\t"
-      "fadd d28, d24, d18\n\t" "fmla v3.2d, v17.2d, v0.d[0]\n\t" "fmla v2.2d, v16.2d, v30.2d\n\t" "fmla v4.2d, v17.2d, v0.d[1]\n\t"
-      "fmla v6.2d, v17.2d, v30.d[0]\n\t" "fmla v25.2d, v17.2d, v30.d[1]\n\t" "fdiv v31.2d, v20.2d, v1.2d\n\t" "fmaxnm v2.2d, v2.2d, v21.2d\n\t"
-      "ldr x2, [x1, #8]\n\t" "str q7, [sp, #48]\n\t" "mov v24.d[1], v28.d[0]\n\t" "str x2, [sp, #32]\n\t"
-      "fmul v4.2d, v4.2d, v31.d[1]\n\t" "fmul v3.2d, v3.2d, v31.d[0]\n\t" "fdiv v26.2d, v20.2d, v2.2d\n\t" "fcvtzu v3.2d, v3.2d, #16\n\t"
-      "fcvtzu v4.2d, v4.2d, #16\n\t" "faddp d1, v31.2d\n\t" "uqxtn v3.2s, v3.2d\n\t" "fmul v6.2d, v6.2d, v26.d[0]\n\t"
-      "uqxtn2 v3.4s, v4.2d\n\t" "fmul v25.2d, v25.2d, v26.d[1]\n\t" "ext v29.16b, v31.16b, v26.16b, #8\n\t" "fmul d1, d1, v23.d[0]\n\t"
-      "fcvtzu v6.2d, v6.2d, #16\n\t" "umin v3.4s, v3.4s, v22.4s\n\t" "fadd v2.2d, v29.2d, v26.2d\n\t" "fcvtzu v25.2d, v25.2d, #16\n\t"
-      "uqxtn v6.2s, v6.2d\n\t" "fmov x13, d3\n\t" "mov x25, v3.d[1]\n\t" "uqxtn2 v6.4s, v25.2d\n\t"
-      "sub w2, w25, w13\n\t" "lsr x3, x25, #32\n\t" "sub x3, x3, x13, lsr #32\n\t" "scvtf d4, w2\n\t"
-      "scvtf d5, w3\n\t" "umin v6.4s, v6.4s, v22.4s\n\t" "sxtw x2, w2\n\t" "fmul d4, d4, d1\n\t"
-      "fmul d5, d5, d1\n\t" "cmp x2, #0\n\t" "fcvtzs w4, d4\n\t" "mov x27, v6.d[1]\n\t"
-      "fcvtzs w5, d5\n\t" "cneg x7, x2, lt\n\t" "sbfiz x6, x4, #7, #32\n\t" "sub x6, x6, w4, sxtw #3\n\t"
-      "add x8, x6, x7\n\t" "cmp x8, x7, lsl #1\n\t" "fmov x26, d6\n\t" "csel w9, w4, wzr, ls\n\t"
-      "csel x6, x6, xzr, ls\n\t" "sbfiz x10, x5, #7, #32\n\t" "cmp x3, #0\n\t" "sub x10, x10, w5, sxtw #3\n\t"
-      "sub x6, x2, x6\n\t" "asr x8, x6, #63\n\t" "cneg x11, x3, lt\n\t" "add x12, x10, x11\n\t"
-      "add x6, x6, x8, lsr #60\n\t" "cmp x12, x11, lsl #1\n\t" "fmul v27.2d, v2.2d, v23.d[0]\n\t" "csel x10, x10, xzr, ls\n\t"
-      "sub x10, x3, x10\n\t" "csel w15, w5, wzr, ls\n\t" "asr x12, x10, #63\n\t" "asr x6, x6, #4\n\t"
-      "add x10, x10, x12, lsr #60\n\t" "asr x10, x10, #4\n\t" "lsl x11, x15, #32\n\t" "add x10, x6, x10, lsl #32\n\t"
-      "add x11, x11, w9, sxtw\n\t" "add x14, x13, x10\n\t" "add x17, x11, x10, lsl #1\n\t" "lsl x20, x11, #2\n\t"
+      "sub sp, sp, #64\n\t" "add x5, x1, #56\n\t" "mov x6, #0xbfb0000000000000\n\t" "add x4, x1, #40\n\t"
+      "ldr d0, [x1, #48]\n\t" "add x3, x1, #32\n\t" "ldr d17, [x1, #24]\n\t" "ldr d3, [x1, #16]\n\t"
+      "fmov d23, x6\n\t" "fmov v18.2d, #16.0\n\t" "ldr d16, [x1, #8]\n\t" "ld1 {v3.d}[1], [x3]\n\t"
+      "ld1 {v17.d}[1], [x4]\n\t" "fmov v20.2d, #1.0\n\t" "fmul d23, d16, d23\n\t" "fadd d5, d0, d18\n\t"
+      "dup v16.2d, v16.d[0]\n\t" "ld1r {v22.2d}, [x5]\n\t" "str q3, [sp, #16]\n\t" "ld1r {v1.2d}, [x1]\n\t"
+      "ldr q4, [sp, #16]\n\t" "mov v0.d[1], v5.d[0]\n\t" "fadd v19.2d, v18.2d, v18.2d\n\t" "str q1, [sp]\n\t"
+      "ldr q2, [sp]\n\t" "sub w7, w2, #81\n\t" "mov w11, #32\n\t" "lsr w7, w7, #5\n\t"
+      "fmla v1.2d, v16.2d, v0.2d\n\t" "fmla v4.2d, v17.2d, v0.d[1]\n\t" "fadd v30.2d, v0.2d, v19.2d\n\t" "ldr q25, [sp, #16]\n\t"
+      "sub w9, w2, w7, lsl #5\n\t" "sub w10, w9, #65\n\t" "sub w9, w9, #81\n\t" "add x8, x0, x7, lsl #5\n\t"
+      "cmp w10, #32\n\t" "ldr q6, [sp, #16]\n\t" "csel w10, w10, w11, lt\n\t" "fadd d24, d5, d18\n\t"
+      "fmaxnm v1.2d, v1.2d, v21.2d\n\t" "scvtf d27, w9\n\t" "scvtf d7, w10\n\t" "fmla v3.2d, v17.2d, v0.d[0]\n\t"
+      "fadd d28, d24, d18\n\t" "fmla v2.2d, v16.2d, v30.2d\n\t" "fmla v6.2d, v17.2d, v30.d[0]\n\t" "fdiv v31.2d, v20.2d, v1.2d\n\t"
+      "mov v7.d[1], v27.d[0]\n\t" "fmaxnm v2.2d, v2.2d, v21.2d\n\t" "add x8, x8, #32\n\t" "mov v24.d[1], v28.d[0]\n\t"
+      "str q7, [sp, #48]\n\t" "fmul v4.2d, v4.2d, v31.d[1]\n\t" "fmul v3.2d, v3.2d, v31.d[0]\n\t" "fdiv v26.2d, v20.2d, v2.2d\n\t"
+      "fcvtzu v3.2d, v3.2d, #16\n\t" "dup v23.2d, v23.d[0]\n\t" "fcvtzu v4.2d, v4.2d, #16\n\t" "fmla v25.2d, v17.2d, v30.d[1]\n\t"
+      "uqxtn v3.2s, v3.2d\n\t" "faddp d1, v31.2d\n\t" "fmul v6.2d, v6.2d, v26.d[0]\n\t" "uqxtn2 v3.4s, v4.2d\n\t"
+      "str x8, [sp, #32]\n\t" "fcvtzu v6.2d, v6.2d, #16\n\t" "fmul v25.2d, v25.2d, v26.d[1]\n\t" "ext v29.16b, v31.16b, v26.16b, #8\n\t"
+      "fmul d1, d1, v23.d[0]\n\t" "umin v3.4s, v3.4s, v22.4s\n\t" "fcvtzu v25.2d, v25.2d, #16\n\t" "fmov x13, d3\n\t"
+      "mov x25, v3.d[1]\n\t" "uqxtn v6.2s, v6.2d\n\t" "lsr x3, x25, #32\n\t" "sub w2, w25, w13\n\t"
+      "sub x3, x3, x13, lsr #32\n\t" "uqxtn2 v6.4s, v25.2d\n\t" "fadd v2.2d, v29.2d, v26.2d\n\t" "scvtf d4, w2\n\t"
+      "scvtf d5, w3\n\t" "sxtw x2, w2\n\t" "fmul d4, d4, d1\n\t" "fmul d5, d5, d1\n\t"
+      "umin v6.4s, v6.4s, v22.4s\n\t" "fmul v27.2d, v2.2d, v23.d[0]\n\t" "cmp x2, #0\n\t" "fcvtzs w4, d4\n\t"
+      "mov x27, v6.d[1]\n\t" "fcvtzs w5, d5\n\t" "cneg x7, x2, lt\n\t" "sbfiz x6, x4, #7, #32\n\t"
+      "sub x6, x6, w4, sxtw #3\n\t" "add x8, x6, x7\n\t" "cmp x8, x7, lsl #1\n\t" "fmov x26, d6\n\t"
+      "csel w9, w4, wzr, ls\n\t" "csel x6, x6, xzr, ls\n\t" "cmp x3, #0\n\t" "sub x6, x2, x6\n\t"
+      "sbfiz x10, x5, #7, #32\n\t" "sub x10, x10, w5, sxtw #3\n\t" "asr x8, x6, #63\n\t" "cneg x11, x3, lt\n\t"
+      "add x12, x10, x11\n\t" "add x6, x6, x8, lsr #60\n\t" "cmp x12, x11, lsl #1\n\t" "csel x10, x10, xzr, ls\n\t"
+      "sub x10, x3, x10\n\t" "asr x12, x10, #63\n\t" "csel w15, w5, wzr, ls\n\t" "add x10, x10, x12, lsr #60\n\t"
+      "lsl x11, x15, #32\n\t" "asr x10, x10, #4\n\t" "asr x6, x6, #4\n\t" "add x10, x6, x10, lsl #32\n\t"
+      "add x14, x13, x10\n\t" "add x11, x11, w9, sxtw\n\t" "lsl x20, x11, #2\n\t" "add x17, x11, x10, lsl #1\n\t"
       "add x19, x17, x11, lsl #1\n\t" "1:\n\t"
       "lsr x1, x14, #48\n\t" "lsr x2, x13, #48\n\t" "lsr w3, w14, #16\n\t" "lsr w4, w13, #16\n\t"
       "lsr x5, x27, #32\n\t" "add x14, x14, x19\n\t" "lsr x6, x14, #48\n\t" "madd w1, w1, w24, w3\n\t"
@@ -206,9 +192,9 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
       "cmp x0, x1\n\t" "b.lo 1b\n\t" "b.ne 2f\n\t" "ldr q19, [sp, #48]\n\t"
       "b 1b\n\t" "2:\n\t"
       "add sp, sp, #64"
-      : "+r"(r_d), "+r"(r_in), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn)
-      : "r"(r_tx), "r"(r_w), "w"(r_kZix), "w"(r_kUVx), "w"(r_kMin), "w"(r_kMax4), "w"(r_kZck)
-      : "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v18", "v19", "v20", "v24", "v25", "v27", "v28", "v30", "v31", "cc", "memory");
+      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn)
+      : "r"(r_tx), "r"(r_w), "w"(r_kMin)
+      : "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v22", "v23", "v24", "v25", "v27", "v28", "v30", "v31", "cc", "memory");
   st.d = r_d;
   st.c0 = r_c0;
   st.c1 = r_c1;

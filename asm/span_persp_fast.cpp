@@ -652,27 +652,15 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
 // fused as there; to_fixed as the vector loop's unsigned conversion, fcvtzu #16, uqxtn, umin;
 // run 0's steps as the loop's); the tail after the passes as persp_fast's.
 SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
-  const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
-  const double zc = zix;
+  const double zc = p.dzi;
   const uint32_t w = uint32_t(width);
-  const double zck = zc * -0.0625;  // see persp_fast
-  // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h).
+  // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h), from
+  // p and n; the passes leave n - 32 (k + 1) = 17 .. 48 pixels (k full passes, see there).
   LongPass st;
-  st.kZrow = vdupq_n_f64(zrow), st.kZix = vdupq_n_f64(zix), st.kMin = vdupq_n_f64(kMinZi);
-  st.kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
-  st.kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
-  st.kZck = vdupq_n_f64(zck);
-  const uint32x2_t m2 = vcreate_u32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
-  st.kMax4 = vcombine_u32(m2, m2);
-  st.P = p.px0;
-  // Full passes (left >= 81: both offsets 32) while d < lim, then one with left' = 49 .. 80.
-  int left = n;
-  const int full = (left - 81) / 32 + 1, lastl = left - 32 * full;
-  st.offl = vcombine_f64(vdup_n_f64(double(lastl - 33 < 32 ? lastl - 33 : 32)),
-                         vdup_n_f64(double(lastl - 49 < 32 ? lastl - 49 : 32)));
+  st.kMin = vdupq_n_f64(kMinZi);
   st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
-  st.lim = st.d + uint64_t(32 * full);
-  long_passes2(st);
+  long_passes2(st, p, n);
+  int left = n;
   Sample s0, s1;
   RunSteps su, sv;
   left -= int(reinterpret_cast<uint8_t*>(st.d) - dest);

@@ -515,9 +515,9 @@ SETUP = "--setup" in sys.argv
 S_OUT_X = ["c0", "c1", "dd4", "nA", "nB", "nC"]
 S_OUT_V = ["z23", "zsn"]
 S_IN_X = ["tx", "w"]
-S_IN_V = ["kZix", "kUVx", "kMin", "kMax4", "kZck"]
-S_BLK = [("P", "double", 0), ("lim", "uint64_t", 8), ("pad0", "uint64_t", 16), ("pad1", "uint64_t", 24),
-         ("kZrow", "float64x2_t", 32), ("kUVrow", "float64x2_t", 48), ("offl", "float64x2_t", 64)]
+S_IN_V = ["kMin"]
+# PerspSpan's fields the set-up loads (offsets as long_setup.s takes them)
+S_P = [("zi0", 0), ("dzi", 8), ("uz0", 16), ("duz", 24), ("vz0", 32), ("dvz", 40), ("px0", 48), ("umax", 56), ("vmax", 60)]
 
 HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-order long-span passes (two
 // 16-pixel runs a pass, while more than 48 pixels are left) as one asm loop with fixed
@@ -528,13 +528,14 @@ HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-orde
 // by llvm-mca Cortex-A53 then Cortex-A57; the set-up from long_setup.s there): do not
 // edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
 //
-// Contract (long_passes2; LongPass's inputs read on entry, its outputs written on exit):
-// inputs d (dest), tx, w (the texels and their row length), P = px0, lim = d + 32 k with
-// k >= 1 the number of full passes (left >= 81: both sample offsets 32; the loop runs while
-// d < lim), offl = [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them
-// (left' = left - 32 k in 49 .. 80), constants kZrow = [zrow, zrow], kZix, kUVrow = [urow,
-// vrow], kUVx = [ux, vx], kMin = [kMinZi, kMinZi], kMax4 = [umax, vmax, umax, vmax] (uint32),
-// kZck = [zck, zck] (zck = zc * -1/16). The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
+// Contract (long_passes2(st, p, n); LongPass's inputs read on entry, its outputs written on
+// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length),
+// kMin = [kMinZi, kMinZi]; with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
+// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 81) / 32 + 1 the number of full
+// passes (left >= 81: both sample offsets 32; the loop runs while d < lim), offl =
+// [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in
+// 49 .. 80), [umax, vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
+// The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
 // for samples 2, 3, depths 1 / max(zrow + zix pos, kMinZi) (fmla, fmaxnm, fdiv), each sample's
 // [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16, uqxtn, umin (to_fixed, see
 // persp_fast), packed v 2^32 + u; run 0's steps as the loop takes a run's (below), with cc =
@@ -554,8 +555,7 @@ HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-orde
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}]. Operands in the loop's registers; P, lim, kZrow, kUVrow and offl in a
-// LongIn block. Uses 64 bytes below sp.
+// [z_{r+2}, z_{r+3}]. Operands in the loop's registers. Uses 64 bytes below sp.
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -567,21 +567,13 @@ namespace sb::simd {
 namespace {
 
 struct LongPass {
-  uint64_t d, tx, w, lim, c0, c1, dd4, nA, nB, nC;
-  double P;
-  float64x2_t kZrow, kUVrow, kZix, kUVx, kMin, kZck;
-  uint32x4_t kMax4;
-  float64x2_t offl, z23, zsn;
+  uint64_t d, tx, w, c0, c1, dd4, nA, nB, nC;
+  float64x2_t kMin, z23, zsn;
 };
-// The inputs the asm loads from memory (offsets below are the asm's).
-struct alignas(16) LongIn {
-%(blk)s
-};
+// PerspSpan's fields as the set-up loads them.
 %(asserts)s
 
-inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
-  LongIn in;
-%(fill)s
+inline __attribute__((always_inline)) void long_passes2(LongPass& st, const PerspSpan& p, int n) {
 %(decls)s
   __asm__ volatile(
 %(body)s
@@ -607,7 +599,7 @@ def emit_header3(ins, outh, setup):
     for l in allx:
         for m in re.finditer(r"\b([xwvqd])(\d+)\b", l):
             used.add(("v" if m.group(1) in "vqd" else "x") + m.group(2))
-    opregs = {PIN[n] for n in ["d"] + S_OUT_X + S_OUT_V + S_IN_X + S_IN_V} | {"x1"}
+    opregs = {PIN[n] for n in ["d"] + S_OUT_X + S_OUT_V + S_IN_X + S_IN_V} | {"x1", "x2"}
     clob = [r for r in GPR + VEC if r in used and r not in opregs]
     rows, cur = [], []
     for l in allx:
@@ -624,10 +616,10 @@ def emit_header3(ins, outh, setup):
             t = t[:-5] + '"'
         out.append("      " + t)
     vty = lambda n: "uint32x4_t" if n == "kMax4" else "float64x2_t"
-    blk = "\n".join(f"  {ty} {n};" for n, ty, _ in S_BLK)
-    asserts = "\n".join(f"static_assert(offsetof(LongIn, {n}) == {o});" for n, _, o in S_BLK)
-    fill = "\n".join(f"  in.{n} = st.{n};" for n, _, _ in S_BLK if not n.startswith("pad")) + "\n  in.pad0 = in.pad1 = 0;"
-    decls = ['  register LongIn* r_in __asm__("x1") = &in;', f'  register uint64_t r_d __asm__("{PIN["d"]}") = st.d;']
+    asserts = "\n".join(f"static_assert(offsetof(PerspSpan, {n}) == {o});" for n, o in S_P)
+    blk = fill = ""
+    decls = ['  register const PerspSpan* r_p __asm__("x1") = &p;', '  register int r_n __asm__("x2") = n;',
+             f'  register uint64_t r_d __asm__("{PIN["d"]}") = st.d;']
     for n in S_OUT_X:
         decls.append(f'  register uint64_t r_{n} __asm__("{PIN[n]}");')
     for n in S_OUT_V:
@@ -636,7 +628,7 @@ def emit_header3(ins, outh, setup):
         decls.append(f'  register uint64_t r_{n} __asm__("{PIN[n]}") = st.{n};')
     for n in S_IN_V:
         decls.append(f'  register {vty(n)} r_{n} __asm__("{PIN[n]}") = st.{n};')
-    outs = ['"+r"(r_d)', '"+r"(r_in)'] + [f'"=r"(r_{n})' for n in S_OUT_X] + [f'"=w"(r_{n})' for n in S_OUT_V]
+    outs = ['"+r"(r_d)', '"+r"(r_p)', '"+r"(r_n)'] + [f'"=r"(r_{n})' for n in S_OUT_X] + [f'"=w"(r_{n})' for n in S_OUT_V]
     insl = [f'"r"(r_{n})' for n in S_IN_X] + [f'"w"(r_{n})' for n in S_IN_V]
     back = "\n".join(f"  st.{n} = r_{n};" for n in ["d"] + S_OUT_X + S_OUT_V)
     text = HEADER3 % dict(blk=blk, asserts=asserts, fill=fill, decls="\n".join(decls), body="\n".join(out),
