@@ -660,10 +660,10 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   st.kMin = vdupq_n_f64(kMinZi);
   st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
   long_passes2(st, p, n);
-  int left = n;
+  // left = n - 32 (k + 1), k = (n - 81) / 32 + 1: (n - 81) mod 32 + 17 (n > 80).
+  int left = int(uint32_t(n - 81) & 31u) + 17;
   Sample s0, s1;
   RunSteps su, sv;
-  left -= int(reinterpret_cast<uint8_t*>(st.d) - dest);
   dest = reinterpret_cast<uint8_t*>(st.d);
   // Run r's steps from its chains (c1 - c0 = its packed step, dd4 = 4 times its packed second
   // step, |parts| < 2^31); s0.z is not read below.
