@@ -676,70 +676,24 @@ void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const Pe
 }
 
 // aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
-// samples, steps and runs with its passes as one asm loop (asm/span_persp_a64long.h). The
-// first samples in 2-lane vectors, each lane persp_fast's scalar operation (the same bits:
+// samples, steps and runs with its passes as one asm block (asm/span_persp_a64long.h: the
+// first samples in 2-lane vectors, each lane persp_fast's scalar operation, the same bits:
 // positions P_0, P_1 = P_0 + 16, sample j + 2 at P_j + 32; zrow + zix pos and uvrow + uvx pos
-// fused as there; 1 / max(zi, kMinZi) as recip2; to_fixed as the vector loop's unsigned
-// conversion, fcvtzu #16, uqxtn, umin); the tail after the passes as persp_fast's.
+// fused as there; to_fixed as the vector loop's unsigned conversion, fcvtzu #16, uqxtn, umin;
+// run 0's steps as the loop's); the tail after the passes as persp_fast's.
 SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
-  const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
-  const double zc = zix;
+  const double zc = p.dzi;
   const uint32_t w = uint32_t(width);
-  auto lanes = [](uint32x2_t x) { return vget_lane_u64(vreinterpret_u64_u32(x), 0); };
-  const double zck = zc * -0.0625;  // see persp_fast
+  // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h), from
+  // p and n; the passes leave n - 32 (k + 1) = 17 .. 48 pixels (k full passes, see there).
   LongPass st;
-  st.kZrow = vdupq_n_f64(zrow), st.kZix = vdupq_n_f64(zix), st.kMin = vdupq_n_f64(kMinZi);
-  st.kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
-  st.kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
-  st.k16 = vdupq_n_f64(16.0), st.k32 = vdupq_n_f64(32.0), st.kOne = vdupq_n_f64(1.0), st.kZck = vdupq_n_f64(zck);
-  const uint32x2_t m2 = vcreate_u32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
-  st.kMax4 = vcombine_u32(m2, m2);
-  const double P = p.px0, P1 = P + double(16);
-  const float64x2_t pA = vcombine_f64(vdup_n_f64(P), vdup_n_f64(P1)), pB = vaddq_f64(pA, st.k32);
-  const float64x2_t zA = vdivq_f64(st.kOne, vmaxnmq_f64(vfmaq_f64(st.kZrow, st.kZix, pA), st.kMin));
-  const float64x2_t zB = vdivq_f64(st.kOne, vmaxnmq_f64(vfmaq_f64(st.kZrow, st.kZix, pB), st.kMin));
-  auto fix = [&](float64x2_t pos, int lane, float64x2_t z, int zlane) {  // sample()'s [u, v], clamped
-    const float64x2_t t = lane ? vfmaq_laneq_f64(st.kUVrow, st.kUVx, pos, 1) : vfmaq_laneq_f64(st.kUVrow, st.kUVx, pos, 0);
-    const float64x2_t q = zlane ? vmulq_laneq_f64(t, z, 1) : vmulq_laneq_f64(t, z, 0);
-    return lanes(vmin_u32(vqmovn_u64(vcvtq_n_u64_f64(q, 16)), m2));
-  };
-  const uint64_t n0 = fix(pA, 0, zA, 0), n1 = fix(pA, 1, zA, 1), n2 = fix(pB, 0, zB, 0), n3 = fix(pB, 1, zB, 1);
-  const double z0 = vgetq_lane_f64(zA, 0), z1 = vgetq_lane_f64(zA, 1);
-  Sample s0{int32_t(uint32_t(n0)), int32_t(uint32_t(n0 >> 32)), z0};
-  Sample s1{int32_t(uint32_t(n1)), int32_t(uint32_t(n1 >> 32)), z1};
-  // Run 0's steps: steps16_sel's operations for u and v, both conversions first (pinned:
-  // the compiler would run the v chain behind the u chain; pinning every level as well cost
-  // the Cortex-A57 estimate more than it gained).
-  RunSteps su, sv;
-  {
-    const int32_t du = s1.u - s0.u, dv = s1.v - s0.v;
-    const double curve = zc * 0.5 * (s0.z + s1.z);
-    double cu = double(du), cv = double(dv);
-    pin(cu), pin(cv);
-    cu = cu / 16, cv = cv / 16;
-    cu = cu * curve, cv = cv * curve;
-    cu = -2.0 * cu, cv = -2.0 * cv;
-    const int32_t iu = cvt_sat(cu), iv = cvt_sat(cv);
-    su = steps16_dd(du, iu), sv = steps16_dd(dv, iv);
-  }
-  auto packed = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
-  const double P2i = P1 + double(16);
-  st.pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
-  // Full passes (left >= 81: both offsets 32) while d < lim, then one with left' = 49 .. 80.
-  int left = n;
-  const int full = (left - 81) / 32 + 1, lastl = left - 32 * full;
-  st.offl = vcombine_f64(vdup_n_f64(double(lastl - 33 < 32 ? lastl - 33 : 32)),
-                         vdup_n_f64(double(lastl - 49 < 32 ? lastl - 49 : 32)));
-  st.z23 = zB;
-  st.zsn = vextq_f64(zA, zB, 1);  // [z_1, z_2]
-  st.cc = vmulq_n_f64(vaddq_f64(st.zsn, st.z23), zck);
-  st.pos45 = pB;
-  st.nA = n1, st.nB = n2, st.nC = n3;
-  lin_start2(st.c0, st.c1, st.e0, st.e1, st.dd4, n0, packed(sv.d, su.d), packed(sv.dd, su.dd));
+  st.kMin = vdupq_n_f64(kMinZi);
   st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
-  st.lim = st.d + uint64_t(32 * full);
-  long_passes2(st);
-  left -= int(reinterpret_cast<uint8_t*>(st.d) - dest);
+  long_passes2(st, p, n);
+  // left = n - 32 (k + 1), k = (n - 81) / 32 + 1: (n - 81) mod 32 + 17 (n > 80).
+  int left = int(uint32_t(n - 81) & 31u) + 17;
+  Sample s0, s1;
+  RunSteps su, sv;
   dest = reinterpret_cast<uint8_t*>(st.d);
   // Run r's steps from its chains (c1 - c0 = its packed step, dd4 = 4 times its packed second
   // step, |parts| < 2^31); s0.z is not read below.

@@ -5,9 +5,11 @@
 # names, registers allocated by a linear scan over the chosen order.
 #
 #   gen_long_pass.py body OUT.s          the body in its slot order (for order_search.py)
-#   gen_long_pass.py header IN.s OUT.h   the header from a (searched) body
+#   gen_long_pass.py header IN.s OUT.h   the header from a (searched) body (--setup: the
+#        present form, with long_setup.s and the folded last pass: the header is made by
+#        gen_long_pass.py header long_pass_rv.s ../../asm/span_persp_a64long.h --setup)
 # The body's last line is the loop branch; order_search keeps register, flag and store order.
-import re, sys
+import os, re, sys
 
 # Loop-carried values and their registers (the C++ wrapper binds them).
 PIN = dict(d="x0", tx="x23", w="x24", c0="x13", c1="x14", e0="x17", e1="x19", dd4="x20",
@@ -18,6 +20,9 @@ GPR = ["x%d" % i for i in list(range(0, 18)) + list(range(19, 29)) + [30, 18]]
 VEC = ["v%d" % i for i in range(32)]
 
 body = []   # (slot G, text)
+REUSE_V = False  # the v deltas computed once (G1, 64-bit) for the conversions and the steps
+REUSE_U = False  # the u deltas likewise (G1, 32-bit; sign-extended for the steps)
+FOLD_LAST = "--fold-last" in sys.argv  # header: the last pass by the loop body, not a copy
 
 
 def E(g, *lines):
@@ -96,9 +101,14 @@ def stage(G):
     if G == 0:
         s += ["ldr {Q:zi}, [sp]", "ldr {Q:ts4}, [sp, #16]", "ldr {Q:ts5}, [sp, #16]"]
     elif G == 1:  # the deltas of runs r + 1 (samples A, B) and r + 2 (B, C)
-        s += ["sub {W:fdu1}, {W:nB}, {W:nA}", "sub {W:fdu2}, {W:nC}, {W:nB}",
-              "lsr {X:ftvA}, {X:nA}, #32", "lsr {X:ftvB}, {X:nB}, #32", "lsr {X:ftvC}, {X:nC}, #32",
-              "sub {W:fdv1}, {W:ftvB}, {W:ftvA}", "sub {W:fdv2}, {W:ftvC}, {W:ftvB}"]
+        if REUSE_V:  # the v deltas 64-bit (exact), kept for the steps (G7, G11)
+            s += ["sub {W:fdu1}, {W:nB}, {W:nA}", "sub {W:fdu2}, {W:nC}, {W:nB}",
+                  "lsr {X:ftvB}, {X:nB}, #32", "lsr {X:ftvC}, {X:nC}, #32",
+                  "sub {X:fdv1}, {X:ftvB}, {X:nA}, lsr #32", "sub {X:fdv2}, {X:ftvC}, {X:nB}, lsr #32"]
+        else:
+            s += ["sub {W:fdu1}, {W:nB}, {W:nA}", "sub {W:fdu2}, {W:nC}, {W:nB}",
+                  "lsr {X:ftvA}, {X:nA}, #32", "lsr {X:ftvB}, {X:nB}, #32", "lsr {X:ftvC}, {X:nC}, #32",
+                  "sub {W:fdv1}, {W:ftvB}, {W:ftvA}", "sub {W:fdv2}, {W:ftvC}, {W:ftvB}"]
     elif G == 2:
         s += ["fadd {V:pos45}.2d, {V:pp}.2d, {V:k32}.2d",
               "scvtf {D:fu1}, {W:fdu1}", "scvtf {D:fv1}, {W:fdv1}", "scvtf {D:fu2}, {W:fdu2}", "scvtf {D:fv2}, {W:fdv2}"]
@@ -110,22 +120,26 @@ def stage(G):
     elif G == 6:
         s += ["fcvtzs {W:iu1}, {D:fu1}", "fcvtzs {W:iv1}, {D:fv1}", "fmaxnm {V:zi}.2d, {V:zi}.2d, {V:kMin}.2d"]
     elif G == 7:  # run r + 1's steps, its chains (run b: c0 = nA itself)
-        s += ["sub {W:du1}, {W:nB}, {W:nA}", "sxtw {X:du1}, {W:du1}",
-              "lsr {X:tvB}, {X:nB}, #32", "sub {X:dv1}, {X:tvB}, {X:nA}, lsr #32"]
-        s += steps("du1", "iu1", "su1", "sdu1", "ta") + steps("dv1", "iv1", "sv1", "sdv1", "tb")
+        s += ["sxtw {X:du1}, {W:fdu1}"] if REUSE_U else ["sub {W:du1}, {W:nB}, {W:nA}", "sxtw {X:du1}, {W:du1}"]
+        if not REUSE_V:
+            s += ["lsr {X:tvB}, {X:nB}, #32", "sub {X:dv1}, {X:tvB}, {X:nA}, lsr #32"]
+        s += steps("du1", "iu1", "su1", "sdu1", "ta") + steps("fdv1" if REUSE_V else "dv1", "iv1", "sv1", "sdv1", "tb")
         s += pack("su1", "sv1", "sdu1", "sdv1", "bd", "bdd")
         s += start("nA", "bd", "bdd", "c1", "e0", "e1", "dd4")
     elif G == 8:
         s += ["fcvtzs {W:iu2}, {D:fu2}", "fcvtzs {W:iv2}, {D:fv2}", "fdiv {V:z45}.2d, {V:kOne}.2d, {V:zi}.2d"]
     elif G == 9:
-        s += ["sub {W:du2}, {W:nC}, {W:nB}", "sxtw {X:du2}, {W:du2}"]
+        s += ["sxtw {X:du2}, {W:fdu2}"] if REUSE_U else ["sub {W:du2}, {W:nC}, {W:nB}", "sxtw {X:du2}, {W:du2}"]
         s += steps("du2", "iu2", "su2", "sdu2", "tc")
     elif G == 10:
         s += ["fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d",
               "fmul {V:ts4}.2d, {V:ts4}.2d, {V:z45}.d[0]", "fmul {V:ts5}.2d, {V:ts5}.2d, {V:z45}.d[1]"]
     elif G == 11:
-        s += ["lsr {X:tvC}, {X:nC}, #32", "sub {X:dv2}, {X:tvC}, {X:nB}, lsr #32"]
-        s += steps("dv2", "iv2", "sv2", "sdv2", "td")
+        if REUSE_V:
+            s += steps("fdv2", "iv2", "sv2", "sdv2", "td")
+        else:
+            s += ["lsr {X:tvC}, {X:nC}, #32", "sub {X:dv2}, {X:tvC}, {X:nB}, lsr #32"]
+            s += steps("dv2", "iv2", "sv2", "sdv2", "td")
     elif G == 12:
         s += ["fadd {V:pp}.2d, {V:pp}.2d, {V:k16}.2d",
               "fcvtzu {V:ts4}.2d, {V:ts4}.2d, #16", "fcvtzu {V:ts5}.2d, {V:ts5}.2d, #16",
@@ -321,7 +335,12 @@ def emit_header(ins, outh):
         else:
             last.append(l)
     assert len(last) == len(lines)
-    allx = pro + ["1:"] + lines + last + epi
+    if FOLD_LAST:
+        # the last pass is the loop body once more with k32's register reloaded with offl:
+        # leaving the loop with d == lim (full passes done) branches back; d > lim: done
+        allx = pro + ["1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b", "2:"] + epi
+    else:
+        allx = pro + ["1:"] + lines + last + epi
     used = set()
     for l in allx:
         for m in re.finditer(r"\b([xwvqd])(\d+)\b", l):
@@ -351,5 +370,275 @@ def emit_header(ins, outh):
     open(outh, "w").write(text)
 
 
+# REGIO (--regio): the state the C++ code reads back after the loop and the read-only
+# constants passed in the loop's registers (asm operands bound to them; GCC allows 30
+# operands, an in-out one counts twice), the rest in a small block (LongIn) at x1 that the
+# prologue loads: e0, e1, pp, cc, pos45, k32 into their registers, kZrow, kUVrow, lim, offl
+# to the 64 bytes below sp the loop reads. Nothing is stored back.
+REGIO = "--regio" in sys.argv
+IO_X = ["d", "c0", "c1", "dd4", "nA", "nB", "nC"]
+IO_V = ["z23", "zsn"]
+IN_X = ["tx", "w"]
+IN_V = ["kZix", "kUVx", "k16", "kOne", "kMin", "kMax4", "kZck"]
+BLK_X = ["e0", "e1", "lim", "pad"]
+BLK_V = ["pp", "cc", "pos45", "k32", "kZrow", "kUVrow", "offl"]
+BOFF = {n: 8 * i for i, n in enumerate(BLK_X)}
+BOFF.update({n: 8 * len(BLK_X) + 16 * i for i, n in enumerate(BLK_V)})
+
+HEADER2 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-order long-span passes (two
+// 16-pixel runs a pass, while more than 48 pixels are left) as one asm loop with fixed
+// registers: the drawing (asm/span_persp_arm.h's lin_slot pipeline) and the stage work of
+// persp_fast's vector loop (steps of runs r + 1, r + 2; samples r + 4, r + 5), each operation
+// that loop's (the same bits). Generated by bench/mca_a53_persp/gen_long_pass.py (order from
+// bench/order_search.py, scored by llvm-mca Cortex-A53 then Cortex-A57): do not
+// edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
+//
+// Contract (long_passes2, state in LongPass: read on entry; d, c0, c1, dd4, nA, nB, nC, z23,
+// zsn written back on exit, the other fields' exit values are not): pass k
+// = 0 draws runs r, r + 1 at d, 32 pixels a pass:
+//   c0, c1, e0, e1, dd4   run r's chains (lin_start2 of its packed start, step and second step);
+//   nA, nB, nC            samples r + 1, r + 2, r + 3 packed (v 2^32 + u, clamped to [0, max]);
+//   pp = [P_{r+2}, P_{r+2} + 16] (doubles); z23 = [z_{r+2}, z_{r+3}];
+//   cc = zck (z_{r+1} + z_{r+2}, z_{r+2} + z_{r+3}) with zck = zc * -1/16 (steps16_sel's ddf =
+//        delta cc, see persp_fast); lim = d + 32 k with k >= 1 the number of full passes (left
+//        >= 81: both sample offsets 32; the loop runs while d < lim), offl = [min(left' - 33,
+//        32), min(left' - 49, 32)] for the one pass after them (left' = left - 32 k in 49 .. 80);
+//        tx, w the texels and their row length; constants kZrow =
+//        [zrow, zrow], kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32, kOne, kMin =
+//        [kMinZi, kMinZi], kMax4 = [umax, vmax, umax, vmax] (uint32), kZck = [zck, zck].
+// A pass: samples r + 4, r + 5 at pos45 = pp + 32 (the last pass: pp + offl), zi = max(zrow + zix pos, kMinZi)
+// (fmla, fmaxnm), z = 1 / zi (fdiv), [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16,
+// uqxtn, umin (to_fixed, see persp_fast); the steps of runs r + 1, r + 2 from the packed
+// samples: dd = fcvtzs(double(delta) c) and steps16_dd's test as 120 |dd| <= |delta| (the
+// equivalent form proved in asm/span_persp_run.h), d = trunc((delta - 120 dd') / 16) with dd'
+// = dd accepted, else 0 (the same d: delta - 120 dd' has delta's sign or is 0). The last pass
+// is the loop body once more, k32's register then holding offl. On exit the
+// state names the next pass's (r advanced by 2): c0 = sample r packed, c1 - c0 its run's
+// packed step, dd4 4 times its packed second step, nA sample r + 1, zsn[0] = z_{r+1}, z23 =
+// [z_{r+2}, z_{r+3}]. The state reaches the asm in the loop's registers (operands) but for
+// LongIn's fields, which its prologue loads. Uses 64 bytes below sp.
+#pragma once
+#include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include <arm_neon.h>
+
+#include <cstddef>
+
+namespace sb::simd {
+namespace {
+
+struct LongPass {
+  uint64_t %(xfields)s;
+  float64x2_t %(vfields)s;
+  uint32x4_t kMax4;
+  float64x2_t %(sfields)s;
+};
+// The fields the asm's prologue loads (offsets below are the asm's).
+struct alignas(16) LongIn {
+  uint64_t %(bx)s;
+  float64x2_t %(bv)s;
+};
+%(asserts)s
+
+inline __attribute__((always_inline)) void long_passes2(LongPass& st) {
+  LongIn in;
+%(fill)s
+%(decls)s
+  __asm__ volatile(
+%(body)s
+      : %(outs)s
+      : %(ins)s
+      : %(clob)s, "cc", "memory");
+%(back)s
+}
+
+}  // namespace
+}  // namespace sb::simd
+#endif
+"""
+
+
+def emit_header2(ins, outh):
+    lines = [l.strip() for l in open(ins) if l.strip() and not l.strip().endswith(":")]
+    lines = [l.replace("b.lo .Lloop", "b.lo 1b") for l in lines]
+    pro = ["sub sp, sp, #64",
+           f"ldr q0, [x1, #{BOFF['kZrow']}]", f"ldr q1, [x1, #{BOFF['kUVrow']}]", f"ldr q2, [x1, #{BOFF['offl']}]"]
+    pro += [f"ldp {PIN['e0']}, {PIN['e1']}, [x1, #{BOFF['e0']}]"]
+    for n in ("pp", "cc", "pos45", "k32"):
+        pro.append(f"ldr q{PIN[n][1:]}, [x1, #{BOFF[n]}]")
+    pro += [f"ldr x1, [x1, #{BOFF['lim']}]", "str q0, [sp]", "str q1, [sp, #16]", "str x1, [sp, #32]", "str q2, [sp, #48]"]
+    allx = pro + ["1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b", "2:", "add sp, sp, #64"]
+    used = set()
+    for l in allx:
+        for m in re.finditer(r"\b([xwvqd])(\d+)\b", l):
+            used.add(("v" if m.group(1) in "vqd" else "x") + m.group(2))
+    opregs = {PIN[n] for n in IO_X + IO_V + IN_X + IN_V} | {"x1"}
+    clob = [r for r in GPR + VEC if r in used and r not in opregs]
+    rows, cur = [], []
+    for l in allx:
+        cur.append(l)
+        if l.endswith(":") or len(cur) == 4:
+            rows.append(cur)
+            cur = []
+    if cur:
+        rows.append(cur)
+    out = []
+    for i, r in enumerate(rows):
+        t = " ".join(f'"{l}\\n\\t"' for l in r)
+        if i == len(rows) - 1:
+            t = t[:-5] + '"'
+        out.append("      " + t)
+    vty = lambda n: "uint32x4_t" if n == "kMax4" else "float64x2_t"
+    fill = "\n".join(f"  in.{n} = st.{n};" for n in BLK_X + BLK_V if n != "pad") + "\n  in.pad = 0;"
+    decls = ['  register LongIn* r_in __asm__("x1") = &in;']
+    for n in IO_X + IN_X:
+        decls.append(f'  register uint64_t r_{n} __asm__("{PIN[n]}") = st.{n};')
+    for n in IO_V + IN_V:
+        decls.append(f'  register {vty(n)} r_{n} __asm__("{PIN[n]}") = st.{n};')
+    outs = [f'"+r"(r_{n})' for n in IO_X] + [f'"+w"(r_{n})' for n in IO_V] + ['"+r"(r_in)']
+    insl = [f'"r"(r_{n})' for n in IN_X] + [f'"w"(r_{n})' for n in IN_V]
+    back = "\n".join(f"  st.{n} = r_{n};" for n in IO_X + IO_V)
+    vf = V_FIELDS[:V_FIELDS.index("kMax4")]
+    sf = V_FIELDS[V_FIELDS.index("kMax4") + 1:]
+    asserts = "\n".join(f"static_assert(offsetof(LongIn, {n}) == {BOFF[n]});" for n in BLK_X + BLK_V)
+    text = HEADER2 % dict(xfields=", ".join(X_FIELDS), vfields=", ".join(vf), sfields=", ".join(sf),
+                          bx=", ".join(BLK_X), bv=", ".join(BLK_V), asserts=asserts, fill=fill,
+                          decls="\n".join(decls), body="\n".join(out), outs=", ".join(outs), ins=", ".join(insl),
+                          back=back, clob=", ".join(f'"{c}"' for c in clob))
+    open(outh, "w").write(text)
+
+
+# SETUP (--setup): the set-up of the first samples and run 0's steps in the asm too
+# (long_setup.s, before the loop), from the LongIn block at x1 and the constants' registers;
+# outputs the state the C++ code reads after the loop. Implies the folded last pass.
+SETUP = "--setup" in sys.argv
+S_OUT_X = ["c0", "c1", "dd4", "nA", "nB", "nC"]
+S_OUT_V = ["z23", "zsn"]
+S_IN_X = ["tx", "w"]
+S_IN_V = ["kMin"]
+# PerspSpan's fields the set-up loads (offsets as long_setup.s takes them)
+S_P = [("zi0", 0), ("dzi", 8), ("uz0", 16), ("duz", 24), ("vz0", 32), ("dvz", 40), ("px0", 48), ("umax", 56), ("vmax", 60)]
+
+HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-order long-span passes (two
+// 16-pixel runs a pass, while more than 48 pixels are left) as one asm loop with fixed
+// registers: the drawing (asm/span_persp_arm.h's lin_slot pipeline) and the stage work of
+// persp_fast's vector loop (steps of runs r + 1, r + 2; samples r + 4, r + 5), each operation
+// that loop's (the same bits), after a set-up block (the first four samples, run 0's steps).
+// Generated by bench/mca_a53_persp/gen_long_pass.py (order from bench/order_search.py, scored
+// by llvm-mca Cortex-A53 then Cortex-A57; the set-up from long_setup.s there): do not
+// edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
+//
+// Contract (long_passes2(st, p, n); LongPass's inputs read on entry, its outputs written on
+// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length),
+// kMin = [kMinZi, kMinZi]; with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
+// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 81) / 32 + 1 the number of full
+// passes (left >= 81: both sample offsets 32; the loop runs while d < lim), offl =
+// [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in
+// 49 .. 80), [umax, vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
+// The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
+// for samples 2, 3, depths 1 / max(zrow + zix pos, kMinZi) (fmla, fmaxnm, fdiv), each sample's
+// [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16, uqxtn, umin (to_fixed, see
+// persp_fast), packed v 2^32 + u; run 0's steps as the loop takes a run's (below), with cc =
+// zck (z_0 + z_1); its chains by lin_start2. Pass k = 0 then draws runs r, r + 1 at d, 32
+// pixels a pass, with the state
+//   c0, c1, e0, e1, dd4   run r's chains (lin_start2 of its packed start, step and second step);
+//   nA, nB, nC            samples r + 1, r + 2, r + 3 packed (v 2^32 + u, clamped to [0, max]);
+//   pp = [P_{r+2}, P_{r+2} + 16] (doubles); z23 = [z_{r+2}, z_{r+3}];
+//   cc = zck (z_{r+1} + z_{r+2}, z_{r+2} + z_{r+3}) (steps16_sel's ddf = delta cc, see
+//        persp_fast).
+// A pass: samples r + 4, r + 5 at pos45 = pp + 32 (the last pass: pp + offl), zi = max(zrow + zix pos, kMinZi)
+// (fmla, fmaxnm), z = 1 / zi (fdiv), [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16,
+// uqxtn, umin (to_fixed, see persp_fast); the steps of runs r + 1, r + 2 from the packed
+// samples: dd = fcvtzs(double(delta) c) and steps16_dd's test as 120 |dd| <= |delta| (the
+// equivalent form proved in asm/span_persp_run.h), d = trunc((delta - 120 dd') / 16) with dd'
+// = dd accepted, else 0 (the same d: delta - 120 dd' has delta's sign or is 0). The last pass
+// is the loop body once more, k32's register then holding offl. Outputs (the next pass's
+// state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
+// times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
+// [z_{r+2}, z_{r+3}]. Operands in the loop's registers. Uses 64 bytes below sp.
+#pragma once
+#include "asm/span_persp_run.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include <arm_neon.h>
+
+#include <cstddef>
+
+namespace sb::simd {
+namespace {
+
+struct LongPass {
+  uint64_t d, tx, w, c0, c1, dd4, nA, nB, nC;
+  float64x2_t kMin, z23, zsn;
+};
+// PerspSpan's fields as the set-up loads them.
+%(asserts)s
+
+inline __attribute__((always_inline)) void long_passes2(LongPass& st, const PerspSpan& p, int n) {
+%(decls)s
+  __asm__ volatile(
+%(body)s
+      : %(outs)s
+      : %(ins)s
+      : %(clob)s, "cc", "memory");
+%(back)s
+}
+
+}  // namespace
+}  // namespace sb::simd
+#endif
+"""
+
+
+def emit_header3(ins, outh, setup):
+    lines = [l.strip() for l in open(ins) if l.strip() and not l.strip().endswith(":")]
+    lines = [l.replace("b.lo .Lloop", "b.lo 1b") for l in lines]
+    su = [l.strip() for l in open(setup) if l.strip() and not l.strip().startswith("//")]
+    allx = ["sub sp, sp, #64"] + su + ["1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b", "2:",
+                                                         "add sp, sp, #64"]
+    used = set()
+    for l in allx:
+        for m in re.finditer(r"\b([xwvqd])(\d+)\b", l):
+            used.add(("v" if m.group(1) in "vqd" else "x") + m.group(2))
+    opregs = {PIN[n] for n in ["d"] + S_OUT_X + S_OUT_V + S_IN_X + S_IN_V} | {"x1", "x2"}
+    clob = [r for r in GPR + VEC if r in used and r not in opregs]
+    rows, cur = [], []
+    for l in allx:
+        cur.append(l)
+        if l.endswith(":") or len(cur) == 4:
+            rows.append(cur)
+            cur = []
+    if cur:
+        rows.append(cur)
+    out = []
+    for i, r in enumerate(rows):
+        t = " ".join(f'"{l}\\n\\t"' for l in r)
+        if i == len(rows) - 1:
+            t = t[:-5] + '"'
+        out.append("      " + t)
+    vty = lambda n: "uint32x4_t" if n == "kMax4" else "float64x2_t"
+    asserts = "\n".join(f"static_assert(offsetof(PerspSpan, {n}) == {o});" for n, o in S_P)
+    blk = fill = ""
+    decls = ['  register const PerspSpan* r_p __asm__("x1") = &p;', '  register int r_n __asm__("x2") = n;',
+             f'  register uint64_t r_d __asm__("{PIN["d"]}") = st.d;']
+    for n in S_OUT_X:
+        decls.append(f'  register uint64_t r_{n} __asm__("{PIN[n]}");')
+    for n in S_OUT_V:
+        decls.append(f'  register float64x2_t r_{n} __asm__("{PIN[n]}");')
+    for n in S_IN_X:
+        decls.append(f'  register uint64_t r_{n} __asm__("{PIN[n]}") = st.{n};')
+    for n in S_IN_V:
+        decls.append(f'  register {vty(n)} r_{n} __asm__("{PIN[n]}") = st.{n};')
+    outs = ['"+r"(r_d)', '"+r"(r_p)', '"+r"(r_n)'] + [f'"=r"(r_{n})' for n in S_OUT_X] + [f'"=w"(r_{n})' for n in S_OUT_V]
+    insl = [f'"r"(r_{n})' for n in S_IN_X] + [f'"w"(r_{n})' for n in S_IN_V]
+    back = "\n".join(f"  st.{n} = r_{n};" for n in ["d"] + S_OUT_X + S_OUT_V)
+    text = HEADER3 % dict(blk=blk, asserts=asserts, fill=fill, decls="\n".join(decls), body="\n".join(out),
+                          outs=", ".join(outs), ins=", ".join(insl), back=back,
+                          clob=", ".join(f'"{c}"' for c in clob))
+    open(outh, "w").write(text)
+
+
 if __name__ == "__main__" and sys.argv[1] == "header":
-    emit_header(sys.argv[2], sys.argv[3])
+    if SETUP:
+        emit_header3(sys.argv[2], sys.argv[3], os.path.join(os.path.dirname(os.path.abspath(__file__)), "long_setup.s"))
+    else:
+        (emit_header2 if REGIO else emit_header)(sys.argv[2], sys.argv[3])
