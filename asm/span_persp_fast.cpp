@@ -782,13 +782,6 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
            uint32_t(lv.dd));
 }
-// persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
-// the single-span entry: next == end), through batch_from. Reached from batch_from and left
-// with tail branches (the compiler's sibling calls): a long first item of the items left
-// costs no call. A long item after a shorter one in the loop (spans_range, via persp_one) is
-// still called, with next == end. Without sibling calls (-O0) each chained long item nests
-// one frame. Page-aligned: where its loop's code falls against 4 KiB pages (where qemu cuts
-// the blocks bench/count.sh times) does not move with the size of the code before it.
 void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 // dzi != 0.0 on its bits (integer ops: no FP compare; NaN and the infinities are non-zero),
@@ -808,13 +801,21 @@ SB_INLINE bool is_long_a64(const PerspItem& x) {
 SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
-// Consecutive long items are drawn in this function's loop (one frame for the run of them).
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
   return (x.n > kShortMax) & ((!x.span.second_order) | (x.span.dzi == 0.0));
 }
-__attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels, int width,
-                                              const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
+// persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
+// the single-span entry: next == end), through batch_from. Reached from batch_from and left
+// with tail branches (the compiler's sibling calls): a long first item of the items left
+// costs no call. A long item after a shorter one in the loop (spans_range, via persp_one) is
+// still called, with next == end. Without sibling calls (-O0) each chained long item nests
+// one frame. Page-aligned: where its loop's code falls against 4 KiB pages (where qemu cuts
+// the blocks bench/count.sh times) does not move with the size of the code before it.
+// Consecutive long items are drawn in this function's loop (one frame for the run of them).
+__attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels,
+                                                             int width, const PerspSpan& p, const PerspItem* next,
+                                                             const PerspItem* end) {
   const PerspSpan* q = &p;
   for (;;) {
     persp_long_a64_inl(dest, n, texels, width, *q);
