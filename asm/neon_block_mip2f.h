@@ -52,118 +52,232 @@ static_assert(sb::simd::detail::kA53TableBytes == 16384 && sb::simd::detail::kM2
 #define SB_M2L_WT "v9"
 #define SB_M2L_WT4 "v10"
 
-// SB_M2L_B (same registers and work) in the order searched for the loop without a block break
-// between A and B (qemu then cuts the pair after about 134 instructions, 35 into B):
-// bench/order_search.py --head=100 --qcuts=0 --a57=0.5 on A + B, A pinned.
-#define SB_M2F_B \
+// B's results stored (at the next pair's start and the group's exit): SB_M2F_B loads each
+// output half's lanes 0-3 and 4-7 to two registers (two lane-load chains of four, not one of
+// eight: the Cortex-A57 model runs such a chain serially, 8 cycles a lane): the D half to v0
+// (lanes 0-3), v1 (4-7), D + 8's to v2, v3, x8's to v4, v5 and x8 + 8's to v6, v7, so each 16
+// bytes is one st4 of lane 0 (element i of the four registers in turn).
+#define SB_M2F_BSTORE \
+  "st4 {v0.s, v1.s, v2.s, v3.s}[0], [x17]\n\t" \
+  "st4 {v4.s, v5.s, v6.s, v7.s}[0], [x8]\n\t"
+
+// The loop's B stores and pair A (SB_M2F_BSTORE and SB_M2L_A_BODY's work) in the order searched
+// with SB_M2F_B; a group's first pair A still runs SB_M2L_A_BODY (its stores are SB_M2F_B's).
+#define SB_M2F_LOOPA \
+  "st4 {v0.s, v1.s, v2.s, v3.s}[0], [x17]\n\t" \
   "add v27.4s, v22.4s, v16.4s\n\t" \
-  "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v30.16b\n\t" \
-  "add v24.4s, v19.4s, v18.4s\n\t" \
   "add v28.4s, v23.4s, v17.4s\n\t" \
-  "stp d4, d5, [x17]\n\t" \
+  "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v30.16b\n\t" \
   "add v25.4s, v20.4s, v29.4s\n\t" \
+  "add v24.4s, v19.4s, v18.4s\n\t" \
   "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, v31.16b\n\t" \
   "add v22.4s, v27.4s, v16.4s\n\t" \
-  "fmov x0, d0\n\t" \
-  "fmov x1, v0.d[1]\n\t" \
-  "smull v16.4s, v9.4h, v8.h[0]\n\t" \
-  "add v20.4s, v25.4s, v29.4s\n\t" \
-  "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v31.16b\n\t" \
-  "add v19.4s, v24.4s, v18.4s\n\t" \
-  "add v23.4s, v28.4s, v17.4s\n\t" \
+  "st4 {v4.s, v5.s, v6.s, v7.s}[0], [x8]\n\t" \
   "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v30.16b\n\t" \
-  "smull v29.4s, v9.4h, v8.h[3]\n\t" \
+  "fmov x1, v0.d[1]\n\t" \
+  "add v23.4s, v28.4s, v17.4s\n\t" \
+  "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v31.16b\n\t" \
+  "fmov x0, d0\n\t" \
   "fmov x3, v1.d[1]\n\t" \
-  "smull v17.4s, v9.4h, v8.h[1]\n\t" \
-  "fmov x7, v3.d[1]\n\t" \
-  "fmov x6, d3\n\t" \
+  "add v19.4s, v24.4s, v18.4s\n\t" \
+  "add v20.4s, v25.4s, v29.4s\n\t" \
   "fmov x4, d2\n\t" \
-  "fmov x5, v2.d[1]\n\t" \
-  "smlal2 v16.4s, v9.8h, v8.h[1]\n\t" \
-  "smull v18.4s, v9.4h, v8.h[2]\n\t" \
-  "smlal2 v17.4s, v9.8h, v8.h[2]\n\t" \
+  "fmov x6, d3\n\t" \
   "fmov x2, d1\n\t" \
-  "stp d6, d7, [x8]\n\t" \
-  "adds x13, x13, x15\n\t" \
-  "ldr q26, [x14, #16]\n\t" \
-  "ror x24, x6, #32\n\t" \
+  "fmov x5, v2.d[1]\n\t" \
+  "fmov x7, v3.d[1]\n\t" \
+  "ldr q8, [x27, x13]\n\t" \
   "add x9, x16, w0, uxth\n\t" \
-  "ror x21, x4, #32\n\t" \
-  "add x23, x16, w6, uxth\n\t" \
   "ror x10, x0, #32\n\t" \
-  "ror x18, x2, #32\n\t" \
-  "add x20, x16, w4, uxth\n\t" \
   "add x12, x16, w2, uxth\n\t" \
-  "ldr b4, [x9]\n\t" \
-  "add x25, x16, w24, uxth\n\t" \
+  "ror x21, x4, #32\n\t" \
+  "ror x18, x2, #32\n\t" \
+  "add x0, x16, x0, lsr #48\n\t" \
   "add x11, x16, w10, uxth\n\t" \
-  "add x10, x16, x10, lsr #48\n\t" \
-  "ldr b7, [x23]\n\t" \
+  "add x23, x16, w6, uxth\n\t" \
+  "add x20, x16, w4, uxth\n\t" \
+  "ldr b5, [x12]\n\t" \
+  "ror x24, x6, #32\n\t" \
+  "ldr b4, [x9]\n\t" \
   "add x22, x16, w21, uxth\n\t" \
+  "ldr b7, [x23]\n\t" \
+  "add x21, x16, x21, lsr #48\n\t" \
   "add x19, x16, w18, uxth\n\t" \
   "add x18, x16, x18, lsr #48\n\t" \
-  "ldr b5, [x12]\n\t" \
-  "add x21, x16, x21, lsr #48\n\t" \
-  "ldr b6, [x20]\n\t" \
-  "add x24, x16, x24, lsr #48\n\t" \
-  "ld1 {v4.b}[1], [x10]\n\t" \
-  "add x23, x16, w7, uxth\n\t" \
-  "ror x10, x1, #32\n\t" \
+  "add x25, x16, w24, uxth\n\t" \
   "add x12, x16, w3, uxth\n\t" \
-  "ld1 {v5.b}[1], [x18]\n\t" \
-  "add x0, x16, x0, lsr #48\n\t" \
-  "ld1 {v6.b}[1], [x21]\n\t" \
+  "add x10, x16, x10, lsr #48\n\t" \
+  "add x24, x16, x24, lsr #48\n\t" \
+  "ldr b6, [x20]\n\t" \
   "add x2, x16, x2, lsr #48\n\t" \
+  "ld1 {v5.b}[1], [x18]\n\t" \
+  "add x6, x16, x6, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x10]\n\t" \
+  "ror x10, x1, #32\n\t" \
   "ld1 {v7.b}[1], [x24]\n\t" \
   "add x4, x16, x4, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x21]\n\t" \
+  "ror x18, x3, #32\n\t" \
+  "ldr q21, [x14]\n\t" \
+  "add x9, x16, w1, uxth\n\t" \
   "ld1 {v4.b}[2], [x11]\n\t" \
   "ror x21, x5, #32\n\t" \
   "ld1 {v5.b}[2], [x19]\n\t" \
   "add x20, x16, w5, uxth\n\t" \
   "ld1 {v6.b}[2], [x22]\n\t" \
-  "add x6, x16, x6, lsr #48\n\t" \
-  "ld1 {v7.b}[2], [x25]\n\t" \
-  "add x22, x16, w21, uxth\n\t" \
   "ror x24, x7, #32\n\t" \
-  "add x9, x16, w1, uxth\n\t" \
-  "ld1 {v5.b}[3], [x2]\n\t" \
-  "add x11, x16, w10, uxth\n\t" \
+  "ld1 {v7.b}[2], [x25]\n\t" \
+  "add x19, x16, w18, uxth\n\t" \
+  "ldr q26, [x14, #16]\n\t" \
+  "add x23, x16, w7, uxth\n\t" \
   "ld1 {v4.b}[3], [x0]\n\t" \
-  "ror x18, x3, #32\n\t" \
+  "add x11, x16, w10, uxth\n\t" \
+  "ld1 {v5.b}[3], [x2]\n\t" \
+  "add x10, x16, x10, lsr #48\n\t" \
   "ld1 {v6.b}[3], [x4]\n\t" \
   "add x25, x16, w24, uxth\n\t" \
   "ld1 {v7.b}[3], [x6]\n\t" \
+  "add x22, x16, w21, uxth\n\t" \
+  "ld1 {v4.b}[4], [x9]\n\t" \
+  "add x21, x16, x21, lsr #48\n\t" \
+  "ld1 {v5.b}[4], [x12]\n\t" \
+  "add x18, x16, x18, lsr #48\n\t" \
+  "ld1 {v6.b}[4], [x20]\n\t" \
+  "add x5, x16, x5, lsr #48\n\t" \
+  "ld1 {v7.b}[4], [x23]\n\t" \
+  "add x24, x16, x24, lsr #48\n\t" \
+  "ld1 {v4.b}[5], [x10]\n\t" \
+  "add x17, x17, x15, lsl #1\n\t" \
+  "ld1 {v5.b}[5], [x18]\n\t" \
+  "ld1 {v6.b}[5], [x21]\n\t" \
+  "add x14, x14, #32\n\t" \
+  "ld1 {v7.b}[5], [x24]\n\t" \
+  "add x3, x16, x3, lsr #48\n\t" \
+  "ld1 {v4.b}[6], [x11]\n\t" \
+  "add x1, x16, x1, lsr #48\n\t" \
+  "ld1 {v5.b}[6], [x19]\n\t" \
+  "ld1 {v6.b}[6], [x22]\n\t" \
+  "add x7, x16, x7, lsr #48\n\t" \
+  "ld1 {v7.b}[6], [x25]\n\t" \
+  "add x8, x17, x15\n\t" \
+  "ld1 {v4.b}[7], [x1]\n\t" \
+  "ld1 {v5.b}[7], [x3]\n\t" \
+  "ld1 {v6.b}[7], [x5]\n\t" \
+  "ld1 {v7.b}[7], [x7]\n\t"
+
+// SB_M2L_B (same registers and work, but the output halves' lanes as SB_M2F_BSTORE takes them)
+// in the order searched with SB_M2F_LOOPA for the loop without a block break between A and B
+// (qemu then cuts the pair after 133 instructions, 33 into B): bench/order_search.py --qcuts=0
+// --a57=0.05 on the whole loop, qemu_cuts.py knowing st4 (bench/mca_a53_block/README.md).
+#define SB_M2F_B \
+  "tbl v1.16b, {v19.16b, v20.16b, v21.16b}, v31.16b\n\t" \
+  "add v27.4s, v22.4s, v16.4s\n\t" \
+  "add v28.4s, v23.4s, v17.4s\n\t" \
+  "tbl v0.16b, {v21.16b, v22.16b, v23.16b}, v30.16b\n\t" \
+  "add v24.4s, v19.4s, v18.4s\n\t" \
+  "add v25.4s, v20.4s, v29.4s\n\t" \
+  "stp d4, d5, [x17]\n\t" \
+  "add v22.4s, v27.4s, v16.4s\n\t" \
+  "tbl v2.16b, {v26.16b, v27.16b, v28.16b}, v30.16b\n\t" \
+  "add v23.4s, v28.4s, v17.4s\n\t" \
+  "fmov x0, d0\n\t" \
+  "tbl v3.16b, {v24.16b, v25.16b, v26.16b}, v31.16b\n\t" \
+  "add v19.4s, v24.4s, v18.4s\n\t" \
+  "smull v16.4s, v9.4h, v8.h[0]\n\t" \
+  "add v20.4s, v25.4s, v29.4s\n\t" \
+  "fmov x1, v0.d[1]\n\t" \
+  "fmov x2, d1\n\t" \
+  "smull v17.4s, v9.4h, v8.h[1]\n\t" \
+  "fmov x6, d3\n\t" \
+  "fmov x3, v1.d[1]\n\t" \
+  "fmov x4, d2\n\t" \
+  "smull v29.4s, v9.4h, v8.h[3]\n\t" \
+  "smull v18.4s, v9.4h, v8.h[2]\n\t" \
+  "fmov x5, v2.d[1]\n\t" \
+  "fmov x7, v3.d[1]\n\t" \
+  "smlal2 v17.4s, v9.8h, v8.h[2]\n\t" \
+  "stp d6, d7, [x8]\n\t" \
+  "adds x13, x13, x15\n\t" \
+  "ror x24, x6, #32\n\t" \
+  "add x20, x16, w4, uxth\n\t" \
+  "add x9, x16, w0, uxth\n\t" \
+  "ror x10, x0, #32\n\t" \
+  "ror x21, x4, #32\n\t" \
+  "add x12, x16, w2, uxth\n\t" \
+  "add x23, x16, w6, uxth\n\t" \
+  "ldr q26, [x14, #16]\n\t" \
+  "add x11, x16, w10, uxth\n\t" \
+  "ror x18, x2, #32\n\t" \
+  "add x10, x16, x10, lsr #48\n\t" \
+  "ldr b0, [x9]\n\t" \
+  "add x22, x16, w21, uxth\n\t" \
+  "ldr b6, [x23]\n\t" \
+  "add x25, x16, w24, uxth\n\t" \
+  "ldr b2, [x12]\n\t" \
+  "add x21, x16, x21, lsr #48\n\t" \
+  "add x19, x16, w18, uxth\n\t" \
+  "add x18, x16, x18, lsr #48\n\t" \
+  "ldr b4, [x20]\n\t" \
+  "add x24, x16, x24, lsr #48\n\t" \
+  "ld1 {v0.b}[1], [x10]\n\t" \
+  "ror x10, x1, #32\n\t" \
+  "add x23, x16, w7, uxth\n\t" \
+  "add x12, x16, w3, uxth\n\t" \
+  "ld1 {v2.b}[1], [x18]\n\t" \
+  "add x0, x16, x0, lsr #48\n\t" \
+  "ld1 {v4.b}[1], [x21]\n\t" \
+  "add x2, x16, x2, lsr #48\n\t" \
+  "ld1 {v6.b}[1], [x24]\n\t" \
+  "add x4, x16, x4, lsr #48\n\t" \
+  "ld1 {v0.b}[2], [x11]\n\t" \
+  "ror x21, x5, #32\n\t" \
+  "ld1 {v2.b}[2], [x19]\n\t" \
+  "add x20, x16, w5, uxth\n\t" \
+  "ld1 {v4.b}[2], [x22]\n\t" \
+  "add x9, x16, w1, uxth\n\t" \
+  "add x6, x16, x6, lsr #48\n\t" \
+  "ror x24, x7, #32\n\t" \
+  "ld1 {v6.b}[2], [x25]\n\t" \
+  "add x22, x16, w21, uxth\n\t" \
+  "ld1 {v2.b}[3], [x2]\n\t" \
+  "add x11, x16, w10, uxth\n\t" \
+  "ld1 {v0.b}[3], [x0]\n\t" \
+  "ror x18, x3, #32\n\t" \
+  "ld1 {v4.b}[3], [x4]\n\t" \
+  "add x25, x16, w24, uxth\n\t" \
+  "ld1 {v6.b}[3], [x6]\n\t" \
   "add x10, x16, x10, lsr #48\n\t" \
   "ldr q21, [x14]\n\t" \
   "add x19, x16, w18, uxth\n\t" \
-  "ld1 {v4.b}[4], [x9]\n\t" \
+  "ldr b1, [x9]\n\t" \
   "add x21, x16, x21, lsr #48\n\t" \
-  "ld1 {v6.b}[4], [x20]\n\t" \
+  "ldr b5, [x20]\n\t" \
   "add x18, x16, x18, lsr #48\n\t" \
-  "ld1 {v5.b}[4], [x12]\n\t" \
+  "ldr b3, [x12]\n\t" \
   "add x24, x16, x24, lsr #48\n\t" \
-  "ld1 {v7.b}[4], [x23]\n\t" \
-  "add x3, x16, x3, lsr #48\n\t" \
-  "ld1 {v4.b}[5], [x10]\n\t" \
+  "ldr b7, [x23]\n\t" \
   "add x5, x16, x5, lsr #48\n\t" \
-  "ld1 {v6.b}[5], [x21]\n\t" \
-  "add x7, x16, x7, lsr #48\n\t" \
-  "ld1 {v5.b}[5], [x18]\n\t" \
-  "ld1 {v7.b}[5], [x24]\n\t" \
-  "smlal2 v29.4s, v9.8h, v8.h[4]\n\t" \
-  "ld1 {v6.b}[6], [x22]\n\t" \
+  "ld1 {v1.b}[1], [x10]\n\t" \
+  "add x3, x16, x3, lsr #48\n\t" \
+  "ld1 {v5.b}[1], [x21]\n\t" \
+  "ld1 {v3.b}[1], [x18]\n\t" \
+  "smlal2 v16.4s, v9.8h, v8.h[1]\n\t" \
+  "ld1 {v7.b}[1], [x24]\n\t" \
+  "ld1 {v5.b}[2], [x22]\n\t" \
   "add x1, x16, x1, lsr #48\n\t" \
-  "ld1 {v5.b}[6], [x19]\n\t" \
-  "add x17, x17, x15, lsl #1\n\t" \
-  "ld1 {v4.b}[6], [x11]\n\t" \
-  "ld1 {v7.b}[6], [x25]\n\t" \
+  "ld1 {v3.b}[2], [x19]\n\t" \
+  "add x7, x16, x7, lsr #48\n\t" \
+  "ld1 {v1.b}[2], [x11]\n\t" \
+  "ld1 {v7.b}[2], [x25]\n\t" \
   "smlal2 v18.4s, v9.8h, v8.h[3]\n\t" \
-  "ld1 {v6.b}[7], [x5]\n\t" \
-  "ld1 {v5.b}[7], [x3]\n\t" \
-  "ld1 {v4.b}[7], [x1]\n\t" \
-  "add x8, x17, x15\n\t" \
-  "ld1 {v7.b}[7], [x7]\n\t" \
+  "smlal2 v29.4s, v9.8h, v8.h[4]\n\t" \
+  "ld1 {v5.b}[3], [x5]\n\t" \
+  "ld1 {v1.b}[3], [x1]\n\t" \
+  "ld1 {v7.b}[3], [x7]\n\t" \
+  "add x17, x17, x15, lsl #1\n\t" \
+  "ld1 {v3.b}[3], [x3]\n\t" \
   "add x14, x14, #32\n\t" \
+  "add x8, x17, x15\n\t" \
   "b.ne 1b\n\t"
 
 // Arguments: x0 grid, w1 gw, x2 texels, w3 tw, w4 th, w5 mip (2), w6 soff, w7 toff, [sp] width,
@@ -547,10 +661,10 @@ asm(".pushsection .text.sb_neon_a53_m2f, \"ax\", %progbits\n\t"
     "5:\n\t" SB_M2L_HEAD SB_M2L_A_BODY
     "b 3f\n\t"
     ".p2align 6\n"
-    "1:\n\t" "stp d4, d5, [x17]\n\t" "stp d6, d7, [x8]\n\t" SB_M2L_A_BODY "3:\n\t" SB_M2F_B
+    "1:\n\t" SB_M2F_LOOPA "3:\n\t" SB_M2F_B
     // The group's exit (the C++ path's, tw != 32).
     "add x28, x28, #8\n\t"
-    "stp d4, d5, [x17]\n\t"
+    SB_M2F_BSTORE
     "ldp x14, x30, [sp]\n\t"
     "add x27, x27, #8\n\t"
     "add x13, x28, x15, lsl #1\n\t"
@@ -559,7 +673,6 @@ asm(".pushsection .text.sb_neon_a53_m2f, \"ax\", %progbits\n\t"
     "ldr q8, [x28, x15]\n\t"
     "add x26, x26, #16\n\t"
     "ldr q21, [x14]\n\t"
-    "stp d6, d7, [x8]\n\t"
     "cmp x26, x30\n\t"
     "ldr q26, [x14, #16]\n\t"
     "add x14, x14, #32\n\t"
@@ -597,6 +710,8 @@ asm(".pushsection .text.sb_neon_a53_m2f, \"ax\", %progbits\n\t"
 
 #undef SB_M2F_FRAME
 #undef SB_M2F_B
+#undef SB_M2F_BSTORE
+#undef SB_M2F_LOOPA
 #undef SB_M2F_L
 #undef SB_M2F_T
 
