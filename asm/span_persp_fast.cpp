@@ -68,7 +68,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if constexpr (kFixed16) {  // armhf: to_fixed in the VFP/NEON registers (see min_ufixed16)
       const double qu = min_ufixed16(cvt_ufixed16((urow + ux * px) * z), kUmax);
       const double qv = min_ufixed16(cvt_ufixed16((vrow + vx * px) * z), kVmax);
-      return Sample{fixed16_bits(qu), fixed16_bits(qv), z};
+      return Sample{fixed16_bits_if<kCurve>(qu), fixed16_bits_if<kCurve>(qv), z};
     } else if constexpr (kIntClamp) {
       return Sample{to_fixed_int((urow + ux * px) * z, p.umax), to_fixed_int((vrow + vx * px) * z, p.vmax), z};
     } else {
@@ -129,7 +129,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       pu0 = min_ufixed16(pu0, kUmax), pv0 = min_ufixed16(pv0, kVmax);
       pu1 = min_ufixed16(pu1, kUmax), pv1 = min_ufixed16(pv1, kVmax);
       pin7(pu0), pin7(pv0), pin7(pu1), pin7(pv1);
-      s0 = Sample{fixed16_bits(pu0), fixed16_bits(pv0), z0}, s1 = Sample{fixed16_bits(pu1), fixed16_bits(pv1), z1};
+      s0 = Sample{fixed16_bits_v(pu0), fixed16_bits_v(pv0), z0};
+      s1 = Sample{fixed16_bits_v(pu1), fixed16_bits_v(pv1), z1};
     } else {
       s0 = sample(P, z0), s1 = sample(P + double(16), z1);
     }
@@ -513,7 +514,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
         if constexpr (kFixed16) {  // the clamped values' bits
-          s2u = fixed16_bits(qu2), s2v = fixed16_bits(qv2), s3u = fixed16_bits(qu3), s3v = fixed16_bits(qv3);
+          s2u = fixed16_bits_if<kCurve>(qu2), s2v = fixed16_bits_if<kCurve>(qv2);
+          s3u = fixed16_bits_if<kCurve>(qu3), s3v = fixed16_bits_if<kCurve>(qv3);
         } else {
           s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
         }
