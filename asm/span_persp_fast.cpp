@@ -732,30 +732,40 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   RunSteps lu, lv;
   const int32_t du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
   const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
-  float64x1_t au, av, y, sf, qu, qv, tu, tv, c2;
+  double au, av, y, sf, qu, qv, tu, tv, cz, ch, c2;
   int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
+  // Groups 1 .. 4 as asm (each operation the C++ one's: fmsub = vfms_f64, fmadd = vfma_f64,
+  // fused), c2 = -2 (zc 0.5 (s1.z + s2.z)) one operation a group after that group's quotient
+  // work: in-order issue, none waits in front of the u, v chain; outputs early-clobber in
+  // registers of their own (no copies between the groups).
   auto step = [&](auto g) SB_LAMBDA_INLINE {
     constexpr int G = decltype(g)::value;
     if constexpr (G == 0) {
-      au = vdup_n_f64(double(du)), av = vdup_n_f64(double(dv));
-      y = vld1_f64(&kRecipSteps[sd]), sf = vdup_n_f64(double(sd));
-      c2 = vdup_n_f64(-2.0 * (zc * 0.5 * (s1.z + s2.z)));
-      pin(au), pin(av), pin(y), pin(sf), pin(c2);
+      au = double(du), av = double(dv);
+      y = kRecipSteps[sd], sf = double(sd);
+      pin(au), pin(av), pin(y), pin(sf);
     } else if constexpr (G == 1) {
-      qu = vmul_f64(au, y), qv = vmul_f64(av, y);  // div_steps
-      pin(qu), pin(qv);
+      __asm__ volatile("fmul %d0, %d3, %d5\n\tfmul %d1, %d4, %d5\n\tfadd %d2, %d6, %d7"  // div_steps
+                       : "=&w"(qu), "=&w"(qv), "=&w"(cz)
+                       : "w"(au), "w"(av), "w"(y), "w"(s1.z), "w"(s2.z));
     } else if constexpr (G == 2) {
-      tu = vfms_f64(au, qu, sf), tv = vfms_f64(av, qv, sf);
-      pin(tu), pin(tv);
+      __asm__ volatile("fmsub %d0, %d3, %d5, %d6\n\tfmsub %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
+                       : "=&w"(tu), "=&w"(tv), "=&w"(ch)
+                       : "w"(qu), "w"(qv), "w"(sf), "w"(au), "w"(av), "w"(zc * 0.5), "w"(cz));
     } else if constexpr (G == 3) {
-      qu = vfma_f64(qu, tu, y), qv = vfma_f64(qv, tv, y);
-      pin(qu), pin(qv);
+      double u2, v2;
+      __asm__ volatile("fmadd %d0, %d3, %d5, %d6\n\tfmadd %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
+                       : "=&w"(u2), "=&w"(v2), "=&w"(c2)
+                       : "w"(tu), "w"(tv), "w"(y), "w"(qu), "w"(qv), "w"(ch), "w"(-2.0));
+      qu = u2, qv = v2;
     } else if constexpr (G == 4) {
-      lnu = cvt_sat(vget_lane_f64(qu, 0)), lnv = cvt_sat(vget_lane_f64(qv, 0));
-      tu = vmul_f64(qu, c2), tv = vmul_f64(qv, c2);
-      pin(lnu), pin(lnv), pin(tu), pin(tv);
+      double u2, v2;
+      __asm__ volatile("fcvtzs %w0, %d4\n\tfcvtzs %w1, %d5\n\tfmul %d2, %d4, %d6\n\tfmul %d3, %d5, %d6"
+                       : "=&r"(lnu), "=&r"(lnv), "=&w"(u2), "=&w"(v2)
+                       : "w"(qu), "w"(qv), "w"(c2));
+      tu = u2, tv = v2;
     } else if constexpr (G == 5) {
-      ddu = cvt_sat(vget_lane_f64(tu, 0)), ddv = cvt_sat(vget_lane_f64(tv, 0));
+      ddu = cvt_sat(tu), ddv = cvt_sat(tv);
       pin(ddu), pin(ddv);
     } else if constexpr (G == 6) {
       ddu = (uint32_t(ddu) + 999999999u < 1999999999u) ? ddu : 0;
