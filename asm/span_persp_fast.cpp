@@ -734,6 +734,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
   double au, av, y, sf, qu, qv, tu, tv, cz, ch, c2;
   int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
+  uint32_t k1 = 999999999u, k2 = 1999999999u;  // group 6's constants, set in group 1 (while fmsub waits)
   // Groups 1 .. 4 as asm (each operation the C++ one's: fmsub = vfms_f64, fmadd = vfma_f64,
   // fused), c2 = -2 (zc 0.5 (s1.z + s2.z)) one operation a group after that group's quotient
   // work: in-order issue, none waits in front of the u, v chain; outputs early-clobber in
@@ -748,6 +749,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       __asm__ volatile("fmul %d0, %d3, %d5\n\tfmul %d1, %d4, %d5\n\tfadd %d2, %d6, %d7"  // div_steps
                        : "=&w"(qu), "=&w"(qv), "=&w"(cz)
                        : "w"(au), "w"(av), "w"(y), "w"(s1.z), "w"(s2.z));
+      pin(k1), pin(k2);
     } else if constexpr (G == 2) {
       __asm__ volatile("fmsub %d0, %d3, %d5, %d6\n\tfmsub %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
                        : "=&w"(tu), "=&w"(tv), "=&w"(ch)
@@ -768,8 +770,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       ddu = cvt_sat(tu), ddv = cvt_sat(tv);
       pin(ddu), pin(ddv);
     } else if constexpr (G == 6) {
-      ddu = (uint32_t(ddu) + 999999999u < 1999999999u) ? ddu : 0;
-      ddv = (uint32_t(ddv) + 999999999u < 1999999999u) ? ddv : 0;
+      ddu = (uint32_t(ddu) + k1 < k2) ? ddu : 0;
+      ddv = (uint32_t(ddv) + k1 < k2) ? ddv : 0;
       pin(ddu), pin(ddv);
     } else if constexpr (G == 9) {
       last_steps_ddi(steps, du, dv, lnu, lnv, ddu, ddv, &lu, &lv);
