@@ -77,7 +77,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   };
   double P = p.px0;
   int left = n;
-  double z0, z1, z2, z3;
+  double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
   if (n <= 16) {  // one run, from pixel 0 to pixel n - 1 (one pixel: steps 0, no second sample)
     const double pos1 = P + double(n - 1);
     recip2(zrow + zix * P, zrow + zix * pos1, &z0, &z1);
@@ -109,8 +109,17 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #else
   constexpr bool kDivFirst = false;
 #endif
-  Sample s0, s1;
-  double pos2, pos3 = 0.0;
+  // aarch64 linear: the head's samples 0 .. 3 and run 0's steps in the vector block below
+  // (the vector loop always runs there: n > kShortMax = 64 > 48; the scalar head here is
+  // skipped), the tail's samples r + 2, r + 3 as that loop converted them, and its last
+  // steps by sdiv (below).
+#if defined(__aarch64__) && defined(__GNUC__)
+  constexpr bool kPre = !kCurve;
+#else
+  constexpr bool kPre = false;
+#endif
+  Sample s0{}, s1{};
+  double pos2 = 0.0, pos3 = 0.0;
 #if defined(__arm__) && !defined(__aarch64__)
   // Samples 0 and 1; armhf second order (kFixed16) keeps their clamped VFP values for the
   // steps below: sample()'s operations.
@@ -154,7 +163,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     samples01();
   } else
 #endif
-  {
+  if constexpr (!kPre) {
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
 #if defined(__arm__) && !defined(__aarch64__)
   if constexpr (!kDivFirst) samples01();
@@ -223,13 +232,6 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   constexpr bool kEarlyB = false;
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
-  // aarch64 linear: the tail's samples r + 2, r + 3 as the vector loop converted them (that
-  // loop always runs there: n > kShortMax = 64 > 48), and its last steps by sdiv (below).
-#if defined(__aarch64__) && defined(__GNUC__)
-  constexpr bool kPre = !kCurve;
-#else
-  constexpr bool kPre = false;
-#endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
   {
@@ -266,20 +268,48 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       const double P2i = (P + double(16)) + double(16);
       float64x2_t pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
       float64x2_t ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
-      float64x2_t z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
-      float64x2_t pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
-      // Samples r + 2, r + 3 converted, narrowed and clamped below (not yet above), as the
-      // loop leaves them.
-      int32x2_t n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
-      int32x2_t n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
-      n2 = vmax_s32(n2, kZero), n3 = vmax_s32(n3, kZero);
-      if constexpr (kCurve) n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);  // second order: clamped above too
-      // Second order: the depths [z_r, z_{r+1}] and [z_{r+1}, z_{r+2}].
-      float64x2_t zp = vcombine_f64(vdup_n_f64(s0.z), vdup_n_f64(s1.z));
-      float64x2_t zs = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
-      // Samples r, r + 1 as [u, v] vectors (the tail reads them; few integer registers).
-      int32x2_t n0 = vcreate_s32((uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u));
-      int32x2_t n1 = vcreate_s32((uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u));
+      float64x2_t z23, pos23, zp, zs;
+      int32x2_t n0, n1, n2, n3;
+      uint64_t uv0 = 0, duv = 0;  // linear: run 0's packed start and steps
+      if constexpr (kPre) {
+        // The head as the loop's stage computes samples (the scalar head's operations lane
+        // by lane, the same bits): positions [P, P + 16] and [P + 32, (P + 16) + 32] (o_3 -
+        // o_1 = 32: n > 64), depths 1 / max(zrow + zix pos, kMinZi) by two vector divides,
+        // (urow + ux pos, vrow + vx pos) z by lane; to_fixed as fcvtzu #16, uqxtn, umin
+        // (see above: to_fixed_sel's value). Samples 0 and 1 clamped here, 2 and 3 as the
+        // loop leaves them (clamped above in its stage 0); run 0's steps steps16_packed.
+        const float64x2_t pos01 = vcombine_f64(vdup_n_f64(P), vdup_n_f64(P + double(16)));
+        pos23 = vaddq_f64(pos01, k32);
+        const float64x2_t z01 = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pos01), kMin));
+        z23 = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pos23), kMin));
+        const float64x2_t ts0 = vfmaq_laneq_f64(kUVrow, kUVx, pos01, 0);
+        const float64x2_t ts1 = vfmaq_laneq_f64(kUVrow, kUVx, pos01, 1);
+        const float64x2_t ts2 = vfmaq_laneq_f64(kUVrow, kUVx, pos23, 0);
+        const float64x2_t ts3 = vfmaq_laneq_f64(kUVrow, kUVx, pos23, 1);
+        auto fix = [](float64x2_t q) { return vreinterpret_s32_u32(vqmovn_u64(vcvtq_n_u64_f64(q, 16))); };
+        n0 = fix(vmulq_laneq_f64(ts0, z01, 0)), n1 = fix(vmulq_laneq_f64(ts1, z01, 1));
+        n2 = fix(vmulq_laneq_f64(ts2, z23, 0)), n3 = fix(vmulq_laneq_f64(ts3, z23, 1));
+        n0 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n0), kMaxU));
+        n1 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n1), kMaxU));
+        zp = z01, zs = z01;
+        uv0 = vget_lane_u64(vreinterpret_u64_s32(n0), 0);
+        duv = steps16_packed(uv0, vget_lane_u64(vreinterpret_u64_s32(n1), 0));
+      } else {
+        z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
+        pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
+        // Samples r + 2, r + 3 converted, narrowed and clamped below (not yet above), as the
+        // loop leaves them.
+        n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
+        n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
+        n2 = vmax_s32(n2, kZero), n3 = vmax_s32(n3, kZero);
+        if constexpr (kCurve) n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);  // second order: clamped above too
+        // Second order: the depths [z_r, z_{r+1}] and [z_{r+1}, z_{r+2}].
+        zp = vcombine_f64(vdup_n_f64(s0.z), vdup_n_f64(s1.z));
+        zs = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
+        // Samples r, r + 1 as [u, v] vectors (the tail reads them; few integer registers).
+        n0 = vcreate_s32((uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u));
+        n1 = vcreate_s32((uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u));
+      }
       // lin_slot's state: the chains of the run being addressed, the last group's
       // addresses, the bytes loaded in the last slot, the gathered byte pairs.
       uint64_t c0, c1, c2, c3, e, pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
@@ -288,7 +318,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         lin_start2(c0, c1, e, e1, dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d),
                    pack(sv.dd, su.dd));
       } else {
-        lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+        if constexpr (kPre) {
+          lin_start(c0, c1, c2, c3, e, uv0, duv);
+        } else {
+          lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+        }
       }
       const uint64_t w64 = uint64_t(width);
       uint64_t xo0 = 0, xo1 = 0;  // linear: samples r, r + 1 packed as the last pass read them
