@@ -254,10 +254,12 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     // loop above takes them (ddf = delta (zck (z_a + z_b))), and only for spans of two
     // passes or more (for one the vector setup costs more than it saves).
     if (left > (kCurve ? 80 : 48)) {
-      const float64x2_t kZrow = vdupq_n_f64(zrow), kZix = vdupq_n_f64(zix), kMin = vdupq_n_f64(kMinZi);
-      const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
-      const float64x2_t kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
-      const float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
+      // (Not const: the linear head's asm block below sets them itself.)
+      float64x2_t kZrow = vdupq_n_f64(zrow), kZix = vdupq_n_f64(zix);
+      const float64x2_t kMin = vdupq_n_f64(kMinZi);
+      float64x2_t kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
+      float64x2_t kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
+      float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
       const int32x2_t kMax = vcreate_s32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
       const int32x2_t kZero = vdup_n_s32(0);
       const uint32x2_t kMaxU = vreinterpret_u32_s32(kMax);
@@ -278,14 +280,49 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         // (urow + ux pos, vrow + vx pos) z by lane; to_fixed as fcvtzu #16, uqxtn, umin
         // (see above: to_fixed_sel's value). Samples 0 and 1 clamped here, 2 and 3 as the
         // loop leaves them (clamped above in its stage 0); run 0's steps steps16_packed.
-        const float64x2_t pos01 = vcombine_f64(vdup_n_f64(P), vdup_n_f64(P + double(16)));
-        pos23 = vaddq_f64(pos01, k32);
-        const float64x2_t z01 = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pos01), kMin));
-        z23 = vdivq_f64(kOne, vmaxnmq_f64(vfmaq_f64(kZrow, kZix, pos23), kMin));
-        const float64x2_t ts0 = vfmaq_laneq_f64(kUVrow, kUVx, pos01, 0);
-        const float64x2_t ts1 = vfmaq_laneq_f64(kUVrow, kUVx, pos01, 1);
-        const float64x2_t ts2 = vfmaq_laneq_f64(kUVrow, kUVx, pos23, 0);
-        const float64x2_t ts3 = vfmaq_laneq_f64(kUVrow, kUVx, pos23, 1);
+        // One asm block up to the two divides (searched against the Cortex-A53 model with
+        // bench/order_search.py: the model holds every later instruction behind a divide, so
+        // the divides go as early as their inputs allow): the loop's constants kZrow, kZix,
+        // kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32 (16 + 16: 32.0 has no fmov
+        // immediate), kOne; pos01 = [P, P + 16] (the
+        // scalar code's P + 16), pos23 = pos01 + 32; z01 = 1 / max(zrow + zix pos01, kMin),
+        // z23 likewise; ts_j = [urow, vrow] + [ux, vx] pos_j (fmla by lane: the scalar code's
+        // fmadd, the same bits).
+        float64x2_t z01, pos01, ts0, ts1, ts2, ts3, p16;
+        __asm__(
+            "fmov %[k16].2d, #16.0\n\t"
+            "dup %[kzx].2d, %[zix].d[0]\n\t"
+            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
+            "dup %[z01].2d, %[zrow].d[0]\n\t"
+            "fadd %d[p16], %d[P], %d[k16]\n\t"
+            "zip1 %[ts1].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
+            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
+            "zip1 %[pos01].2d, %[P].2d, %[p16].2d\n\t"
+            "dup %[z23].2d, %[zrow].d[0]\n\t"
+            "fmov %[one].2d, #1.0\n\t"
+            "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
+            "dup %[kzr].2d, %[zrow].d[0]\n\t"
+            "fadd %[pos23].2d, %[pos01].2d, %[k32].2d\n\t"
+            "fmla %[z01].2d, %[pos01].2d, %[zix].d[0]\n\t"
+            "zip1 %[ts2].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
+            "fmla %[ts0].2d, %[uvx].2d, %[P].d[0]\n\t"
+            "fmla %[z23].2d, %[pos23].2d, %[zix].d[0]\n\t"
+            "fmaxnm %[z01].2d, %[z01].2d, %[kmin].2d\n\t"
+            "zip1 %[uvr].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fmla %[ts3].2d, %[uvx].2d, %[pos23].d[1]\n\t"
+            "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[0]\n\t"
+            "fmaxnm %[z23].2d, %[z23].2d, %[kmin].2d\n\t"
+            "fdiv %[z01].2d, %[one].2d, %[z01].2d\n\t"
+            "fdiv %[z23].2d, %[one].2d, %[z23].2d"
+            : [z01] "=&w"(z01), [z23] "=&w"(z23), [pos01] "=&w"(pos01), [pos23] "=&w"(pos23), [ts0] "=&w"(ts0),
+              [ts1] "=&w"(ts1), [ts2] "=&w"(ts2), [ts3] "=&w"(ts3), [p16] "=&w"(p16), [k16] "=&w"(k16),
+              [k32] "=&w"(k32), [one] "=&w"(kOne), [kzr] "=&w"(kZrow), [kzx] "=&w"(kZix), [uvr] "=&w"(kUVrow),
+              [uvx] "=&w"(kUVx)
+            : [P] "w"(P), [zrow] "w"(zrow), [zix] "w"(zix), [urow] "w"(urow), [vrow] "w"(vrow), [ux] "w"(ux),
+              [vx] "w"(vx), [kmin] "w"(kMin));
+        (void)pos01, (void)p16;
         auto fix = [](float64x2_t q) { return vreinterpret_s32_u32(vqmovn_u64(vcvtq_n_u64_f64(q, 16))); };
         n0 = fix(vmulq_laneq_f64(ts0, z01, 0)), n1 = fix(vmulq_laneq_f64(ts1, z01, 1));
         n2 = fix(vmulq_laneq_f64(ts2, z23, 0)), n3 = fix(vmulq_laneq_f64(ts3, z23, 1));
