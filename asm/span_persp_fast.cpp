@@ -280,31 +280,34 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         // (urow + ux pos, vrow + vx pos) z by lane; to_fixed as fcvtzu #16, uqxtn, umin
         // (see above: to_fixed_sel's value). Samples 0 and 1 clamped here, 2 and 3 as the
         // loop leaves them (clamped above in its stage 0); run 0's steps steps16_packed.
-        // One asm block up to the two divides (searched against the Cortex-A53 model with
-        // bench/order_search.py: the model holds every later instruction behind a divide, so
-        // the divides go as early as their inputs allow): the loop's constants kZrow, kZix,
-        // kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32 (16 + 16: 32.0 has no fmov
-        // immediate), kOne; pos01 = [P, P + 16] (the
-        // scalar code's P + 16), pos23 = pos01 + 32; z01 = 1 / max(zrow + zix pos01, kMin),
-        // z23 likewise; ts_j = [urow, vrow] + [ux, vx] pos_j (fmla by lane: the scalar code's
-        // fmadd, the same bits).
-        float64x2_t z01, pos01, ts0, ts1, ts2, ts3, p16;
+        // The head's vector work as one asm block (searched against the Cortex-A53 model
+        // with bench/order_search.py: the model holds every later instruction behind a
+        // divide, so the divides go as early as their inputs allow): the loop's constants
+        // kZrow, kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32 (16 + 16: 32.0 has no
+        // fmov immediate), kOne; pos01 = [P, P + 16] (the scalar code's P + 16), pos23 =
+        // pos01 + 32; z01 = 1 / max(zrow + zix pos01, kMin), z23 likewise; ts_j = [urow,
+        // vrow] + [ux, vx] pos_j (fmla by lane: the scalar code's fmadd, the same bits);
+        // samples j = 0 .. 3 as ts_j z (lane j of z01, z23), fcvtzu #16, uqxtn, and for 0 and
+        // 1 umin (2 and 3 as the loop leaves them); pp = [(P + 16) + 16, ((P + 16) + 16) + 16]
+        // (the walker's sums, as above) in pos01's register once that is used.
+        float64x2_t z01, ts0, ts1, ts2, ts3, p16;
+        const uint32x2_t kmaxu = kMaxU;
         __asm__(
             "fmov %[k16].2d, #16.0\n\t"
-            "dup %[kzx].2d, %[zix].d[0]\n\t"
-            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
-            "dup %[z01].2d, %[zrow].d[0]\n\t"
-            "fadd %d[p16], %d[P], %d[k16]\n\t"
-            "zip1 %[ts1].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
-            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
-            "zip1 %[pos01].2d, %[P].2d, %[p16].2d\n\t"
             "dup %[z23].2d, %[zrow].d[0]\n\t"
+            "dup %[z01].2d, %[zrow].d[0]\n\t"
             "fmov %[one].2d, #1.0\n\t"
+            "fadd %d[p16], %d[P], %d[k16]\n\t"
+            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
+            "dup %[kzx].2d, %[zix].d[0]\n\t"
+            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
+            "zip1 %[pp].2d, %[P].2d, %[p16].2d\n\t"
             "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
+            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
             "dup %[kzr].2d, %[zrow].d[0]\n\t"
-            "fadd %[pos23].2d, %[pos01].2d, %[k32].2d\n\t"
-            "fmla %[z01].2d, %[pos01].2d, %[zix].d[0]\n\t"
+            "zip1 %[ts1].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fadd %[pos23].2d, %[pp].2d, %[k32].2d\n\t"
+            "fmla %[z01].2d, %[pp].2d, %[zix].d[0]\n\t"
             "zip1 %[ts2].2d, %[urow].2d, %[vrow].2d\n\t"
             "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
             "fmla %[ts0].2d, %[uvx].2d, %[P].d[0]\n\t"
@@ -315,19 +318,33 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
             "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[0]\n\t"
             "fmaxnm %[z23].2d, %[z23].2d, %[kmin].2d\n\t"
             "fdiv %[z01].2d, %[one].2d, %[z01].2d\n\t"
-            "fdiv %[z23].2d, %[one].2d, %[z23].2d"
-            : [z01] "=&w"(z01), [z23] "=&w"(z23), [pos01] "=&w"(pos01), [pos23] "=&w"(pos23), [ts0] "=&w"(ts0),
+            "fdiv %[z23].2d, %[one].2d, %[z23].2d\n\t"
+            "fmul %[ts0].2d, %[ts0].2d, %[z01].d[0]\n\t"
+            "fmul %[ts1].2d, %[ts1].2d, %[z01].d[1]\n\t"
+            "fcvtzu %[ts0].2d, %[ts0].2d, #16\n\t"
+            "fmul %[ts2].2d, %[ts2].2d, %[z23].d[0]\n\t"
+            "fcvtzu %[ts1].2d, %[ts1].2d, #16\n\t"
+            "fmul %[ts3].2d, %[ts3].2d, %[z23].d[1]\n\t"
+            "uqxtn %[ts0].2s, %[ts0].2d\n\t"
+            "fadd %d[pp], %d[p16], %d[k16]\n\t"
+            "uqxtn %[ts1].2s, %[ts1].2d\n\t"
+            "fcvtzu %[ts2].2d, %[ts2].2d, #16\n\t"
+            "fcvtzu %[ts3].2d, %[ts3].2d, #16\n\t"
+            "umin %[ts0].2s, %[ts0].2s, %[kmaxu].2s\n\t"
+            "fadd %d[p16], %d[pp], %d[k16]\n\t"
+            "umin %[ts1].2s, %[ts1].2s, %[kmaxu].2s\n\t"
+            "uqxtn %[ts2].2s, %[ts2].2d\n\t"
+            "uqxtn %[ts3].2s, %[ts3].2d\n\t"
+            "zip1 %[pp].2d, %[pp].2d, %[p16].2d"
+            : [z01] "=&w"(z01), [z23] "=&w"(z23), [pp] "=&w"(pp), [pos23] "=&w"(pos23), [ts0] "=&w"(ts0),
               [ts1] "=&w"(ts1), [ts2] "=&w"(ts2), [ts3] "=&w"(ts3), [p16] "=&w"(p16), [k16] "=&w"(k16),
               [k32] "=&w"(k32), [one] "=&w"(kOne), [kzr] "=&w"(kZrow), [kzx] "=&w"(kZix), [uvr] "=&w"(kUVrow),
               [uvx] "=&w"(kUVx)
             : [P] "w"(P), [zrow] "w"(zrow), [zix] "w"(zix), [urow] "w"(urow), [vrow] "w"(vrow), [ux] "w"(ux),
-              [vx] "w"(vx), [kmin] "w"(kMin));
-        (void)pos01, (void)p16;
-        auto fix = [](float64x2_t q) { return vreinterpret_s32_u32(vqmovn_u64(vcvtq_n_u64_f64(q, 16))); };
-        n0 = fix(vmulq_laneq_f64(ts0, z01, 0)), n1 = fix(vmulq_laneq_f64(ts1, z01, 1));
-        n2 = fix(vmulq_laneq_f64(ts2, z23, 0)), n3 = fix(vmulq_laneq_f64(ts3, z23, 1));
-        n0 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n0), kMaxU));
-        n1 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n1), kMaxU));
+              [vx] "w"(vx), [kmin] "w"(kMin), [kmaxu] "w"(kmaxu));
+        (void)p16;
+        auto low = [](float64x2_t x) { return vreinterpret_s32_f64(vget_low_f64(x)); };
+        n0 = low(ts0), n1 = low(ts1), n2 = low(ts2), n3 = low(ts3);
         zp = z01, zs = z01;
         uv0 = vget_lane_u64(vreinterpret_u64_s32(n0), 0);
         duv = steps16_packed(uv0, vget_lane_u64(vreinterpret_u64_s32(n1), 0));
