@@ -77,7 +77,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   };
   double P = p.px0;
   int left = n;
-  double z0, z1, z2, z3;
+  double z0 = 0.0, z1 = 0.0, z2 = 0.0, z3 = 0.0;
   if (n <= 16) {  // one run, from pixel 0 to pixel n - 1 (one pixel: steps 0, no second sample)
     const double pos1 = P + double(n - 1);
     recip2(zrow + zix * P, zrow + zix * pos1, &z0, &z1);
@@ -109,8 +109,17 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #else
   constexpr bool kDivFirst = false;
 #endif
-  Sample s0, s1;
-  double pos2, pos3 = 0.0;
+  // aarch64 linear: the head's samples 0 .. 3 and run 0's steps in the vector block below
+  // (the vector loop always runs there: n > kShortMax = 64 > 48; the scalar head here is
+  // skipped), the tail's samples r + 2, r + 3 as that loop converted them, and its last
+  // steps by sdiv (below).
+#if defined(__aarch64__) && defined(__GNUC__)
+  constexpr bool kPre = !kCurve;
+#else
+  constexpr bool kPre = false;
+#endif
+  Sample s0{}, s1{};
+  double pos2 = 0.0, pos3 = 0.0;
 #if defined(__arm__) && !defined(__aarch64__)
   // Samples 0 and 1; armhf second order (kFixed16) keeps their clamped VFP values for the
   // steps below: sample()'s operations.
@@ -154,7 +163,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     samples01();
   } else
 #endif
-  {
+  if constexpr (!kPre) {
   recip2(zrow + zix * P, zrow + zix * (P + double(16)), &z0, &z1);
 #if defined(__arm__) && !defined(__aarch64__)
   if constexpr (!kDivFirst) samples01();
@@ -223,13 +232,6 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   constexpr bool kEarlyB = false;
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
-  // aarch64 linear: the tail's samples r + 2, r + 3 as the vector loop converted them (that
-  // loop always runs there: n > kShortMax = 64 > 48), and its last steps by sdiv (below).
-#if defined(__aarch64__) && defined(__GNUC__)
-  constexpr bool kPre = !kCurve;
-#else
-  constexpr bool kPre = false;
-#endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
   {
@@ -252,10 +254,12 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     // loop above takes them (ddf = delta (zck (z_a + z_b))), and only for spans of two
     // passes or more (for one the vector setup costs more than it saves).
     if (left > (kCurve ? 80 : 48)) {
-      const float64x2_t kZrow = vdupq_n_f64(zrow), kZix = vdupq_n_f64(zix), kMin = vdupq_n_f64(kMinZi);
-      const float64x2_t kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
-      const float64x2_t kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
-      const float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
+      // (Not const: the linear head's asm block below sets them itself.)
+      float64x2_t kZrow = vdupq_n_f64(zrow), kZix = vdupq_n_f64(zix);
+      const float64x2_t kMin = vdupq_n_f64(kMinZi);
+      float64x2_t kUVrow = vcombine_f64(vdup_n_f64(urow), vdup_n_f64(vrow));
+      float64x2_t kUVx = vcombine_f64(vdup_n_f64(ux), vdup_n_f64(vx));
+      float64x2_t k16 = vdupq_n_f64(16.0), k32 = vdupq_n_f64(32.0), kOne = vdupq_n_f64(1.0);
       const int32x2_t kMax = vcreate_s32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
       const int32x2_t kZero = vdup_n_s32(0);
       const uint32x2_t kMaxU = vreinterpret_u32_s32(kMax);
@@ -266,20 +270,100 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       const double P2i = (P + double(16)) + double(16);
       float64x2_t pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
       float64x2_t ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
-      float64x2_t z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
-      float64x2_t pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
-      // Samples r + 2, r + 3 converted, narrowed and clamped below (not yet above), as the
-      // loop leaves them.
-      int32x2_t n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
-      int32x2_t n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
-      n2 = vmax_s32(n2, kZero), n3 = vmax_s32(n3, kZero);
-      if constexpr (kCurve) n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);  // second order: clamped above too
-      // Second order: the depths [z_r, z_{r+1}] and [z_{r+1}, z_{r+2}].
-      float64x2_t zp = vcombine_f64(vdup_n_f64(s0.z), vdup_n_f64(s1.z));
-      float64x2_t zs = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
-      // Samples r, r + 1 as [u, v] vectors (the tail reads them; few integer registers).
-      int32x2_t n0 = vcreate_s32((uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u));
-      int32x2_t n1 = vcreate_s32((uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u));
+      float64x2_t z23, pos23, zp, zs;
+      int32x2_t n0, n1, n2, n3;
+      uint64_t uv0 = 0, duv = 0;  // linear: run 0's packed start and steps
+      if constexpr (kPre) {
+        // The head as the loop's stage computes samples (the scalar head's operations lane
+        // by lane, the same bits): positions [P, P + 16] and [P + 32, (P + 16) + 32] (o_3 -
+        // o_1 = 32: n > 64), depths 1 / max(zrow + zix pos, kMinZi) by two vector divides,
+        // (urow + ux pos, vrow + vx pos) z by lane; to_fixed as fcvtzu #16, uqxtn, umin
+        // (see above: to_fixed_sel's value). Samples 0 and 1 clamped here, 2 and 3 as the
+        // loop leaves them (clamped above in its stage 0); run 0's steps steps16_packed.
+        // The head's vector work as one asm block (searched against the Cortex-A53 model
+        // with bench/order_search.py: the model holds every later instruction behind a
+        // divide, so the divides go as early as their inputs allow): the loop's constants
+        // kZrow, kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32 (16 + 16: 32.0 has no
+        // fmov immediate), kOne; pos01 = [P, P + 16] (the scalar code's P + 16), pos23 =
+        // pos01 + 32; z01 = 1 / max(zrow + zix pos01, kMin), z23 likewise; ts_j = [urow,
+        // vrow] + [ux, vx] pos_j (fmla by lane: the scalar code's fmadd, the same bits);
+        // samples j = 0 .. 3 as ts_j z (lane j of z01, z23), fcvtzu #16, uqxtn, and for 0 and
+        // 1 umin (2 and 3 as the loop leaves them); pp = [(P + 16) + 16, ((P + 16) + 16) + 16]
+        // (the walker's sums, as above) in pos01's register once that is used.
+        float64x2_t z01, ts0, ts1, ts2, ts3, p16;
+        const uint32x2_t kmaxu = kMaxU;
+        __asm__(
+            "fmov %[k16].2d, #16.0\n\t"
+            "dup %[z23].2d, %[zrow].d[0]\n\t"
+            "dup %[z01].2d, %[zrow].d[0]\n\t"
+            "fmov %[one].2d, #1.0\n\t"
+            "fadd %d[p16], %d[P], %d[k16]\n\t"
+            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
+            "dup %[kzx].2d, %[zix].d[0]\n\t"
+            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
+            "zip1 %[pp].2d, %[P].2d, %[p16].2d\n\t"
+            "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
+            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
+            "dup %[kzr].2d, %[zrow].d[0]\n\t"
+            "zip1 %[ts1].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fadd %[pos23].2d, %[pp].2d, %[k32].2d\n\t"
+            "fmla %[z01].2d, %[pp].2d, %[zix].d[0]\n\t"
+            "zip1 %[ts2].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
+            "fmla %[ts0].2d, %[uvx].2d, %[P].d[0]\n\t"
+            "fmla %[z23].2d, %[pos23].2d, %[zix].d[0]\n\t"
+            "fmaxnm %[z01].2d, %[z01].2d, %[kmin].2d\n\t"
+            "zip1 %[uvr].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fmla %[ts3].2d, %[uvx].2d, %[pos23].d[1]\n\t"
+            "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[0]\n\t"
+            "fmaxnm %[z23].2d, %[z23].2d, %[kmin].2d\n\t"
+            "fdiv %[z01].2d, %[one].2d, %[z01].2d\n\t"
+            "fdiv %[z23].2d, %[one].2d, %[z23].2d\n\t"
+            "fmul %[ts0].2d, %[ts0].2d, %[z01].d[0]\n\t"
+            "fmul %[ts1].2d, %[ts1].2d, %[z01].d[1]\n\t"
+            "fcvtzu %[ts0].2d, %[ts0].2d, #16\n\t"
+            "fmul %[ts2].2d, %[ts2].2d, %[z23].d[0]\n\t"
+            "fcvtzu %[ts1].2d, %[ts1].2d, #16\n\t"
+            "fmul %[ts3].2d, %[ts3].2d, %[z23].d[1]\n\t"
+            "uqxtn %[ts0].2s, %[ts0].2d\n\t"
+            "fadd %d[pp], %d[p16], %d[k16]\n\t"
+            "uqxtn %[ts1].2s, %[ts1].2d\n\t"
+            "fcvtzu %[ts2].2d, %[ts2].2d, #16\n\t"
+            "fcvtzu %[ts3].2d, %[ts3].2d, #16\n\t"
+            "umin %[ts0].2s, %[ts0].2s, %[kmaxu].2s\n\t"
+            "fadd %d[p16], %d[pp], %d[k16]\n\t"
+            "umin %[ts1].2s, %[ts1].2s, %[kmaxu].2s\n\t"
+            "uqxtn %[ts2].2s, %[ts2].2d\n\t"
+            "uqxtn %[ts3].2s, %[ts3].2d\n\t"
+            "zip1 %[pp].2d, %[pp].2d, %[p16].2d"
+            : [z01] "=&w"(z01), [z23] "=&w"(z23), [pp] "=&w"(pp), [pos23] "=&w"(pos23), [ts0] "=&w"(ts0),
+              [ts1] "=&w"(ts1), [ts2] "=&w"(ts2), [ts3] "=&w"(ts3), [p16] "=&w"(p16), [k16] "=&w"(k16),
+              [k32] "=&w"(k32), [one] "=&w"(kOne), [kzr] "=&w"(kZrow), [kzx] "=&w"(kZix), [uvr] "=&w"(kUVrow),
+              [uvx] "=&w"(kUVx)
+            : [P] "w"(P), [zrow] "w"(zrow), [zix] "w"(zix), [urow] "w"(urow), [vrow] "w"(vrow), [ux] "w"(ux),
+              [vx] "w"(vx), [kmin] "w"(kMin), [kmaxu] "w"(kmaxu));
+        (void)p16;
+        auto low = [](float64x2_t x) { return vreinterpret_s32_f64(vget_low_f64(x)); };
+        n0 = low(ts0), n1 = low(ts1), n2 = low(ts2), n3 = low(ts3);
+        zp = z01, zs = z01;
+        uv0 = vget_lane_u64(vreinterpret_u64_s32(n0), 0);
+        duv = steps16_packed(uv0, vget_lane_u64(vreinterpret_u64_s32(n1), 0));
+      } else {
+        z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
+        pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
+        // Samples r + 2, r + 3 converted, narrowed and clamped below (not yet above), as the
+        // loop leaves them.
+        n2 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu2), vdup_n_f64(tv2)), z2), 16));
+        n3 = vqmovn_s64(vcvtq_n_s64_f64(vmulq_n_f64(vcombine_f64(vdup_n_f64(tu3), vdup_n_f64(tv3)), z3), 16));
+        n2 = vmax_s32(n2, kZero), n3 = vmax_s32(n3, kZero);
+        if constexpr (kCurve) n2 = vmin_s32(n2, kMax), n3 = vmin_s32(n3, kMax);  // second order: clamped above too
+        // Second order: the depths [z_r, z_{r+1}] and [z_{r+1}, z_{r+2}].
+        zp = vcombine_f64(vdup_n_f64(s0.z), vdup_n_f64(s1.z));
+        zs = vcombine_f64(vdup_n_f64(s1.z), vdup_n_f64(z2));
+        // Samples r, r + 1 as [u, v] vectors (the tail reads them; few integer registers).
+        n0 = vcreate_s32((uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u));
+        n1 = vcreate_s32((uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u));
+      }
       // lin_slot's state: the chains of the run being addressed, the last group's
       // addresses, the bytes loaded in the last slot, the gathered byte pairs.
       uint64_t c0, c1, c2, c3, e, pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
@@ -288,7 +372,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         lin_start2(c0, c1, e, e1, dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d),
                    pack(sv.dd, su.dd));
       } else {
-        lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+        if constexpr (kPre) {
+          lin_start(c0, c1, c2, c3, e, uv0, duv);
+        } else {
+          lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+        }
       }
       const uint64_t w64 = uint64_t(width);
       uint64_t xo0 = 0, xo1 = 0;  // linear: samples r, r + 1 packed as the last pass read them
