@@ -1,0 +1,142 @@
+// asm/span_persp_a64longspan.h: aarch64 only, persp_long_a64_inl: one second-order span of
+// more than 80 pixels (persp_fast's operations, the same bits), its set-up and passes as
+// long_passes2's asm (asm/span_persp_a64long.h), then the tail. Internal: included by
+// asm/span_persp_fast.cpp (anonymous namespace: internal linkage), which calls it from
+// persp_long_a64 (the batch's loop over consecutive long items).
+#pragma once
+#include <cstdint>
+#include <type_traits>
+
+#include "asm/span_persp.h"
+#include "asm/span_persp_arm.h"
+#include "asm/span_persp_run.h"
+#include "asm/span_persp_a64long.h"
+#if defined(__aarch64__) && defined(__GNUC__)
+#include <arm_neon.h>
+
+namespace sb::simd {
+namespace {
+
+// aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
+// samples, steps and runs with its passes as one asm block (asm/span_persp_a64long.h: the
+// first samples in 2-lane vectors, each lane persp_fast's scalar operation, the same bits:
+// positions P_0, P_1 = P_0 + 16, sample j + 2 at P_j + 32; zrow + zix pos and uvrow + uvx pos
+// fused as there; to_fixed as the vector loop's unsigned conversion, fcvtzu #16, uqxtn, umin;
+// run 0's steps as the loop's); the tail after the passes as persp_fast's.
+SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  const double zc = p.dzi;
+  const uint32_t w = uint32_t(width);
+  // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h), from
+  // p and n; the passes leave n - 32 (k + 1) = 17 .. 48 pixels (k full passes, see there).
+  LongPass st;
+  st.kMin = vdupq_n_f64(kMinZi);
+  st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
+  long_passes2(st, p, n);
+  // left = n - 32 (k + 1), k = (n - 81) / 32 + 1: (n - 81) mod 32 + 17 (n > 80).
+  int left = int(uint32_t(n - 81) & 31u) + 17;
+  Sample s0, s1;
+  RunSteps su, sv;
+  dest = reinterpret_cast<uint8_t*>(st.d);
+  // Run r's steps from its chains (c1 - c0 = its packed step, dd4 = 4 times its packed second
+  // step, |parts| < 2^31); s0.z is not read below.
+  const uint64_t dp = st.c1 - st.c0;
+  const int64_t ddp = int64_t(st.dd4) >> 2;
+  s0 = Sample{int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), 0.0};
+  s1 = Sample{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
+  su = RunSteps{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
+  sv = RunSteps{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
+                int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+  const double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
+  // The tail (left = 17 .. 48), persp_fast's; samples r + 2, r + 3 (sample(pos2, z2),
+  // sample(pos3, z3)) as the last pass converted them (nB, nC: to_fixed, see persp_fast).
+  Sample sB{int32_t(uint32_t(st.nB)), int32_t(uint32_t(st.nB >> 32)), z2};
+  const Sample sC{int32_t(uint32_t(st.nC)), int32_t(uint32_t(st.nC >> 32)), z3};
+  if (left > 32) {
+    const Sample s2 = sB;
+    const double c1 = zc * 0.5 * (s1.z + s2.z);
+    const RunSteps u1 = steps16<true>(s1.u, s2.u, c1), v1 = steps16<true>(s1.v, s2.v, c1);
+    draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
+    dest += 16;
+    left -= 16;
+    s0 = s1, s1 = s2, su = u1, sv = v1, sB = sC;
+  }
+  // The last run's steps are last_steps' (the same results) with scalar operations, u and v
+  // two interleaved chains (fewer dependent NEON levels: on the modelled Cortex-A53 each
+  // stalls the core instructions after it): q = div_steps' operations on du, dv; lin =
+  // trunc(q) straight to a core register (|q| < 2^31); ddf = q (-2 curve) = -2 (q curve)
+  // where |ddf| < 1e9 (scaling by -2 commutes with rounding; where either form overflows,
+  // underflows or is NaN both give dd = 0); dd = cvt_sat(ddf) kept iff |dd| < 1e9, which is
+  // |ddf| < 1e9 (last_ddi). In steps (step<0> .. step<6>, each depending on the one before).
+  const int last = left - 16, steps = last - 1;
+  const Sample s2 = steps > 0 ? sB : s1;
+  RunSteps lu, lv;
+  const int32_t du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
+  const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
+  double au, av, y, sf, qu, qv, tu, tv, cz, ch, c2;
+  int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
+  uint32_t k1 = 999999999u, k2 = 1999999999u;  // group 6's constants, set in group 1 (while fmsub waits)
+  // Groups 1 .. 4 as asm (each operation the C++ one's: fmsub = vfms_f64, fmadd = vfma_f64,
+  // fused), c2 = -2 (zc 0.5 (s1.z + s2.z)) one operation a group after that group's quotient
+  // work: in-order issue, none waits in front of the u, v chain; outputs early-clobber in
+  // registers of their own (no copies between the groups).
+  auto step = [&](auto g) SB_LAMBDA_INLINE {
+    constexpr int G = decltype(g)::value;
+    if constexpr (G == 0) {
+      au = double(du), av = double(dv);
+      y = kRecipSteps[sd], sf = double(sd);
+      pin(au), pin(av), pin(y), pin(sf);
+    } else if constexpr (G == 1) {
+      __asm__ volatile("fmul %d0, %d3, %d5\n\tfmul %d1, %d4, %d5\n\tfadd %d2, %d6, %d7"  // div_steps
+                       : "=&w"(qu), "=&w"(qv), "=&w"(cz)
+                       : "w"(au), "w"(av), "w"(y), "w"(s1.z), "w"(s2.z));
+      pin(k1), pin(k2);
+    } else if constexpr (G == 2) {
+      __asm__ volatile("fmsub %d0, %d3, %d5, %d6\n\tfmsub %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
+                       : "=&w"(tu), "=&w"(tv), "=&w"(ch)
+                       : "w"(qu), "w"(qv), "w"(sf), "w"(au), "w"(av), "w"(zc * 0.5), "w"(cz));
+    } else if constexpr (G == 3) {
+      double u2, v2;
+      __asm__ volatile("fmadd %d0, %d3, %d5, %d6\n\tfmadd %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
+                       : "=&w"(u2), "=&w"(v2), "=&w"(c2)
+                       : "w"(tu), "w"(tv), "w"(y), "w"(qu), "w"(qv), "w"(ch), "w"(-2.0));
+      qu = u2, qv = v2;
+    } else if constexpr (G == 4) {
+      double u2, v2;
+      __asm__ volatile("fcvtzs %w0, %d4\n\tfcvtzs %w1, %d5\n\tfmul %d2, %d4, %d6\n\tfmul %d3, %d5, %d6"
+                       : "=&r"(lnu), "=&r"(lnv), "=&w"(u2), "=&w"(v2)
+                       : "w"(qu), "w"(qv), "w"(c2));
+      tu = u2, tv = v2;
+    } else if constexpr (G == 5) {
+      ddu = cvt_sat(tu), ddv = cvt_sat(tv);
+      pin(ddu), pin(ddv);
+    } else if constexpr (G == 6) {
+      ddu = (uint32_t(ddu) + k1 < k2) ? ddu : 0;
+      ddv = (uint32_t(ddv) + k1 < k2) ? ddv : 0;
+      pin(ddu), pin(ddv);
+    } else if constexpr (G == 9) {
+      last_steps_ddi(steps, du, dv, lnu, lnv, ddu, ddv, &lu, &lv);
+    }
+  };
+  using std::integral_constant;
+  if (last == 16) {
+    // Two full runs left: the steps first, then both runs as one short_pass.
+    step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
+    step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
+    step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
+    auto pk = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+    short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u), pk(sv.d, su.d),
+                     pk(sv.dd, su.dd), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pk(lv.d, lu.d),
+                     pk(lv.dd, lu.dd));
+    return;
+  }
+  // Otherwise run r with the steps in its stage slots, one a group.
+  Run16<true> run(s0.u, s0.v, su, sv);
+  run.draw(dest, texels, w, step);
+  dest += 16;
+  draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+           uint32_t(lv.dd));
+}
+
+}  // namespace
+}  // namespace sb::simd
+#endif
