@@ -88,7 +88,8 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // block's start (among its loads), tested after its last NEON instruction (core work between
 // NEON instructions waits for their writebacks on the A53).
 // runs_a, last_a = span a's runs = (na + 15) >> 4 and last = na - 16 (runs - 1) (short_rest's),
-// among the block's first loads.
+// among the block's first loads. dzi_ab = [a's dzi, b's dzi] as the block loads them (v15: the
+// spans' rests take their zc from it, not from memory again).
 // Span a's samples are left in registers (outa: for its short_rest straight after the block,
 // no store and load back), span b's stored (outb). The register names are bench/mca_a53_pair's
 // order's (pair_cur.s) renamed (v1 -> v16, v3 -> v5, v4 -> v7, v5 -> v4, v7 -> v17, v9 -> v12,
