@@ -88,7 +88,8 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // block's start (among its loads), tested after its last NEON instruction (core work between
 // NEON instructions waits for their writebacks on the A53).
 // runs_a, last_a = span a's runs = (na + 15) >> 4 and last = na - 16 (runs - 1) (short_rest's),
-// among the block's first loads.
+// among the block's first loads. dzi_ab = [a's dzi, b's dzi] as the block loads them (v15: the
+// spans' rests take their zc from it, not from memory again).
 // Span a's samples are left in registers (outa: for its short_rest straight after the block,
 // no store and load back), span b's stored (outb). The register names are bench/mca_a53_pair's
 // order's (pair_cur.s) renamed (v1 -> v16, v3 -> v5, v4 -> v7, v5 -> v4, v7 -> v17, v9 -> v12,
@@ -96,7 +97,7 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // them (S01 v5, S23 v19, S44 v7, c01 v3, c23 v16, zs23 v1; the loop still moves two).
 SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, int nb, ShortSamples& outa,
                               ShortSamples& outb, const PerspItem* it, const PerspItem* end, uint32_t& next,
-                              int& runs_a, int& last_a) {
+                              int& runs_a, int& last_a, float64x2_t& dzi_ab) {
   uint64_t t_h, t_n0, t_n1, t_s1, t_z0, t_z1;
   register int32x4_t rS01 __asm__("v5");
   register int32x4_t rS23 __asm__("v19");
@@ -105,6 +106,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
   register float64x2_t rzs23 __asm__("v1");
   register float64x2_t rc01 __asm__("v3");
   register float64x2_t rc23 __asm__("v16");
+  register float64x2_t rdz __asm__("v15");
   __asm__ volatile(
 // BEGIN short_samples2
         "add x7, %[it], #264\n\t"
@@ -347,14 +349,15 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
 // END short_samples2
       : "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), [fl] "=&r"(next),
         [h] "=&r"(t_h), [n0] "=&r"(t_n0), [n1] "=&r"(t_n1), [s1] "=&r"(t_s1), [z0] "=&r"(t_z0), [z1] "=&r"(t_z1),
-        [ra] "=&r"(runs_a), [la] "=&r"(last_a)
+        [ra] "=&r"(runs_a), [la] "=&r"(last_a), "=&w"(rdz)
       : [pa] "r"(&a), [pb] "r"(&b), [out] "r"(&outb), [kc] "r"(&kPairConsts), [oa] "r"(&kShortOffsets.at[na]),
         [ob] "r"(&kShortOffsets.at[nb]), [it] "r"(it), [end] "r"(end), [na] "r"(na)
       : "memory", "cc", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "v0", "v2", "v4", "v6",
-        "v8", "v10", "v11", "v12", "v13", "v14", "v15", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26",
+        "v8", "v10", "v11", "v12", "v13", "v14", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26",
         "v27", "v28", "v29", "v30", "v31");
   outa.S01 = rS01, outa.S23 = rS23, outa.S44 = rS44;
   outa.zs01 = rzs01, outa.zs23 = rzs23, outa.c01 = rc01, outa.c23 = rc23;
+  dzi_ab = rdz;
 }
 #endif
 

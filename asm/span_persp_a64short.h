@@ -260,10 +260,21 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
   // Four runs first: of the short spans, those hold the most pixels (a branch less for them).
   if (runs == 4) {
     rest(std::integral_constant<int, 3>{});
-  } else if (runs == 3) {
-    rest(std::integral_constant<int, 2>{});
   } else {
-    rest(std::integral_constant<int, 1>{});
+    // S01, S23 kept in v5, v19 (where the pair block leaves span a's and steps_k3v_pass takes
+    // them) into the shorter spans' paths too: otherwise the compiler copied them to other
+    // registers before the runs == 4 test, on the four-run path as well (no code emitted).
+    if constexpr (kCurve) {
+      register int32x4_t r01 __asm__("v5") = S01;
+      register int32x4_t r23 __asm__("v19") = S23;
+      __asm__("" : "+w"(r01), "+w"(r23));
+      S01 = r01, S23 = r23;
+    }
+    if (runs == 3) {
+      rest(std::integral_constant<int, 2>{});
+    } else {
+      rest(std::integral_constant<int, 1>{});
+    }
   }
 }
 // A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
