@@ -123,10 +123,9 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
     step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
     step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
-    auto pk = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
-    short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u), pk(sv.d, su.d),
-                     pk(sv.dd, su.dd), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pk(lv.d, lu.d),
-                     pk(lv.dd, lu.dd));
+    short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
+                     pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u),
+                     pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
     return;
   }
   // Otherwise run r with the steps in its stage slots, one a group.

@@ -264,7 +264,6 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       const int32x2_t kMax = vcreate_s32(uint64_t(uint32_t(p.vmax)) << 32 | uint32_t(p.umax));
       const int32x2_t kZero = vdup_n_s32(0);
       const uint32x2_t kMaxU = vreinterpret_u32_s32(kMax);
-      auto pack = [](int32_t hi, int32_t lo) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
       // [P_{r+2}, P_{r+3}] accumulated as the walker does (P_{r+3} = P_{r+2} + 16 exactly
       // as computed, so adding 16 twice to both lanes gives the next pass's pair, bit for
       // bit); [left - 33, left - 49] as doubles (exact integers).
@@ -370,13 +369,13 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       uint64_t c0, c1, c2, c3, e, pa0 = 0, pa1 = 0, pa2 = 0, pa3 = 0, b0 = 0, b1 = 0, b2 = 0, b3 = 0, g0 = 0, g1 = 0;
       uint64_t e1 = 0, dd4 = 0;  // second order: chain 1's step, the steps' step
       if constexpr (kCurve) {
-        lin_start2(c0, c1, e, e1, dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d),
-                   pack(sv.dd, su.dd));
+        lin_start2(c0, c1, e, e1, dd4, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack_steps(sv.d, su.d),
+                   pack_steps(sv.dd, su.dd));
       } else {
         if constexpr (kPre) {
           lin_start(c0, c1, c2, c3, e, uv0, duv);
         } else {
-          lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack(sv.d, su.d));
+          lin_start(c0, c1, c2, c3, e, (uint64_t(uint32_t(s0.v)) << 32) + uint32_t(s0.u), pack_steps(sv.d, su.d));
         }
       }
       const uint64_t w64 = uint64_t(width);
@@ -428,7 +427,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
             pin(iu1), pin(iv1), pin(zi45), pin(ts4), pin(ts5);
           } else if constexpr (G == 7) {
             const RunSteps u1 = steps16_dd(du1, iu1), v1 = steps16_dd(dv1, iv1);
-            b_uv = x1p, b_d = pack(v1.d, u1.d), b_dd = pack(v1.dd, u1.dd);
+            b_uv = x1p, b_d = pack_steps(v1.d, u1.d), b_dd = pack_steps(v1.dd, u1.dd);
           } else if constexpr (G == 8) {
             z45 = vdivq_f64(kOne, zi45);
             pin(z45);
@@ -446,7 +445,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
           } else if constexpr (G == 13) {
             const int32_t du = int32_t(x3p) - int32_t(x2p), dv = int32_t(x3p >> 32) - int32_t(x2p >> 32);
             const RunSteps u2 = steps16_dd(du, iu2), v2 = steps16_dd(dv, iv2);
-            a_uv = x2p, a_d = pack(v2.d, u2.d), a_dd = pack(v2.dd, u2.dd);
+            a_uv = x2p, a_d = pack_steps(v2.d, u2.d), a_dd = pack_steps(v2.dd, u2.dd);
             pin(a_d), pin(a_dd);
           } else if constexpr (G == 14) {
             n4 = vqmovn_s64(i4), n5 = vqmovn_s64(i5);

@@ -34,6 +34,12 @@ inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, do
   return run_steps_with(a, b, steps_, curve, [q] { return q; });
 }
 
+// Run16's packing of a step pair: hi 2^32 + lo sign-extended (modulo 2^64), hi the v part,
+// lo the u part (draw_run, Run16 and the tuned paths in asm/span_persp_fast.cpp).
+inline __attribute__((always_inline)) uint64_t pack_steps(int32_t hi, int32_t lo) {
+  return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo));
+}
+
 // One run: surface_span's loop, inlined, with u and v in one 64-bit register: uv = v 2^32 + u,
 // stepped by duv = dv 2^32 + du (du sign-extended), itself stepped by ddv 2^32 + ddu. The
 // contract keeps every drawn u_k in 0 .. 2^32 - 1 and v_k >= 0, so uv_k is exactly the
@@ -41,8 +47,7 @@ inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, do
 // packed terms) and its halves are u_k and v_k: two adds per pixel instead of four.
 inline void draw_run(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
                      uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-  auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
-  uint64_t uv = (uint64_t(v) << 32) + u, duv = pack(dv, du);
+  uint64_t uv = (uint64_t(v) << 32) + u, duv = pack_steps(int32_t(dv), int32_t(du));
   auto texel = [&](uint64_t x) { return texels[uint32_t(x >> 48) * w + (uint32_t(x) >> 16)]; };
   // Two pixels per step, their address arithmetic independent, and software-pipelined for
   // in-order cores (Cortex-A53): each step loads the texels of the NEXT pair (which exists:
@@ -65,7 +70,7 @@ inline void draw_run(uint8_t* __restrict dest, int n, const uint8_t* __restrict 
         uv += step2;
       }
     } else {
-      const uint64_t dduv = pack(ddv, ddu), dduv2 = 2 * dduv;
+      const uint64_t dduv = pack_steps(int32_t(ddv), int32_t(ddu)), dduv2 = 2 * dduv;
       uv += 2 * duv + dduv;
       duv += dduv2;
       for (; k + 4 <= n; k += 2) {
@@ -424,9 +429,8 @@ class Run16 {
  public:
   SB_INLINE Run16(int32_t u0, int32_t v0, const RunSteps& su, const RunSteps& sv) {
 #if defined(SB_SPAN_PACKED)
-    auto pack = [](uint32_t hi, uint32_t lo) { return (uint64_t(hi) << 32) + uint64_t(int64_t(int32_t(lo))); };
-    const T a0 = (uint64_t(uint32_t(v0)) << 32) + uint32_t(u0), d0 = pack(uint32_t(sv.d), uint32_t(su.d));
-    const T dd = pack(uint32_t(sv.dd), uint32_t(su.dd));
+    const T a0 = (uint64_t(uint32_t(v0)) << 32) + uint32_t(u0), d0 = pack_steps(sv.d, su.d);
+    const T dd = pack_steps(sv.dd, su.dd);
     x_[0] = a0;
     x_[1] = a0 + d0;
     e_[0] = 2 * d0 + dd;
