@@ -305,7 +305,7 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
       run.draw(dest, texels, w);
     } else {
       const uint32_t ldu = uint32_t(ld), ldv = uint32_t((ld - uint64_t(int64_t(int32_t(ldu)))) >> 32);
-      draw_run(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), ldu, ldv, 0, 0);
+      draw_last<false>(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), ldu, ldv, 0, 0);
     }
   };
   if (runs == 2) {

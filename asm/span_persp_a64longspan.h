@@ -132,7 +132,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   Run16<true> run(s0.u, s0.v, su, sv);
   run.draw(dest, texels, w, step);
   dest += 16;
-  draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+  draw_last<true>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
            uint32_t(lv.dd));
 }
 

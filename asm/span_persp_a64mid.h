@@ -577,7 +577,7 @@ SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int 
   const uint32_t w = uint32_t(width);
   Run16<true> run(st[0], mid_pack(st[2]), mid_pack(st[4]), typename Run16<true>::Packed{});
   run.draw(dest + 32, texels, w);
-  draw_run(dest + 48, last, texels, w, uint32_t(st[1]), uint32_t(st[1] >> 32), uint32_t(st[3]), uint32_t(st[3] >> 32),
+  draw_last<true>(dest + 48, last, texels, w, uint32_t(st[1]), uint32_t(st[1] >> 32), uint32_t(st[3]), uint32_t(st[3] >> 32),
            uint32_t(st[5]), uint32_t(st[5] >> 32));
 }
 #endif

@@ -253,7 +253,7 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
     if (last == 16) {
       draw16<kCurve>(dest, texels, w, au, av, lu, lv);
     } else {
-      draw_run(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+      draw_last<kCurve>(dest, last, texels, w, uint32_t(au), uint32_t(av), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
                uint32_t(lv.dd));
     }
   };

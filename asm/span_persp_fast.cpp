@@ -29,7 +29,7 @@ void surface_span_fast(uint8_t* dest, int n, const uint8_t* texels, int width, i
     duu += 16 * dduu;
     dvv += 16 * ddvv;
   }
-  if (n > 0) draw_run(dest, n, texels, w, uu, vv, duu, dvv, dduu, ddvv);
+  if (n > 0) draw_last<true>(dest, n, texels, w, uu, vv, duu, dvv, dduu, ddvv);
 }
 
 namespace {
@@ -93,7 +93,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if (n == 16) {
       draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
     } else {
-      draw_run(dest, n, texels, w, uint32_t(s0.u), uint32_t(s0.v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
+      draw_last<kCurve>(dest, n, texels, w, uint32_t(s0.u), uint32_t(s0.v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd),
                uint32_t(sv.dd));
     }
     return;
@@ -728,7 +728,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if (last == 16) {
       draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
     } else {
-      draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
+      draw_last<kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
                uint32_t(lu.dd), uint32_t(lv.dd));
     }
   }
@@ -753,7 +753,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   if (last == 16) {
     draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
   } else {
-    draw_run(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
+    draw_last<kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
              uint32_t(lv.dd));
   }
 #endif

@@ -581,6 +581,130 @@ SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels
   run.draw(dest, texels, w);
 }
 
+// ---------------------------------------------------------------- the partial last run
+//
+// draw_last: draw_run for a span's partial last run (1 <= n <= 15 pixels), inlined where it
+// is called (no call; llvm-mca also times a call at 100 cycles) and with no loop: a branch
+// tree on n picks one straight-line block that draws two overlapping chunks of C pixels
+// (C = 8 for n = 8 .. 15, 4 for 4 .. 7, 2 for 2 .. 3; n = 1: the first pixel), pixels
+// 0 .. C - 1 and n - C .. n - 1. Every pixel of the overlap is drawn twice with the same
+// texel (pixel k's position is the same integer either way: below), so the bytes are
+// draw_run's; nothing outside pixels 0 .. n - 1 is read or written. kCurve false: the
+// caller's second-order steps are 0 (linear runs; no adds for them).
+//
+// The second chunk's start: pixel o = n - C's position uv_o = uv_0 + o duv + T(o) dduv and
+// step duv_o = duv + o dduv (T(o) = o (o - 1) / 2), which is what draw_run's recurrence
+// gives (both modulo 2^64 packed, or 2^32 per component on 32-bit targets: the recurrences
+// are linear, so the closed form is the same integer; the contract keeps every drawn
+// position in range, as for draw_run). Each chunk steps its own pixels by the recurrence,
+// all its texels loaded before any is stored (the chunks' chains are independent: in-order
+// cores overlap them), gathered into words on ARM (SB_SPAN_WORDS, little-endian) and stored
+// as one (unaligned) store per chunk or per 4 bytes.
+struct TailPos {
+#if defined(SB_SPAN_PACKED)
+  uint64_t x, d, dd;  // v 2^32 + u, dv 2^32 + du, ddv 2^32 + ddu (du, ddu sign-extended)
+#else
+  uint32_t u, v, du, dv, ddu, ddv;
+#endif
+};
+template <bool kCurve>
+SB_INLINE TailPos tail_pos(uint32_t u, uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+#if defined(SB_SPAN_PACKED)
+  return {(uint64_t(v) << 32) + u, pack_steps(int32_t(dv), int32_t(du)),
+          kCurve ? pack_steps(int32_t(ddv), int32_t(ddu)) : 0};
+#else
+  return {u, v, du, dv, kCurve ? ddu : 0, kCurve ? ddv : 0};
+#endif
+}
+// The position o pixels on (0 <= o <= 7), in closed form.
+template <bool kCurve>
+SB_INLINE TailPos tail_skip(const TailPos& p, uint32_t o) {
+  const uint32_t t = (o * (o - 1)) >> 1;  // T(o); o = 0 gives 0 (0 * (2^32 - 1), even)
+#if defined(SB_SPAN_PACKED)
+  if constexpr (!kCurve) return {p.x + o * p.d, p.d, 0};
+  return {p.x + o * p.d + t * p.dd, p.d + o * p.dd, p.dd};
+#else
+  if constexpr (!kCurve) return {p.u + o * p.du, p.v + o * p.dv, p.du, p.dv, 0, 0};
+  return {p.u + o * p.du + t * p.ddu, p.v + o * p.dv + t * p.ddv, p.du + o * p.ddu, p.dv + o * p.ddv, p.ddu, p.ddv};
+#endif
+}
+// Loads the texels of C pixels from p (the recurrence, one pixel a step) into t.
+template <int C, bool kCurve>
+SB_INLINE void tail_load(uint8_t* t, const uint8_t* __restrict texels, uint32_t w, TailPos p) {
+#pragma GCC unroll 16
+  for (int j = 0; j < C; ++j) {
+#if defined(SB_SPAN_PACKED)
+#if defined(__x86_64__)
+    t[j] = texels[uint64_t(uint32_t(p.x >> 48)) * w + (uint32_t(p.x) >> 16)];
+#else
+    t[j] = texels[uint32_t(p.x >> 48) * w + (uint32_t(p.x) >> 16)];
+#endif
+    p.x += p.d;
+    if constexpr (kCurve) p.d += p.dd;
+#else
+#if defined(SB_SPAN_SMULBT)
+    uint32_t a, b;  // as Run16::address (the contract: w <= 32767, 0 <= v < 2^31)
+    __asm__("smulbt %0, %1, %2" : "=r"(a) : "r"(w), "r"(p.v));
+    __asm__("uxtah %0, %1, %2, ror #16" : "=r"(b) : "r"(a), "r"(p.u));
+    t[j] = texels[b];
+#else
+    t[j] = texels[(p.v >> 16) * w + (p.u >> 16)];
+#endif
+    p.u += p.du, p.v += p.dv;
+    if constexpr (kCurve) p.du += p.ddu, p.dv += p.ddv;
+#endif
+  }
+}
+// Stores C texels at dest: words on ARM, bytes elsewhere.
+template <int C>
+SB_INLINE void tail_store(uint8_t* __restrict dest, const uint8_t* t) {
+#if defined(SB_SPAN_WORDS)
+  if constexpr (C == 1) {
+    dest[0] = t[0];
+  } else {
+    using Word = std::conditional_t<C == 2, uint16_t, std::conditional_t<C == 4, uint32_t, uintptr_t>>;
+    constexpr int kPer = int(sizeof(Word));
+#pragma GCC unroll 2
+    for (int i = 0; i < C; i += kPer) {
+      Word word = 0;
+#pragma GCC unroll 8
+      for (int j = 0; j < kPer; ++j) word |= Word(Word(t[i + j]) << (8 * j));  // little-endian
+      __builtin_memcpy(dest + i, &word, sizeof(Word));
+    }
+  }
+#else
+#pragma GCC unroll 16
+  for (int j = 0; j < C; ++j) dest[j] = t[j];
+#endif
+}
+// Two chunks of C pixels: at 0 and at n - C (C <= n <= 2 C - 1).
+template <int C, bool kCurve>
+SB_INLINE void tail_pair(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w,
+                         const TailPos& p) {
+  const uint32_t o = uint32_t(n - C);
+  uint8_t a[C], b[C];
+  tail_load<C, kCurve>(a, texels, w, p);
+  tail_load<C, kCurve>(b, texels, w, tail_skip<kCurve>(p, o));
+  tail_store<C>(dest, a);
+  tail_store<C>(dest + o, b);
+}
+template <bool kCurve>
+SB_INLINE void draw_last(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
+                         uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+  const TailPos p = tail_pos<kCurve>(u, v, du, dv, ddu, ddv);
+  if (n >= 8) {
+    tail_pair<8, kCurve>(dest, n, texels, w, p);
+  } else if (n >= 4) {
+    tail_pair<4, kCurve>(dest, n, texels, w, p);
+  } else if (n >= 2) {
+    tail_pair<2, kCurve>(dest, n, texels, w, p);
+  } else {
+    uint8_t t[1];
+    tail_load<1, kCurve>(t, texels, w, p);
+    dest[0] = t[0];
+  }
+}
+
 // ARMv7: max_or_lo without a branch (vcmpe, vmrs, a conditional vmov: le is x <= lo or
 // unordered, NaN -> lo), for the long spans' first divides.
 inline double max_or_lo_sel(double x, double lo) {

@@ -154,6 +154,42 @@ TEST(AsmSpanPerspBatch, MatchesTheReferenceSpanBySpanOnMixedBatches) {
   std::printf("[ asm      ] span_persp batch: %ld spans in batches, every variant identical\n", spans);
 }
 
+// Every partial last run (asm/span_persp_run.h's draw_last: 1 .. 15 pixels by a branch tree
+// and two overlapping chunks, 16 the full run) on every path: spans of 16 r + L pixels,
+// L = 1 .. 16, r = 0 .. 12 (one run; the short, mid and paired paths; the long paths'
+// tails), second order and linear, through the batch entry (alone and in pairs: aarch64's
+// paired short spans) and the single-span entry, each span between guard bytes.
+TEST(AsmSpanPerspBatch, EveryPartialLastRunLengthMatchesOnEveryPath) {
+  std::mt19937 rng(2711);
+  const int sw = 61, sh = 43;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  long spans = 0;
+  for (int last = 1; last <= 16; ++last) {
+    for (int r = 0; r <= 12; ++r) {
+      const int n = 16 * r + last;
+      for (int k = 0; k < 8; ++k) {
+        PerspSpan a = pick_span(rng, sw, sh), b = pick_span(rng, sw, sh);
+        a.second_order = b.second_order = k < 6;
+        ASSERT_TRUE(batch_matches({PerspItem{nullptr, n, a}}, surf.data(), sw, sh)) << " n " << n << " k " << k;
+        ASSERT_TRUE(batch_matches({PerspItem{nullptr, n, a}, PerspItem{nullptr, n, b}}, surf.data(), sw, sh))
+            << " pair of n " << n << " k " << k;
+        std::vector<uint8_t> ref(size_t(n) + 2 * kGuard, kGuardByte), got(ref.size());
+        sb::simd::surface_span_persp_scalar(ref.data() + kGuard, n, surf.data(), sw, sh, a);
+        for (int v = 0; v < sb::simd::variant_count(); ++v) {
+          const sb::simd::Variant var = sb::simd::variant(v);
+          if (!var.kernels || !var.supported) continue;
+          std::fill(got.begin(), got.end(), kGuardByte);
+          var.kernels->surface_span_persp(got.data() + kGuard, n, surf.data(), sw, sh, a);
+          ASSERT_EQ(ref, got) << var.kernels->name << " single span of n " << n << " k " << k;
+        }
+        spans += 4;
+      }
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans of every last-run length, every variant identical\n", spans);
+}
+
 // Pairs of short second-order spans side by side (the aarch64 paired samples): both spans of
 // each pair 17 .. 64 pixels, one of them at a depth needing the divide fallback, or
 // non-finite, or both ordinary; odd counts leave one span unpaired.

@@ -387,10 +387,12 @@ TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeGradients) {
 // surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
 // NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
 // scalar reference on every target: random walks (linear and second order) that stay
-// inside the surface, every length that splits differently into runs of 16.
+// inside the surface, every length that splits differently into runs of 16 (every partial
+// last run, 1 .. 15 pixels: asm/span_persp_run.h's draw_last).
 TEST(AsmSpanPersp, SurfaceSpanFastMatchesScalar) {
   std::mt19937 rng(4242);
-  const int lengths[] = {0, 1, 2, 3, 15, 16, 17, 31, 32, 33, 47, 48, 49, 320, 1919, 1920};
+  const int lengths[] = {0,  1,  2,  3,  4,  5,  6,  7,  8,  9,  10, 11, 12,  13,   14,
+                         15, 16, 17, 31, 32, 33, 47, 48, 49, 55, 60, 63, 320, 1919, 1920};
   int cases = 0, curved = 0;
   for (int trial = 0; trial < 3000; ++trial) {
     const int w = 1 + int(rng() % 600), h = 1 + int(rng() % 300);
