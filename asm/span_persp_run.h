@@ -584,22 +584,19 @@ SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels
 // ---------------------------------------------------------------- the partial last run
 //
 // draw_last: draw_run for a span's partial last run (1 <= n <= 15 pixels), inlined where it
-// is called (no call; llvm-mca also times a call at 100 cycles) and with no loop: a branch
-// tree on n picks one straight-line block that draws two overlapping chunks of C pixels
-// (C = 8 for n = 8 .. 15, 4 for 4 .. 7, 2 for 2 .. 3; n = 1: the first pixel), pixels
-// 0 .. C - 1 and n - C .. n - 1. Every pixel of the overlap is drawn twice with the same
-// texel (pixel k's position is the same integer either way: below), so the bytes are
-// draw_run's; nothing outside pixels 0 .. n - 1 is read or written. kCurve false: the
-// caller's second-order steps are 0 (linear runs; no adds for them).
-//
-// The second chunk's start: pixel o = n - C's position uv_o = uv_0 + o duv + T(o) dduv and
-// step duv_o = duv + o dduv (T(o) = o (o - 1) / 2), which is what draw_run's recurrence
-// gives (both modulo 2^64 packed, or 2^32 per component on 32-bit targets: the recurrences
-// are linear, so the closed form is the same integer; the contract keeps every drawn
-// position in range, as for draw_run). Each chunk steps its own pixels by the recurrence,
-// all its texels loaded before any is stored (the chunks' chains are independent: in-order
-// cores overlap them), gathered into words on ARM (SB_SPAN_WORDS, little-endian) and stored
-// as one (unaligned) store per chunk or per 4 bytes.
+// is called (no call; llvm-mca also times a call at 100 cycles) and with no loop: n's bits
+// pick straight-line chunks of 8, 4, 2 and 1 pixels, in that order (pixels 0 .. 7 when
+// n & 8, then the next 4 when n & 4, ...), each chunk all its texels loaded before any is
+// stored, gathered into words on ARM (SB_SPAN_WORDS, little-endian; one unaligned store per
+// chunk, two 4-byte ones for 8 pixels on ARMv7). Each pixel's position follows draw_run's
+// recurrence (uv_{k+1} = uv_k + duv_k, duv_{k+1} = duv_k + dduv; packed modulo 2^64 on
+// 64-bit targets, per component modulo 2^32 on 32-bit ones), so the bytes are draw_run's.
+// kCurve false: the caller's second-order steps are 0 (linear runs: no adds for them).
+// Measured against two overlapping chunks (8 pixels at 0 and at n - 8 for n >= 8, 4 or 2
+// likewise below; every pixel's texel loaded once or twice, one block per length class):
+// the chunks by bits drew fewer texels and measured better on every core but Zen 3's
+// linear rows (A53 persp64 10.41 -> 10.25, A72 5.69 -> 5.45, A9 8.12 -> 7.62, skylake
+// 8.02 -> 7.54; znver3 persp64lin 4.68 -> 4.97).
 struct TailPos {
 #if defined(SB_SPAN_PACKED)
   uint64_t x, d, dd;  // v 2^32 + u, dv 2^32 + du, ddv 2^32 + ddu (du, ddu sign-extended)
@@ -616,21 +613,10 @@ SB_INLINE TailPos tail_pos(uint32_t u, uint32_t v, uint32_t du, uint32_t dv, uin
   return {u, v, du, dv, kCurve ? ddu : 0, kCurve ? ddv : 0};
 #endif
 }
-// The position o pixels on (0 <= o <= 7), in closed form.
-template <bool kCurve>
-SB_INLINE TailPos tail_skip(const TailPos& p, uint32_t o) {
-  const uint32_t t = (o * (o - 1)) >> 1;  // T(o); o = 0 gives 0 (0 * (2^32 - 1), even)
-#if defined(SB_SPAN_PACKED)
-  if constexpr (!kCurve) return {p.x + o * p.d, p.d, 0};
-  return {p.x + o * p.d + t * p.dd, p.d + o * p.dd, p.dd};
-#else
-  if constexpr (!kCurve) return {p.u + o * p.du, p.v + o * p.dv, p.du, p.dv, 0, 0};
-  return {p.u + o * p.du + t * p.ddu, p.v + o * p.dv + t * p.ddv, p.du + o * p.ddu, p.dv + o * p.ddv, p.ddu, p.ddv};
-#endif
-}
-// Loads the texels of C pixels from p (the recurrence, one pixel a step) into t.
+// Loads the texels of C pixels from p (the recurrence, one pixel a step) into t; returns the
+// position C pixels on.
 template <int C, bool kCurve>
-SB_INLINE void tail_load(uint8_t* t, const uint8_t* __restrict texels, uint32_t w, TailPos p) {
+SB_INLINE TailPos tail_load(uint8_t* t, const uint8_t* __restrict texels, uint32_t w, TailPos p) {
 #pragma GCC unroll 16
   for (int j = 0; j < C; ++j) {
 #if defined(SB_SPAN_PACKED)
@@ -654,6 +640,7 @@ SB_INLINE void tail_load(uint8_t* t, const uint8_t* __restrict texels, uint32_t 
     if constexpr (kCurve) p.du += p.ddu, p.dv += p.ddv;
 #endif
   }
+  return p;
 }
 // Stores C texels at dest: words on ARM, bytes elsewhere.
 template <int C>
@@ -677,32 +664,21 @@ SB_INLINE void tail_store(uint8_t* __restrict dest, const uint8_t* t) {
   for (int j = 0; j < C; ++j) dest[j] = t[j];
 #endif
 }
-// Two chunks of C pixels: at 0 and at n - C (C <= n <= 2 C - 1).
-template <int C, bool kCurve>
-SB_INLINE void tail_pair(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w,
-                         const TailPos& p) {
-  const uint32_t o = uint32_t(n - C);
-  uint8_t a[C], b[C];
-  tail_load<C, kCurve>(a, texels, w, p);
-  tail_load<C, kCurve>(b, texels, w, tail_skip<kCurve>(p, o));
-  tail_store<C>(dest, a);
-  tail_store<C>(dest + o, b);
-}
 template <bool kCurve>
 SB_INLINE void draw_last(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
                          uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-  const TailPos p = tail_pos<kCurve>(u, v, du, dv, ddu, ddv);
-  if (n >= 8) {
-    tail_pair<8, kCurve>(dest, n, texels, w, p);
-  } else if (n >= 4) {
-    tail_pair<4, kCurve>(dest, n, texels, w, p);
-  } else if (n >= 2) {
-    tail_pair<2, kCurve>(dest, n, texels, w, p);
-  } else {
-    uint8_t t[1];
-    tail_load<1, kCurve>(t, texels, w, p);
-    dest[0] = t[0];
-  }
+  TailPos p = tail_pos<kCurve>(u, v, du, dv, ddu, ddv);
+  auto chunk = [&](auto cc) SB_LAMBDA_INLINE {
+    constexpr int C = decltype(cc)::value;
+    uint8_t t[C];
+    p = tail_load<C, kCurve>(t, texels, w, p);
+    tail_store<C>(dest, t);
+    dest += C;
+  };
+  if (n & 8) chunk(std::integral_constant<int, 8>{});
+  if (n & 4) chunk(std::integral_constant<int, 4>{});
+  if (n & 2) chunk(std::integral_constant<int, 2>{});
+  if (n & 1) chunk(std::integral_constant<int, 1>{});
 }
 
 // ARMv7: max_or_lo without a branch (vcmpe, vmrs, a conditional vmov: le is x <= lo or

@@ -154,8 +154,8 @@ TEST(AsmSpanPerspBatch, MatchesTheReferenceSpanBySpanOnMixedBatches) {
   std::printf("[ asm      ] span_persp batch: %ld spans in batches, every variant identical\n", spans);
 }
 
-// Every partial last run (asm/span_persp_run.h's draw_last: 1 .. 15 pixels by a branch tree
-// and two overlapping chunks, 16 the full run) on every path: spans of 16 r + L pixels,
+// Every partial last run (asm/span_persp_run.h's draw_last: 1 .. 15 pixels in chunks of 8, 4,
+// 2, 1 by the bits of n, 16 the full run) on every path: spans of 16 r + L pixels,
 // L = 1 .. 16, r = 0 .. 12 (one run; the short, mid and paired paths; the long paths'
 // tails), second order and linear, through the batch entry (alone and in pairs: aarch64's
 // paired short spans) and the single-span entry, each span between guard bytes.
