@@ -739,6 +739,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   const Sample s2 = steps > 0 ? (kPre ? t2 : sample(pos2, z2)) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
+#if defined(__x86_64__)
+  if constexpr (!kCurve) {
+    // x86-64 linear: run_steps' delta / steps truncated is trunc(delta / steps) in double
+    // (see last_steps_q); steps 0 (s2 = s1, delta 0) gives 0.
+    lu = RunSteps{int32_t(last_quotient(steps, s2.u - s1.u)), 0};
+    lv = RunSteps{int32_t(last_quotient(steps, s2.v - s1.v)), 0};
+  } else
+#endif
   if constexpr (kPre) {
     // aarch64 linear (zc is 0 here, so curve is 0: run_steps' linear steps): delta / steps
     // truncated, two sdiv (no jump table, no call); steps 0 (s2 = s1, delta 0) gives 0.
