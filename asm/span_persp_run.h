@@ -617,6 +617,28 @@ SB_INLINE TailPos tail_pos(uint32_t u, uint32_t v, uint32_t du, uint32_t dv, uin
 // position C pixels on.
 template <int C, bool kCurve>
 SB_INLINE TailPos tail_load(uint8_t* t, const uint8_t* __restrict texels, uint32_t w, TailPos p) {
+#if defined(__aarch64__)
+  if constexpr (C >= 4) {
+    // Even and odd pixels in two chains, as Run16: x_{k+2} = x_k + e_k, e_{k+2} = e_k +
+    // 4 dd with e_k = 2 d_k + dd (the recurrence two steps at a time, the same integers
+    // modulo 2^64), so the adds are two chains of C / 2 instead of one of C. Returns the
+    // position C pixels on in closed form (x + C d + T(C) dd, d + C dd). aarch64 only
+    // (A53 persp64 10.25 -> 10.16, A72 5.45 -> 5.37; persp64single 11.15 -> 11.18; from
+    // C >= 8 only: 10.22; on x86-64 znver3 persp64lin 4.50 -> 4.60).
+    uint64_t x[2] = {p.x, p.x + p.d};
+    uint64_t e[2] = {2 * p.d + p.dd, 2 * p.d + 3 * p.dd};
+    const uint64_t dd4 = 4 * p.dd;
+#pragma GCC unroll 16
+    for (int j = 0; j < C; ++j) {
+      const int c = j & 1;
+      t[j] = texels[uint32_t(x[c] >> 48) * w + (uint32_t(x[c]) >> 16)];
+      x[c] += e[c];
+      if constexpr (kCurve) e[c] += dd4;
+    }
+    constexpr uint64_t kT = uint64_t(C) * (C - 1) / 2;
+    return {p.x + C * p.d + kT * p.dd, p.d + C * p.dd, p.dd};
+  }
+#endif
 #pragma GCC unroll 16
   for (int j = 0; j < C; ++j) {
 #if defined(SB_SPAN_PACKED)
