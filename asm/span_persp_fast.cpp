@@ -126,9 +126,9 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // -> 3.36). Not in the one-run path (n <= 16) too: with no call left in persp_fast GCC
   // spilled the loop's values to the red zone (skylake persp192 5.04 -> 5.13).
 #if defined(__x86_64__)
-  constexpr bool kX86 = true;
+  [[maybe_unused]] constexpr bool kX86 = true;
 #else
-  constexpr bool kX86 = false;
+  [[maybe_unused]] constexpr bool kX86 = false;
 #endif
   Sample s0{}, s1{};
   double pos2 = 0.0, pos3 = 0.0;
