@@ -273,6 +273,9 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       float64x2_t z23, pos23, zp, zs;
       int32x2_t n0, n1, n2, n3;
       uint64_t uv0 = 0, duv = 0;  // linear: run 0's packed start and steps
+      // Linear: sample r + 1 packed (clamped), carried in a core register from the last
+      // pass's x3p (no vector n1 through the loop: no vector moves for its rotation).
+      uint64_t x1c = 0;
       if constexpr (kPre) {
         // The head as the loop's stage computes samples (the scalar head's operations lane
         // by lane, the same bits): positions [P, P + 16] and [P + 32, (P + 16) + 32] (o_3 -
@@ -347,7 +350,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         n0 = low(ts0), n1 = low(ts1), n2 = low(ts2), n3 = low(ts3);
         zp = z01, zs = z01;
         uv0 = vget_lane_u64(vreinterpret_u64_s32(n0), 0);
-        duv = steps16_packed(uv0, vget_lane_u64(vreinterpret_u64_s32(n1), 0));
+        x1c = vget_lane_u64(vreinterpret_u64_s32(n1), 0);
+        duv = steps16_packed(uv0, x1c);
       } else {
         z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
         pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
@@ -387,6 +391,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         float64x2_t off, pos45, zi45, z45, ts4, ts5, q4, q5, zsn;
         int64x2_t i4, i5;
         uint64x2_t u4, u5;  // linear: the samples' unsigned conversions
+        int32x2_t n2c, n3c;  // linear: samples r + 2, r + 3 clamped
         // Second order, runs r + 1, r + 2: deltas, their doubles, the products, dd.
         float64x2_t sum, c;
         int32_t du1 = 0, dv1 = 0, du2 = 0, dv2 = 0, iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
@@ -466,12 +471,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
           // Even stages (between the shifts and the loads): the vector work, two chains;
           // odd stages: integer work.
           if constexpr (G == 0) {
-            n2 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n2), kMaxU));
-            n3 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n3), kMaxU));
+            // Clamped into registers of their own (n2, n3 are dead after this: their
+            // registers take the next samples without vector copies).
+            __asm__ volatile("umin %0.2s, %1.2s, %2.2s" : "=w"(n2c) : "w"(n2), "w"(kMaxU));
+            __asm__ volatile("umin %0.2s, %1.2s, %2.2s" : "=w"(n3c) : "w"(n3), "w"(kMaxU));
             off = vminnmq_f64(ll, k32);
-            pin(n2), pin(n3), pin(off);
+            pin(off);
           } else if constexpr (G == 2) {
-            x1p = lanes(n1), x2p = lanes(n2);
+            x1p = x1c, x2p = lanes(n2c);
             pos45 = vaddq_f64(pp, off);
             zi45 = kZrow;
             pin(x1p), pin(x2p), pin(pos45), pin(zi45);
@@ -496,7 +503,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
           } else if constexpr (G == 12) {
             pp = vaddq_f64(pp, k16);
             q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
-            x2p = lanes(n2), x3p = lanes(n3);
+            x2p = lanes(n2c), x3p = lanes(n3c);
             pin(pp), pin(q4), pin(q5), pin(x2p), pin(x3p);
           } else if constexpr (G == 13) {
             a_uv = x2p, a_d = steps16_packed(x2p, x3p);
@@ -526,10 +533,19 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         dest += 32;
         left -= 32;
         if constexpr (kPre) xo0 = x2p, xo1 = x3p;  // n2, n3 clamped (stage 0)
-        n0 = n2, n1 = n3, n2 = n4, n3 = n5;
+        if constexpr (kPre) {
+          x1c = x3p;
+        } else {
+          n0 = n2, n1 = n3;
+        }
+        n2 = n4, n3 = n5;
         if constexpr (kCurve) zp = z23, zs = zsn;
         z23 = z45, pos23 = pos45;
       } while (left > 48);
+      // Linear: left from n alone (the passes took 32 each while left > 48, so left is now
+      // the one value in 17 .. 48 congruent to n mod 32: (n - 49) mod 32 + 17, n > 64), not
+      // from the compiler's spilled pass count (one reload and a multiply less in the tail).
+      if constexpr (kPre) left = ((n - 49) & 31) + 17;
       // The state the tail below reads (it takes no position from P); run r's steps again.
       if constexpr (kPre) {  // n0, n1 not kept: one vector register fewer through the loop
         s0 = Sample{int32_t(uint32_t(xo0)), int32_t(uint32_t(xo0 >> 32)), vgetq_lane_f64(zp, 0)};
@@ -736,13 +752,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
-  const Sample s2 = steps > 0 ? (kPre ? t2 : sample(pos2, z2)) : s1;
+  const Sample s2 = kPre ? t2 : steps > 0 ? sample(pos2, z2) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
   if constexpr (kPre) {
     // aarch64 linear (zc is 0 here, so curve is 0: run_steps' linear steps): delta / steps
-    // truncated, two sdiv (no jump table, no call); steps 0 (s2 = s1, delta 0) gives 0.
-    // 0 <= u, v < 2^31: the deltas fit int32.
+    // truncated, two sdiv (no jump table, no call). 0 <= u, v < 2^31: the deltas fit int32.
+    // Steps 0 (a one-pixel last run): draw_run draws that pixel at (s1.u, s1.v) and never
+    // reads the steps, so s2 stays t2 and the divisor 1 (no branch: one block with run r's).
     const int32_t sd = steps > 0 ? steps : 1;
     lu = RunSteps{(s2.u - s1.u) / sd, 0}, lv = RunSteps{(s2.v - s1.v) / sd, 0};
   } else if constexpr (kCurve && kLastSteps) {
@@ -814,6 +831,9 @@ __attribute__((noinline)) void persp_lin_a64(uint8_t* dest, int n, const uint8_t
                                              const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   const PerspSpan* q = &p;
   for (;;) {
+    // Every item here is is_lin_a64's (batch_from and the test below): n > kShortMax, so
+    // persp_fast_inl's shorter-span tests fold away (no branch blocks before the head).
+    if (n <= kShortMax) __builtin_unreachable();
     persp_fast_inl<false>(dest, n, texels, width, *q);
     if (next == end) return;
     if (!is_lin_a64(*next)) return batch_from(next, end, texels, width);
