@@ -491,15 +491,22 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
             pin(zi45), pin(ts4), pin(ts5);
           } else if constexpr (G == 6) {
             zi45 = vmaxnmq_f64(zi45, kMin);
-            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
-            pin(zi45), pin(ts4), pin(ts5);
+            pin(zi45);
           } else if constexpr (G == 8) {
+            // The divide with the vector work that does not need it around it (pp + 16;
+            // ts_j = [urow, vrow] + [ux, vx] pos_j by lane, the scalar code's fmadd; then
+            // the divide, then ll - 32): LLVM's Cortex-A53 model holds every instruction
+            // after an fdiv until it completes, so NEON ops issued with it cost little,
+            // where a cluster of their own held the integer work behind it for its latency.
+            // (This order of the five: fewest cycles on both the A53 and the A57 model.)
+            pp = vaddq_f64(pp, k16);
+            pin(pp);
+            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
+            pin(ts4), pin(ts5);
             z45 = vdivq_f64(kOne, zi45);
             pin(z45);
-          } else if constexpr (G == 10) {
-            pp = vaddq_f64(pp, k16);
             ll = vsubq_f64(ll, k32);
-            pin(pp), pin(ll);
+            pin(ll);
           } else if constexpr (G == 12) {
             pp = vaddq_f64(pp, k16);
             q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
@@ -512,8 +519,10 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
             u4 = vcvtq_n_u64_f64(q4, 16), u5 = vcvtq_n_u64_f64(q5, 16);
             pin(u4), pin(u5);
           } else if constexpr (G == 16) {
-            n4 = vreinterpret_s32_u32(vqmovn_u64(u4)), n5 = vreinterpret_s32_u32(vqmovn_u64(u5));
-            pin(n4), pin(n5);
+            // Samples r + 4, r + 5 straight into n2, n3 (dead since stage 0): the next pass's
+            // r + 2, r + 3 without a register rotation.
+            n2 = vreinterpret_s32_u32(vqmovn_u64(u4)), n3 = vreinterpret_s32_u32(vqmovn_u64(u5));
+            pin(n2), pin(n3);
           }
         };
         auto slot = [&](auto j) SB_LAMBDA_INLINE {
@@ -534,11 +543,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         left -= 32;
         if constexpr (kPre) xo0 = x2p, xo1 = x3p;  // n2, n3 clamped (stage 0)
         if constexpr (kPre) {
-          x1c = x3p;
+          x1c = x3p;  // (n2, n3 already hold samples r + 4, r + 5: stage 16)
         } else {
           n0 = n2, n1 = n3;
+          n2 = n4, n3 = n5;
         }
-        n2 = n4, n3 = n5;
         if constexpr (kCurve) zp = z23, zs = zsn;
         z23 = z45, pos23 = pos45;
       } while (left > 48);
