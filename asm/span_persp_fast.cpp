@@ -269,7 +269,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       // bit); [left - 33, left - 49] as doubles (exact integers).
       const double P2i = (P + double(16)) + double(16);
       float64x2_t pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
-      float64x2_t ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
+      float64x2_t ll;  // (linear: set in the head's asm block below)
+      if constexpr (!kPre) ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
       float64x2_t z23, pos23, zp, zs;
       int32x2_t n0, n1, n2, n3;
       uint64_t uv0 = 0, duv = 0;  // linear: run 0's packed start and steps
@@ -287,64 +288,74 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         // with bench/order_search.py: the model holds every later instruction behind a
         // divide, so the divides go as early as their inputs allow): the loop's constants
         // kZrow, kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32 (16 + 16: 32.0 has no
-        // fmov immediate), kOne; pos01 = [P, P + 16] (the scalar code's P + 16), pos23 =
-        // pos01 + 32; z01 = 1 / max(zrow + zix pos01, kMin), z23 likewise; ts_j = [urow,
-        // vrow] + [ux, vx] pos_j (fmla by lane: the scalar code's fmadd, the same bits);
-        // samples j = 0 .. 3 as ts_j z (lane j of z01, z23), fcvtzu #16, uqxtn, and for 0 and
-        // 1 umin (2 and 3 as the loop leaves them); pp = [(P + 16) + 16, ((P + 16) + 16) + 16]
-        // (the walker's sums, as above) in pos01's register once that is used.
+        // fmov immediate), kOne, ll = [left - 33, left - 49]; the positions in reversed lanes,
+        // p16 = [P, P] + [16, 0] = [P + 16, P] (fmov d writes [16, 0]: no zip of P and P + 16
+        // on the divides' chain; lane 0 the scalar code's P + 16; lane 1 is P + 0.0, P except
+        // +0.0 for P = -0.0, which only the depth reads: zrow + zix (+-0) differs at most in
+        // the sign of a zero, which max(., kMin) removes), pos23 = p16 + 32 = [(P + 16) + 32,
+        // P + 32]; z01 = 1 / max(zrow + zix p16, kMin) = [z_1, z_0], z23 = [z_3, z_2]; ts_j =
+        // [urow, vrow] + [ux, vx] pos_j (fmla by lane, sample 0 by P itself: the scalar code's
+        // fmadd, the same bits); samples j = 0 .. 3 as ts_j z_j, fcvtzu #16, uqxtn, and for 0
+        // and 1 umin (2 and 3 as the loop leaves them); pp = [(P + 16) + 16, ((P + 16) + 16)
+        // + 16] (the walker's sums, as above). pos23's register holds [P, P] first, kZix's
+        // [16, 0], kUVrow's the second conversion of ll. Order: bench/order_search.py over the
+        // compiler's block (its loads before the asm pinned: --head=12), 132 -> 121 cycles.
         float64x2_t z01, ts0, ts1, ts2, ts3, p16;
         const uint32x2_t kmaxu = kMaxU;
         __asm__(
+            "fmov %d[kzx], #16.0\n\t"
+            "dup %[pos23].2d, %[P].d[0]\n\t"
             "fmov %[k16].2d, #16.0\n\t"
-            "dup %[z23].2d, %[zrow].d[0]\n\t"
             "dup %[z01].2d, %[zrow].d[0]\n\t"
             "fmov %[one].2d, #1.0\n\t"
-            "fadd %d[p16], %d[P], %d[k16]\n\t"
-            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
-            "dup %[kzx].2d, %[zix].d[0]\n\t"
-            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
-            "zip1 %[pp].2d, %[P].2d, %[p16].2d\n\t"
-            "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
-            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
-            "dup %[kzr].2d, %[zrow].d[0]\n\t"
             "zip1 %[ts1].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fadd %[pos23].2d, %[pp].2d, %[k32].2d\n\t"
-            "fmla %[z01].2d, %[pp].2d, %[zix].d[0]\n\t"
+            "dup %[z23].2d, %[zrow].d[0]\n\t"
+            "fadd %[p16].2d, %[pos23].2d, %[kzx].2d\n\t"
+            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
+            "scvtf %d[ll], %w[l33]\n\t"
+            "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
+            "scvtf %d[uvr], %w[l49]\n\t"
+            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
+            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fadd %[pos23].2d, %[p16].2d, %[k32].2d\n\t"
+            "fmla %[z01].2d, %[p16].2d, %[zix].d[0]\n\t"
             "zip1 %[ts2].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
+            "ins %[ll].d[1], %[uvr].d[0]\n\t"
             "fmla %[ts0].2d, %[uvx].2d, %[P].d[0]\n\t"
             "fmla %[z23].2d, %[pos23].2d, %[zix].d[0]\n\t"
             "fmaxnm %[z01].2d, %[z01].2d, %[kmin].2d\n\t"
-            "zip1 %[uvr].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fmla %[ts3].2d, %[uvx].2d, %[pos23].d[1]\n\t"
-            "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[0]\n\t"
+            "fmla %[ts3].2d, %[uvx].2d, %[pos23].d[0]\n\t"
+            "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[1]\n\t"
+            "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
             "fmaxnm %[z23].2d, %[z23].2d, %[kmin].2d\n\t"
             "fdiv %[z01].2d, %[one].2d, %[z01].2d\n\t"
-            "fdiv %[z23].2d, %[one].2d, %[z23].2d\n\t"
-            "fmul %[ts0].2d, %[ts0].2d, %[z01].d[0]\n\t"
-            "fmul %[ts1].2d, %[ts1].2d, %[z01].d[1]\n\t"
-            "fcvtzu %[ts0].2d, %[ts0].2d, #16\n\t"
-            "fmul %[ts2].2d, %[ts2].2d, %[z23].d[0]\n\t"
-            "fcvtzu %[ts1].2d, %[ts1].2d, #16\n\t"
-            "fmul %[ts3].2d, %[ts3].2d, %[z23].d[1]\n\t"
-            "uqxtn %[ts0].2s, %[ts0].2d\n\t"
+            "dup %[kzx].2d, %[zix].d[0]\n\t"
             "fadd %d[pp], %d[p16], %d[k16]\n\t"
+            "dup %[kzr].2d, %[zrow].d[0]\n\t"
+            "fdiv %[z23].2d, %[one].2d, %[z23].2d\n\t"
+            "fmul %[ts0].2d, %[ts0].2d, %[z01].d[1]\n\t"
+            "fmul %[ts1].2d, %[ts1].2d, %[z01].d[0]\n\t"
+            "fadd %d[p16], %d[pp], %d[k16]\n\t"
+            "fmul %[ts3].2d, %[ts3].2d, %[z23].d[0]\n\t"
+            "fcvtzu %[ts0].2d, %[ts0].2d, #16\n\t"
+            "fcvtzu %[ts1].2d, %[ts1].2d, #16\n\t"
+            "fmul %[ts2].2d, %[ts2].2d, %[z23].d[1]\n\t"
+            "zip1 %[pp].2d, %[pp].2d, %[p16].2d\n\t"
+            "fcvtzu %[ts3].2d, %[ts3].2d, #16\n\t"
+            "uqxtn %[ts0].2s, %[ts0].2d\n\t"
             "uqxtn %[ts1].2s, %[ts1].2d\n\t"
             "fcvtzu %[ts2].2d, %[ts2].2d, #16\n\t"
-            "fcvtzu %[ts3].2d, %[ts3].2d, #16\n\t"
+            "zip1 %[uvr].2d, %[urow].2d, %[vrow].2d\n\t"
             "umin %[ts0].2s, %[ts0].2s, %[kmaxu].2s\n\t"
-            "fadd %d[p16], %d[pp], %d[k16]\n\t"
             "umin %[ts1].2s, %[ts1].2s, %[kmaxu].2s\n\t"
             "uqxtn %[ts2].2s, %[ts2].2d\n\t"
-            "uqxtn %[ts3].2s, %[ts3].2d\n\t"
-            "zip1 %[pp].2d, %[pp].2d, %[p16].2d"
+            "uqxtn %[ts3].2s, %[ts3].2d"
             : [z01] "=&w"(z01), [z23] "=&w"(z23), [pp] "=&w"(pp), [pos23] "=&w"(pos23), [ts0] "=&w"(ts0),
               [ts1] "=&w"(ts1), [ts2] "=&w"(ts2), [ts3] "=&w"(ts3), [p16] "=&w"(p16), [k16] "=&w"(k16),
               [k32] "=&w"(k32), [one] "=&w"(kOne), [kzr] "=&w"(kZrow), [kzx] "=&w"(kZix), [uvr] "=&w"(kUVrow),
-              [uvx] "=&w"(kUVx)
+              [uvx] "=&w"(kUVx), [ll] "=&w"(ll)
             : [P] "w"(P), [zrow] "w"(zrow), [zix] "w"(zix), [urow] "w"(urow), [vrow] "w"(vrow), [ux] "w"(ux),
-              [vx] "w"(vx), [kmin] "w"(kMin), [kmaxu] "w"(kmaxu));
+              [vx] "w"(vx), [kmin] "w"(kMin), [kmaxu] "w"(kmaxu), [l33] "r"(left - 33), [l49] "r"(left - 49));
         (void)p16;
         auto low = [](float64x2_t x) { return vreinterpret_s32_f64(vget_low_f64(x)); };
         n0 = low(ts0), n1 = low(ts1), n2 = low(ts2), n3 = low(ts3);
