@@ -821,8 +821,9 @@ SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
+// dzi == 0.0 tested on its bits (nonzero_bits: no FP load and compare on the test's chain).
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
-  return (x.n > kShortMax) & ((!x.span.second_order) | (x.span.dzi == 0.0));
+  return (x.n > kShortMax) & ((!x.span.second_order) | !nonzero_bits(x.span.dzi));
 }
 // persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
 // the single-span entry: next == end), through batch_from. Reached from batch_from and left
