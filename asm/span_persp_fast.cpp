@@ -741,8 +741,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
+        // Field by field (a select of the structs made GCC keep s1 in memory, stored in
+        // every pass).
         const Sample t = sample(pos2, z2);
-        s2 = steps > 0 ? t : s1;
+        const bool has2 = steps > 0;
+        s2.u = has2 ? t.u : s1.u, s2.v = has2 ? t.v : s1.v, s2.z = has2 ? t.z : s1.z;
       } else if constexpr (G == 1) {
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);

@@ -21,15 +21,16 @@
 //   persp1920    the whole-span drawer (asm/span_persp.h): one 1920-pixel span of a 256x256
 //                surface in perspective, second-order steps, divides included, drawn as the
 //                engine draws a surface's spans: one surface_spans_persp call (a batch of 1)
-//   persp64      the same over 30 spans of 64 pixels (per-span costs weigh more), all 30 in
-//                one surface_spans_persp call (the engine's batches)
+//   persp64      the same over 30 spans of 50-64 pixels (mean 57; per-span costs weigh more),
+//                all 30 in one surface_spans_persp call (the engine's batches)
 //   persp64single persp64 with one surface_span_persp call per span (30 calls: the per-span
 //                entry, for comparison)
 //   persp1920lin persp1920 with linear steps (second_order off: Quake's stepping)
 //   persp64lin   persp64 with linear steps (the like-for-like short-span figure), batched
-//   persp192     10 spans of 192 pixels in one call: the engine's typical long span (second-
-//                order spans of more than 80 pixels average 150-200 pixels in LibreQuake
-//                flythroughs at 320x240-640x480, about half of all pixels drawn)
+//   persp192     10 spans of 179-205 pixels (mean 192, ten different tail lengths) in one
+//                call: the engine's typical long span (second-order spans of more than 80
+//                pixels average 150-200 pixels in LibreQuake flythroughs at 320x240-640x480,
+//                about half of all pixels drawn)
 //   persp192lin  persp192 with linear steps
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
@@ -95,9 +96,34 @@ const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
                               "persp192", "persp192lin"};
 
+// The span lengths of a persp case, left to right along one 1920-pixel row. Mixed lengths, so
+// the spans end in different last runs as the engine's do: a span of 16 k pixels (or a long
+// one that leaves 32 after its passes) takes the full-run tail, which no other length does.
+//   persp192*: ten lengths around 192 (mean 192, 1920 pixels; left after the 32-pixel
+//              passes 17 .. 48, ten different values)
+//   persp64*:  30 four-run spans of 50 .. 64 pixels, each length twice (mean 57, 1710
+//              pixels; last runs of 2 .. 16 pixels), neighbours of different lengths
+//   persp1920*: one span of 1920
+std::vector<int> persp_lengths(const char* c) {
+  // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
+  if (std::strcmp(c, "persp192") == 0 || std::strcmp(c, "persp192lin") == 0)
+    return {179, 205, 182, 202, 185, 199, 188, 196, 191, 193};
+  if (std::strncmp(c, "persp64", 7) == 0) {
+    std::vector<int> l;
+    for (int i = 0; i < 15; ++i) l.push_back(i % 2 ? 50 + i / 2 : 64 - i / 2);  // 64 50 63 51 .. 57
+    for (int i = 0; i < 15; ++i) l.push_back(l[14 - i]);                         // and back again
+    return l;
+  }
+  return {kSpan};
+}
+
 long units_of(const char* c) {
-  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
-      std::strncmp(c, "persp", 5) == 0)
+  if (std::strncmp(c, "persp", 5) == 0) {
+    long sum = 0;
+    for (int n : persp_lengths(c)) sum += n;
+    return sum;
+  }
+  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0)
     return kSpan;
   if (std::strncmp(c, "block_mip", 9) == 0) {
     const int e = kSurf >> (c[9] - '0');
@@ -181,9 +207,7 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     std::vector<uint8_t> surf(size_t(kSurf) * kSurf), dest(kSpan);
     for (auto& t : surf) t = uint8_t(rng.next() >> 24);
     const bool lin = std::strstr(c, "lin") != nullptr;
-    // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
-    const bool len192 = std::strcmp(c, "persp192") == 0 || std::strcmp(c, "persp192lin") == 0;
-    const int len = std::strncmp(c, "persp64", 7) == 0 ? 64 : len192 ? 192 : kSpan;
+    const std::vector<int> lens = persp_lengths(c);
     sb::simd::PerspSpan p{};
     p.zi0 = 0.004;
     p.dzi = -0.003 / kSpan;
@@ -196,18 +220,18 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     p.second_order = !lin;
     if (std::strstr(c, "single") != nullptr) {
       for (long r = 0; r < reps; ++r)
-        for (int x = 0; x < kSpan; x += len) {
+        for (int x = 0, i = 0; i < int(lens.size()); x += lens[i++]) {
           p.px0 = x + 0.5;
-          k.surface_span_persp(dest.data() + x, len, surf.data(), kSurf, kSurf, p);
+          k.surface_span_persp(dest.data() + x, lens[i], surf.data(), kSurf, kSurf, p);
         }
       return checksum(dest.data(), dest.size());
     }
     // One batch per repetition, filled once (the engine fills its items as it goes: a few
     // stores a span, not counted here).
     std::vector<sb::simd::PerspItem> items;
-    for (int x = 0; x < kSpan; x += len) {
+    for (int x = 0, i = 0; i < int(lens.size()); x += lens[i++]) {
       p.px0 = x + 0.5;
-      items.push_back(sb::simd::PerspItem{dest.data() + x, len, p});
+      items.push_back(sb::simd::PerspItem{dest.data() + x, lens[i], p});
     }
     for (long r = 0; r < reps; ++r) k.surface_spans_persp(items.data(), int(items.size()), surf.data(), kSurf, kSurf);
     return checksum(dest.data(), dest.size());

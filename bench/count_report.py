@@ -44,12 +44,12 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
           "alias32": "alias_span (32-px spans, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
-          "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (64-px spans)",
+          "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (spans of 50-64 px, mean 57)",
           "persp1920lin": "surface_span_persp (1920 px, linear steps)",
-          "persp64lin": "surface_span_persp (64-px spans, linear steps)",
-          "persp64single": "surface_span_persp (64-px spans, one call each)",
-          "persp192": "surface_span_persp (192-px spans)",
-          "persp192lin": "surface_span_persp (192-px spans, linear steps)"}
+          "persp64lin": "surface_span_persp (spans of 50-64 px, linear steps)",
+          "persp64single": "surface_span_persp (spans of 50-64 px, one call each)",
+          "persp192": "surface_span_persp (spans of 179-205 px, mean 192)",
+          "persp192lin": "surface_span_persp (spans of 179-205 px, linear steps)"}
 UNIT = {"palette": "src px"}
 
 
@@ -134,18 +134,19 @@ class Disasm:
                 out += [f"{op} {r}, [{m.group(2)}, #{4 * i}]" for i, r in enumerate(regs)]
                 continue
             m = re.match(r"^(v?)(push|pop) \{(.*)\}$", c2)
-            g = re.match(r"^(v?)(ldm|stm)(?:ia)?(?:\.\d+)? (\w+)(!?), \{(.*)\}$", c2)
-            if g and not m:  # ldm/stm (vldm/vstm) on another base: one load/store per register
+            g = re.match(r"^(v?)(ldm|stm)(ia|db)?(?:\.\d+)? (\w+)(!?), \{(.*)\}$", c2)
+            if g and not m:  # ldm/stm (vldm/vstm, ia or db) on another base: one load/store per register
                 regs = []
-                for part in g.group(5).split(","):
+                for part in g.group(6).split(","):
                     part = part.strip()
                     r = re.match(r"^([rd])(\d+)-[rd](\d+)$", part)
                     regs += [f"{r.group(1)}{i}" for i in range(int(r.group(2)), int(r.group(3)) + 1)] if r else [part]
                 size = 8 if g.group(1) else 4
                 op = ("vldr" if g.group(2) == "ldm" else "vstr") if g.group(1) else ("ldr" if g.group(2) == "ldm" else "str")
-                out += [f"{op} {r}, [{g.group(3)}, #{size * i}]" for i, r in enumerate(regs)]
-                if g.group(4):
-                    out.append(f"add {g.group(3)}, {g.group(3)}, #{size * len(regs)}")
+                base = -size * len(regs) if g.group(3) == "db" else 0  # db: the registers below the base
+                out += [f"{op} {r}, [{g.group(4)}, #{base + size * i}]" for i, r in enumerate(regs)]
+                if g.group(5):
+                    out.append(f"{'sub' if base else 'add'} {g.group(4)}, {g.group(4)}, #{size * len(regs)}")
                 continue
             if not m:
                 out.append(c)
@@ -399,8 +400,8 @@ def main():
           "(surface_span_fast, surface_span_persp_fast / surface_spans_persp_fast), not vector code; "
           "surface_span_persp scalar is the reference run walker.",
           "- **surface_span_persp rows**: drawn as the engine draws a surface's spans, one surface_spans_persp "
-          "call (a batch) per repetition: 1 item of 1920 px, 10 of 192 px or 30 of 64 px; *one call each* is 30 "
-          "surface_span_persp calls per repetition (the per-span entry). The 192-px rows stand for the engine's "
+          "call (a batch) per repetition: 1 item of 1920 px, 10 of 179-205 px (mean 192) or 30 of 50-64 px (mean 57), mixed lengths so the spans end in different last runs as the engine's do; *one call each* is 30 "
+          "surface_span_persp calls per repetition (the per-span entry). The mean-192 rows stand for the engine's "
           "mix: in LibreQuake flythroughs (320x240 .. 640x480) second-order spans of more than 80 px draw 34-57% "
           "of the pixels (mean 143-205 px), linear ones (dzi 0: floors, ceilings) 28-30%, spans of 49-64 px "
           "in pairs 3-6%.", ""]
