@@ -280,10 +280,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       // bit); [left - 33, left - 49] as doubles (exact integers).
       const double P2i = (P + double(16)) + double(16);
       float64x2_t pp = vcombine_f64(vdup_n_f64(P2i), vdup_n_f64(P2i + double(16)));
-      float64x2_t ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
+      float64x2_t ll;  // (linear: set in the head's asm block below)
+      if constexpr (!kPre) ll = vcombine_f64(vdup_n_f64(double(left - 33)), vdup_n_f64(double(left - 49)));
       float64x2_t z23, pos23, zp, zs;
       int32x2_t n0, n1, n2, n3;
       uint64_t uv0 = 0, duv = 0;  // linear: run 0's packed start and steps
+      // Linear: sample r + 1 packed (clamped), carried in a core register from the last
+      // pass's x3p (no vector n1 through the loop: no vector moves for its rotation).
+      uint64_t x1c = 0;
       if constexpr (kPre) {
         // The head as the loop's stage computes samples (the scalar head's operations lane
         // by lane, the same bits): positions [P, P + 16] and [P + 32, (P + 16) + 32] (o_3 -
@@ -295,70 +299,81 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         // with bench/order_search.py: the model holds every later instruction behind a
         // divide, so the divides go as early as their inputs allow): the loop's constants
         // kZrow, kZix, kUVrow = [urow, vrow], kUVx = [ux, vx], k16, k32 (16 + 16: 32.0 has no
-        // fmov immediate), kOne; pos01 = [P, P + 16] (the scalar code's P + 16), pos23 =
-        // pos01 + 32; z01 = 1 / max(zrow + zix pos01, kMin), z23 likewise; ts_j = [urow,
-        // vrow] + [ux, vx] pos_j (fmla by lane: the scalar code's fmadd, the same bits);
-        // samples j = 0 .. 3 as ts_j z (lane j of z01, z23), fcvtzu #16, uqxtn, and for 0 and
-        // 1 umin (2 and 3 as the loop leaves them); pp = [(P + 16) + 16, ((P + 16) + 16) + 16]
-        // (the walker's sums, as above) in pos01's register once that is used.
+        // fmov immediate), kOne, ll = [left - 33, left - 49]; the positions in reversed lanes,
+        // p16 = [P, P] + [16, 0] = [P + 16, P] (fmov d writes [16, 0]: no zip of P and P + 16
+        // on the divides' chain; lane 0 the scalar code's P + 16; lane 1 is P + 0.0, P except
+        // +0.0 for P = -0.0, which only the depth reads: zrow + zix (+-0) differs at most in
+        // the sign of a zero, which max(., kMin) removes), pos23 = p16 + 32 = [(P + 16) + 32,
+        // P + 32]; z01 = 1 / max(zrow + zix p16, kMin) = [z_1, z_0], z23 = [z_3, z_2]; ts_j =
+        // [urow, vrow] + [ux, vx] pos_j (fmla by lane, sample 0 by P itself: the scalar code's
+        // fmadd, the same bits); samples j = 0 .. 3 as ts_j z_j, fcvtzu #16, uqxtn, and for 0
+        // and 1 umin (2 and 3 as the loop leaves them); pp = [(P + 16) + 16, ((P + 16) + 16)
+        // + 16] (the walker's sums, as above). pos23's register holds [P, P] first, kZix's
+        // [16, 0], kUVrow's the second conversion of ll. Order: bench/order_search.py over the
+        // compiler's block (its loads before the asm pinned: --head=12), 132 -> 121 cycles.
         float64x2_t z01, ts0, ts1, ts2, ts3, p16;
         const uint32x2_t kmaxu = kMaxU;
         __asm__(
+            "fmov %d[kzx], #16.0\n\t"
+            "dup %[pos23].2d, %[P].d[0]\n\t"
             "fmov %[k16].2d, #16.0\n\t"
-            "dup %[z23].2d, %[zrow].d[0]\n\t"
             "dup %[z01].2d, %[zrow].d[0]\n\t"
             "fmov %[one].2d, #1.0\n\t"
-            "fadd %d[p16], %d[P], %d[k16]\n\t"
-            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
-            "dup %[kzx].2d, %[zix].d[0]\n\t"
-            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
-            "zip1 %[pp].2d, %[P].2d, %[p16].2d\n\t"
-            "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
-            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
-            "dup %[kzr].2d, %[zrow].d[0]\n\t"
             "zip1 %[ts1].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fadd %[pos23].2d, %[pp].2d, %[k32].2d\n\t"
-            "fmla %[z01].2d, %[pp].2d, %[zix].d[0]\n\t"
+            "dup %[z23].2d, %[zrow].d[0]\n\t"
+            "fadd %[p16].2d, %[pos23].2d, %[kzx].2d\n\t"
+            "fadd %[k32].2d, %[k16].2d, %[k16].2d\n\t"
+            "scvtf %d[ll], %w[l33]\n\t"
+            "zip1 %[uvx].2d, %[ux].2d, %[vx].2d\n\t"
+            "scvtf %d[uvr], %w[l49]\n\t"
+            "zip1 %[ts3].2d, %[urow].2d, %[vrow].2d\n\t"
+            "zip1 %[ts0].2d, %[urow].2d, %[vrow].2d\n\t"
+            "fadd %[pos23].2d, %[p16].2d, %[k32].2d\n\t"
+            "fmla %[z01].2d, %[p16].2d, %[zix].d[0]\n\t"
             "zip1 %[ts2].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
+            "ins %[ll].d[1], %[uvr].d[0]\n\t"
             "fmla %[ts0].2d, %[uvx].2d, %[P].d[0]\n\t"
             "fmla %[z23].2d, %[pos23].2d, %[zix].d[0]\n\t"
             "fmaxnm %[z01].2d, %[z01].2d, %[kmin].2d\n\t"
-            "zip1 %[uvr].2d, %[urow].2d, %[vrow].2d\n\t"
-            "fmla %[ts3].2d, %[uvx].2d, %[pos23].d[1]\n\t"
-            "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[0]\n\t"
+            "fmla %[ts3].2d, %[uvx].2d, %[pos23].d[0]\n\t"
+            "fmla %[ts2].2d, %[uvx].2d, %[pos23].d[1]\n\t"
+            "fmla %[ts1].2d, %[uvx].2d, %[p16].d[0]\n\t"
             "fmaxnm %[z23].2d, %[z23].2d, %[kmin].2d\n\t"
             "fdiv %[z01].2d, %[one].2d, %[z01].2d\n\t"
-            "fdiv %[z23].2d, %[one].2d, %[z23].2d\n\t"
-            "fmul %[ts0].2d, %[ts0].2d, %[z01].d[0]\n\t"
-            "fmul %[ts1].2d, %[ts1].2d, %[z01].d[1]\n\t"
-            "fcvtzu %[ts0].2d, %[ts0].2d, #16\n\t"
-            "fmul %[ts2].2d, %[ts2].2d, %[z23].d[0]\n\t"
-            "fcvtzu %[ts1].2d, %[ts1].2d, #16\n\t"
-            "fmul %[ts3].2d, %[ts3].2d, %[z23].d[1]\n\t"
-            "uqxtn %[ts0].2s, %[ts0].2d\n\t"
+            "dup %[kzx].2d, %[zix].d[0]\n\t"
             "fadd %d[pp], %d[p16], %d[k16]\n\t"
+            "dup %[kzr].2d, %[zrow].d[0]\n\t"
+            "fdiv %[z23].2d, %[one].2d, %[z23].2d\n\t"
+            "fmul %[ts0].2d, %[ts0].2d, %[z01].d[1]\n\t"
+            "fmul %[ts1].2d, %[ts1].2d, %[z01].d[0]\n\t"
+            "fadd %d[p16], %d[pp], %d[k16]\n\t"
+            "fmul %[ts3].2d, %[ts3].2d, %[z23].d[0]\n\t"
+            "fcvtzu %[ts0].2d, %[ts0].2d, #16\n\t"
+            "fcvtzu %[ts1].2d, %[ts1].2d, #16\n\t"
+            "fmul %[ts2].2d, %[ts2].2d, %[z23].d[1]\n\t"
+            "zip1 %[pp].2d, %[pp].2d, %[p16].2d\n\t"
+            "fcvtzu %[ts3].2d, %[ts3].2d, #16\n\t"
+            "uqxtn %[ts0].2s, %[ts0].2d\n\t"
             "uqxtn %[ts1].2s, %[ts1].2d\n\t"
             "fcvtzu %[ts2].2d, %[ts2].2d, #16\n\t"
-            "fcvtzu %[ts3].2d, %[ts3].2d, #16\n\t"
+            "zip1 %[uvr].2d, %[urow].2d, %[vrow].2d\n\t"
             "umin %[ts0].2s, %[ts0].2s, %[kmaxu].2s\n\t"
-            "fadd %d[p16], %d[pp], %d[k16]\n\t"
             "umin %[ts1].2s, %[ts1].2s, %[kmaxu].2s\n\t"
             "uqxtn %[ts2].2s, %[ts2].2d\n\t"
-            "uqxtn %[ts3].2s, %[ts3].2d\n\t"
-            "zip1 %[pp].2d, %[pp].2d, %[p16].2d"
+            "uqxtn %[ts3].2s, %[ts3].2d"
             : [z01] "=&w"(z01), [z23] "=&w"(z23), [pp] "=&w"(pp), [pos23] "=&w"(pos23), [ts0] "=&w"(ts0),
               [ts1] "=&w"(ts1), [ts2] "=&w"(ts2), [ts3] "=&w"(ts3), [p16] "=&w"(p16), [k16] "=&w"(k16),
               [k32] "=&w"(k32), [one] "=&w"(kOne), [kzr] "=&w"(kZrow), [kzx] "=&w"(kZix), [uvr] "=&w"(kUVrow),
-              [uvx] "=&w"(kUVx)
+              [uvx] "=&w"(kUVx), [ll] "=&w"(ll)
             : [P] "w"(P), [zrow] "w"(zrow), [zix] "w"(zix), [urow] "w"(urow), [vrow] "w"(vrow), [ux] "w"(ux),
-              [vx] "w"(vx), [kmin] "w"(kMin), [kmaxu] "w"(kmaxu));
+              [vx] "w"(vx), [kmin] "w"(kMin), [kmaxu] "w"(kmaxu), [l33] "r"(left - 33), [l49] "r"(left - 49));
         (void)p16;
         auto low = [](float64x2_t x) { return vreinterpret_s32_f64(vget_low_f64(x)); };
         n0 = low(ts0), n1 = low(ts1), n2 = low(ts2), n3 = low(ts3);
         zp = z01, zs = z01;
         uv0 = vget_lane_u64(vreinterpret_u64_s32(n0), 0);
-        duv = steps16_packed(uv0, vget_lane_u64(vreinterpret_u64_s32(n1), 0));
+        x1c = vget_lane_u64(vreinterpret_u64_s32(n1), 0);
+        duv = steps16_packed(uv0, x1c);
       } else {
         z23 = vcombine_f64(vdup_n_f64(z2), vdup_n_f64(z3));
         pos23 = vcombine_f64(vdup_n_f64(pos2), vdup_n_f64(pos3));
@@ -398,6 +413,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         float64x2_t off, pos45, zi45, z45, ts4, ts5, q4, q5, zsn;
         int64x2_t i4, i5;
         uint64x2_t u4, u5;  // linear: the samples' unsigned conversions
+        int32x2_t n2c, n3c;  // linear: samples r + 2, r + 3 clamped
         // Second order, runs r + 1, r + 2: deltas, their doubles, the products, dd.
         float64x2_t sum, c;
         int32_t du1 = 0, dv1 = 0, du2 = 0, dv2 = 0, iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
@@ -477,12 +493,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
           // Even stages (between the shifts and the loads): the vector work, two chains;
           // odd stages: integer work.
           if constexpr (G == 0) {
-            n2 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n2), kMaxU));
-            n3 = vreinterpret_s32_u32(vmin_u32(vreinterpret_u32_s32(n3), kMaxU));
+            // Clamped into registers of their own (n2, n3 are dead after this: their
+            // registers take the next samples without vector copies).
+            __asm__ volatile("umin %0.2s, %1.2s, %2.2s" : "=w"(n2c) : "w"(n2), "w"(kMaxU));
+            __asm__ volatile("umin %0.2s, %1.2s, %2.2s" : "=w"(n3c) : "w"(n3), "w"(kMaxU));
             off = vminnmq_f64(ll, k32);
-            pin(n2), pin(n3), pin(off);
+            pin(off);
           } else if constexpr (G == 2) {
-            x1p = lanes(n1), x2p = lanes(n2);
+            x1p = x1c, x2p = lanes(n2c);
             pos45 = vaddq_f64(pp, off);
             zi45 = kZrow;
             pin(x1p), pin(x2p), pin(pos45), pin(zi45);
@@ -495,19 +513,26 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
             pin(zi45), pin(ts4), pin(ts5);
           } else if constexpr (G == 6) {
             zi45 = vmaxnmq_f64(zi45, kMin);
-            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
-            pin(zi45), pin(ts4), pin(ts5);
+            pin(zi45);
           } else if constexpr (G == 8) {
+            // The divide with the vector work that does not need it around it (pp + 16;
+            // ts_j = [urow, vrow] + [ux, vx] pos_j by lane, the scalar code's fmadd; then
+            // the divide, then ll - 32): LLVM's Cortex-A53 model holds every instruction
+            // after an fdiv until it completes, so NEON ops issued with it cost little,
+            // where a cluster of their own held the integer work behind it for its latency.
+            // (This order of the five: fewest cycles on both the A53 and the A57 model.)
+            pp = vaddq_f64(pp, k16);
+            pin(pp);
+            ts4 = vfmaq_laneq_f64(ts4, kUVx, pos45, 0), ts5 = vfmaq_laneq_f64(ts5, kUVx, pos45, 1);
+            pin(ts4), pin(ts5);
             z45 = vdivq_f64(kOne, zi45);
             pin(z45);
-          } else if constexpr (G == 10) {
-            pp = vaddq_f64(pp, k16);
             ll = vsubq_f64(ll, k32);
-            pin(pp), pin(ll);
+            pin(ll);
           } else if constexpr (G == 12) {
             pp = vaddq_f64(pp, k16);
             q4 = vmulq_laneq_f64(ts4, z45, 0), q5 = vmulq_laneq_f64(ts5, z45, 1);
-            x2p = lanes(n2), x3p = lanes(n3);
+            x2p = lanes(n2c), x3p = lanes(n3c);
             pin(pp), pin(q4), pin(q5), pin(x2p), pin(x3p);
           } else if constexpr (G == 13) {
             a_uv = x2p, a_d = steps16_packed(x2p, x3p);
@@ -516,8 +541,10 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
             u4 = vcvtq_n_u64_f64(q4, 16), u5 = vcvtq_n_u64_f64(q5, 16);
             pin(u4), pin(u5);
           } else if constexpr (G == 16) {
-            n4 = vreinterpret_s32_u32(vqmovn_u64(u4)), n5 = vreinterpret_s32_u32(vqmovn_u64(u5));
-            pin(n4), pin(n5);
+            // Samples r + 4, r + 5 straight into n2, n3 (dead since stage 0): the next pass's
+            // r + 2, r + 3 without a register rotation.
+            n2 = vreinterpret_s32_u32(vqmovn_u64(u4)), n3 = vreinterpret_s32_u32(vqmovn_u64(u5));
+            pin(n2), pin(n3);
           }
         };
         auto slot = [&](auto j) SB_LAMBDA_INLINE {
@@ -537,10 +564,19 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         dest += 32;
         left -= 32;
         if constexpr (kPre) xo0 = x2p, xo1 = x3p;  // n2, n3 clamped (stage 0)
-        n0 = n2, n1 = n3, n2 = n4, n3 = n5;
+        if constexpr (kPre) {
+          x1c = x3p;  // (n2, n3 already hold samples r + 4, r + 5: stage 16)
+        } else {
+          n0 = n2, n1 = n3;
+          n2 = n4, n3 = n5;
+        }
         if constexpr (kCurve) zp = z23, zs = zsn;
         z23 = z45, pos23 = pos45;
       } while (left > 48);
+      // Linear: left from n alone (the passes took 32 each while left > 48, so left is now
+      // the one value in 17 .. 48 congruent to n mod 32: (n - 49) mod 32 + 17, n > 64), not
+      // from the compiler's spilled pass count (one reload and a multiply less in the tail).
+      if constexpr (kPre) left = ((n - 49) & 31) + 17;
       // The state the tail below reads (it takes no position from P); run r's steps again.
       if constexpr (kPre) {  // n0, n1 not kept: one vector register fewer through the loop
         s0 = Sample{int32_t(uint32_t(xo0)), int32_t(uint32_t(xo0 >> 32)), vgetq_lane_f64(zp, 0)};
@@ -716,8 +752,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
+        // Field by field (a select of the structs made GCC keep s1 in memory, stored in
+        // every pass).
         const Sample t = sample(pos2, z2);
-        s2 = steps > 0 ? t : s1;
+        const bool has2 = steps > 0;
+        s2.u = has2 ? t.u : s1.u, s2.v = has2 ? t.v : s1.v, s2.z = has2 ? t.z : s1.z;
       } else if constexpr (G == 1) {
         du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
         qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
@@ -747,7 +786,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
-  const Sample s2 = steps > 0 ? (kPre ? t2 : sample(pos2, z2)) : s1;
+  const Sample s2 = kPre ? t2 : steps > 0 ? sample(pos2, z2) : s1;
   const double curve = zc * 0.5 * (s1.z + s2.z);
   RunSteps lu, lv;
 #if defined(__x86_64__)
@@ -760,8 +799,9 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #endif
   if constexpr (kPre) {
     // aarch64 linear (zc is 0 here, so curve is 0: run_steps' linear steps): delta / steps
-    // truncated, two sdiv (no jump table, no call); steps 0 (s2 = s1, delta 0) gives 0.
-    // 0 <= u, v < 2^31: the deltas fit int32.
+    // truncated, two sdiv (no jump table, no call). 0 <= u, v < 2^31: the deltas fit int32.
+    // Steps 0 (a one-pixel last run): draw_run draws that pixel at (s1.u, s1.v) and never
+    // reads the steps, so s2 stays t2 and the divisor 1 (no branch: one block with run r's).
     const int32_t sd = steps > 0 ? steps : 1;
     lu = RunSteps{(s2.u - s1.u) / sd, 0}, lv = RunSteps{(s2.v - s1.v) / sd, 0};
   } else if constexpr (kCurve && (kLastSteps || kX86)) {
@@ -803,8 +843,9 @@ SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
+// dzi == 0.0 tested on its bits (nonzero_bits: no FP load and compare on the test's chain).
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
-  return (x.n > kShortMax) & ((!x.span.second_order) | (x.span.dzi == 0.0));
+  return (x.n > kShortMax) & ((!x.span.second_order) | !nonzero_bits(x.span.dzi));
 }
 // persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
 // the single-span entry: next == end), through batch_from. Reached from batch_from and left
@@ -833,6 +874,9 @@ __attribute__((noinline)) void persp_lin_a64(uint8_t* dest, int n, const uint8_t
                                              const PerspSpan& p, const PerspItem* next, const PerspItem* end) {
   const PerspSpan* q = &p;
   for (;;) {
+    // Every item here is is_lin_a64's (batch_from and the test below): n > kShortMax, so
+    // persp_fast_inl's shorter-span tests fold away (no branch blocks before the head).
+    if (n <= kShortMax) __builtin_unreachable();
     persp_fast_inl<false>(dest, n, texels, width, *q);
     if (next == end) return;
     if (!is_lin_a64(*next)) return batch_from(next, end, texels, width);

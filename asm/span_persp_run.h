@@ -179,7 +179,13 @@ inline double min_ufixed16(double x, double kmax) {
   __asm__("vmin.u32 %P0, %P0, %P1" : "+w"(x) : "w"(kmax));
   return x;
 }
-inline double bound16(int32_t m) { return __builtin_bit_cast(double, uint64_t(uint32_t(m))); }
+// kmax for min_ufixed16: m in both 32-bit halves (one vmov from the core register; the
+// clamped results are read from their low 32 bits only: fixed16_bits, ufixed16_f64).
+inline double bound16(int32_t m) {
+  double r;
+  __asm__("vmov %P0, %1, %1" : "=w"(r) : "r"(m));
+  return r;
+}
 // double(uint32 low bits of x) by vcvt.f64.u32 from x's low single register (the clamped
 // results above: fixed16_bits(x) as a double, without moving it to a core register).
 // "t": x in d0 .. d15, and GCC prints such a double operand as its low single (s2n for dn).
