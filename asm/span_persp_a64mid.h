@@ -200,7 +200,8 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // (lengths 49 .. 64) and MatchesTheRunWalkerOnShortSpans the span against the walker.
 SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
                                   int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
-                                  float64x2_t zs23, int s, double zc, uint64_t (&st)[6], bool& full) {
+                                  float64x2_t zs23, int s, double zh, uint64_t (&st)[6], bool& full) {
+  // zh = zc * 0.5 (zc the span's dzi: the caller's multiply, or the sample block's).
   register uint64_t ra_uv __asm__("x13"), ra_d __asm__("x9"), ra_dd __asm__("x10");
   register uint64_t rb_uv __asm__("x23"), rb_d __asm__("x24"), rb_dd __asm__("x25");
   register int32x4_t rS44 __asm__("v7") = S44;
@@ -209,7 +210,7 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
   register float64x2_t rc01 __asm__("v3") = c01;
   register float64x2_t rc23 __asm__("v16") = c23;
   register float64x2_t rzs __asm__("v1") = zs23;
-  register double rzc __asm__("v31") = zc * 0.5;
+  register double rzc __asm__("v31") = zh;  // zc / 2
   __asm__ volatile(
 // BEGIN steps_k3v_pass
       "ext v7.16b, v19.16b, v7.16b, #8\n\t"
@@ -562,13 +563,16 @@ SB_INLINE uint64_t mid_pack(uint64_t x) {
 // Draws a second-order span of 49 .. 64 pixels (4 runs; last = n - 48 pixels in the last
 // run) from the sample block's results (persp_short_inl): the steps with runs 0, 1
 // (steps_k3v_pass), then runs 2, 3 as one short_pass (last == 16) or run 2 by Run16 and the
-// last run by draw_run.
-SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int width, int32x4_t S01, int32x4_t S23,
-                            int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zc) {
+// last run by draw_run. zh = zc * 0.5; width's value as an int (int64_t: the single-span
+// entry hands it on sign-extended).
+SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int64_t width, int32x4_t S01, int32x4_t S23,
+                            int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zh) {
   uint64_t st[6];
   bool full;  // last == 16
+  // s = last - 1 indexes the same MidSteps as max(last - 1, 1) (kMidSteps[0] == kMidSteps[1]:
+  // mid_steps(1)), without a compare and select before the block's table loads.
   const MidFirst second = steps_k3v_pass(dest, texels, uint64_t(width), S01, S23, S44, c01, c23, zs23,
-                                         last > 2 ? last - 1 : 1, zc, st, full);
+                                         last - 1, zh, st, full);
   if (full) {
     short_pass<true>(dest + 32, texels, uint64_t(width), second.a_uv, second.a_d, second.a_dd, second.b_uv,
                      second.b_d, second.b_dd);
