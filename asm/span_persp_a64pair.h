@@ -88,8 +88,9 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // block's start (among its loads), tested after its last NEON instruction (core work between
 // NEON instructions waits for their writebacks on the A53).
 // runs_a, last_a = span a's runs = (na + 15) >> 4 and last = na - 16 (runs - 1) (short_rest's),
-// among the block's first loads. dzi_ab = [a's dzi, b's dzi] as the block loads them (v15: the
-// spans' rests take their zc from it, not from memory again).
+// among the block's first loads. zh_ab = [a's dzi, b's dzi] * 0.5 (short_rest's zh, the same
+// bits as a multiply after the block; v15: the dzi lanes as the block loads them, multiplied
+// in its tail once zck's product has read them; the spans' rests take their zh from it).
 // Span a's samples are left in registers (outa: for its short_rest straight after the block,
 // no store and load back), span b's stored (outb). The register names are bench/mca_a53_pair's
 // order's (pair_cur.s) renamed (v1 -> v16, v3 -> v5, v4 -> v7, v5 -> v4, v7 -> v17, v9 -> v12,
@@ -97,7 +98,7 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // them (S01 v5, S23 v19, S44 v7, c01 v3, c23 v16, zs23 v1; the loop still moves two).
 SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, int nb, ShortSamples& outa,
                               ShortSamples& outb, const PerspItem* it, const PerspItem* end, uint32_t& next,
-                              int& runs_a, int& last_a, float64x2_t& dzi_ab) {
+                              int& runs_a, int& last_a, float64x2_t& zh_ab) {
   uint64_t t_h, t_n0, t_n1, t_s1, t_z0, t_z1;
   register int32x4_t rS01 __asm__("v5");
   register int32x4_t rS23 __asm__("v19");
@@ -317,6 +318,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "uqxtn2 v10.4s, v23.2d\n\t"
         "trn2 v22.2d, v8.2d, v12.2d\n\t"
         "ld1r {v18.2d}, [x13]\n\t"
+        "fmov v20.2d, #0.5\n\t"
         "trn2 v4.2d, v0.2d, v6.2d\n\t"
         "uqxtn2 v13.4s, v17.2d\n\t"
         "uqxtn2 v11.4s, v25.2d\n\t"
@@ -325,6 +327,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "umin v19.4s, v19.4s, v2.4s\n\t"
         "fmul v28.2d, v22.2d, v14.d[1]\n\t"
         "umin v10.4s, v10.4s, v18.4s\n\t"
+        "fmul v15.2d, v15.2d, v20.2d\n\t"
         "umin v11.4s, v11.4s, v18.4s\n\t"
         "umin v13.4s, v13.4s, v18.4s\n\t"
         "fmul v27.2d, v4.2d, v14.d[1]\n\t"
@@ -357,7 +360,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "v27", "v28", "v29", "v30", "v31");
   outa.S01 = rS01, outa.S23 = rS23, outa.S44 = rS44;
   outa.zs01 = rzs01, outa.zs23 = rzs23, outa.c01 = rc01, outa.c23 = rc23;
-  dzi_ab = rdz;
+  zh_ab = rdz;
 }
 #endif
 

@@ -936,16 +936,15 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       do {
         ShortSamples q;
         int runs, last;  // span a's, from the block
-        float64x2_t dz;  // [a's dzi, b's dzi] as the block loaded them (the same bits)
-        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last, dz);
+        float64x2_t zh2;  // [a's dzi, b's dzi] * 0.5 (short_rest's zh), from the block
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last, zh2);
         // Span a's rest on the block's registers, then span b's on its stored samples.
-        double zc = vgetq_lane_f64(dz, 0);
+        double zh = vgetq_lane_f64(zh2, 0);
 #pragma GCC unroll 1
         for (int j = 0; j < 2; ++j, ++it) {
-          short_rest<true>(it->dest, runs, last, texels, width, zc * 0.5, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01,
-                           q.c23);
+          short_rest<true>(it->dest, runs, last, texels, width, zh, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01, q.c23);
           const int nb = it[1 - j].n;  // span b's n (span b itself after it: never past the pair)
-          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zc = vgetq_lane_f64(dz, 1);
+          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zh = vgetq_lane_f64(zh2, 1);
         }
       } while (again);
       continue;

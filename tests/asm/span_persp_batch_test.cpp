@@ -400,11 +400,12 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     std::memset(pair, 0x5a, sizeof pair);
     uint32_t next = 7;
     int runs_a = -1, last_a = -1;
-    float64x2_t dz;
-    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a, dz);
-    const double dza = vgetq_lane_f64(dz, 0), dzb = vgetq_lane_f64(dz, 1);
-    ASSERT_EQ(std::memcmp(&dza, &a.dzi, 8), 0);  // the dzi lanes: the spans' bits
-    ASSERT_EQ(std::memcmp(&dzb, &b.dzi, 8), 0);
+    float64x2_t zh;
+    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a, zh);
+    const double zpa = vgetq_lane_f64(zh, 0), zpb = vgetq_lane_f64(zh, 1);
+    const double wa = a.dzi * 0.5, wb = b.dzi * 0.5;  // the zh lanes: short_rest's dzi * 0.5, bit for bit
+    ASSERT_EQ(std::memcmp(&zpa, &wa, 8), 0);
+    ASSERT_EQ(std::memcmp(&zpb, &wb, 8), 0);
     ASSERT_EQ(next, 0u);  // no items after the pair
     ASSERT_EQ(runs_a, (na + 15) >> 4);
     ASSERT_EQ(last_a, na - 16 * (runs_a - 1));
