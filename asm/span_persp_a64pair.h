@@ -89,12 +89,13 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // NEON instructions waits for their writebacks on the A53).
 // runs_a, last_a = span a's runs = (na + 15) >> 4 and last = na - 16 (runs - 1) (short_rest's),
 // among the block's first loads. zh_ab = [a's dzi, b's dzi] * 0.5 (short_rest's zh, the same
-// bits as a multiply after the block; v15: the dzi lanes as the block loads them, multiplied
-// in its tail once zck's product has read them; the spans' rests take their zh from it).
+// bits as a multiply after the block; v31: the dzi lanes as the block loads them, multiplied
+// in its tail once zck's product has read them; the spans' rests take their zh from it, span
+// a's lane 0 where steps_k3v_pass takes it: no copy before that block).
 // Span a's samples are left in registers (outa: for its short_rest straight after the block,
 // no store and load back), span b's stored (outb). The register names are bench/mca_a53_pair's
 // order's (pair_cur.s) renamed (v1 -> v16, v3 -> v5, v4 -> v7, v5 -> v4, v7 -> v17, v9 -> v12,
-// v12 -> v1, v16 -> v20, v17 -> v9, v20 -> v3): span a's outputs where steps_k3v_pass takes
+// v12 -> v1, v16 -> v20, v17 -> v9, v20 -> v3, then v15 <-> v31): span a's outputs where steps_k3v_pass takes
 // them (S01 v5, S23 v19, S44 v7, c01 v3, c23 v16, zs23 v1; the loop still moves two).
 SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, int nb, ShortSamples& outa,
                               ShortSamples& outb, const PerspItem* it, const PerspItem* end, uint32_t& next,
@@ -107,7 +108,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
   register float64x2_t rzs23 __asm__("v1");
   register float64x2_t rc01 __asm__("v3");
   register float64x2_t rc23 __asm__("v16");
-  register float64x2_t rdz __asm__("v15");
+  register float64x2_t rdz __asm__("v31");
   __asm__ volatile(
 // BEGIN short_samples2
         "add x7, %[it], #264\n\t"
@@ -127,7 +128,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "add %w[la], %w[la], #16\n\t"
         "ldr d4, [%[pa]]\n\t"
         "add x6, %[pa], #32\n\t"
-        "ldr d15, [%[pa], #8]\n\t"
+        "ldr d31, [%[pa], #8]\n\t"
         "add x11, %[pb], #40\n\t"
         "ld1 {v0.d}[1], [x12]\n\t"
         "ldr %x[z0], [x7, #24]\n\t"
@@ -145,7 +146,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "ldr q18, [%[kc], #16]\n\t"
         "add x7, %[pa], #40\n\t"
         "ld1 {v5.d}[1], [x14]\n\t"
-        "ld1 {v15.d}[1], [x9]\n\t"
+        "ld1 {v31.d}[1], [x9]\n\t"
         "fadd v17.2d, v6.2d, v16.2d\n\t"
         "ld1 {v2.d}[1], [%[ob]]\n\t"
         "mov v10.16b, v4.16b\n\t"
@@ -156,11 +157,11 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fadd v12.2d, v6.2d, v5.2d\n\t"
         "fadd v14.2d, v17.2d, v7.2d\n\t"
         "ldp q20, q9, [%[kc], #64]\n\t"
-        "fmla v10.2d, v15.2d, v0.2d\n\t"
-        "fmla v11.2d, v15.2d, v6.2d\n\t"
-        "fmla v1.2d, v15.2d, v8.2d\n\t"
-        "fmla v13.2d, v15.2d, v12.2d\n\t"
-        "fmla v4.2d, v15.2d, v14.2d\n\t"
+        "fmla v10.2d, v31.2d, v0.2d\n\t"
+        "fmla v11.2d, v31.2d, v6.2d\n\t"
+        "fmla v1.2d, v31.2d, v8.2d\n\t"
+        "fmla v13.2d, v31.2d, v12.2d\n\t"
+        "fmla v4.2d, v31.2d, v14.2d\n\t"
         "mov v25.16b, v18.16b\n\t"
         "ldr d21, [%[pa], #16]\n\t"
         "fmaxnm v10.2d, v10.2d, v9.2d\n\t"
@@ -174,25 +175,25 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "frecpe v29.2d, v1.2d\n\t"
         "frecpe v30.2d, v13.2d\n\t"
         "mov v24.16b, v18.16b\n\t"
-        "frecpe v31.2d, v4.2d\n\t"
+        "frecpe v15.2d, v4.2d\n\t"
         "frecps v2.2d, v10.2d, v27.2d\n\t"
         "frecps v5.2d, v11.2d, v28.2d\n\t"
         "frecps v17.2d, v1.2d, v29.2d\n\t"
         "frecps v7.2d, v13.2d, v30.2d\n\t"
         "mov v22.16b, v18.16b\n\t"
-        "frecps v9.2d, v4.2d, v31.2d\n\t"
+        "frecps v9.2d, v4.2d, v15.2d\n\t"
         "fmul v27.2d, v27.2d, v2.2d\n\t"
         "fmul v28.2d, v28.2d, v5.2d\n\t"
         "fmul v29.2d, v29.2d, v17.2d\n\t"
         "mov v26.16b, v18.16b\n\t"
         "fmul v30.2d, v30.2d, v7.2d\n\t"
-        "fmul v31.2d, v31.2d, v9.2d\n\t"
+        "fmul v15.2d, v15.2d, v9.2d\n\t"
         "frecps v2.2d, v10.2d, v27.2d\n\t"
         "frecps v5.2d, v11.2d, v28.2d\n\t"
         "frecps v17.2d, v1.2d, v29.2d\n\t"
         "fmax v16.2d, v10.2d, v11.2d\n\t"
         "frecps v7.2d, v13.2d, v30.2d\n\t"
-        "frecps v9.2d, v4.2d, v31.2d\n\t"
+        "frecps v9.2d, v4.2d, v15.2d\n\t"
         "fmul v27.2d, v27.2d, v2.2d\n\t"
         "fmul v28.2d, v28.2d, v5.2d\n\t"
         "fmul v29.2d, v29.2d, v17.2d\n\t"
@@ -200,12 +201,12 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmax v2.2d, v1.2d, v13.2d\n\t"
         "fmul v30.2d, v30.2d, v7.2d\n\t"
         "orr v7.16b, v1.16b, v19.16b\n\t"
-        "fmul v31.2d, v31.2d, v9.2d\n\t"
+        "fmul v15.2d, v15.2d, v9.2d\n\t"
         "fmls v23.2d, v11.2d, v28.2d\n\t"
         "fmls v24.2d, v1.2d, v29.2d\n\t"
         "fmls v22.2d, v10.2d, v27.2d\n\t"
         "fmax v16.2d, v16.2d, v2.2d\n\t"
-        "fmls v26.2d, v4.2d, v31.2d\n\t"
+        "fmls v26.2d, v4.2d, v15.2d\n\t"
         "fmls v25.2d, v13.2d, v30.2d\n\t"
         "orr v5.16b, v10.16b, v19.16b\n\t"
         "orr v9.16b, v13.16b, v19.16b\n\t"
@@ -214,7 +215,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmla v29.2d, v29.2d, v24.2d\n\t"
         "fmla v28.2d, v28.2d, v23.2d\n\t"
         "fmla v27.2d, v27.2d, v22.2d\n\t"
-        "fmla v31.2d, v31.2d, v26.2d\n\t"
+        "fmla v15.2d, v15.2d, v26.2d\n\t"
         "fmla v30.2d, v30.2d, v25.2d\n\t"
         "mov v24.16b, v18.16b\n\t"
         "cmhs v16.2d, v16.2d, v3.2d\n\t"
@@ -234,7 +235,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmls v3.2d, v13.2d, v30.2d\n\t"
         "umax v19.4s, v19.4s, v26.4s\n\t"
         "ldr d9, [%[pb], #24]\n\t"
-        "fmls v5.2d, v4.2d, v31.2d\n\t"
+        "fmls v5.2d, v4.2d, v15.2d\n\t"
         "fmla v28.2d, v28.2d, v24.2d\n\t"
         "fmla v27.2d, v27.2d, v23.2d\n\t"
         "fmla v29.2d, v29.2d, v25.2d\n\t"
@@ -262,7 +263,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmla v25.2d, v9.2d, v12.d[1]\n\t"
         "fmla v18.2d, v7.2d, v12.d[0]\n\t"
         "fmla v22.2d, v7.2d, v8.d[0]\n\t"
-        "fmla v31.2d, v31.2d, v5.2d\n\t"
+        "fmla v15.2d, v15.2d, v5.2d\n\t"
         "fmla v23.2d, v9.2d, v6.d[1]\n\t"
         "fmla v16.2d, v7.2d, v0.d[0]\n\t"
         "fmla v24.2d, v9.2d, v8.d[1]\n\t"
@@ -275,10 +276,10 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fdiv v28.2d, v3.2d, v11.2d\n\t"
         "fdiv v29.2d, v3.2d, v1.2d\n\t"
         "fdiv v30.2d, v3.2d, v13.2d\n\t"
-        "fdiv v31.2d, v3.2d, v4.2d\n\t"
+        "fdiv v15.2d, v3.2d, v4.2d\n\t"
         "2:\n\t"
         "lsl %x[z1], %x[z1], #1\n\t"
-        "fmul v21.2d, v21.2d, v31.d[0]\n\t"
+        "fmul v21.2d, v21.2d, v15.d[0]\n\t"
         "fmul v24.2d, v24.2d, v29.d[1]\n\t"
         "fmul v22.2d, v22.2d, v29.d[0]\n\t"
         "fmul v16.2d, v16.2d, v27.d[0]\n\t"
@@ -295,11 +296,11 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fcvtzu v26.2d, v26.2d, #16\n\t"
         "uqxtn v7.2s, v21.2d\n\t"
         "uqxtn v5.2s, v16.2d\n\t"
-        "fadd v12.2d, v30.2d, v31.2d\n\t"
+        "fadd v12.2d, v30.2d, v15.2d\n\t"
         "fadd v6.2d, v28.2d, v29.2d\n\t"
         "fmul v23.2d, v23.2d, v28.d[1]\n\t"
         "uqxtn v19.2s, v22.2d\n\t"
-        "fmul v17.2d, v17.2d, v31.d[1]\n\t"
+        "fmul v17.2d, v17.2d, v15.d[1]\n\t"
         "uqxtn2 v5.4s, v2.2d\n\t"
         "trn1 v1.2d, v8.2d, v12.2d\n\t"
         "ld1r {v2.2d}, [x8]\n\t"
@@ -312,7 +313,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "uqxtn v10.2s, v26.2d\n\t"
         "uqxtn2 v7.4s, v21.2d\n\t"
         "uqxtn v11.2s, v24.2d\n\t"
-        "fmul v14.2d, v15.2d, v20.2d\n\t"
+        "fmul v14.2d, v31.2d, v20.2d\n\t"
         "uqxtn v13.2s, v17.2d\n\t"
         "fcvtzu v25.2d, v25.2d, #16\n\t"
         "uqxtn2 v10.4s, v23.2d\n\t"
@@ -327,7 +328,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "umin v19.4s, v19.4s, v2.4s\n\t"
         "fmul v28.2d, v22.2d, v14.d[1]\n\t"
         "umin v10.4s, v10.4s, v18.4s\n\t"
-        "fmul v15.2d, v15.2d, v20.2d\n\t"
+        "fmul v31.2d, v31.2d, v20.2d\n\t"
         "umin v11.4s, v11.4s, v18.4s\n\t"
         "umin v13.4s, v13.4s, v18.4s\n\t"
         "fmul v27.2d, v4.2d, v14.d[1]\n\t"
@@ -357,7 +358,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         [ob] "r"(&kShortOffsets.at[nb]), [it] "r"(it), [end] "r"(end), [na] "r"(na)
       : "memory", "cc", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "v0", "v2", "v4", "v6",
         "v8", "v10", "v11", "v12", "v13", "v14", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26",
-        "v27", "v28", "v29", "v30", "v31");
+        "v27", "v28", "v29", "v30", "v15");
   outa.S01 = rS01, outa.S23 = rS23, outa.S44 = rS44;
   outa.zs01 = rzs01, outa.zs23 = rzs23, outa.c01 = rc01, outa.c23 = rc23;
   zh_ab = rdz;
