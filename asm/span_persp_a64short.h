@@ -269,8 +269,9 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
     if constexpr (kCurve) {
       register int32x4_t r01 __asm__("v5") = S01;
       register int32x4_t r23 __asm__("v19") = S23;
-      __asm__("" : "+w"(r01), "+w"(r23));
-      S01 = r01, S23 = r23;
+      register double rzh __asm__("v31") = zh;  // (where short_samples1 leaves it) likewise
+      __asm__("" : "+w"(r01), "+w"(r23), "+w"(rzh));
+      S01 = r01, S23 = r23, zh = rzh;
     }
     if (runs == 3) {
       rest(std::integral_constant<int, 2>{});
@@ -309,7 +310,9 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
   // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
   // (the full runs' curve factors), also in the block (the conversions' latency gaps).
   double zck;  // zc * -1/16 (the full runs' curve factors), in the block's spare slots
-  zh = zc;     // zc in, zc * 0.5 out
+  // zc in, zc * 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block; the
+  // block's own temporaries use v8 instead).
+  register double rzh __asm__("v31") = zc;
   register float64x2_t rzs01 __asm__("v0");
   register float64x2_t rzs23 __asm__("v1");
   register float64x2_t rc01 __asm__("v3");
@@ -341,7 +344,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "fadd d3, d2, d1\n\t"
       "scvtf d6, %w[t7]\n\t"
       "trn1 v4.2d, v4.2d, v5.2d\n\t"
-      "ld1r {v31.2d}, [%[km]]\n\t"
+      "ld1r {v8.2d}, [%[km]]\n\t"
       "fmla v26.2d, v17.2d, v0.2d\n\t"
       "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
       "fadd v7.2d, v0.2d, v4.2d\n\t"
@@ -350,23 +353,23 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "mov %[t5], #0xbfb0000000000000\n\t"
       "fmov v1.2d, #1.0\n\t"
       "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
-      "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+      "fmaxnm v26.2d, v26.2d, v8.2d\n\t"
       "fmov %d[zck], %[t5]\n\t"
       "fmla v27.2d, v17.2d, v7.2d\n\t"
       "fmadd d28, d17, d3, d16\n\t"
       "frecpe v2.2d, v26.2d\n\t"
       "fmla v20.2d, v21.2d, v0.d[1]\n\t"
       "fmla v22.2d, v23.2d, v7.d[0]\n\t"
-      "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
+      "fmaxnm v27.2d, v27.2d, v8.2d\n\t"
       "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
       "fmov %[t1], d26\n\t"
       "fmul %d[zck], %d[zh], %d[zck]\n\t"
       "fmul %d[zh], %d[zh], d18\n\t"
-      "fmaxnm d28, d28, d31\n\t"
+      "fmaxnm d28, d28, d8\n\t"
       "mov %[t2], v26.d[1]\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
       "frecpe v6.2d, v27.2d\n\t"
-      "fmax v31.2d, v26.2d, v27.2d\n\t"
+      "fmax v8.2d, v26.2d, v27.2d\n\t"
       "mov %[t6], v27.d[1]\n\t"
       "frecpe d4, d28\n\t"
       "fmov %[t7], d27\n\t"
@@ -374,7 +377,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "fmul v2.2d, v2.2d, v5.2d\n\t"
       "fmov %[t0], d28\n\t"
       "frecps v16.2d, v27.2d, v6.2d\n\t"
-      "fmaxp d31, v31.2d\n\t"
+      "fmaxp d8, v8.2d\n\t"
       "frecps d17, d28, d4\n\t"
       "add %[t1], %[t1], #1\n\t"
       "add %[t0], %[t0], #1\n\t"
@@ -384,7 +387,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "frecps v5.2d, v26.2d, v2.2d\n\t"
       "fmul v6.2d, v6.2d, v16.2d\n\t"
       "fmul d4, d4, d17\n\t"
-      "fmax d31, d31, d28\n\t"
+      "fmax d8, d8, d28\n\t"
       "add %[t7], %[t7], #1\n\t"
       "add %[t2], %[t2], #1\n\t"
       "lsl %[t6], %[t6], #12\n\t"
@@ -403,7 +406,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "clz %[t6], %[t6]\n\t"
       "orr %[t7], %[t7], %[t6]\n\t"
       "orr %[t1], %[t1], %[t2]\n\t"
-      "fmov %[t5], d31\n\t"
+      "fmov %[t5], d8\n\t"
       "fmsub d17, d28, d4, d1\n\t"
       "fmls v5.2d, v26.2d, v2.2d\n\t"
       "fmls v16.2d, v27.2d, v6.2d\n\t"
@@ -451,22 +454,23 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "uqxtn v19.2s, v22.2d\n\t"
       "uqxtn v7.2s, v29.2d\n\t"
       "fadd v1.2d, v6.2d, v1.2d\n\t"
-      "ld1r {v31.2d}, [%[t0]]\n\t"
+      "ld1r {v8.2d}, [%[t0]]\n\t"
       "uqxtn2 v5.4s, v20.2d\n\t"
       "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
       "uqxtn2 v19.4s, v24.2d\n\t"
       "uqxtn2 v7.4s, v29.2d\n\t"
-      "umin v5.4s, v5.4s, v31.4s\n\t"
+      "umin v5.4s, v5.4s, v8.4s\n\t"
       "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
-      "umin v19.4s, v19.4s, v31.4s\n\t"
-      "umin v7.4s, v7.4s, v31.4s"
+      "umin v19.4s, v19.4s, v8.4s\n\t"
+      "umin v7.4s, v7.4s, v8.4s"
       : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
-        [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck), [zh] "+&w"(zh)
+        [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck), [zh] "+&w"(rzh)
       : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
       : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
-        "v29", "v30", "v31");
+        "v29", "v30", "v8");
   zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
   S01 = rS01, S23 = rS23, S44 = rS44;
+  zh = rzh;
 }
 // persp_short_inl<true>'s span with zc (its dzi, or 0 for linear steps) given: the single-span
 // entry's dispatcher (asm/span_persp_fast.cpp) has tested second_order already.
