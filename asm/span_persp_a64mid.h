@@ -186,7 +186,8 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // by mid_pack, asm/span_persp_a64pass.h) in one asm block: the pass's first slots run in the
 // latency gaps of the steps' last vector levels (the block is bench/mca_a53_p64/steps_pass.s,
 // the two blocks one after the other plus the packing, then ordered by
-// bench/order_search.py). Draws dest[0 .. 31]; st as short_steps_k3v's. Returns the second
+// bench/order_search.py; its first 132 lines since searched again as the pair loop's qemu
+// block, bench/mca_a53_pair/steps_pair_s.s). Draws dest[0 .. 31]; st as short_steps_k3v's. Returns the second
 // pass's arguments (st's values, the steps packed) in x13, x9, x10, x23, x24, x25, where
 // short_pass takes them: loaded back from st (stored by the block before the first pass) and
 // packed after the first pass's last reads of those registers (b_d, b_dd once run 1 has
@@ -200,7 +201,8 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // (lengths 49 .. 64) and MatchesTheRunWalkerOnShortSpans the span against the walker.
 SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint64_t width,
                                   int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
-                                  float64x2_t zs23, int s, double zc, uint64_t (&st)[6], bool& full) {
+                                  float64x2_t zs23, int s, double zh, uint64_t (&st)[6], bool& full) {
+  // zh = zc * 0.5 (zc the span's dzi: the caller's multiply, or the sample block's).
   register uint64_t ra_uv __asm__("x13"), ra_d __asm__("x9"), ra_dd __asm__("x10");
   register uint64_t rb_uv __asm__("x23"), rb_d __asm__("x24"), rb_dd __asm__("x25");
   register int32x4_t rS44 __asm__("v7") = S44;
@@ -209,7 +211,7 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
   register float64x2_t rc01 __asm__("v3") = c01;
   register float64x2_t rc23 __asm__("v16") = c23;
   register float64x2_t rzs __asm__("v1") = zs23;
-  register double rzc __asm__("v31") = zc * 0.5;
+  register double rzc __asm__("v31") = zh;  // zc / 2
   __asm__ volatile(
 // BEGIN steps_k3v_pass
       "ext v7.16b, v19.16b, v7.16b, #8\n\t"
@@ -230,38 +232,38 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "fsub v28.2d, v28.2d, v6.2d\n\t"
       "ldp q18, q20, [%[y]]\n\t"
       "fmul v30.2d, v29.2d, v24.d[0]\n\t"
-      "ldr q25, [%[y], #96]\n\t"
       "fmul d31, d31, v1.d[1]\n\t"
+      "ldr q25, [%[y], #96]\n\t"
       "fmul v28.2d, v28.2d, v16.d[0]\n\t"
       "fmul v26.2d, v26.2d, v3.d[0]\n\t"
       "fmul v27.2d, v27.2d, v3.d[1]\n\t"
       "fmls v29.2d, v30.2d, v24.d[1]\n\t"
       "fcvtzs v26.2d, v26.2d\n\t"
-      "fmul d31, d31, v25.d[0]\n\t"
       "fcvtzs v28.2d, v28.2d\n\t"
       "ldp q21, q22, [%[y], #32]\n\t"
+      "fmul d31, d31, v25.d[0]\n\t"
       "fcvtzs v27.2d, v27.2d\n\t"
       "sqxtn v6.2s, v26.2d\n\t"
       "fmla v30.2d, v29.2d, v24.d[0]\n\t"
       "abs v26.4s, v0.4s\n\t"
       "str q19, [%[st]]\n\t"
-      "sqxtn v1.2s, v28.2d\n\t"
       "fmov x13, d5\n\t"
       "sshr v29.4s, v7.4s, #31\n\t"
       "sqxtn2 v6.4s, v27.2d\n\t"
+      "sqxtn v1.2s, v28.2d\n\t"
       "fcvtzs v25.2d, v30.2d\n\t"
       "fmul v30.2d, v30.2d, v31.d[0]\n\t"
-      "ushr v24.4s, v26.4s, #4\n\t"
-      "sshr v28.4s, v0.4s, #31\n\t"
-      "movi v16.2d, #0xffffffffffffffff\n\t"
       "abs v27.4s, v7.4s\n\t"
+      "sshr v28.4s, v0.4s, #31\n\t"
+      "ushr v24.4s, v26.4s, #4\n\t"
+      "movi v16.2d, #0xffffffffffffffff\n\t"
       "abs v25.2d, v25.2d\n\t"
       "facgt v3.2d, v17.2d, v30.2d\n\t"
       "fcvtzs v30.2d, v30.2d\n\t"
-      "ushr v31.4s, v27.4s, #4\n\t"
-      "eor v24.16b, v24.16b, v28.16b\n\t"
-      "xtn2 v16.4s, v3.2d\n\t"
       "mov v7.16b, v26.16b\n\t"
+      "eor v24.16b, v24.16b, v28.16b\n\t"
+      "ushr v31.4s, v27.4s, #4\n\t"
+      "xtn2 v16.4s, v3.2d\n\t"
       "sqxtn2 v1.4s, v30.2d\n\t"
       "eor v30.16b, v6.16b, v28.16b\n\t"
       "abs v3.4s, v6.4s\n\t"
@@ -281,69 +283,69 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "cmhi v25.4s, v23.4s, v25.4s\n\t"
       "mul v0.4s, v0.4s, v21.4s\n\t"
       "ushr v7.4s, v7.4s, #4\n\t"
-      "sub v17.4s, v17.4s, v29.4s\n\t"
       "shl v4.4s, v4.4s, #31\n\t"
+      "sub v17.4s, v17.4s, v29.4s\n\t"
       "cmhs v3.4s, v26.4s, v3.4s\n\t"
       "eor v25.16b, v25.16b, v29.16b\n\t"
-      "cmhs v0.4s, v27.4s, v0.4s\n\t"
       "eor v7.16b, v7.16b, v28.16b\n\t"
+      "cmhs v0.4s, v27.4s, v0.4s\n\t"
       "sub v21.4s, v17.4s, v22.4s\n\t"
       "and v6.16b, v6.16b, v3.16b\n\t"
       "and v25.16b, v25.16b, v4.16b\n\t"
-      "and v0.16b, v0.16b, v16.16b\n\t"
       "sub v7.4s, v7.4s, v28.4s\n\t"
+      "and v0.16b, v0.16b, v16.16b\n\t"
       "ssra v21.4s, v25.4s, #31\n\t"
       "bit v24.16b, v7.16b, v3.16b\n\t"
       "and v1.16b, v1.16b, v0.16b\n\t"
-      "fmov x10, d6\n\t"
       "mov x25, v6.d[1]\n\t"
+      "fmov x10, d6\n\t"
       "bit v17.16b, v21.16b, v0.16b\n\t"
       "fmov x9, d24\n\t"
       "mov x24, v24.d[1]\n\t"
       "and x4, x25, #0xffffffff00000000\n\t"
       "stp q17, q1, [%[st], #16]\n\t"
       "add x25, x4, w25, sxtw\n\t"
-      "and x1, x9, #0xffffffff00000000\n\t"
       "and x2, x10, #0xffffffff00000000\n\t"
       "add x10, x2, w10, sxtw\n\t"
+      "and x1, x9, #0xffffffff00000000\n\t"
       "add x9, x1, w9, sxtw\n\t"
       "lsl x20, x10, #2\n\t"
       "and x3, x24, #0xffffffff00000000\n\t"
       "add x14, x13, x9\n\t"
       "add x17, x10, x9, lsl #1\n\t"
-      "add x24, x3, w24, sxtw\n\t"
       "add x15, x13, x17\n\t"
-      "lsr x1, x13, #48\n\t"
+      "add x24, x3, w24, sxtw\n\t"
       "lsr w9, w13, #16\n\t"
+      "lsr x1, x13, #48\n\t"
       "add x19, x17, x10, lsl #1\n\t"
       "add x17, x17, x20\n\t"
       "add x13, x15, x17\n\t"
       "madd w1, w1, %w[w], w9\n\t"
       "add x16, x14, x19\n\t"
       "add x19, x19, x20\n\t"
-      "lsr x2, x14, #48\n\t"
-      "add x17, x17, x20\n\t"
       "lsr w11, w15, #16\n\t"
+      "lsr x2, x14, #48\n\t"
       "lsr x5, x13, #48\n\t"
       "lsr w10, w14, #16\n\t"
-      "lsr x3, x15, #48\n\t"
+      "add x17, x17, x20\n\t"
       "add x14, x16, x19\n\t"
-      "add x15, x13, x17\n\t"
+      "lsr x3, x15, #48\n\t"
       "lsr w9, w13, #16\n\t"
+      "add x15, x13, x17\n\t"
+      "madd w2, w2, %w[w], w10\n\t"
       "add x17, x17, x20\n\t"
       "add x19, x19, x20\n\t"
-      "madd w2, w2, %w[w], w10\n\t"
-      "ldrb w1, [%[tx], w1, uxtw]\n\t"
       "madd w3, w3, %w[w], w11\n\t"
+      "ldrb w1, [%[tx], w1, uxtw]\n\t"
       "add x13, x15, x17\n\t"
       "add x17, x17, x20\n\t"
       "lsr x4, x16, #48\n\t"
       "lsr w12, w16, #16\n\t"
-      "add x16, x14, x19\n\t"
-      "add x19, x19, x20\n\t"
       "lsr x6, x14, #48\n\t"
+      "add x16, x14, x19\n\t"
       "ldrb w3, [%[tx], w3, uxtw]\n\t"
       "madd w5, w5, %w[w], w9\n\t"
+      "add x19, x19, x20\n\t"
       "madd w4, w4, %w[w], w12\n\t"
       "ldrb w2, [%[tx], w2, uxtw]\n\t"
       "lsr x8, x16, #48\n\t"
@@ -562,13 +564,16 @@ SB_INLINE uint64_t mid_pack(uint64_t x) {
 // Draws a second-order span of 49 .. 64 pixels (4 runs; last = n - 48 pixels in the last
 // run) from the sample block's results (persp_short_inl): the steps with runs 0, 1
 // (steps_k3v_pass), then runs 2, 3 as one short_pass (last == 16) or run 2 by Run16 and the
-// last run by draw_run.
-SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int width, int32x4_t S01, int32x4_t S23,
-                            int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zc) {
+// last run by draw_run. zh = zc * 0.5; width's value as an int (int64_t: the single-span
+// entry hands it on sign-extended).
+SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int64_t width, int32x4_t S01, int32x4_t S23,
+                            int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zh) {
   uint64_t st[6];
   bool full;  // last == 16
+  // s = last - 1 indexes the same MidSteps as max(last - 1, 1) (kMidSteps[0] == kMidSteps[1]:
+  // mid_steps(1)), without a compare and select before the block's table loads.
   const MidFirst second = steps_k3v_pass(dest, texels, uint64_t(width), S01, S23, S44, c01, c23, zs23,
-                                         last > 2 ? last - 1 : 1, zc, st, full);
+                                         last - 1, zh, st, full);
   if (full) {
     short_pass<true>(dest + 32, texels, uint64_t(width), second.a_uv, second.a_d, second.a_dd, second.b_uv,
                      second.b_d, second.b_dd);

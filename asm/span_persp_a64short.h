@@ -65,9 +65,11 @@ constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // asm/span_persp_a64pair.h): the steps and the runs of a span of n = 17 .. kShortMax pixels
 // (runs = (n + 15) / 16 runs, the last one of last = n - 16 (runs - 1) pixels: computed by the
 // caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23 (sums of
-// neighbouring samples' z), c01, c23 (the full runs' curve factors) and zc (the span's dzi).
+// neighbouring samples' z), c01, c23 (the full runs' curve factors) and zh = zc * 0.5 (zc the
+// span's dzi). width: an int's value (int64_t: the single-span entry sign-extends it in its
+// test's block, so the steps block takes it without a sxtw of its own).
 template <bool kCurve>
-SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texels, int width, double zc,
+SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texels, int64_t width, double zh,
                           int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t zs01, float64x2_t zs23,
                           float64x2_t c01, float64x2_t c23) {
   const uint32_t w = uint32_t(width);
@@ -78,7 +80,7 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
   auto rest = [&](auto kc) SB_LAMBDA_INLINE {
     constexpr int k = decltype(kc)::value;
     if constexpr (kCurve && k == 3) {  // four runs: asm/span_persp_a64mid.h
-      persp_mid_k3(dest, last, texels, width, S01, S23, S44, c01, c23, zs23, zc);
+      persp_mid_k3(dest, last, texels, width, S01, S23, S44, c01, c23, zs23, zh);
       return;
     }
     // Full runs 0, 1, 2: deltas D01 = [du_0, dv_0, du_1, dv_1], D23 = [du_2, dv_2, du_3, dv_3]
@@ -210,7 +212,7 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
                                          : (k == 2 ? vaddw_s32(kBias, vget_low_s32(D23)) : vaddw_high_s32(kBias, D23)));
     const uint64_t dk = vgetq_lane_u64(vreinterpretq_u64_s32(k == 1 ? D01 : D23), k == 2 ? 0 : 1);
     if constexpr (kCurve) {
-      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zc * 0.5 * zmk, &lu, &lv);
+      last_steps(last - 1, int32_t(uint32_t(dk)), int32_t(dk >> 32), fd, zh * zmk, &lu, &lv);
     } else {
       // Linear (curve 0): run_steps' {delta / steps, 0} (truncating; |delta| < 2^31), one
       // 32-bit divide each; steps 0 (a one-pixel last run) draws no step: any divisor.
@@ -267,8 +269,9 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
     if constexpr (kCurve) {
       register int32x4_t r01 __asm__("v5") = S01;
       register int32x4_t r23 __asm__("v19") = S23;
-      __asm__("" : "+w"(r01), "+w"(r23));
-      S01 = r01, S23 = r23;
+      register double rzh __asm__("v31") = zh;  // (where short_samples1 leaves it) likewise
+      __asm__("" : "+w"(r01), "+w"(r23), "+w"(rzh));
+      S01 = r01, S23 = r23, zh = rzh;
     }
     if (runs == 3) {
       rest(std::integral_constant<int, 2>{});
@@ -279,13 +282,15 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
 }
 // A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
 // u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below); ShortSamples holds
-// them (asm/span_persp_a64pair.h's paired block stores them so).
+// them (asm/span_persp_a64pair.h's paired block stores them so); zh = zc * 0.5 (short_rest's).
+// Its order: bench/order_search.py on the block as qemu cuts it, the compiler's 14 lines
+// before it pinned (bench/mca_a53_pair/README.md, "single-span entry").
 struct alignas(16) ShortSamples {
   int32x4_t S01, S23, S44;
   float64x2_t zs01, zs23, c01, c23;
 };
 SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S01, int32x4_t& S23, int32x4_t& S44,
-                              float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23) {
+                              float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23, double& zh) {
   // One asm block, each operation the vector code's lane operation (the same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
   // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
@@ -298,11 +303,16 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
   // for the in-order A53 (a consumer after its producer's latency; its model also completes
   // in order, so each latency gap holds work of the same or shorter latency); the
   // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
-  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too.
+  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too,
+  // and zh = zc * 0.5 (short_rest's, the same bits as the compiler's multiply): zh is zc on
+  // entry (one register, not a copy), multiplied after zck's product has read it.
   // Second order: the sums of neighbouring samples' z, zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
   // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
   // (the full runs' curve factors), also in the block (the conversions' latency gaps).
   double zck;  // zc * -1/16 (the full runs' curve factors), in the block's spare slots
+  // zc in, zc * 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block; the
+  // block's own temporaries use v8 instead).
+  register double rzh __asm__("v31") = zc;
   register float64x2_t rzs01 __asm__("v0");
   register float64x2_t rzs23 __asm__("v1");
   register float64x2_t rc01 __asm__("v3");
@@ -313,97 +323,99 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
   uint64_t t0, t1, t2, t5, t6, t7;
   __asm__ volatile(
       "sub %w[t5], %w[n], #1\n\t"
-      "cmp %w[t5], #32\n\t"
       "mov %w[t7], #32\n\t"
       "sub %w[t6], %w[n], #17\n\t"
+      "ld1r {v26.2d}, [%[p]]\n\t"
+      "cmp %w[t5], #32\n\t"
       "fmov d1, #16.0\n\t"
       "ldr d0, [%[p], #48]\n\t"
       "csel %w[t5], %w[t5], %w[t7], lt\n\t"
       "cmp %w[t6], #32\n\t"
       "add %[t0], %[p], #16\n\t"
       "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
-      "ld1r {v26.2d}, [%[p]]\n\t"
       "csel %w[t6], %w[t6], %w[t7], lt\n\t"
       "fadd d2, d0, d1\n\t"
       "sub %w[t7], %w[n], #33\n\t"
       "scvtf d5, %w[t6]\n\t"
       "scvtf d4, %w[t5]\n\t"
-      "ld1r {v27.2d}, [%[p]]\n\t"
       "trn1 v0.2d, v0.2d, v2.2d\n\t"
-      "fadd d3, d2, d1\n\t"
+      "fmov d18, #0.5\n\t"
       "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
-      "fmov v1.2d, #1.0\n\t"
+      "fadd d3, d2, d1\n\t"
       "scvtf d6, %w[t7]\n\t"
       "trn1 v4.2d, v4.2d, v5.2d\n\t"
-      "ld1r {v31.2d}, [%[km]]\n\t"
+      "ld1r {v8.2d}, [%[km]]\n\t"
       "fmla v26.2d, v17.2d, v0.2d\n\t"
+      "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
       "fadd v7.2d, v0.2d, v4.2d\n\t"
       "fadd d3, d3, d6\n\t"
-      "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
+      "ld1r {v27.2d}, [%[p]]\n\t"
       "mov %[t5], #0xbfb0000000000000\n\t"
+      "fmov v1.2d, #1.0\n\t"
       "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
-      "fmaxnm v26.2d, v26.2d, v31.2d\n\t"
+      "fmaxnm v26.2d, v26.2d, v8.2d\n\t"
+      "fmov %d[zck], %[t5]\n\t"
       "fmla v27.2d, v17.2d, v7.2d\n\t"
       "fmadd d28, d17, d3, d16\n\t"
-      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
       "frecpe v2.2d, v26.2d\n\t"
-      "mov %[t2], v26.d[1]\n\t"
-      "fmov %d[zck], %[t5]\n\t"
-      "fmov %[t1], d26\n\t"
-      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
-      "fmaxnm v27.2d, v27.2d, v31.2d\n\t"
-      "fmaxnm d28, d28, d31\n\t"
+      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
       "fmla v22.2d, v23.2d, v7.d[0]\n\t"
+      "fmaxnm v27.2d, v27.2d, v8.2d\n\t"
+      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+      "fmov %[t1], d26\n\t"
+      "fmul %d[zck], %d[zh], %d[zck]\n\t"
+      "fmul %d[zh], %d[zh], d18\n\t"
+      "fmaxnm d28, d28, d8\n\t"
+      "mov %[t2], v26.d[1]\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
       "frecpe v6.2d, v27.2d\n\t"
-      "frecpe d4, d28\n\t"
-      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
-      "fmax v31.2d, v26.2d, v27.2d\n\t"
-      "fmov %[t0], d28\n\t"
-      "fmov %[t7], d27\n\t"
-      "fmul v2.2d, v2.2d, v5.2d\n\t"
-      "frecps v16.2d, v27.2d, v6.2d\n\t"
-      "frecps d17, d28, d4\n\t"
+      "fmax v8.2d, v26.2d, v27.2d\n\t"
       "mov %[t6], v27.d[1]\n\t"
-      "fmaxp d31, v31.2d\n\t"
+      "frecpe d4, d28\n\t"
+      "fmov %[t7], d27\n\t"
+      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+      "fmul v2.2d, v2.2d, v5.2d\n\t"
+      "fmov %[t0], d28\n\t"
+      "frecps v16.2d, v27.2d, v6.2d\n\t"
+      "fmaxp d8, v8.2d\n\t"
+      "frecps d17, d28, d4\n\t"
       "add %[t1], %[t1], #1\n\t"
       "add %[t0], %[t0], #1\n\t"
-      "lsl %[t1], %[t1], #12\n\t"
       "lsl %[t0], %[t0], #12\n\t"
       "add %[t6], %[t6], #1\n\t"
+      "lsl %[t1], %[t1], #12\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
-      "fmul d4, d4, d17\n\t"
-      "fmax d31, d31, d28\n\t"
       "fmul v6.2d, v6.2d, v16.2d\n\t"
-      "add %[t2], %[t2], #1\n\t"
+      "fmul d4, d4, d17\n\t"
+      "fmax d8, d8, d28\n\t"
       "add %[t7], %[t7], #1\n\t"
-      "lsl %[t2], %[t2], #12\n\t"
+      "add %[t2], %[t2], #1\n\t"
       "lsl %[t6], %[t6], #12\n\t"
+      "lsl %[t2], %[t2], #12\n\t"
       "lsl %[t7], %[t7], #12\n\t"
-      "frecps d17, d28, d4\n\t"
       "frecps v16.2d, v27.2d, v6.2d\n\t"
+      "frecps d17, d28, d4\n\t"
       "clz %[t1], %[t1]\n\t"
       "clz %[t7], %[t7]\n\t"
-      "clz %[t6], %[t6]\n\t"
       "fmul v2.2d, v2.2d, v5.2d\n\t"
-      "mov v5.16b, v1.16b\n\t"
-      "fmul %d[zck], %d[zc], %d[zck]\n\t"
-      "fmul d4, d4, d17\n\t"
       "fmul v6.2d, v6.2d, v16.2d\n\t"
+      "mov v5.16b, v1.16b\n\t"
+      "fmul d4, d4, d17\n\t"
       "mov v16.16b, v1.16b\n\t"
-      "fmov %[t5], d31\n\t"
-      "orr %[t7], %[t7], %[t6]\n\t"
       "clz %[t2], %[t2]\n\t"
+      "clz %[t6], %[t6]\n\t"
+      "orr %[t7], %[t7], %[t6]\n\t"
       "orr %[t1], %[t1], %[t2]\n\t"
+      "fmov %[t5], d8\n\t"
       "fmsub d17, d28, d4, d1\n\t"
       "fmls v5.2d, v26.2d, v2.2d\n\t"
-      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
       "fmls v16.2d, v27.2d, v6.2d\n\t"
       "orr %[t1], %[t1], %[t7]\n\t"
       "clz %[t0], %[t0]\n\t"
       "lsr %[t5], %[t5], #52\n\t"
-      "fmla v2.2d, v2.2d, v5.2d\n\t"
+      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
       "fmadd d4, d4, d17, d4\n\t"
+      "fmla v2.2d, v2.2d, v5.2d\n\t"
       "fmla v6.2d, v6.2d, v16.2d\n\t"
       "mov v5.16b, v1.16b\n\t"
       "mov v16.16b, v1.16b\n\t"
@@ -442,34 +454,41 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
       "uqxtn v19.2s, v22.2d\n\t"
       "uqxtn v7.2s, v29.2d\n\t"
       "fadd v1.2d, v6.2d, v1.2d\n\t"
-      "ld1r {v31.2d}, [%[t0]]\n\t"
+      "ld1r {v8.2d}, [%[t0]]\n\t"
       "uqxtn2 v5.4s, v20.2d\n\t"
       "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
       "uqxtn2 v19.4s, v24.2d\n\t"
       "uqxtn2 v7.4s, v29.2d\n\t"
-      "umin v5.4s, v5.4s, v31.4s\n\t"
+      "umin v5.4s, v5.4s, v8.4s\n\t"
       "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
-      "umin v19.4s, v19.4s, v31.4s\n\t"
-      "umin v7.4s, v7.4s, v31.4s"
+      "umin v19.4s, v19.4s, v8.4s\n\t"
+      "umin v7.4s, v7.4s, v8.4s"
       : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
-        [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck)
-      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [zc] "w"(zc), "m"(p), "m"(kMinZi)
+        [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck), [zh] "+&w"(rzh)
+      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
       : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
-        "v29", "v30", "v31");
+        "v29", "v30", "v8");
   zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
   S01 = rS01, S23 = rS23, S44 = rS44;
+  zh = rzh;
+}
+// persp_short_inl<true>'s span with zc (its dzi, or 0 for linear steps) given: the single-span
+// entry's dispatcher (asm/span_persp_fast.cpp) has tested second_order already.
+SB_INLINE void persp_short_curve(uint8_t* dest, int n, const uint8_t* texels, int64_t width, const PerspSpan& p,
+                                 double zc) {
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  int32x4_t S01, S23, S44;
+  float64x2_t zs01, zs23, c01, c23;
+  double zh;  // zc / 2, from the sample block's spare slots
+  short_samples1(p, n, zc, S01, S23, S44, zs01, zs23, c01, c23, zh);
+  short_rest<true>(dest, runs, last, texels, width, zh, S01, S23, S44, zs01, zs23, c01, c23);
 }
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if constexpr (!kCurve) {
     persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
   } else {
-    const double zc = p.second_order ? p.dzi : 0.0;
-    const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
-    int32x4_t S01, S23, S44;
-    float64x2_t zs01, zs23, c01, c23;
-    short_samples1(p, n, zc, S01, S23, S44, zs01, zs23, c01, c23);
-    short_rest<true>(dest, runs, last, texels, width, zc, S01, S23, S44, zs01, zs23, c01, c23);
+    persp_short_curve(dest, n, texels, width, p, p.second_order ? p.dzi : 0.0);
   }
 }
 // The same, out of line (persp_fast's linear instance keeps a call to it); the

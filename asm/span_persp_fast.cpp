@@ -490,6 +490,27 @@ SB_INLINE bool is_long_a64(const PerspItem& x) {
 SB_INLINE bool pairable_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & x.span.second_order & nonzero_bits(x.span.dzi);
 }
+// persp_one's first test (the single-span entry): 16 < n <= kShortMax, second order and dzi
+// != 0 (on its bits: NaN and the infinities are non-zero), as one flag chain after the two
+// loads (cmp, two ccmp: no cset / and chain through the A53's 3-cycle integer writebacks).
+SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w64) {
+  static_assert(kShortMax == 64, "the cmp immediate below is kShortMax - 17");
+  uint64_t bits;
+  uint32_t so, t;
+  bool r;
+  __asm__(
+      "ldr %x[b], %[dzi]\n\t"
+      "ldrb %w[so], %[som]\n\t"
+      "sub %w[t], %w[n], #17\n\t"
+      "sxtw %x[w64], %w[w]\n\t"
+      "lsl %x[b], %x[b], #1\n\t"
+      "cmp %w[t], #47\n\t"
+      "ccmp %w[so], #0, #4, ls\n\t"
+      "ccmp %x[b], #0, #4, ne"
+      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [t] "=&r"(t), [w64] "=&r"(w64)
+      : [n] "r"(n), [w] "r"(width), [dzi] "m"(p.dzi), [som] "m"(p.second_order));
+  return r;
+}
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
 // dzi == 0.0 tested on its bits (nonzero_bits: no FP load and compare on the test's chain).
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
@@ -559,6 +580,14 @@ SB_INLINE void persp_one_c(uint8_t* dest, int n, const uint8_t* texels, int widt
 SB_INLINE bool is_short_n(int n) { return uint32_t(n) - 17u < uint32_t(kShortMax - 16); }
 // The single-span entry's dispatcher (and the batch loop's off aarch64): the tests one by one.
 SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+#if defined(__aarch64__) && defined(__GNUC__)
+  // aarch64 (the single-span entry only): a short second-order span, the three fields tested
+  // without branches between (one qemu block, dzi on its integer bits), before the others.
+  int64_t w64;  // width, sign-extended in the test's block
+  if (short_curve_a64(n, p, width, w64)) {
+    return persp_short_curve(dest, n, texels, w64, p, p.dzi);
+  }
+#endif
   const bool is_short = n > 16 && n <= kShortMax;
   if (!p.second_order || p.dzi == 0.0) {
     if (is_short) return persp_short_inl<false>(dest, n, texels, width, p);
@@ -618,16 +647,15 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       do {
         ShortSamples q;
         int runs, last;  // span a's, from the block
-        float64x2_t dz;  // [a's dzi, b's dzi] as the block loaded them (the same bits)
-        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last, dz);
+        float64x2_t zh2;  // [a's dzi, b's dzi] * 0.5 (short_rest's zh), from the block
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last, zh2);
         // Span a's rest on the block's registers, then span b's on its stored samples.
-        double zc = vgetq_lane_f64(dz, 0);
+        double zh = vgetq_lane_f64(zh2, 0);
 #pragma GCC unroll 1
         for (int j = 0; j < 2; ++j, ++it) {
-          short_rest<true>(it->dest, runs, last, texels, width, zc, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01,
-                           q.c23);
+          short_rest<true>(it->dest, runs, last, texels, width, zh, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01, q.c23);
           const int nb = it[1 - j].n;  // span b's n (span b itself after it: never past the pair)
-          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zc = vgetq_lane_f64(dz, 1);
+          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zh = vgetq_lane_f64(zh2, 1);
         }
       } while (again);
       continue;

@@ -436,17 +436,22 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     std::memset(pair, 0x5a, sizeof pair);
     uint32_t next = 7;
     int runs_a = -1, last_a = -1;
-    float64x2_t dz;
-    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a, dz);
-    const double dza = vgetq_lane_f64(dz, 0), dzb = vgetq_lane_f64(dz, 1);
-    ASSERT_EQ(std::memcmp(&dza, &a.dzi, 8), 0);  // the dzi lanes: the spans' bits
-    ASSERT_EQ(std::memcmp(&dzb, &b.dzi, 8), 0);
+    float64x2_t zh;
+    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a, zh);
+    const double zpa = vgetq_lane_f64(zh, 0), zpb = vgetq_lane_f64(zh, 1);
+    const double wa = a.dzi * 0.5, wb = b.dzi * 0.5;  // the zh lanes: short_rest's dzi * 0.5, bit for bit
+    ASSERT_EQ(std::memcmp(&zpa, &wa, 8), 0);
+    ASSERT_EQ(std::memcmp(&zpb, &wb, 8), 0);
     ASSERT_EQ(next, 0u);  // no items after the pair
     ASSERT_EQ(runs_a, (na + 15) >> 4);
     ASSERT_EQ(last_a, na - 16 * (runs_a - 1));
     ShortSamples sa, sbb;
-    sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23);
-    sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23);
+    double zha, zhb;  // the single block's zc / 2: dzi * 0.5's bits
+    sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23, zha);
+    sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23, zhb);
+    const double wha = a.dzi * 0.5, whb = b.dzi * 0.5;
+    ASSERT_EQ(std::memcmp(&zha, &wha, 8), 0);
+    ASSERT_EQ(std::memcmp(&zhb, &whb, 8), 0);
     ASSERT_EQ(std::memcmp(&pair[0], &sa, sizeof sa), 0) << "span a, trial " << trial << " zi0 " << a.zi0 << " n " << na;
     ASSERT_EQ(std::memcmp(&pair[1], &sbb, sizeof sbb), 0) << "span b, trial " << trial << " zi0 " << b.zi0 << " n " << nb;
     uint64_t bits;

@@ -434,7 +434,7 @@ TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
     bool full = false;
     const sb::simd::MidFirst g = sb::simd::steps_k3v_pass(
         drawn, texels, 1, vld1q_s32(s01), vld1q_s32(s23), vld1q_s32(s44), vld1q_f64(c01), vld1q_f64(c23),
-        vld1q_f64(zs23), s, zc, st2, full);
+        vld1q_f64(zs23), s, zc * 0.5, st2, full);
     wrong_pass += !std::equal(st, st + 6, st2) || full != (s == 15);
     wrong_pass += g.a_uv != st[0] || g.b_uv != st[1] || g.a_d != sb::simd::mid_pack(st[2]) ||
                   g.b_d != sb::simd::mid_pack(st[3]) || g.a_dd != sb::simd::mid_pack(st[4]) ||
