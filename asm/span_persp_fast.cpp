@@ -426,8 +426,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if (last == 16) {
       draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
     } else {
-      draw_last<kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
-               uint32_t(lu.dd), uint32_t(lv.dd));
+      draw_last<kCurve, kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
+                                uint32_t(lu.dd), uint32_t(lv.dd));
     }
   }
 #else
