@@ -367,6 +367,44 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #else
   }
 #endif
+#if defined(__arm__) && !defined(__aarch64__)
+  if (kCurve && left > 32) {
+    // ARMv7 second order: as below, sample r + 2 and run r + 1's steps computed beside run
+    // r's pixels (stage slots; before draw16 the modelled Cortex-A9's in-order FP pipe and
+    // the core moves waiting on it stalled), as the pass's stage_a computes them (c1 =
+    // zck (z_1 + z_2), ddf = delta c1, cvt_sat, steps16_dd: steps16's bits).
+    Sample s2{};
+    double c1 = 0.0, fu = 0.0, fv = 0.0;
+    int32_t iu = 0, iv = 0;
+    RunSteps u1{}, v1{};
+    Run16<kCurve> run(s0.u, s0.v, su, sv);
+    run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        s2 = sample(pos2, z2);
+      } else if constexpr (G == 1) {  // the pass's stage_a operations (c1 = zck (z_1 + z_2))
+        c1 = zck * (s1.z + s2.z);
+      } else if constexpr (G == 2) {
+        fu = double(s2.u - s1.u), fv = double(s2.v - s1.v);
+      } else if constexpr (G == 3) {
+        fu = fu * c1, fv = fv * c1;
+      } else if constexpr (G == 6) {
+        iu = cvt_sat(fu), iv = cvt_sat(fv);
+      } else if constexpr (G == 8) {
+        steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
+      }
+    });
+    dest += 16;
+    P += double(16);
+    left -= 16;
+    s0 = s1;
+    s1 = s2;
+    su = u1;
+    sv = v1;
+    z2 = z3;
+    pos2 = pos3;
+  } else
+#endif
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = kPre ? t2 : sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
@@ -642,10 +680,12 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
 
 }  // namespace
 
+#if !(defined(__arm__) && !defined(__aarch64__))
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
                              const PerspSpan& p) {
   persp_one(dest, n, texels, width, p);
 }
+#endif
 
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -654,5 +694,15 @@ void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* 
   spans_range(items, items + (count > 0 ? count : 0), texels, width);
 #endif
 }
+
+#if defined(__arm__) && !defined(__aarch64__)
+// ARMv7: after the batch entry (the object's last function), so that its code size does not
+// move the batch entry's inlined long-span loop against 4 KiB pages (where qemu cuts the
+// blocks bench/count.sh times; the tail's staged run moved it: A9 persp1920 6.92 -> 6.98).
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+                             const PerspSpan& p) {
+  persp_one(dest, n, texels, width, p);
+}
+#endif
 
 }  // namespace sb::simd
