@@ -596,9 +596,21 @@ SB_INLINE void persp_one_c(uint8_t* dest, int n, const uint8_t* texels, int widt
 }
 SB_INLINE bool is_short_n(int n) { return uint32_t(n) - 17u < uint32_t(kShortMax - 16); }
 // The single-span entry's dispatcher (and the batch loop's off aarch64): the tests one by one.
+// ARMv7: dzi == 0.0 on its bits (two core loads; +0 and -0 are 0, NaN is not: the FP
+// compare's result) instead of vldr, vcmp, vmrs.
+SB_INLINE bool is_zero_v7(const double& d) {
+#if defined(__arm__) && !defined(__aarch64__)
+  uint32_t lo, hi;
+  __builtin_memcpy(&lo, &d, 4);
+  __builtin_memcpy(&hi, reinterpret_cast<const char*>(&d) + 4, 4);
+  return (lo | (hi << 1)) == 0;
+#else
+  return d == 0.0;
+#endif
+}
 SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const bool is_short = n > 16 && n <= kShortMax;
-  if (!p.second_order || p.dzi == 0.0) {
+  if (!p.second_order || is_zero_v7(p.dzi)) {
     if (is_short) return persp_short_inl<false>(dest, n, texels, width, p);
     return persp_fast<false>(dest, n, texels, width, p);
   }
