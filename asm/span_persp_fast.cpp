@@ -367,6 +367,44 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #else
   }
 #endif
+#if defined(__arm__) && !defined(__aarch64__)
+  if (kCurve && left > 32) {
+    // ARMv7 second order: as below, sample r + 2 and run r + 1's steps computed beside run
+    // r's pixels (stage slots; before draw16 the modelled Cortex-A9's in-order FP pipe and
+    // the core moves waiting on it stalled), as the pass's stage_a computes them (c1 =
+    // zck (z_1 + z_2), ddf = delta c1, cvt_sat, steps16_dd: steps16's bits).
+    Sample s2{};
+    double c1 = 0.0, fu = 0.0, fv = 0.0;
+    int32_t iu = 0, iv = 0;
+    RunSteps u1{}, v1{};
+    Run16<kCurve> run(s0.u, s0.v, su, sv);
+    run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        s2 = sample(pos2, z2);
+      } else if constexpr (G == 1) {  // the pass's stage_a operations (c1 = zck (z_1 + z_2))
+        c1 = zck * (s1.z + s2.z);
+      } else if constexpr (G == 2) {
+        fu = double(s2.u - s1.u), fv = double(s2.v - s1.v);
+      } else if constexpr (G == 3) {
+        fu = fu * c1, fv = fv * c1;
+      } else if constexpr (G == 6) {
+        iu = cvt_sat(fu), iv = cvt_sat(fv);
+      } else if constexpr (G == 8) {
+        steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
+      }
+    });
+    dest += 16;
+    P += double(16);
+    left -= 16;
+    s0 = s1;
+    s1 = s2;
+    su = u1;
+    sv = v1;
+    z2 = z3;
+    pos2 = pos3;
+  } else
+#endif
   if (left > 32) {  // one run more whose next run is full and not the last
     const Sample s2 = kPre ? t2 : sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
@@ -426,8 +464,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if (last == 16) {
       draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
     } else {
-      draw_last<kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
-               uint32_t(lu.dd), uint32_t(lv.dd));
+      draw_last<kCurve, kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
+                                uint32_t(lu.dd), uint32_t(lv.dd));
     }
   }
 #else
@@ -579,6 +617,18 @@ SB_INLINE void persp_one_c(uint8_t* dest, int n, const uint8_t* texels, int widt
 }
 SB_INLINE bool is_short_n(int n) { return uint32_t(n) - 17u < uint32_t(kShortMax - 16); }
 // The single-span entry's dispatcher (and the batch loop's off aarch64): the tests one by one.
+// ARMv7: dzi == 0.0 on its bits (two core loads; +0 and -0 are 0, NaN is not: the FP
+// compare's result) instead of vldr, vcmp, vmrs.
+SB_INLINE bool is_zero_v7(const double& d) {
+#if defined(__arm__) && !defined(__aarch64__)
+  uint32_t lo, hi;
+  __builtin_memcpy(&lo, &d, 4);
+  __builtin_memcpy(&hi, reinterpret_cast<const char*>(&d) + 4, 4);
+  return (lo | (hi << 1)) == 0;
+#else
+  return d == 0.0;
+#endif
+}
 SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
 #if defined(__aarch64__) && defined(__GNUC__)
   // aarch64 (the single-span entry only): a short second-order span, the three fields tested
@@ -589,7 +639,7 @@ SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width,
   }
 #endif
   const bool is_short = n > 16 && n <= kShortMax;
-  if (!p.second_order || p.dzi == 0.0) {
+  if (!p.second_order || is_zero_v7(p.dzi)) {
     if (is_short) return persp_short_inl<false>(dest, n, texels, width, p);
     return persp_fast<false>(dest, n, texels, width, p);
   }
@@ -670,10 +720,12 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
 
 }  // namespace
 
+#if !(defined(__arm__) && !defined(__aarch64__))
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
                              const PerspSpan& p) {
   persp_one(dest, n, texels, width, p);
 }
+#endif
 
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -682,5 +734,15 @@ void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* 
   spans_range(items, items + (count > 0 ? count : 0), texels, width);
 #endif
 }
+
+#if defined(__arm__) && !defined(__aarch64__)
+// ARMv7: after the batch entry (the object's last function), so that its code size does not
+// move the batch entry's inlined long-span loop against 4 KiB pages (where qemu cuts the
+// blocks bench/count.sh times; the tail's staged run moved it: A9 persp1920 6.92 -> 6.98).
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+                             const PerspSpan& p) {
+  persp_one(dest, n, texels, width, p);
+}
+#endif
 
 }  // namespace sb::simd

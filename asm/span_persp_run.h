@@ -692,7 +692,9 @@ SB_INLINE void tail_store(uint8_t* __restrict dest, const uint8_t* t) {
   for (int j = 0; j < C; ++j) dest[j] = t[j];
 #endif
 }
-template <bool kCurve>
+// kHalves: pixels 0 .. 7 as two chunks of 4 (ARMv7's mid path: the 8-chunk's eight positions,
+// live at once, were spilled there, 16 stack loads / stores; A9 persp64 7.60 -> 7.51).
+template <bool kCurve, bool kHalves = false>
 SB_INLINE void draw_last(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
                          uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
   TailPos p = tail_pos<kCurve>(u, v, du, dv, ddu, ddv);
@@ -703,7 +705,11 @@ SB_INLINE void draw_last(uint8_t* __restrict dest, int n, const uint8_t* __restr
     tail_store<C>(dest, t);
     dest += C;
   };
-  if (n & 8) chunk(std::integral_constant<int, 8>{});
+  if constexpr (kHalves) {  // the 8 pixels as two chunks of 4 in one block
+    if (n & 8) chunk(std::integral_constant<int, 4>{}), chunk(std::integral_constant<int, 4>{});
+  } else {
+    if (n & 8) chunk(std::integral_constant<int, 8>{});
+  }
   if (n & 4) chunk(std::integral_constant<int, 4>{});
   if (n & 2) chunk(std::integral_constant<int, 2>{});
   if (n & 1) chunk(std::integral_constant<int, 1>{});

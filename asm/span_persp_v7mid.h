@@ -806,8 +806,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   if (n == 64) {
     draw16_v7(dest + 48, texels, w, run_regs(u0, v0, lu, lv));
   } else {
-    draw_last<true>(dest + 48, n - 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d),
-             uint32_t(lu.dd), uint32_t(lv.dd));
+    draw_last<true, true>(dest + 48, n - 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d),
+                          uint32_t(lu.dd), uint32_t(lv.dd));
   }
 }
 #undef SB_V7_RUN_INPUTS
