@@ -34,7 +34,8 @@
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}]. Operands in the loop's registers. Uses 64 bytes below sp.
+// [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers. Uses 64 bytes
+// below sp.
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -192,8 +193,8 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "cmp x0, x1\n\t" "b.lo 1b\n\t" "b.ne 2f\n\t" "ldr q19, [sp, #48]\n\t"
       "b 1b\n\t" "2:\n\t"
       "add sp, sp, #64"
-      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn)
-      : "r"(r_tx), "r"(r_w), "w"(r_kMin)
+      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn), "+r"(r_tx), "+r"(r_w)
+      : "w"(r_kMin)
       : "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v22", "v23", "v24", "v25", "v27", "v28", "v30", "v31", "cc", "memory");
   st.d = r_d;
   st.c0 = r_c0;
@@ -204,6 +205,8 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
   st.nC = r_nC;
   st.z23 = r_z23;
   st.zsn = r_zsn;
+  st.tx = r_tx;
+  st.w = r_w;
 }
 
 }  // namespace

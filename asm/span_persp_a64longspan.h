@@ -25,13 +25,16 @@ namespace {
 // run 0's steps as the loop's); the tail after the passes as persp_fast's.
 SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zc = p.dzi;
-  const uint32_t w = uint32_t(width);
   // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h), from
   // p and n; the passes leave n - 32 (k + 1) = 17 .. 48 pixels (k full passes, see there).
   LongPass st;
   st.kMin = vdupq_n_f64(kMinZi);
   st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
   long_passes2(st, p, n);
+  // texels and w for the tail from the asm's registers (in-out operands, unchanged), not
+  // reloaded from the compiler's stack copies.
+  texels = reinterpret_cast<const uint8_t*>(st.tx);
+  const uint32_t w = uint32_t(st.w);
   // left = n - 32 (k + 1), k = (n - 81) / 32 + 1: (n - 81) mod 32 + 17 (n > 80).
   int left = int(uint32_t(n - 81) & 31u) + 17;
   Sample s0, s1;
