@@ -55,10 +55,36 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   Sample sB{int32_t(uint32_t(st.nB)), int32_t(uint32_t(st.nB >> 32)), z2};
   const Sample sC{int32_t(uint32_t(st.nC)), int32_t(uint32_t(st.nC >> 32)), z3};
   if (left > 32) {
+    // Run r + 1's steps (steps16<true>(s1, s2, c1)'s operations: steps16_sel) in run r's
+    // stage slots, one dependent step a group (groups 0 .. 6), so the texel work covers the
+    // chain's latencies.
     const Sample s2 = sB;
-    const double c1 = zc * 0.5 * (s1.z + s2.z);
-    const RunSteps u1 = steps16<true>(s1.u, s2.u, c1), v1 = steps16<true>(s1.v, s2.v, c1);
-    draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
+    RunSteps u1, v1;
+    int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
+    double sz = 0, c1 = 0, f1u = 0, f1v = 0;
+    auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        d1u = s2.u - s1.u, d1v = s2.v - s1.v, sz = s1.z + s2.z;
+        pin(d1u), pin(d1v), pin(sz);
+      } else if constexpr (G == 1) {
+        f1u = double(d1u) / 16, f1v = double(d1v) / 16, c1 = zc * 0.5 * sz;
+        pin(f1u), pin(f1v), pin(c1);
+      } else if constexpr (G == 2) {
+        f1u = f1u * c1, f1v = f1v * c1;
+        pin(f1u), pin(f1v);
+      } else if constexpr (G == 3) {
+        f1u = -2.0 * f1u, f1v = -2.0 * f1v;
+        pin(f1u), pin(f1v);
+      } else if constexpr (G == 4) {
+        i1u = cvt_sat(f1u), i1v = cvt_sat(f1v);
+        pin(i1u), pin(i1v);
+      } else if constexpr (G == 5) {
+        u1 = steps16_dd(d1u, i1u), v1 = steps16_dd(d1v, i1v);
+      }
+    };
+    Run16<true> run0(s0.u, s0.v, su, sv);
+    run0.draw(dest, texels, w, stage1);
     dest += 16;
     left -= 16;
     s0 = s1, s1 = s2, su = u1, sv = v1, sB = sC;
