@@ -25,13 +25,16 @@ namespace {
 // run 0's steps as the loop's); the tail after the passes as persp_fast's.
 SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const double zc = p.dzi;
-  const uint32_t w = uint32_t(width);
   // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h), from
   // p and n; the passes leave n - 32 (k + 1) = 17 .. 48 pixels (k full passes, see there).
   LongPass st;
   st.kMin = vdupq_n_f64(kMinZi);
   st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
   long_passes2(st, p, n);
+  // texels and w for the tail from the asm's registers (in-out operands, unchanged), not
+  // reloaded from the compiler's stack copies.
+  texels = reinterpret_cast<const uint8_t*>(st.tx);
+  const uint32_t w = uint32_t(st.w);
   // left = n - 32 (k + 1), k = (n - 81) / 32 + 1: (n - 81) mod 32 + 17 (n > 80).
   int left = int(uint32_t(n - 81) & 31u) + 17;
   Sample s0, s1;
@@ -49,17 +52,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   const double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
   // The tail (left = 17 .. 48), persp_fast's; samples r + 2, r + 3 (sample(pos2, z2),
   // sample(pos3, z3)) as the last pass converted them (nB, nC: to_fixed, see persp_fast).
-  Sample sB{int32_t(uint32_t(st.nB)), int32_t(uint32_t(st.nB >> 32)), z2};
+  const Sample sB{int32_t(uint32_t(st.nB)), int32_t(uint32_t(st.nB >> 32)), z2};
   const Sample sC{int32_t(uint32_t(st.nC)), int32_t(uint32_t(st.nC >> 32)), z3};
-  if (left > 32) {
-    const Sample s2 = sB;
-    const double c1 = zc * 0.5 * (s1.z + s2.z);
-    const RunSteps u1 = steps16<true>(s1.u, s2.u, c1), v1 = steps16<true>(s1.v, s2.v, c1);
-    draw16<true>(dest, texels, w, s0.u, s0.v, su, sv);
-    dest += 16;
-    left -= 16;
-    s0 = s1, s1 = s2, su = u1, sv = v1, sB = sC;
-  }
   // The last run's steps are last_steps' (the same results) with scalar operations, u and v
   // two interleaved chains (fewer dependent NEON levels: on the modelled Cortex-A53 each
   // stalls the core instructions after it): q = div_steps' operations on du, dv; lin =
@@ -67,73 +61,135 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   // where |ddf| < 1e9 (scaling by -2 commutes with rounding; where either form overflows,
   // underflows or is NaN both give dd = 0); dd = cvt_sat(ddf) kept iff |dd| < 1e9, which is
   // |ddf| < 1e9 (last_ddi). In steps (step<0> .. step<6>, each depending on the one before).
-  const int last = left - 16, steps = last - 1;
-  const Sample s2 = steps > 0 ? sB : s1;
-  RunSteps lu, lv;
-  const int32_t du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
-  const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
-  double au, av, y, sf, qu, qv, tu, tv, cz, ch, c2;
-  int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
-  uint32_t k1 = 999999999u, k2 = 1999999999u;  // group 6's constants, set in group 1 (while fmsub waits)
-  // Groups 1 .. 4 as asm (each operation the C++ one's: fmsub = vfms_f64, fmadd = vfma_f64,
-  // fused), c2 = -2 (zc 0.5 (s1.z + s2.z)) one operation a group after that group's quotient
-  // work: in-order issue, none waits in front of the u, v chain; outputs early-clobber in
-  // registers of their own (no copies between the groups).
-  auto step = [&](auto g) SB_LAMBDA_INLINE {
-    constexpr int G = decltype(g)::value;
-    if constexpr (G == 0) {
-      au = double(du), av = double(dv);
-      y = kRecipSteps[sd], sf = double(sd);
-      pin(au), pin(av), pin(y), pin(sf);
-    } else if constexpr (G == 1) {
-      __asm__ volatile("fmul %d0, %d3, %d5\n\tfmul %d1, %d4, %d5\n\tfadd %d2, %d6, %d7"  // div_steps
-                       : "=&w"(qu), "=&w"(qv), "=&w"(cz)
-                       : "w"(au), "w"(av), "w"(y), "w"(s1.z), "w"(s2.z));
-      pin(k1), pin(k2);
-    } else if constexpr (G == 2) {
-      __asm__ volatile("fmsub %d0, %d3, %d5, %d6\n\tfmsub %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
-                       : "=&w"(tu), "=&w"(tv), "=&w"(ch)
-                       : "w"(qu), "w"(qv), "w"(sf), "w"(au), "w"(av), "w"(zc * 0.5), "w"(cz));
-    } else if constexpr (G == 3) {
-      double u2, v2;
-      __asm__ volatile("fmadd %d0, %d3, %d5, %d6\n\tfmadd %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
-                       : "=&w"(u2), "=&w"(v2), "=&w"(c2)
-                       : "w"(tu), "w"(tv), "w"(y), "w"(qu), "w"(qv), "w"(ch), "w"(-2.0));
-      qu = u2, qv = v2;
-    } else if constexpr (G == 4) {
-      double u2, v2;
-      __asm__ volatile("fcvtzs %w0, %d4\n\tfcvtzs %w1, %d5\n\tfmul %d2, %d4, %d6\n\tfmul %d3, %d5, %d6"
-                       : "=&r"(lnu), "=&r"(lnv), "=&w"(u2), "=&w"(v2)
-                       : "w"(qu), "w"(qv), "w"(c2));
-      tu = u2, tv = v2;
-    } else if constexpr (G == 5) {
-      ddu = cvt_sat(tu), ddv = cvt_sat(tv);
-      pin(ddu), pin(ddv);
-    } else if constexpr (G == 6) {
-      ddu = (uint32_t(ddu) + k1 < k2) ? ddu : 0;
-      ddv = (uint32_t(ddv) + k1 < k2) ? ddv : 0;
-      pin(ddu), pin(ddv);
-    } else if constexpr (G == 9) {
-      last_steps_ddi(steps, du, dv, lnu, lnv, ddu, ddv, &lu, &lv);
+  // The tail: kTwo when left > 32 (runs r, r + 1, then the last run), t1 / tB the last run's
+  // first sample and the one after it (s1, sB; with kTwo sB, sC).
+  auto tail = [&](auto two, const Sample& t1, const Sample& tB) SB_LAMBDA_INLINE {
+    constexpr bool kTwo = decltype(two)::value;
+    const int last = left - (kTwo ? 32 : 16), steps = last - 1;
+    const Sample s2 = steps > 0 ? tB : t1;
+    RunSteps lu, lv;
+    const int32_t du = s2.u - t1.u, dv = s2.v - t1.v;  // 0 <= u, v < 2^31: no overflow
+    const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
+    double au, av, y, sf, qu, qv, tu, tv, cz, ch, c2;
+    int32_t lnu = 0, lnv = 0, ddu = 0, ddv = 0;
+    uint32_t k1 = 999999999u, k2 = 1999999999u;  // group 6's constants, set in group 1 (while fmsub waits)
+    // Groups 1 .. 4 as asm (each operation the C++ one's: fmsub = vfms_f64, fmadd = vfma_f64,
+    // fused), c2 = -2 (zc 0.5 (s1.z + s2.z)) one operation a group after that group's quotient
+    // work: in-order issue, none waits in front of the u, v chain; outputs early-clobber in
+    // registers of their own (no copies between the groups).
+    auto step = [&](auto g) SB_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        au = double(du), av = double(dv);
+        y = kRecipSteps[sd], sf = double(sd);
+        pin(au), pin(av), pin(y), pin(sf);
+      } else if constexpr (G == 1) {
+        __asm__ volatile("fmul %d0, %d3, %d5\n\tfmul %d1, %d4, %d5\n\tfadd %d2, %d6, %d7"  // div_steps
+                         : "=&w"(qu), "=&w"(qv), "=&w"(cz)
+                         : "w"(au), "w"(av), "w"(y), "w"(t1.z), "w"(s2.z));
+        pin(k1), pin(k2);
+      } else if constexpr (G == 2) {
+        __asm__ volatile("fmsub %d0, %d3, %d5, %d6\n\tfmsub %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
+                         : "=&w"(tu), "=&w"(tv), "=&w"(ch)
+                         : "w"(qu), "w"(qv), "w"(sf), "w"(au), "w"(av), "w"(zc * 0.5), "w"(cz));
+      } else if constexpr (G == 3) {
+        double u2, v2;
+        __asm__ volatile("fmadd %d0, %d3, %d5, %d6\n\tfmadd %d1, %d4, %d5, %d7\n\tfmul %d2, %d8, %d9"
+                         : "=&w"(u2), "=&w"(v2), "=&w"(c2)
+                         : "w"(tu), "w"(tv), "w"(y), "w"(qu), "w"(qv), "w"(ch), "w"(-2.0));
+        qu = u2, qv = v2;
+      } else if constexpr (G == 4) {
+        double u2, v2;
+        __asm__ volatile("fcvtzs %w0, %d4\n\tfcvtzs %w1, %d5\n\tfmul %d2, %d4, %d6\n\tfmul %d3, %d5, %d6"
+                         : "=&r"(lnu), "=&r"(lnv), "=&w"(u2), "=&w"(v2)
+                         : "w"(qu), "w"(qv), "w"(c2));
+        tu = u2, tv = v2;
+      } else if constexpr (G == 5) {
+        ddu = cvt_sat(tu), ddv = cvt_sat(tv);
+        pin(ddu), pin(ddv);
+      } else if constexpr (G == 6) {
+        ddu = (uint32_t(ddu) + k1 < k2) ? ddu : 0;
+        ddv = (uint32_t(ddv) + k1 < k2) ? ddv : 0;
+        pin(ddu), pin(ddv);
+      } else if constexpr (G == 9) {
+        last_steps_ddi(steps, du, dv, lnu, lnv, ddu, ddv, &lu, &lv);
+      }
+    };
+    using std::integral_constant;
+    if constexpr (kTwo) {
+      // Run r + 1's steps (steps16<true>(s1, sB, c1)'s operations, sB = t1: steps16_sel) in run r's
+      // stage slots 0 .. 5, one dependent step a group, then the last run's step groups 0 .. 3
+      // in slots 6 .. 9 (their inputs are known: no wait for run r + 1's steps).
+      RunSteps u1, v1;
+      int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
+      double sz = 0, c1 = 0, f1u = 0, f1v = 0;
+      auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
+        constexpr int G = decltype(g)::value;
+        if constexpr (G >= 6) step(integral_constant<int, G - 6>{});
+        if constexpr (G == 0) {
+          d1u = t1.u - s1.u, d1v = t1.v - s1.v, sz = s1.z + t1.z;
+          pin(d1u), pin(d1v), pin(sz);
+        } else if constexpr (G == 1) {
+          f1u = double(d1u) / 16, f1v = double(d1v) / 16, c1 = zc * 0.5 * sz;
+          pin(f1u), pin(f1v), pin(c1);
+        } else if constexpr (G == 2) {
+          f1u = f1u * c1, f1v = f1v * c1;
+          pin(f1u), pin(f1v);
+        } else if constexpr (G == 3) {
+          f1u = -2.0 * f1u, f1v = -2.0 * f1v;
+          pin(f1u), pin(f1v);
+        } else if constexpr (G == 4) {
+          i1u = cvt_sat(f1u), i1v = cvt_sat(f1v);
+          pin(i1u), pin(i1v);
+        } else if constexpr (G == 5) {
+          u1 = steps16_dd(d1u, i1u), v1 = steps16_dd(d1v, i1v);
+        }
+      };
+      Run16<true> run0(s0.u, s0.v, su, sv);
+      run0.draw(dest, texels, w, stage1);
+      dest += 16;
+      if (last == 16) {
+        step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
+        step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
+        short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u),
+                         pack_steps(v1.d, u1.d), pack_steps(v1.dd, u1.dd),
+                         uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u),
+                         pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
+        return;
+      }
+      // Run r + 1 with the last run's step groups 4 .. 6 and 9 in its slots 0 .. 2 and 5.
+      auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
+        constexpr int G = decltype(g)::value;
+        if constexpr (G <= 2) step(integral_constant<int, G + 4>{});
+        if constexpr (G == 5) step(integral_constant<int, 9>{});
+      };
+      Run16<true> run(s1.u, s1.v, u1, v1);
+      run.draw(dest, texels, w, stage2);
+    } else {
+      if (last == 16) {
+        // Two full runs left: the steps first, then both runs as one short_pass.
+        step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
+        step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
+        step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
+        short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
+                         pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd),
+                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pack_steps(lv.d, lu.d),
+                         pack_steps(lv.dd, lu.dd));
+        return;
+      }
+      // Otherwise run r with the steps in its stage slots, one a group.
+      Run16<true> run(s0.u, s0.v, su, sv);
+      run.draw(dest, texels, w, step);
     }
+    dest += 16;
+    draw_last<true>(dest, last, texels, w, uint32_t(t1.u), uint32_t(t1.v), uint32_t(lu.d), uint32_t(lv.d),
+                    uint32_t(lu.dd), uint32_t(lv.dd));
   };
-  using std::integral_constant;
-  if (last == 16) {
-    // Two full runs left: the steps first, then both runs as one short_pass.
-    step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
-    step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
-    step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
-    short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
-                     pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u),
-                     pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
-    return;
+  if (left > 32) {
+    tail(std::true_type{}, sB, sC);
+  } else {
+    tail(std::false_type{}, s1, sB);
   }
-  // Otherwise run r with the steps in its stage slots, one a group.
-  Run16<true> run(s0.u, s0.v, su, sv);
-  run.draw(dest, texels, w, step);
-  dest += 16;
-  draw_last<true>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d), uint32_t(lu.dd),
-           uint32_t(lv.dd));
 }
 
 }  // namespace

@@ -561,7 +561,9 @@ SB_INLINE bool is_lin_a64(const PerspItem& x) {
 // still called, with next == end. Without sibling calls (-O0) each chained long item nests
 // one frame. Page-aligned: where its loop's code falls against 4 KiB pages (where qemu cuts
 // the blocks bench/count.sh times) does not move with the size of the code before it.
-// Consecutive long items are drawn in this function's loop (one frame for the run of them).
+// Consecutive long items are drawn in this function's loop (one frame for the run of them);
+// the next item's fields are read with its test (its pointer stays in a register for the next
+// span's set-up, not reloaded from the stack).
 __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int n, const uint8_t* texels,
                                                              int width, const PerspSpan& p, const PerspItem* next,
                                                              const PerspItem* end) {
@@ -569,9 +571,15 @@ __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int 
   for (;;) {
     persp_long_a64_inl(dest, n, texels, width, *q);
     if (next == end) return;
-    if (!is_long_a64(*next)) return batch_from(next, end, texels, width);
-    dest = next->dest, n = next->n, q = &next->span;
-    ++next;
+    const PerspItem* it = next++;
+    const bool is_long = is_long_a64(*it);
+    dest = it->dest, n = it->n;
+    if (!is_long) return batch_from(it, end, texels, width);
+    // q = &it->span computed here, after the test, from next in its register (in the set-up's
+    // qemu block: llvm-mca times that block as a loop of its own, and a q from the block
+    // before would depend on the loop's last use of its register).
+    static_assert(offsetof(PerspItem, span) == 16 && sizeof(PerspItem) == 88);
+    __asm__ volatile("sub %0, %1, #72" : "=r"(q) : "r"(next));  // next = it + 1
   }
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first

@@ -555,7 +555,8 @@ HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-orde
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}]. Operands in the loop's registers. Uses 64 bytes below sp.
+// [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers. Uses 64 bytes
+// below sp.
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -628,9 +629,12 @@ def emit_header3(ins, outh, setup):
         decls.append(f'  register uint64_t r_{n} __asm__("{PIN[n]}") = st.{n};')
     for n in S_IN_V:
         decls.append(f'  register {vty(n)} r_{n} __asm__("{PIN[n]}") = st.{n};')
-    outs = ['"+r"(r_d)', '"+r"(r_p)', '"+r"(r_n)'] + [f'"=r"(r_{n})' for n in S_OUT_X] + [f'"=w"(r_{n})' for n in S_OUT_V]
-    insl = [f'"r"(r_{n})' for n in S_IN_X] + [f'"w"(r_{n})' for n in S_IN_V]
-    back = "\n".join(f"  st.{n} = r_{n};" for n in ["d"] + S_OUT_X + S_OUT_V)
+    # tx, w in-out (unchanged by the asm): the tail takes them from the asm's registers, not
+    # from the compiler's stack copies (persp192 A53 9.06 -> 9.02).
+    outs = (['"+r"(r_d)', '"+r"(r_p)', '"+r"(r_n)'] + [f'"=r"(r_{n})' for n in S_OUT_X] +
+            [f'"=w"(r_{n})' for n in S_OUT_V] + [f'"+r"(r_{n})' for n in S_IN_X])
+    insl = [f'"w"(r_{n})' for n in S_IN_V]
+    back = "\n".join(f"  st.{n} = r_{n};" for n in ["d"] + S_OUT_X + S_OUT_V + S_IN_X)
     text = HEADER3 % dict(blk=blk, asserts=asserts, fill=fill, decls="\n".join(decls), body="\n".join(out),
                           outs=", ".join(outs), ins=", ".join(insl), back=back,
                           clob=", ".join(f'"{c}"' for c in clob))
