@@ -367,6 +367,20 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #else
   }
 #endif
+  // After one run more (left > 32): the state moves on 16 pixels, sample r + 2 and its steps
+  // becoming run r's.
+  auto next_run = [&](const Sample& s2, const RunSteps& u1, const RunSteps& v1) SB_LAMBDA_INLINE {
+    dest += 16;
+    P += double(16);
+    left -= 16;
+    s0 = s1;
+    s1 = s2;
+    su = u1;
+    sv = v1;
+    z2 = z3;
+    pos2 = pos3;
+    t2 = t3;
+  };
 #if defined(__arm__) && !defined(__aarch64__)
   if (kCurve && left > 32) {
     // ARMv7 second order: as below, sample r + 2 and run r + 1's steps computed beside run
@@ -394,15 +408,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
       }
     });
-    dest += 16;
-    P += double(16);
-    left -= 16;
-    s0 = s1;
-    s1 = s2;
-    su = u1;
-    sv = v1;
-    z2 = z3;
-    pos2 = pos3;
+    next_run(s2, u1, v1);
   } else
 #endif
   if (left > 32) {  // one run more whose next run is full and not the last
@@ -410,16 +416,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     const double c1 = zc * 0.5 * (s1.z + s2.z);
     const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
     draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
-    dest += 16;
-    P += double(16);
-    left -= 16;
-    s0 = s1;
-    s1 = s2;
-    su = u1;
-    sv = v1;
-    z2 = z3;
-    pos2 = pos3;
-    t2 = t3;
+    next_run(s2, u1, v1);
   }
   // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
