@@ -91,9 +91,17 @@ tools=OFF
 configure count -DSTARBOW_BENCH=OFF -DSTARBOW_TOOLS=$tools
 configure count-aarch64 -DCMAKE_TOOLCHAIN_FILE="$ROOT/toolchain/aarch64-linux-gnu.cmake"
 configure count-armhf -DCMAKE_TOOLCHAIN_FILE="$ROOT/toolchain/arm-linux-gnueabihf.cmake"
-cmake --build build/count -j2 --target starbow_count_kernels starbow >/dev/null
-cmake --build build/count-aarch64 -j2 --target starbow_count_kernels >/dev/null
-cmake --build build/count-armhf -j2 --target starbow_count_kernels >/dev/null
+build() {  # dir target...: the build's output goes to build/<dir>.log, its end to stderr on failure
+  local dir=$1 log="$ROOT/build/$1.log"; shift
+  cmake --build "build/$dir" -j2 --target "$@" >"$log" 2>&1 || {
+    echo "count.sh: building $* in build/$dir failed; the end of $log:" >&2
+    tail -n 40 "$log" >&2
+    exit 1
+  }
+}
+build count starbow_count_kernels starbow
+build count-aarch64 starbow_count_kernels
+build count-armhf starbow_count_kernels
 
 echo "== counting (progress on stderr)"
 python3 bench/count_report.py "$@"
