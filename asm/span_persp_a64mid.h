@@ -3,7 +3,7 @@
 // included, in one vector asm block; steps_k3v_pass is the same block with the first pass
 // (runs 0, 1) in it, and persp_mid_k3 draws the span with it. Internal: included by
 // asm/span_persp_a64short.h (it uses asm/span_persp_arm.h's kRecipSteps,
-// asm/span_persp_run.h's draw_run and Run16, asm/span_persp_a64pass.h's short_pass).
+// asm/span_persp_run.h's draw_last and Run16, asm/span_persp_a64pass.h's short_pass).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -564,7 +564,7 @@ SB_INLINE uint64_t mid_pack(uint64_t x) {
 // Draws a second-order span of 49 .. 64 pixels (4 runs; last = n - 48 pixels in the last
 // run) from the sample block's results (persp_short_inl): the steps with runs 0, 1
 // (steps_k3v_pass), then runs 2, 3 as one short_pass (last == 16) or run 2 by Run16 and the
-// last run by draw_run. zh = zc * 0.5; width's value as an int (int64_t: the single-span
+// last run by draw_last. zh = zc * 0.5; width's value as an int (int64_t: the single-span
 // entry hands it on sign-extended).
 SB_INLINE void persp_mid_k3(uint8_t* dest, int last, const uint8_t* texels, int64_t width, int32x4_t S01, int32x4_t S23,
                             int32x4_t S44, float64x2_t c01, float64x2_t c23, float64x2_t zs23, double zh) {

@@ -6,7 +6,7 @@
 // Contract: run a (pixels 0 .. 15) from a_uv, a_d, a_dd and run b (16 .. 31) from b_uv, b_d,
 // b_dd, each as Run16's packed start v 2^32 + u, step dv 2^32 + du (du sign-extended) and
 // (kCurve) second-order step (packed the same way; unused when !kCurve). Draws d[0 .. 31] =
-// texels[(v_k >> 16) w + (u_k >> 16)] with draw_run's packed u_k, v_k (asm/span_persp_run.h).
+// texels[(v_k >> 16) w + (u_k >> 16)] with the packed u_k, v_k (pack_steps, asm/span_persp_run.h).
 //   linear: pixel 4 g + i of a run on chain i (c_i = uv_0 + i duv, stepped by 4 duv);
 //   second order: two chains c0 = uv_k, c1 = uv_{k+1} (k = 4 g), stepped by e0 = uv_{k+2} -
 //           uv_k, e1 = uv_{k+3} - uv_{k+1}, each e by 4 dduv per pixel pair (lin_start2).

@@ -16,9 +16,9 @@ namespace {
 // the shifts and steps of group j (latency 2), the caller's stage (double / vector work,
 // latency 6), then the multiply-adds of group j beside the loads of group j - 1 (latency 4)
 // and the gather and store of groups j - 2, j - 3: in-order issue (llvm-mca's Cortex-A53
-// model also completes in order) seldom waits. u, v packed as in draw_run (v 2^32 + u).
+// model also completes in order) seldom waits. u, v packed as pack_steps says (v 2^32 + u).
 //   linear: pixel 4 g + i of a run on chain i, stepped by e = 4 duv: chain i holds
-//           uv_0 + (4 g + i) duv (mod 2^64), draw_run's value.
+//           uv_0 + (4 g + i) duv (mod 2^64), the packed recurrence's value.
 //   second order: two chains (fewer registers), c0 = uv_k, c1 = uv_{k+1}, stepped two pixels
 //           at a time by e0, e1 (uv_{k+2} - uv_k), each e by dd4 = 4 dduv, as Run16 does.
 // Keeps a value computed where it is written: an empty asm the compiler cannot move
@@ -224,7 +224,7 @@ SB_INLINE void lin_slot(uint64_t& c0, uint64_t& c1, uint64_t& c2, uint64_t& c3, 
 // (Q = |linear|) and m = (steps - 1) dd' = 2 k + b (b = 0, 1), num / steps =
 // Q - k - b / 2 + r / steps, so d0' = Q - k - (b and 2 r < steps); accepted, |m| <= pd and
 // every value fits 32 bits. steps < 2: linear, dd = 0 (T = 0, dd forced 0). steps = 0 (a
-// one-pixel last run): the steps are never used (draw_run draws the start only).
+// one-pixel last run): the steps are never used (draw_last draws the start only).
 // Where the tails use it (ARM; x86-64: run_steps_uv, out of order cores hide its branches).
 #if defined(__aarch64__) || defined(__arm__)
 constexpr bool kLastSteps = true;

@@ -483,7 +483,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   if constexpr (kPre) {
     // aarch64 linear (zc is 0 here, so curve is 0: run_steps' linear steps): delta / steps
     // truncated, two sdiv (no jump table, no call). 0 <= u, v < 2^31: the deltas fit int32.
-    // Steps 0 (a one-pixel last run): draw_run draws that pixel at (s1.u, s1.v) and never
+    // Steps 0 (a one-pixel last run): draw_last draws that pixel at (s1.u, s1.v) and never
     // reads the steps, so s2 stays t2 and the divisor 1 (no branch: one block with run r's).
     const int32_t sd = steps > 0 ? steps : 1;
     lu = RunSteps{(s2.u - s1.u) / sd, 0}, lv = RunSteps{(s2.v - s1.v) / sd, 0};

@@ -35,61 +35,16 @@ inline RunSteps run_steps_q(int32_t a, int32_t b, Steps steps_, double curve, do
 }
 
 // Run16's packing of a step pair: hi 2^32 + lo sign-extended (modulo 2^64), hi the v part,
-// lo the u part (draw_run, Run16 and the tuned paths in asm/span_persp_fast.cpp).
+// lo the u part (Run16, draw_last and the tuned paths in asm/span_persp_fast.cpp).
 inline __attribute__((always_inline)) uint64_t pack_steps(int32_t hi, int32_t lo) {
   return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo));
 }
 
-// One run: surface_span's loop, inlined, with u and v in one 64-bit register: uv = v 2^32 + u,
-// stepped by duv = dv 2^32 + du (du sign-extended), itself stepped by ddv 2^32 + ddu. The
-// contract keeps every drawn u_k in 0 .. 2^32 - 1 and v_k >= 0, so uv_k is exactly the
-// integer v_k 2^32 + u_k (the recurrences are linear: the packed sums are the sums of the
-// packed terms) and its halves are u_k and v_k: two adds per pixel instead of four.
-inline void draw_run(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
-                     uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-  uint64_t uv = (uint64_t(v) << 32) + u, duv = pack_steps(int32_t(dv), int32_t(du));
-  auto texel = [&](uint64_t x) { return texels[uint32_t(x >> 48) * w + (uint32_t(x) >> 16)]; };
-  // Two pixels per step, their address arithmetic independent, and software-pipelined for
-  // in-order cores (Cortex-A53): each step loads the texels of the NEXT pair (which exists:
-  // k + 4 <= n, so no texel beyond the n pixels is read) and stores the pair loaded one step
-  // earlier, so no store waits on the load just issued.
-  //   linear:       uv_{k+2} = uv_k + 2 duv
-  //   second order: uv_{k+2} = uv_k + 2 duv_k + dduv, duv_{k+2} = duv_k + 2 dduv
-  int k = 0;
-  if (n >= 2) {
-    uint8_t t0 = texel(uv), t1 = texel(uv + duv);
-    if ((ddu | ddv) == 0) {
-      const uint64_t step2 = 2 * duv;
-      uv += step2;
-      for (; k + 4 <= n; k += 2) {
-        const uint8_t n0 = texel(uv), n1 = texel(uv + duv);
-        dest[k] = t0;
-        dest[k + 1] = t1;
-        t0 = n0;
-        t1 = n1;
-        uv += step2;
-      }
-    } else {
-      const uint64_t dduv = pack_steps(int32_t(ddv), int32_t(ddu)), dduv2 = 2 * dduv;
-      uv += 2 * duv + dduv;
-      duv += dduv2;
-      for (; k + 4 <= n; k += 2) {
-        const uint64_t uv1 = uv + duv;
-        const uint8_t n0 = texel(uv), n1 = texel(uv1);
-        dest[k] = t0;
-        dest[k + 1] = t1;
-        t0 = n0;
-        t1 = n1;
-        uv = uv1 + duv + dduv;
-        duv += dduv2;
-      }
-    }
-    dest[k] = t0;  // the last loaded pair; uv is now pixel k + 2's
-    dest[k + 1] = t1;
-    k += 2;
-  }
-  if (k < n) dest[k] = texel(uv);
-}
+// The packed position: u and v in one 64-bit register, uv = v 2^32 + u, stepped by duv = dv
+// 2^32 + du (du sign-extended), itself stepped by ddv 2^32 + ddu. The contract keeps every
+// drawn u_k in 0 .. 2^32 - 1 and v_k >= 0, so uv_k is exactly the integer v_k 2^32 + u_k (the
+// recurrences are linear: the packed sums are the sums of the packed terms) and its halves
+// are u_k and v_k: two adds per pixel instead of four (Run16, draw_last and the passes).
 
 // ---------------------------------------------------------------- the pipelined loop
 //
@@ -380,7 +335,7 @@ inline RunSteps steps16_dd(int32_t delta, int32_t dd) {
 // linear), even and odd pixels in two independent chains (u_{k+2} = u_k + e_k,
 // e_{k+2} = e_k + 4 dd with e_k = 2 du_k + dd: the recurrence two steps at a time, equal
 // modulo 2^32), so the adds do not form one 16-deep dependency chain. 64-bit targets: u, v
-// packed in one register (see draw_run); ARM: texels gathered into words (orr with a
+// packed in one register (see pack_steps); ARM: texels gathered into words (orr with a
 // shifted operand), one store per 8 (aarch64) or 4 (armhf).
 #if defined(__aarch64__) || defined(__x86_64__)
 #define SB_SPAN_PACKED 1
@@ -589,14 +544,14 @@ SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels
 
 // ---------------------------------------------------------------- the partial last run
 //
-// draw_last: draw_run for a span's partial last run (1 <= n <= 15 pixels), inlined where it
+// draw_last: a span's partial last run (1 <= n <= 15 pixels), inlined where it
 // is called (no call; llvm-mca also times a call at 100 cycles) and with no loop: n's bits
 // pick straight-line chunks of 8, 4, 2 and 1 pixels, in that order (pixels 0 .. 7 when
 // n & 8, then the next 4 when n & 4, ...), each chunk all its texels loaded before any is
 // stored, gathered into words on ARM (SB_SPAN_WORDS, little-endian; one unaligned store per
-// chunk, two 4-byte ones for 8 pixels on ARMv7). Each pixel's position follows draw_run's
-// recurrence (uv_{k+1} = uv_k + duv_k, duv_{k+1} = duv_k + dduv; packed modulo 2^64 on
-// 64-bit targets, per component modulo 2^32 on 32-bit ones), so the bytes are draw_run's.
+// chunk, two 4-byte ones for 8 pixels on ARMv7). Each pixel's position follows the walker's
+// recurrence (uv_{k+1} = uv_k + duv_k, duv_{k+1} = duv_k + dduv; packed as above pack_steps
+// modulo 2^64 on 64-bit targets, per component modulo 2^32 on 32-bit ones): its bytes.
 // kCurve false: the caller's second-order steps are 0 (linear runs: no adds for them).
 // Measured against two overlapping chunks (8 pixels at 0 and at n - 8 for n >= 8, 4 or 2
 // likewise below; every pixel's texel loaded once or twice, one block per length class):
