@@ -15,8 +15,9 @@
 //                64x64 texture (>> m), 17x17 light grid
 //   z1920        z span fill, 1920 pixels
 //   palette      8-bit to 32-bit palette expansion, 320x200 at scale 1 (source pixels)
-//   alias32      alias-model spans: 60 spans of 32 pixels, all visible (a 1920-pixel row's
-//                worth), 296x194 skin, full light range
+//   alias32      alias-model spans: 60 spans of 17-47 pixels (mean 32, pairs 32 - k and 32 + k
+//                for k = 0 .. 15, so every length mod 8 occurs), all visible (a 1920-pixel
+//                row's worth), 296x194 skin, full light range
 //   alias1920h   one 1920-pixel alias span behind a z buffer that hides alternate runs of 16
 //   persp1920    the whole-span drawer (asm/span_persp.h): one 1920-pixel span of a 256x256
 //                surface in perspective, second-order steps, divides included, drawn as the
@@ -187,19 +188,29 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     const bool hidden = std::strcmp(c, "alias1920h") == 0;
     std::vector<uint16_t> z(kSpan);
     for (int x = 0; x < kSpan; ++x) z[size_t(x)] = hidden && (x / 16) % 2 ? 0xffff : 0;
-    const int len = hidden ? kSpan : 32;
-    sb::simd::AliasSpan a{};
-    a.s = 3 << 16;
-    a.t = 150 << 16;
-    a.light = 2 << 16;
-    a.zi = 0x40000000u;
-    a.ds = int32_t(((kSkinW - 8) << 16) / len);  // across most of the skin
-    a.dt = -int32_t((100 << 16) / len);
-    a.dlight = int32_t((60 << 16) / len);
-    a.dzi = 0x3000;
+    std::vector<int> lens;
+    if (hidden) lens.push_back(kSpan);
+    for (int i = 0; !hidden && i < 30; ++i) {
+      const int d = (i * 7) % 16;  // 0 7 14 5 12 3 ..: neighbours of different lengths
+      lens.push_back(32 - d);
+      lens.push_back(32 + d);
+    }
+    std::vector<sb::simd::AliasSpan> spans;  // made once: the repetitions time the kernel only
+    for (int len : lens) {
+      sb::simd::AliasSpan a{};
+      a.s = 3 << 16;
+      a.t = 150 << 16;
+      a.light = 2 << 16;
+      a.zi = 0x40000000u;
+      a.ds = int32_t(((kSkinW - 8) << 16) / len);  // across most of the skin
+      a.dt = -int32_t((100 << 16) / len);
+      a.dlight = int32_t((60 << 16) / len);
+      a.dzi = 0x3000;
+      spans.push_back(a);
+    }
     for (long r = 0; r < reps; ++r)
-      for (int x = 0; x < kSpan; x += len)
-        k.alias_span(dest.data() + x, z.data() + x, len, skin.data(), kSkinW, cm.data(), a);
+      for (size_t i = 0, x = 0; i < lens.size(); x += size_t(lens[i++]))
+        k.alias_span(dest.data() + x, z.data() + x, lens[i], skin.data(), kSkinW, cm.data(), spans[i]);
     return checksum(dest.data(), dest.size());
   }
   if (std::strncmp(c, "persp", 5) == 0) {

@@ -43,7 +43,7 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "block_mip0": "surface_block mip 0", "block_mip1": "surface_block mip 1",
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
-          "alias32": "alias_span (32-px spans, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
+          "alias32": "alias_span (17-47 px spans, mean 32, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
           "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (spans of 50-64 px, mean 57)",
           "persp1920lin": "surface_span_persp (1920 px, linear steps)",
           "persp64lin": "surface_span_persp (spans of 50-64 px, linear steps)",
