@@ -521,7 +521,7 @@ TEST(AsmExpandPalette, EveryVariantMatchesScalarEveryScale) {
   int cases = 0;
   for (const Kernels* k : tuned_variants("expand_palette")) {
     for (int scale : {1, 2, 3, 4, 5, 7, 8, 9, 16}) {
-      for (int width : {0, 1, 3, 4, 7, 8, 9, 15, 16, 17, 320, 333}) {
+      for (int width : {0, 1, 3, 4, 7, 8, 9, 15, 16, 17, 31, 32, 320, 333}) {
         const int height = 1 + int(rng() % 3);
         const int src_stride = width + int(rng() % 5);
         const std::vector<uint8_t> src = random_bytes(rng, size_t(src_stride) * size_t(height) + 1);
