@@ -105,14 +105,10 @@ Choice make_choice() {
   }
 #elif defined(SB_SIMD_HAVE_NEON)
   // surface_span: the NEON table's surface_span_fast beats scalar on 16-pixel runs on
-  // aarch64 (Cortex-A53 model 6.6 against 15.5 cycles/pixel, A72 3.6 against 5.3); on armhf
-  // (Cortex-A9 model) the two are level (6.8 against 6.7) and scalar stays.
-#if defined(__aarch64__)
+  // aarch64 (Cortex-A53 model 6.6 against 15.5 cycles/pixel, A72 3.6 against 5.3) and on
+  // armhf (Cortex-A9 model 5.3 against 6.7; bench/counts.md).
   c.tuned.surface_span = kNeon.surface_span;
   const char* span = "fast";
-#else
-  const char* span = "scalar";
-#endif
   c.tuned.surface_block = kNeon.surface_block;
   c.tuned.z_span = kNeon.z_span;
   c.tuned.expand_palette = kNeon.expand_palette;
