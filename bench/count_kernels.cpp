@@ -11,6 +11,9 @@
 // Cases (units per repetition):
 //   span16       one 1920-pixel span of a 256x256 surface in runs of 16 (the engine's calls)
 //   span1920     the same span in one call (linear steps): the loop without per-call cost
+//   lit16        single-pass lit span (asm/lit_span.h): span16's runs over a 256x256 surface at
+//                mip 0, 64x64 texture, 17x17 light grid (its own variants: scalar, fast, avx2,
+//                avx2s where compiled and supported)
 //   block_mip<m> surface block builder, 256x256 surface extent at mip m (texels = (256>>m)^2),
 //                64x64 texture (>> m), 17x17 light grid
 //   z1920        z span fill, 1920 pixels
@@ -92,7 +95,7 @@ const Kernels* find_variant(const char* name) {
   return nullptr;
 }
 
-const char* const kCases[] = {"span16", "span1920", "block_mip0", "block_mip1",
+const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
                               "persp192", "persp192lin"};
@@ -124,7 +127,8 @@ long units_of(const char* c) {
     for (int n : persp_lengths(c)) sum += n;
     return sum;
   }
-  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0)
+  if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
+      std::strcmp(c, "lit16") == 0)
     return kSpan;
   if (std::strncmp(c, "block_mip", 9) == 0) {
     const int e = kSurf >> (c[9] - '0');
@@ -259,11 +263,52 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
   return 0;
 }
 
+// lit16: the lit span kernel's own variants (asm/lit_span.h keeps its own table).
+sb::simd::LitSpanFn find_lit_variant(const char* name) {
+  for (int i = 0; i < sb::simd::lit_span_variant_count(); ++i) {
+    const sb::simd::LitSpanVariant v = sb::simd::lit_span_variant(i);
+    if (v.supported && std::strcmp(v.name, name) == 0) return v.fn;
+  }
+  return nullptr;
+}
+
+uint32_t run_lit(sb::simd::LitSpanFn fn, long reps) {
+  Lcg rng;
+  constexpr int kTex = 64, kGrid = (kSurf - 1) / 16 + 2;
+  std::vector<uint8_t> tex(kTex * kTex), cm(64 * 256), dest(kSpan);
+  for (auto& t : tex) t = uint8_t(rng.next() >> 24);
+  for (auto& t : cm) t = uint8_t(rng.next() >> 24);
+  std::vector<uint16_t> grid(size_t(kGrid) * kGrid);
+  for (auto& g : grid) g = uint16_t((rng.next() >> 16) & 0x3fff);
+  std::vector<uint32_t> wide(grid.size());
+  sb::simd::LitSpanSource src;
+  src.texels = tex.data();
+  src.tex_width = src.tex_height = kTex;
+  src.soff = 8;  // a face whose texture_mins are not a multiple of the texture size
+  src.toff = -24;
+  src.grid = grid.data();
+  src.grid_width = kGrid;
+  src.mip = 0;
+  src.width = src.height = kSurf;
+  src.colormap = cm.data();
+  sb::simd::lit_span_prepare(src, int(grid.size()), wide.data());
+  const std::vector<Run> runs = span_runs();
+  for (long r = 0; r < reps; ++r)
+    for (const Run& run : runs) fn(dest.data() + run.offset, run.n, src, run.u, run.v, run.du, run.dv, 0, 0);
+  return checksum(dest.data(), dest.size());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "list") == 0) {
-    for (const char* c : kCases)
+    for (const char* c : kCases) {
+      if (std::strcmp(c, "lit16") == 0) {
+        for (int i = 0; i < sb::simd::lit_span_variant_count(); ++i)
+          if (sb::simd::lit_span_variant(i).supported)
+            std::printf("%s %s %ld\n", c, sb::simd::lit_span_variant(i).name, units_of(c));
+        continue;
+      }
       for (int i = 0; i < sb::simd::variant_count(); ++i) {
         const sb::simd::Variant v = sb::simd::variant(i);
         if (!v.kernels || !v.supported || std::strcmp(v.kernels->name, "tuned") == 0) continue;
@@ -277,14 +322,24 @@ int main(int argc, char** argv) {
         if (std::strncmp(c, "persp", 5) == 0 && i > 1) continue;
         std::printf("%s %s %ld\n", c, v.kernels->name, units_of(c));
       }
+    }
     return 0;
   }
   if (argc != 4) {
     std::fprintf(stderr, "usage: %s list | <case> <variant> <reps>\n", argv[0]);
     return 2;
   }
-  const Kernels* k = find_variant(argv[2]);
   const long units = units_of(argv[1]), reps = std::atol(argv[3]);
+  if (std::strcmp(argv[1], "lit16") == 0) {
+    const sb::simd::LitSpanFn fn = find_lit_variant(argv[2]);
+    if (!fn || reps < 0) {
+      std::fprintf(stderr, "unknown variant (or unsupported here): %s %s\n", argv[1], argv[2]);
+      return 2;
+    }
+    std::printf("%s %s %ld %08x\n", argv[1], argv[2], units, run_lit(fn, reps));
+    return 0;
+  }
+  const Kernels* k = find_variant(argv[2]);
   if (!k || units == 0 || reps < 0) {
     std::fprintf(stderr, "unknown case or variant (or unsupported here): %s %s\n", argv[1], argv[2]);
     return 2;

@@ -40,6 +40,7 @@ TARGETS = [
 CPU_NOTE = {"cortex-a72": "cortex-a72 (LLVM 14 times it with its Cortex-A57 model)"}
 
 KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 call, 1920 px)",
+          "lit16": "lit_span (single pass, 16-px runs, mip 0)",
           "block_mip0": "surface_block mip 0", "block_mip1": "surface_block mip 1",
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
@@ -390,7 +391,7 @@ def main():
           "(-mfpu=neon-vfpv4), timed on cortex-a9 (LLVM has no Cortex-A7 model).",
           "- **x scalar**: scalar instr/unit ÷ variant instr/unit (above 1 = fewer instructions); the cycle "
           "ratio is in brackets.",
-          "- **gathers (avx2g, avx2 expand_palette)**: llvm-mca's Zen 3 gather model is about 5x too optimistic "
+          "- **gathers (avx2g, avx2 expand_palette and lit_span)**: llvm-mca's Zen 3 gather model is about 5x too optimistic "
           "against measurement: treat their znver3 figures (marked †) as a lower bound.",
           "- Quake on a Pentium: span drawer 7.5 cycles/pixel, surface builder 2.25 cycles/texel; the last "
           "column divides that by this row's highest estimate (above 1 = beats the Pentium on every modelled core).",
@@ -399,6 +400,10 @@ def main():
           "- **surface_span neon, surface_span_persp sse2/neon**: the portable tuned C++ those tables hold "
           "(surface_span_fast, surface_span_persp_fast / surface_spans_persp_fast), not vector code; "
           "surface_span_persp scalar is the reference run walker.",
+          "- **lit_span rows**: the single-pass kernel's own variants (asm/lit_span.h): *fast* is tuned scalar C++ "
+          "(the tuned choice on ARM and on x86-64 without AVX2; there is no NEON variant), *avx2* gathers, "
+          "*avx2s* AVX2 lanes with scalar loads (the tuned choice with AVX2). No Pentium figure: Quake had no "
+          "single-pass lit span drawer.",
           "- **surface_span_persp rows**: drawn as the engine draws a surface's spans, one surface_spans_persp "
           "call (a batch) per repetition: 1 item of 1920 px, 10 of 179-205 px (mean 192) or 30 of 50-64 px (mean 57), mixed lengths so the spans end in different last runs as the engine's do; *one call each* is 30 "
           "surface_span_persp calls per repetition (the per-span entry). The mean-192 rows stand for the engine's "
@@ -419,7 +424,7 @@ def main():
                 cells.append("")
             else:
                 mark = "†" if gather and c == "znver3" and variant in ("avx2g",) or (
-                    gather and c == "znver3" and case == "palette" and variant == "avx2") else ""
+                    gather and c == "znver3" and case in ("palette", "lit16") and variant == "avx2") else ""
                 cells.append(fmt(cyc[c]) + mark)
         ratio = fmt(s_ipu / ipu) if s_ipu and ipu else "—"
         cr = [s_cyc[c] / cyc[c] for c in cyc if cyc.get(c) and s_cyc.get(c)]
