@@ -173,13 +173,22 @@ struct Table {
   int tuned;
 };
 
-// The tuned choice, made once: "avx2s" where the CPU has AVX2, else "fast". On this
+// The tuned choice, made once: "avx2s" where the CPU has AVX2, "neon" on aarch64, else "fast". On this
 // machine's Xeon (bench/lit_span_bench, ns per pixel in 16-pixel runs, 64x64 texture, mip 0):
 // scalar 14.8, fast 4.8, avx2 (4 gathers per 8 pixels) 7.5, avx2s 3.6; the cached path's
 // surface_span 1.9. The gather variant is listed for tests and benchmarks but not chosen.
 const Table& table() {
   static const Table t = [] {
     Table r{{{"scalar", lit_span_scalar, true}, {"fast", lit_span_fast, true}, {}, {}}, 2, 1};
+    if (lit_span_neon_compiled()) {
+      r.v[r.count++] = {"neon", lit_span_neon, true};
+#if defined(__aarch64__)
+      // bench/counts.md lit16: neon 34.8 against fast 38.7 cycles/px (Cortex-A53 model),
+      // 15.6 against 26.5 (A72). On armv7, fast stays: 34.3 against neon's 56.1 (Cortex-A9),
+      // whose 64-bit blend takes several 32-bit multiplies.
+      r.tuned = r.count - 1;
+#endif
+    }
     if (lit_span_avx2_compiled()) {
       r.v[r.count++] = {"avx2", lit_span_avx2, cpu_has_avx2()};
       r.v[r.count++] = {"avx2s", lit_span_avx2s, cpu_has_avx2()};

@@ -32,10 +32,14 @@
 //   fast    scalar code: power-of-two masks or an exact reciprocal multiply for the wrap
 //           (constants prepared once per surface); the bilinear light on packed pairs, both
 //           grid columns of a row in one 64-bit word (grid_wide), blended vertically at
-//           once, then horizontally by one 64-bit multiply. The tuned choice without AVX2;
+//           once, then horizontally by one 64-bit multiply. The tuned choice on x86-64
+//           without AVX2 and on armv7;
 //   avx2    8 pixels per step, texel, light and colormap read by gathers;
 //   avx2s   8 pixels' addresses and weights in AVX2 lanes, the loads and the blend scalar
-//           (fast's packed pairs). The tuned choice on x86-64 with AVX2.
+//           (fast's packed pairs). The tuned choice on x86-64 with AVX2;
+//   neon    the same split in NEON lanes (aarch64, armv7 with NEON), one 64-bit load of a
+//           pixel's packed indices and weights, the 8 bytes stored as one word. The tuned
+//           choice on aarch64 (on armv7, fast: its 64-bit blend costs more there).
 // Dispatch: lit_span_active() is the scalar reference while simd::force_scalar() is on,
 // otherwise the tuned choice, fixed at first use (bench/lit_span_bench measures them).
 // Nothing here allocates.
@@ -83,6 +87,11 @@ void lit_span_avx2(uint8_t* dest, int n, const LitSpanSource& src, int32_t u, in
 void lit_span_avx2s(uint8_t* dest, int n, const LitSpanSource& src, int32_t u, int32_t v, int32_t du, int32_t dv,
                     int32_t ddu, int32_t ddv);
 bool lit_span_avx2_compiled();
+// NEON lane arithmetic for addresses and weights, core loads (asm/lit_span_neon.cpp; where
+// NEON is compiled in). Same bytes as the reference.
+void lit_span_neon(uint8_t* dest, int n, const LitSpanSource& src, int32_t u, int32_t v, int32_t du, int32_t dv,
+                   int32_t ddu, int32_t ddv);
+bool lit_span_neon_compiled();
 
 // Fills src's derived fields from the others: wide (grid_count entries of caller memory, the
 // frame arena in the engine; grid_count = the grid's rows x grid_width) gets the grid widened.
