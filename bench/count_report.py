@@ -401,9 +401,9 @@ def main():
           "(surface_span_fast, surface_span_persp_fast / surface_spans_persp_fast), not vector code; "
           "surface_span_persp scalar is the reference run walker.",
           "- **lit_span rows**: the single-pass kernel's own variants (asm/lit_span.h): *fast* is tuned scalar C++ "
-          "(the tuned choice on ARM and on x86-64 without AVX2; there is no NEON variant), *avx2* gathers, "
-          "*avx2s* AVX2 lanes with scalar loads (the tuned choice with AVX2). No Pentium figure: Quake had no "
-          "single-pass lit span drawer.",
+          "(the tuned choice on armv7 and on x86-64 without AVX2), *neon* NEON lanes with core loads (the tuned "
+          "choice on aarch64), *avx2* gathers, *avx2s* AVX2 lanes with scalar loads (the tuned choice with "
+          "AVX2). No Pentium figure: Quake had no single-pass lit span drawer.",
           "- **surface_span_persp rows**: drawn as the engine draws a surface's spans, one surface_spans_persp "
           "call (a batch) per repetition: 1 item of 1920 px, 10 of 179-205 px (mean 192) or 30 of 50-64 px (mean 57), mixed lengths so the spans end in different last runs as the engine's do; *one call each* is 30 "
           "surface_span_persp calls per repetition (the per-span entry). The mean-192 rows stand for the engine's "
