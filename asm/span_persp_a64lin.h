@@ -269,11 +269,11 @@ SB_INLINE ShortLinSetup short_lin_setup(int n, const PerspSpan& p) {
   return ShortLinSetup{rx0, rx1, rx2, rx3, rd0, rd1, rd2, rld};
 }
 
-// Linear spans of 17 .. 64 pixels (the contract of persp_short_inl).
-SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+// Draws a linear span of n = 17 .. 64 pixels from its set-up r (short_lin_setup's, or
+// short_lin_finish's for the second span of a pair: the same values in the same registers).
+SB_INLINE void short_lin_draw(uint8_t* dest, int n, const uint8_t* texels, int width, const ShortLinSetup& r) {
   const uint32_t w = uint32_t(width);
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
-  const ShortLinSetup r = short_lin_setup(n, p);
   const uint64_t x0 = r.x0, x1 = r.x1, x2 = r.x2, x3 = r.x3, d0 = r.d0, d1 = r.d1, d2 = r.d2, ld = r.ld;
   // The last run (k = runs - 1) from sample k to k + 1 in s = max(last - 1, 1) steps, in the
   // block: run_steps' delta / s truncating per component (|delta| < 2^31; a one-pixel last
@@ -315,6 +315,11 @@ SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int 
   } else {
     go(std::integral_constant<int, 3>{});
   }
+}
+
+// Linear spans of 17 .. 64 pixels (the contract of persp_short_inl).
+SB_INLINE void persp_short_lin(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  short_lin_draw(dest, n, texels, width, short_lin_setup(n, p));
 }
 
 }  // namespace

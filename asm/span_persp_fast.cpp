@@ -546,6 +546,22 @@ SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w6
       : [n] "r"(n), [w] "r"(width), [dzi] "m"(p.dzi), [som] "m"(p.second_order));
   return r;
 }
+// persp_short_lin2's items (spans_range's linear pairs): 16 < n <= kShortMax, linear
+// (second_order off or dzi 0), without branches.
+SB_INLINE bool lin_short_a64(const PerspItem& x) {
+  return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & ((!x.span.second_order) | !nonzero_bits(x.span.dzi));
+}
+// Items [it, end) from a pair of lin_short_a64 items (it + 1 < end): pairs drawn by
+// persp_short_lin2 while the next two items are such a pair; returns the first item left.
+// Out of line: its registers are its own (the pair block uses nearly all of them).
+__attribute__((noinline)) const PerspItem* lin_pairs_a64(const PerspItem* it, const PerspItem* end,
+                                                         const uint8_t* texels, int width) {
+  do {
+    persp_short_lin2(it[0].dest, it[0].n, it[0].span, it[1].dest, it[1].n, it[1].span, texels, width);
+    it += 2;
+  } while ((end - it >= 2) && lin_short_a64(it[0]) && lin_short_a64(it[1]));
+  return it;
+}
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
 // dzi == 0.0 tested on its bits (nonzero_bits: no FP load and compare on the test's chain).
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
@@ -686,7 +702,14 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     // without branches between (one qemu block): b is it[1], or it[0] again at the batch's
     // last item (no read past end; has_next false then).
     const bool sa = is_short_n(it->n);
+    // Two neighbouring short linear spans: their set-ups in one asm block (lin_pairs_a64:
+    // persp_short_lin2, asm/span_persp_a64lin2.h).
+    auto lin_pair = [&]() SB_LAMBDA_INLINE { it = lin_pairs_a64(it, end, texels, width); };
     if (!it->span.second_order) {
+      if (sa && it + 1 != end && lin_short_a64(it[1])) {
+        lin_pair();
+        continue;
+      }
       persp_one_c(it->dest, it->n, texels, width, it->span, sa, false);
       ++it;
       continue;
@@ -713,6 +736,10 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
           q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zh = vgetq_lane_f64(zh2, 1);
         }
       } while (again);
+      continue;
+    }
+    if (sa & !ca & has_next && lin_short_a64(b)) {
+      lin_pair();
       continue;
     }
     persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);

@@ -263,6 +263,50 @@ TEST(AsmSpanPerspBatch, ChainsOfPairsMatchWhereTheyBreak) {
   std::printf("[ asm      ] span_persp batch: %ld spans in chains of pairs, every variant identical\n", spans);
 }
 
+// Chains of short linear spans (aarch64: two neighbouring ones, 17 .. 64 pixels, second_order
+// off or dzi +-0, take their set-ups from one block, persp_short_lin2, and the pairs go on
+// while the next two items pair): runs of 0 .. 9 such spans of every length with pick_span's
+// edge values (the divide fallback for either span of a pair, clamped, non-finite), each run
+// ended by a span that fails one test (n 16, 65 or 0, second order with dzi != 0) or by the
+// batch's end.
+TEST(AsmSpanPerspBatch, ChainsOfLinearPairsMatchWithEdgeDepths) {
+  std::mt19937 rng(4242);
+  const int sw = 53, sh = 31;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 11 + (i >> 4));
+  auto linear = [&]() {
+    PerspSpan p = pick_span(rng, sw, sh);
+    if (rng() % 3) {
+      p.second_order = false;
+    } else {
+      p.second_order = true;
+      p.dzi = rng() % 2 ? 0.0 : -0.0;
+    }
+    return PerspItem{nullptr, 17 + int(rng() % 48), p};
+  };
+  long spans = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<PerspItem> items;
+    const int runs = 1 + int(rng() % 3);
+    for (int r = 0; r < runs; ++r) {
+      const int len = int(rng() % 10);
+      for (int i = 0; i < len; ++i) items.push_back(linear());
+      if (r == runs - 1 && rng() % 2) break;  // the batch ends in the chain
+      PerspItem x = linear();
+      switch (rng() % 4) {
+        case 0: x.n = 16; break;
+        case 1: x.n = 65; break;
+        case 2: x.n = 0; break;
+        default: x.span.second_order = true, x.span.dzi = 1e-6; break;
+      }
+      items.push_back(x);
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in chains of linear pairs, every variant identical\n", spans);
+}
+
 // Runs of long spans (aarch64: a long first item of the items left is reached and left with
 // tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
 // order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
