@@ -14,9 +14,12 @@
 // - [u, v] = [uz0, vz0] + [duz, dvz] pos (fused), times the reciprocal, min with [umax,
 //   vmax] 2^-16, fcvtzu #16.
 // Span a's samples go to the core registers and on through short_lin_setup's integer steps
-// (the same instructions: the outputs in the same registers); span b's converted samples are
-// stored to buf (ten uint64: [u, v] of samples 0 .. 4), for short_lin_finish after span a
-// is drawn.
+// (the same instructions, the outputs in the same registers, but for the last run's two
+// quotients: the row's magic(s) and smulh instead of sdiv, the same values; see ShortLinPos
+// in asm/span_persp_a64lin.h); span b's converted samples are stored to buf (ten uint64:
+// [u, v] of samples 0 .. 4), for short_lin_finish after span a is drawn
+// (AsmSpanPerspBatch.PairedLinearSetupMatchesTwoSingleSetups checks both against
+// short_lin_setup, every output).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -342,8 +345,8 @@ SB_INLINE ShortLinSetup short_lin_setup2(int na, const PerspSpan& pa, int nb, co
 }
 
 // Span b's ShortLinSetup (nb pixels) from the samples short_lin_setup2 stored to buf: the
-// integer steps of short_lin_setup's block on them (the same instructions; tab is
-// kShortLinPos - 504: row nb's magic at tab + 32 nb).
+// integer steps of short_lin_setup2's block on them (the same instructions; tab is the
+// address of kShortLinPos - 504: row nb's magic at tab + 32 nb).
 SB_INLINE ShortLinSetup short_lin_finish(int nb, const uint64_t* buf) {
   register uint64_t rx0 __asm__("x13");
   register uint64_t rx1 __asm__("x23");
