@@ -18,10 +18,12 @@
 // - the full runs' steps steps16_packed (delta / 16 truncated per component, packed v 2^32 +
 //   sign-extended u), the samples packed (v 2^32 + u) and the last run's step (k and s from
 //   n before the branch, its raw delta picked by csel, sdiv) in integer registers
-//   (AsmSpanPersp.ShortLinearSetupMatchesTheWalkersParts).
+//   (AsmSpanPersp.ShortLinearSetupMatchesTheWalkersParts). (The paired block,
+//   asm/span_persp_a64lin2.h, divides by the row's magic(s) instead: see ShortLinPos.)
 // Registers are fixed (the .s file's names), the outputs where short_pass takes its first
 // pass (x13, x9, x23, x24) and, for the second pass, in registers short_pass keeps.
 #pragma once
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
@@ -34,11 +36,18 @@ namespace sb::simd {
 namespace {
 
 // [0, 16], then per span length n = 17 .. 64 (row n - 17): o_0, o_1, o_2 (the offsets of
-// samples 2, 3, 4 from P_0, P_1, P_2) and a pad.
+// samples 2, 3, 4 from P_0, P_1, P_2) and the bits of magic(s), s = max(last - 1, 1) =
+// max((n - 1) & 15, 1) (the paired block's last-run steps, read by integer loads).
+// magic(s) = floor(2^35 / s) + 1: the last run's steps trunc(d / s) for |d| < 2^31 as
+// floor(d magic(s) / 2^35) + (d < 0) (smulh of d 2^29, no sdiv: the A57 model's takes ~19
+// cycles); exact: magic(s) s - 2^35 is in (0, s], so the error |d| (magic(s) s - 2^35) /
+// (s 2^35) stays under 1 / s, the least distance of an inexact d / s from the integers
+// (Granlund and Montgomery's bound; AsmSpanPerspBatch.PairedLinearSetupMatchesTwoSingleSetups).
 struct ShortLinPos {
   double zero_sixteen[2];
   double row[48][4];
 };
+constexpr uint64_t short_lin_magic(int s) { return (uint64_t(1) << 35) / uint64_t(s) + 1; }
 constexpr ShortLinPos make_short_lin_pos() {
   ShortLinPos t{{0.0, 16.0}, {}};
   for (int n = 17; n <= 64; ++n) {
@@ -46,7 +55,8 @@ constexpr ShortLinPos make_short_lin_pos() {
     t.row[n - 17][0] = o(0);
     t.row[n - 17][1] = o(1);
     t.row[n - 17][2] = o(2);
-    t.row[n - 17][3] = 0.0;
+    const int s = (n - 1) & 15;
+    t.row[n - 17][3] = std::bit_cast<double>(short_lin_magic(s > 0 ? s : 1));
   }
   return t;
 }
@@ -267,6 +277,55 @@ SB_INLINE ShortLinSetup short_lin_setup(int n, const PerspSpan& p) {
         "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25",
         "v26", "v27", "v28", "v29", "v30", "v31");
   return ShortLinSetup{rx0, rx1, rx2, rx3, rd0, rd1, rd2, rld};
+}
+
+// Draws a linear span of n = 17 .. 64 pixels from its set-up r (short_lin_setup2's, or
+// short_lin_finish's for the second span of a pair): persp_short_lin's drawing (below; kept
+// as its own copy there: the batch loop's code, which inlines it, stays as it was).
+SB_INLINE void short_lin_draw(uint8_t* dest, int n, const uint8_t* texels, int width, const ShortLinSetup& r) {
+  const uint32_t w = uint32_t(width);
+  const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
+  const uint64_t x0 = r.x0, x1 = r.x1, x2 = r.x2, x3 = r.x3, d0 = r.d0, d1 = r.d1, d2 = r.d2, ld = r.ld;
+  // The last run (k = runs - 1) from sample k to k + 1 in s = max(last - 1, 1) steps, in the
+  // block: run_steps' delta / s truncating per component (|delta| < 2^31; a one-pixel last
+  // run draws no step: any divisor), packed as ld = dv 2^32 + sign-extended du.
+  auto go = [&](auto kc) SB_LAMBDA_INLINE {
+    constexpr int k = decltype(kc)::value;
+    const uint64_t xa = k == 1 ? x1 : (k == 2 ? x2 : x3);
+    auto pass = [&](uint8_t* d, uint64_t a_uv, uint64_t a_d, uint64_t b_uv, uint64_t b_d) SB_LAMBDA_INLINE {
+      short_pass<false>(d, texels, uint64_t(width), a_uv, a_d, 0, b_uv, b_d, 0);
+    };
+    if (k == 1) {
+      Run16<false> run(x0, d0, 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      if (k == 3 && last == 16) {
+        pass(dest, x0, d0, x1, d1);
+        pass(dest + 32, x2, d2, x3, ld);
+        return;
+      }
+      pass(dest, x0, d0, x1, d1);
+      if (k > 2) {
+        Run16<false> run(x2, d2, 0, typename Run16<false>::Packed{});
+        run.draw(dest + 32, texels, w);
+      }
+    }
+    dest += 16 * k;
+    if (last == 16) {
+      Run16<false> run(xa, ld, 0, typename Run16<false>::Packed{});
+      run.draw(dest, texels, w);
+    } else {
+      const uint32_t ldu = uint32_t(ld), ldv = uint32_t((ld - uint64_t(int64_t(int32_t(ldu)))) >> 32);
+      draw_last<false>(dest, last, texels, w, uint32_t(xa), uint32_t(xa >> 32), ldu, ldv, 0, 0);
+    }
+  };
+  if (runs == 2) {
+    go(std::integral_constant<int, 1>{});
+  } else if (runs == 3) {
+    go(std::integral_constant<int, 2>{});
+  } else {
+    go(std::integral_constant<int, 3>{});
+  }
 }
 
 // Linear spans of 17 .. 64 pixels (the contract of persp_short_inl).

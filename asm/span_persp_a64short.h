@@ -12,6 +12,7 @@
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_a64pass.h"
 #include "asm/span_persp_a64lin.h"
+#include "asm/span_persp_a64lin2.h"
 #endif
 #include "asm/span_persp_a64mid.h"
 

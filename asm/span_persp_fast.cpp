@@ -546,6 +546,12 @@ SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w6
       : [n] "r"(n), [w] "r"(width), [dzi] "m"(p.dzi), [som] "m"(p.second_order));
   return r;
 }
+// lin_pairs_a64's items: 16 < n <= kShortMax, linear (second_order off or dzi 0), without
+// branches.
+SB_INLINE bool lin_short_a64(const PerspItem& x) {
+  return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & ((!x.span.second_order) | !nonzero_bits(x.span.dzi));
+}
+void lin_pairs_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
 // dzi == 0.0 tested on its bits (nonzero_bits: no FP load and compare on the test's chain).
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
@@ -660,6 +666,7 @@ void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels
   if (it != end && is_lin_a64(*it)) {
     return persp_lin_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
   }
+  if (end - it >= 2 && lin_short_a64(it[0]) && lin_short_a64(it[1])) return lin_pairs_a64(it, end, texels, width);
   return spans_range(it, end, texels, width);
 }
 #endif
@@ -722,6 +729,33 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
   for (; it != end; ++it) persp_one(it->dest, it->n, texels, width, it->span);
 #endif
 }
+
+#if defined(__aarch64__) && defined(__GNUC__)
+// Two neighbouring short linear spans as the first items of the batch's items left
+// (batch_from; lin_short_a64 both, it + 1 < end): their set-ups in one asm block
+// (persp_short_lin2, asm/span_persp_a64lin2.h), pair after pair while the next two items are
+// such a pair, then the items left by batch_from, reached with a tail branch (as
+// persp_lin_a64 returns). A surface's spans are one batch, and a floor's or ceiling's are all
+// linear (dzi 0), so the pairs come at a batch's start; spans_range (the mixed batches' loop)
+// draws linear short spans one by one. Out of line, after the batch loop: its registers are
+// its own (the pair block uses nearly all of them) and the batch loop's code does not move.
+__attribute__((noinline)) void lin_pairs_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels,
+                                             int width) {
+  bool again;
+  do {
+    persp_short_lin2(it[0].dest, it[0].n, it[0].span, it[1].dest, it[1].n, it[1].span, texels, width);
+    it += 2;
+    // The next pair's test without branches between (one block): a, b are it[0], it[1], or
+    // the pair just drawn's it[-1] when fewer than two items are left (no read past end;
+    // has_two false then).
+    const bool has_two = end - it >= 2;
+    const PerspItem& a = has_two ? it[0] : it[-1];
+    const PerspItem& b = has_two ? it[1] : it[-1];
+    again = has_two & lin_short_a64(a) & lin_short_a64(b);
+  } while (again);
+  return batch_from(it, end, texels, width);
+}
+#endif
 
 }  // namespace
 

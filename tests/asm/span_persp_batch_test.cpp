@@ -20,6 +20,7 @@
 
 #include "asm/span_persp_arm.h"    // short_samples1 (asm/span_persp_a64short.h; this test's own copy)
 #include "asm/span_persp_a64pair.h"  // short_samples2
+#include "asm/span_persp_a64lin2.h"  // short_lin_setup2, short_lin_finish
 #endif
 #include "engine/render/render_local.h"
 #include "engine/render/span_draw.h"
@@ -263,6 +264,51 @@ TEST(AsmSpanPerspBatch, ChainsOfPairsMatchWhereTheyBreak) {
   std::printf("[ asm      ] span_persp batch: %ld spans in chains of pairs, every variant identical\n", spans);
 }
 
+// Chains of short linear spans (aarch64: two neighbouring ones, 17 .. 64 pixels, second_order
+// off or dzi +-0, at the start of the batch's items left (batch_from: the batch's start, or
+// after long spans) take their set-ups from one block, persp_short_lin2, and the pairs go on
+// while the next two items pair): runs of 0 .. 9 such spans of every length with pick_span's
+// edge values (the divide fallback for either span of a pair, clamped, non-finite), each run
+// ended by a span that fails one test (n 16, 65 (a long linear span: the next run starts
+// the items left again) or 0, second order with dzi != 0) or by the batch's end.
+TEST(AsmSpanPerspBatch, ChainsOfLinearPairsMatchWithEdgeDepths) {
+  std::mt19937 rng(4242);
+  const int sw = 53, sh = 31;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 11 + (i >> 4));
+  auto linear = [&]() {
+    PerspSpan p = pick_span(rng, sw, sh);
+    if (rng() % 3) {
+      p.second_order = false;
+    } else {
+      p.second_order = true;
+      p.dzi = rng() % 2 ? 0.0 : -0.0;
+    }
+    return PerspItem{nullptr, 17 + int(rng() % 48), p};
+  };
+  long spans = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    std::vector<PerspItem> items;
+    const int runs = 1 + int(rng() % 3);
+    for (int r = 0; r < runs; ++r) {
+      const int len = int(rng() % 10);
+      for (int i = 0; i < len; ++i) items.push_back(linear());
+      if (r == runs - 1 && rng() % 2) break;  // the batch ends in the chain
+      PerspItem x = linear();
+      switch (rng() % 4) {
+        case 0: x.n = 16; break;
+        case 1: x.n = 65; break;
+        case 2: x.n = 0; break;
+        default: x.span.second_order = true, x.span.dzi = 1e-6; break;
+      }
+      items.push_back(x);
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in chains of linear pairs, every variant identical\n", spans);
+}
+
 // Runs of long spans (aarch64: a long first item of the items left is reached and left with
 // tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
 // order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
@@ -462,6 +508,35 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
   std::printf("[ asm      ] span_persp batch: %d paired sample blocks (%d with an all-ones depth in span a) identical\n",
               cases, fallback);
   EXPECT_GT(fallback, cases / 20);
+}
+
+// The paired linear set-up (short_lin_setup2, then short_lin_finish for span b) against two
+// runs of the single block (short_lin_setup), every output bit for bit (the last run's step by
+// magic(s) and smulh there, by sdiv here: the same quotient for every 32-bit delta): both
+// spans 17 .. 64 pixels, pick_span's values (the divide fallback in either span, clamped,
+// non-finite), limits up to 2^32 - 1.
+TEST(AsmSpanPerspBatch, PairedLinearSetupMatchesTwoSingleSetups) {
+  std::mt19937 rng(5150);
+  long cases = 0;
+  auto same = [](const sb::simd::ShortLinSetup& a, const sb::simd::ShortLinSetup& b) {
+    return a.x0 == b.x0 && a.x1 == b.x1 && a.x2 == b.x2 && a.x3 == b.x3 && a.d0 == b.d0 && a.d1 == b.d1 &&
+           a.d2 == b.d2 && a.ld == b.ld;
+  };
+  for (int trial = 0; trial < 40000; ++trial) {
+    PerspSpan pa = pick_span(rng, 1 + int(rng() % 300), 1 + int(rng() % 300));
+    PerspSpan pb = pick_span(rng, 1 + int(rng() % 300), 1 + int(rng() % 300));
+    if (rng() % 8 == 0) pa.umax = int32_t(rng()), pb.vmax = int32_t(rng());
+    const int na = 17 + int(rng() % 48), nb = 17 + int(rng() % 48);
+    alignas(16) uint64_t buf[10];
+    const sb::simd::ShortLinSetup ga = sb::simd::short_lin_setup2(na, pa, nb, pb, buf);
+    const sb::simd::ShortLinSetup gb = sb::simd::short_lin_finish(nb, buf);
+    const sb::simd::ShortLinSetup ra = sb::simd::short_lin_setup(na, pa);
+    const sb::simd::ShortLinSetup rb = sb::simd::short_lin_setup(nb, pb);
+    ASSERT_TRUE(same(ga, ra)) << " span a, trial " << trial << " na " << na;
+    ASSERT_TRUE(same(gb, rb)) << " span b, trial " << trial << " nb " << nb;
+    ++cases;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld paired linear set-ups, both spans as the single block's\n", cases);
 }
 #endif
 
