@@ -4,9 +4,10 @@
 // (anonymous namespace).
 //
 // persp_fast computes a pass's samples beside the runs before it; for four runs that
-// pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers, no
-// copies) computes the five samples (the divides back to back, the other samples' work in
-// their latency), run 0's ddf and the last run's quotients; runs 1 and 2's steps (ddf and
+// pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers; the
+// fields' copies that the destructive vfma needs loaded again from p, not moved) computes
+// the five samples (the divides back to back, the other samples' work in their latency),
+// run 0's ddf and the last run's quotients; runs 1 and 2's steps (ddf and
 // steps16_dd in NEON lanes) are computed beside run 0's pixels, the last run's (last_ddi,
 // last_dd in NEON lanes) beside run 1's and run 2's (each run one asm statement whose
 // values stay in registers, with VFP / NEON work between its pixel groups). Every double
@@ -18,9 +19,10 @@
 //               (t z) 2^16 = t (z 2^16) exactly (a power-of-two scaling commutes with
 //               rounding; when t z is subnormal both give |value| < 1, fix 0; overflow gives
 //               infinity either way; NaN -> 0 either way; z 2^16 <= 2^46 is exact and
-//               finite), so vcvt.u32.f64 (truncating, saturating, NaN -> 0) of that product
-//               is min_ufixed16 / cvt_ufixed16's value; v likewise; u, v side by side in one
-//               d register, clamped by one vmin.u32 against [umax, vmax]
+//               finite), so vcvt.u32.f64 #16 (fixed point: truncating, saturating, NaN -> 0,
+//               of t z times 2^16 exactly) is min_ufixed16 / cvt_ufixed16's value; v
+//               likewise; the conversions (each in the low half of its register) paired by
+//               vtrn.32 into [u, v] per d register, clamped by vmin.u32 against [umax, vmax]
 //   full runs   ddf = delta (zck (z_a + z_b)), zck = zix * -1/16 (persp_fast's argument:
 //               the walker's -2 (delta / 16 * curve), same bits), cvt_sat, steps16_dd
 //   last run    q = double(delta) / (n - 49) (last_quotient), curve = (zix * 0.5) (z_3 + z_4),
@@ -41,9 +43,9 @@ constexpr int kMidMin = 50, kMidMax = 64;
 static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, uz0) == 16 &&
               offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
               offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
-              "the prologue loads zi0 .. vmax with two vld1.64 (d16 .. d23)");
-// kMinZi, 2^16, -1/16, 1/2: loaded together by the prologue.
-alignas(8) constexpr double kMidConsts[4] = {kMinZi, 65536.0, -0.0625, 0.5};
+              "the prologue loads zi0 / dzi, uz0 / duz, vz0 / dvz, px0 / [umax, vmax] in pairs (vld1.64)");
+// kMinZi, -1/16, 1/2, 1, 16, 32: loaded by the prologue (two vld1.64).
+alignas(8) constexpr double kMidConsts[6] = {kMinZi, -0.0625, 0.5, 1.0, 16.0, 32.0};
 
 // The int32 a conversion (vcvt.s32.f64) left in a single register.
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
@@ -121,19 +123,22 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
                    : "memory");
 }
 
-// The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax] (two
-// vld1.64 from p); d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5
-// in d27). Positions x0 .. x4 in d22, d30, d31, d29, d28; depths d5, d6, d7, d1, d16
-// (clamped, then 1 / zi); t = urow + ux x, s = vrow + vx x in d17 / d24, d22 / d2, d30 / d3,
-// d31 / d4, d18 / d20 (samples 0 .. 4); depth sums z_0 + z_1 .. z_3 + z_4 in d19, d21, d28,
-// d29, made c_0, c_1, c_2 (times zck) and curve (times zh); z 2^16 in place; the products
-// in place; their conversions into s0 .. s9 (sample j's [u, v] in d_j), clamped by vmin.u32
-// with d23; run 0's [u_1 - u_0, v_1 - v_0] in d6, converted (d17, d24), times c_0, cvt_sat
-// into d6. Outputs: d0 .. d4 the samples, d6 run 0's [iu, iv], d28 c_1, d29 c_2, d5 curve.
-// A register is reused only after its value's last read (in order: each vcvt into s_2j /
-// s_2j+1 reads a product whose register is no longer needed). The multiply-adds are fused,
-// as the compiled walker's are (GCC contracts them; the tests compare bit for bit).
-// r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
+// The prologue. Loads (vld1.64: the model dual-issues them, unlike vmov / vldr): zrow into
+// each depth's accumulator d16, d18 .. d21 (zix with the first, d17), urow into t_0 .. t_4 =
+// d0 .. d4 (ux with t_4, d5), vrow into s_0 .. s_4 = d6, d7, d30, d31, d17 (vx with s_1,
+// d8), [P, [umax, vmax]] into d22, d23 ([umax, vmax] again into d22 once P is read),
+// kMidConsts into d24 .. d29 (kMinZi, -1/16, 1/2, 1, 16, 32). Positions x0 .. x4 in d22,
+// d30, d31, d9, d6 (n - 33 converted in d10, then L = n - 49); depths (clamped, then 1 / zi
+// in place) d16, d18 .. d21; zck = zix * -1/16 in d25, zh = zix * 0.5 in d26; depth sums
+// z_0 + z_1 .. z_3 + z_4 in d24, d28, d29, d5, made c_0, c_1, c_2 (times zck) and curve
+// (times zh); t = urow + ux x, s = vrow + vx x (fused), times z in place, converted in
+// place (vcvt.u32.f64 #16); vtrn.32 pairs q0 / q3, q1 / q15, d4 / d17 (sample j's [u, v]
+// in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d6,
+// converted (d30, d31), times c_0, cvt_sat into d6; the last run's [du, dv] in d7,
+// converted (d8, d9), divided by L. A register is reused only after its value's last read.
+// The multiply-adds are fused, as the compiled walker's are (GCC contracts them; the tests
+// compare bit for bit).
+// r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d6), c_1, c_2, curve; q89: the quotients.
 SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
@@ -141,128 +146,126 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
   __asm__ volatile(
       // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search.py
       // --arch=armv7; the model issues VFP / NEON in order: each waits least on its inputs).
-      "vmov.f64 d28, #16.0\n\t"
-      "vld1.64 {d20-d23}, [%[p2]]\n\t"
-      "vadd.f64 d29, d28, d28\n\t"
-      "vld1.64 {d16-d19}, [%[p]]\n\t"
+      "vld1.64 {d28-d29}, [%[c2]]\n\t"
+      "vld1.64 {d22, d23}, [%[pp]]\n\t"
+      "vld1.64 {d16-d17}, [%[pz]]\n\t"
+      "vld1.64 {d18}, [%[pz]]\n\t"
       "vadd.f64 d30, d22, d28\n\t"
-      "vmov s0, %[nm33]\n\t"
-      "vcvt.f64.s32 d0, s0\n\t"
+      "vfma.f64 d16, d17, d22\n\t"
       "vld1.64 {d24-d27}, [%[c]]\n\t"
-      "vmov.f64 d5, d16\n\t"
-      "vfma.f64 d5, d17, d22\n\t"
+      "vld1.64 {d2}, [%[pu]]\n\t"
+      "vld1.64 {d21}, [%[pz]]\n\t"
       "vadd.f64 d31, d22, d29\n\t"
-      "vadd.f64 d29, d30, d29\n\t"
-      "vsub.f64 d10, d0, d28\n\t"
-      "vmov.f64 d7, d16\n\t"
-      "vadd.f64 d28, d30, d28\n\t"
-      "vmov.f64 d6, d16\n\t"
-      "vfma.f64 d6, d17, d30\n\t"
-      "vfma.f64 d7, d17, d31\n\t"
-      "vcmpe.f64 d5, d24\n\t"
-      "vmov.f64 d1, d16\n\t"
-      "vmul.f64 d26, d17, d26\n\t"
-      "vmul.f64 d27, d17, d27\n\t"
-      "vadd.f64 d28, d28, d0\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d5, d24\n\t"
-      "vfma.f64 d1, d17, d29\n\t"
-      "vfma.f64 d16, d17, d28\n\t"
-      "vcmpe.f64 d6, d24\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d6, d24\n\t"
-      "vmov.f64 d17, #1.0\n\t"
-      "vcmpe.f64 d7, d24\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d7, d24\n\t"
-      "vcmpe.f64 d1, d24\n\t"
-      "vdiv.f64 d7, d17, d7\n\t"
-      "vdiv.f64 d5, d17, d5\n\t"
-      "vdiv.f64 d6, d17, d6\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
+      "vfma.f64 d18, d17, d30\n\t"
+      "vld1.64 {d19}, [%[pz]]\n\t"
+      "vmov s20, %[nm33]\n\t"
+      "vld1.64 {d1}, [%[pu]]\n\t"
+      "vcvt.f64.s32 d10, s20\n\t"
+      "vadd.f64 d9, d30, d29\n\t"
+      "vadd.f64 d6, d30, d28\n\t"
+      "vfma.f64 d19, d17, d31\n\t"
       "vcmpe.f64 d16, d24\n\t"
-      "it le\n\t"
-      "vmovle.f64 d1, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
-      "vdiv.f64 d1, d17, d1\n\t"
+      "vld1.64 {d20}, [%[pz]]\n\t"
       "it le\n\t"
       "vmovle.f64 d16, d24\n\t"
-      "vdiv.f64 d16, d17, d16\n\t"
-      "vmov.f64 d2, d20\n\t"
-      "vmov.f64 d17, d18\n\t"
-      "vmov.f64 d3, d20\n\t"
-      "vfma.f64 d3, d21, d31\n\t"
-      "vmov.f64 d24, d20\n\t"
-      "vfma.f64 d24, d21, d22\n\t"
-      "vfma.f64 d17, d19, d22\n\t"
-      "vmov.f64 d22, d18\n\t"
-      "vfma.f64 d22, d19, d30\n\t"
-      "vfma.f64 d2, d21, d30\n\t"
-      "vmov.f64 d30, d18\n\t"
-      "vmov.f64 d4, d20\n\t"
-      "vfma.f64 d4, d21, d29\n\t"
-      "vfma.f64 d30, d19, d31\n\t"
-      "vmov.f64 d31, d18\n\t"
-      "vfma.f64 d20, d21, d28\n\t"
-      "vfma.f64 d18, d19, d28\n\t"
-      "vfma.f64 d31, d19, d29\n\t"
-      "vadd.f64 d19, d5, d6\n\t"
-      "vmul.f64 d5, d5, d25\n\t"
-      "vadd.f64 d21, d6, d7\n\t"
-      "vmul.f64 d6, d6, d25\n\t"
-      "vadd.f64 d28, d7, d1\n\t"
-      "vmul.f64 d7, d7, d25\n\t"
-      "vadd.f64 d29, d1, d16\n\t"
-      "vmul.f64 d16, d16, d25\n\t"
-      "vmul.f64 d17, d17, d5\n\t"
-      "vmul.f64 d1, d1, d25\n\t"
-      "vmul.f64 d24, d24, d5\n\t"
-      "vmul.f64 d30, d30, d7\n\t"
-      "vmul.f64 d22, d22, d6\n\t"
-      "vmul.f64 d2, d2, d6\n\t"
-      "vcvt.u32.f64 s0, d17\n\t"
-      "vmul.f64 d18, d18, d16\n\t"
-      "vcvt.u32.f64 s1, d24\n\t"
-      "vmul.f64 d5, d29, d27\n\t"
-      "vmul.f64 d3, d3, d7\n\t"
-      "vmul.f64 d4, d4, d1\n\t"
-      "vmul.f64 d31, d31, d1\n\t"
-      "vcvt.u32.f64 s2, d22\n\t"
-      "vmul.f64 d20, d20, d16\n\t"
-      "vcvt.u32.f64 s3, d2\n\t"
-      "vcvt.u32.f64 s4, d30\n\t"
-      "vmin.u32 d0, d0, d23\n\t"
-      "vmin.u32 d1, d1, d23\n\t"
-      "vcvt.u32.f64 s5, d3\n\t"
-      "vmul.f64 d19, d19, d26\n\t"
-      "vcvt.u32.f64 s6, d31\n\t"
-      "vcvt.u32.f64 s7, d4\n\t"
+      "vadd.f64 d6, d6, d10\n\t"
+      "vdiv.f64 d16, d27, d16\n\t"
+      "vfma.f64 d20, d17, d9\n\t"
+      "vcmpe.f64 d18, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d18, d24\n\t"
+      "vdiv.f64 d18, d27, d18\n\t"
+      "vfma.f64 d21, d17, d6\n\t"
+      "vcmpe.f64 d19, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "vld1.64 {d4-d5}, [%[pu]]\n\t"
+      "it le\n\t"
+      "vmovle.f64 d19, d24\n\t"
+      "vld1.64 {d0}, [%[pu]]\n\t"
+      "vcmpe.f64 d20, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d20, d24\n\t"
+      "vdiv.f64 d20, d27, d20\n\t"
+      "vdiv.f64 d19, d27, d19\n\t"
+      "vcmpe.f64 d21, d24\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d21, d24\n\t"
+      "vld1.64 {d7-d8}, [%[pv]]\n\t"
+      "vdiv.f64 d21, d27, d21\n\t"
+      "vsub.f64 d10, d10, d28\n\t"
+      "vfma.f64 d7, d8, d30\n\t"
+      "vfma.f64 d1, d5, d30\n\t"
+      "vmul.f64 d26, d17, d26\n\t"
+      "vmul.f64 d25, d17, d25\n\t"
+      "vld1.64 {d17}, [%[pv]]\n\t"
+      "vfma.f64 d0, d5, d22\n\t"
+      "vld1.64 {d3}, [%[pu]]\n\t"
+      "vfma.f64 d4, d5, d6\n\t"
+      "vfma.f64 d17, d8, d6\n\t"
+      "vfma.f64 d2, d5, d31\n\t"
+      "vld1.64 {d30}, [%[pv]]\n\t"
+      "vfma.f64 d3, d5, d9\n\t"
+      "vmul.f64 d7, d7, d18\n\t"
+      "vadd.f64 d24, d16, d18\n\t"
+      "vfma.f64 d30, d8, d31\n\t"
+      "vld1.64 {d31}, [%[pv]]\n\t"
+      "vld1.64 {d6}, [%[pv]]\n\t"
+      "vmul.f64 d1, d1, d18\n\t"
+      "vfma.f64 d31, d8, d9\n\t"
+      "vfma.f64 d6, d8, d22\n\t"
+      "vmul.f64 d24, d24, d25\n\t"
+      "vmul.f64 d3, d3, d20\n\t"
+      "vcvt.u32.f64 d7, d7, #16\n\t"
+      "vmul.f64 d2, d2, d19\n\t"
+      "vmul.f64 d0, d0, d16\n\t"
+      "vadd.f64 d28, d18, d19\n\t"
+      "vmul.f64 d4, d4, d21\n\t"
+      "vmul.f64 d30, d30, d19\n\t"
+      "vcvt.u32.f64 d3, d3, #16\n\t"
+      "vld1.64 {d22}, [%[pm]]\n\t"
+      "vmul.f64 d6, d6, d16\n\t"
+      "vadd.f64 d5, d20, d21\n\t"
+      "vcvt.u32.f64 d2, d2, #16\n\t"
+      "vmul.f64 d31, d31, d20\n\t"
+      "vmul.f64 d17, d17, d21\n\t"
+      "vcvt.u32.f64 d1, d1, #16\n\t"
+      "vcvt.u32.f64 d4, d4, #16\n\t"
+      "vcvt.u32.f64 d6, d6, #16\n\t"
+      "vcvt.u32.f64 d0, d0, #16\n\t"
+      "vcvt.u32.f64 d31, d31, #16\n\t"
+      "vcvt.u32.f64 d17, d17, #16\n\t"
+      "vcvt.u32.f64 d30, d30, #16\n\t"
+      "vtrn.32 q0, q3\n\t"
+      "vmin.u32 q0, q0, q11\n\t"
+      "vtrn.32 d4, d17\n\t"
+      "vtrn.32 q1, q15\n\t"
       "vsub.i32 d6, d1, d0\n\t"
-      "vcvt.u32.f64 s8, d18\n\t"
-      "vmin.u32 d3, d3, d23\n\t"
-      "vcvt.u32.f64 s9, d20\n\t"
-      "vcvt.f64.s32 d17, s12\n\t"
-      "vcvt.f64.s32 d24, s13\n\t"
-      "vmul.f64 d29, d28, d26\n\t"
       "vmin.u32 d4, d4, d23\n\t"
-      "vmul.f64 d17, d17, d19\n\t"
-      "vmul.f64 d24, d24, d19\n\t"
+      "vadd.f64 d29, d19, d20\n\t"
+      "vcvt.f64.s32 d30, s12\n\t"
+      "vmin.u32 q1, q1, q11\n\t"
+      "vmul.f64 d5, d5, d26\n\t"
+      "vcvt.f64.s32 d31, s13\n\t"
+      "vmul.f64 d30, d30, d24\n\t"
       "vsub.i32 d7, d4, d3\n\t"
-      "vmin.u32 d2, d2, d23\n\t"
-      "vmul.f64 d28, d21, d26\n\t"
+      "vmul.f64 d31, d31, d24\n\t"
       "vcvt.f64.s32 d9, s15\n\t"
+      "vmul.f64 d29, d29, d25\n\t"
+      "vcvt.s32.f64 s12, d30\n\t"
       "vcvt.f64.s32 d8, s14\n\t"
-      "vcvt.s32.f64 s12, d17\n\t"
-      "vcvt.s32.f64 s13, d24\n\t"
+      "vmul.f64 d28, d28, d25\n\t"
+      "vcvt.s32.f64 s13, d31\n\t"
       "vdiv.f64 d9, d9, d10\n\t"
       "vdiv.f64 d8, d8, d10"
+
       : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
-      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p),
-        "m"(kMidConsts)
-      : "cc", "s14", "s15", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
+      : [pz] "r"(&p.zi0), [pu] "r"(&p.uz0), [pv] "r"(&p.vz0), [pp] "r"(&p.px0), [pm] "r"(&p.umax),
+        [c] "r"(kMidConsts), [c2] "r"(kMidConsts + 4), [nm33] "r"(n - 33), "m"(p), "m"(kMidConsts)
+      : "cc", "d7", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
         "d30", "d31");
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
   *q89 = o9;
