@@ -46,6 +46,16 @@ static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && 
               "the prologue loads zi0 / dzi, uz0 / duz, vz0 / dvz, px0 / [umax, vmax] in pairs (vld1.64)");
 // kMinZi, -1/16, 1/2, 1, 16, 32: loaded by the prologue (two vld1.64).
 alignas(8) constexpr double kMidConsts[6] = {kMinZi, -0.0625, 0.5, 1.0, 16.0, 32.0};
+// Per span length n (kMidMin .. kMidMax): [n - 49, n - 33] (the last run's divisor L and the
+// last sample's offset from P + 32), exact doubles, loaded by the prologue (no conversion).
+struct MidNTable {
+  alignas(16) double row[kMidMax - kMidMin + 1][2];
+};
+constexpr MidNTable kMidN = [] {
+  MidNTable t{};
+  for (int n = kMidMin; n <= kMidMax; ++n) t.row[n - kMidMin][0] = n - 49, t.row[n - kMidMin][1] = n - 33;
+  return t;
+}();
 
 // The int32 a conversion (vcvt.s32.f64) left in a single register.
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
@@ -127,148 +137,199 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // each depth's accumulator d16, d18 .. d21 (zix with the first, d17), urow into t_0 .. t_4 =
 // d0 .. d4 (ux with t_4, d5), vrow into s_0 .. s_4 = d6, d7, d30, d31, d17 (vx with s_1,
 // d8), [P, [umax, vmax]] into d22, d23 ([umax, vmax] again into d22 once P is read),
-// kMidConsts into d24 .. d29 (kMinZi, -1/16, 1/2, 1, 16, 32). Positions x0 .. x4 in d22,
-// d30, d31, d9, d6 (n - 33 converted in d10, then L = n - 49); depths (clamped, then 1 / zi
-// in place) d16, d18 .. d21; zck = zix * -1/16 in d25, zh = zix * 0.5 in d26; depth sums
+// kMidConsts into d24 .. d29 (kMinZi, -1/16, 1/2, 1, 16, 32), kMidN's row into d10, d11 (L,
+// n - 33). Positions x0 .. x4 in d22, d30, d31, d9, d6; depths (clamped, then 1 / zi in
+// place) d16, d18 .. d21; zck = zix * -1/16 in d25, zh = zix * 0.5 in d26; depth sums
 // z_0 + z_1 .. z_3 + z_4 in d24, d28, d29, d5, made c_0, c_1, c_2 (times zck) and curve
 // (times zh); t = urow + ux x, s = vrow + vx x (fused), times z in place, converted in
 // place (vcvt.u32.f64 #16); vtrn.32 pairs q0 / q3, q1 / q15, d4 / d17 (sample j's [u, v]
-// in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d6,
+// in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d11,
 // converted (d30, d31), times c_0, cvt_sat into d6; the last run's [du, dv] in d7,
 // converted (d8, d9), divided by L. A register is reused only after its value's last read.
 // The multiply-adds are fused, as the compiled walker's are (GCC contracts them; the tests
-// compare bit for bit).
-// r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d6), c_1, c_2, curve; q89: the quotients.
-SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
+// compare bit for bit). Then run 0's steps16_dd for u and v in the same statement (its
+// integer work issued beside the VFP work): the deltas from d11 (one lane at a time into
+// t1), [iu, iv] from d6 into ddu, ddv; steps16_dd's operations (asm/span_persp_run.h) with
+// delta - 120 dd as delta - (dd << 7) + (dd << 3) (mod 2^32, as mls) and 120 |x| as
+// (16 |x| - |x|) << 3 inside the compare (|x| <= 2^25: 15 |x| < 2^29, 120 |x| < 2^32, the
+// same unsigned compare: lo here is hi there with the operands swapped); the address
+// registers (p + 16 .. p + 56, kMidConsts + 4) are the outputs' registers until then.
+// r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; q89: the quotients; su, sv: run 0's steps.
+SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
-  register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
+  register double o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d8");
+  uint32_t du, ddu, dv, ddv, t1;
+  const double* pz = &p.zi0;
+  const double* c = kMidConsts;
+  const double* nt = kMidN.row[n - kMidMin];
   __asm__ volatile(
       // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search.py
       // --arch=armv7; the model issues VFP / NEON in order: each waits least on its inputs).
-      "vld1.64 {d28-d29}, [%[c2]]\n\t"
-      "vld1.64 {d22, d23}, [%[pp]]\n\t"
-      "vld1.64 {d16-d17}, [%[pz]]\n\t"
-      "vld1.64 {d18}, [%[pz]]\n\t"
-      "vadd.f64 d30, d22, d28\n\t"
-      "vfma.f64 d16, d17, d22\n\t"
-      "vld1.64 {d24-d27}, [%[c]]\n\t"
-      "vld1.64 {d2}, [%[pu]]\n\t"
-      "vld1.64 {d21}, [%[pz]]\n\t"
-      "vadd.f64 d31, d22, d29\n\t"
-      "vfma.f64 d18, d17, d30\n\t"
+      "add %[ddu], %[pz], #48\n\t"
       "vld1.64 {d19}, [%[pz]]\n\t"
-      "vmov s20, %[nm33]\n\t"
-      "vld1.64 {d1}, [%[pu]]\n\t"
-      "vcvt.f64.s32 d10, s20\n\t"
-      "vadd.f64 d9, d30, d29\n\t"
-      "vadd.f64 d6, d30, d28\n\t"
+      "add %[t1], %[c], #32\n\t"
+      "vld1.64 {d22, d23}, [%[ddu]]\n\t"
+      "vld1.64 {d16, d17}, [%[pz]]\n\t"
+      "vld1.64 {d28, d29}, [%[t1]]\n\t"
+      "vfma.f64 d16, d17, d22\n\t"
+      "vld1.64 {d21}, [%[pz]]\n\t"
+      "vld1.64 {d18}, [%[pz]]\n\t"
+      "vadd.f64 d31, d22, d29\n\t"
+      "vld1.64 {d10, d11}, [%[nt]]\n\t"
+      "vld1.64 {d24-d27}, [%[c]]\n\t"
+      "vadd.f64 d30, d22, d28\n\t"
+      "add %[du], %[pz], #16\n\t"
+      "vld1.64 {d2}, [%[du]]\n\t"
+      "vfma.f64 d18, d17, d30\n\t"
       "vfma.f64 d19, d17, d31\n\t"
+      "vadd.f64 d6, d30, d28\n\t"
+      "vadd.f64 d9, d30, d29\n\t"
       "vcmpe.f64 d16, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
-      "vld1.64 {d20}, [%[pz]]\n\t"
+      "vld1.64 {d0}, [%[du]]\n\t"
       "it le\n\t"
       "vmovle.f64 d16, d24\n\t"
-      "vadd.f64 d6, d6, d10\n\t"
-      "vdiv.f64 d16, d27, d16\n\t"
+      "vld1.64 {d20}, [%[pz]]\n\t"
+      "vadd.f64 d6, d6, d11\n\t"
       "vfma.f64 d20, d17, d9\n\t"
+      "add %[dv], %[pz], #32\n\t"
       "vcmpe.f64 d18, d24\n\t"
+      "vdiv.f64 d16, d27, d16\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
       "it le\n\t"
       "vmovle.f64 d18, d24\n\t"
       "vdiv.f64 d18, d27, d18\n\t"
-      "vfma.f64 d21, d17, d6\n\t"
       "vcmpe.f64 d19, d24\n\t"
+      "vld1.64 {d3}, [%[du]]\n\t"
+      "vfma.f64 d21, d17, d6\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
-      "vld1.64 {d4-d5}, [%[pu]]\n\t"
       "it le\n\t"
       "vmovle.f64 d19, d24\n\t"
-      "vld1.64 {d0}, [%[pu]]\n\t"
       "vcmpe.f64 d20, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
+      "vld1.64 {d1}, [%[du]]\n\t"
       "it le\n\t"
       "vmovle.f64 d20, d24\n\t"
       "vdiv.f64 d20, d27, d20\n\t"
+      "add %[ddv], %[pz], #56\n\t"
+      "vld1.64 {d4, d5}, [%[du]]\n\t"
       "vdiv.f64 d19, d27, d19\n\t"
+      "vmul.f64 d26, d17, d26\n\t"
       "vcmpe.f64 d21, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
       "it le\n\t"
       "vmovle.f64 d21, d24\n\t"
-      "vld1.64 {d7-d8}, [%[pv]]\n\t"
-      "vdiv.f64 d21, d27, d21\n\t"
-      "vsub.f64 d10, d10, d28\n\t"
-      "vfma.f64 d7, d8, d30\n\t"
-      "vfma.f64 d1, d5, d30\n\t"
-      "vmul.f64 d26, d17, d26\n\t"
-      "vmul.f64 d25, d17, d25\n\t"
-      "vld1.64 {d17}, [%[pv]]\n\t"
-      "vfma.f64 d0, d5, d22\n\t"
-      "vld1.64 {d3}, [%[pu]]\n\t"
       "vfma.f64 d4, d5, d6\n\t"
-      "vfma.f64 d17, d8, d6\n\t"
+      "vdiv.f64 d21, d27, d21\n\t"
+      "vld1.64 {d7, d8}, [%[dv]]\n\t"
+      "vfma.f64 d7, d8, d30\n\t"
       "vfma.f64 d2, d5, d31\n\t"
-      "vld1.64 {d30}, [%[pv]]\n\t"
+      "vmul.f64 d25, d17, d25\n\t"
+      "vld1.64 {d17}, [%[dv]]\n\t"
       "vfma.f64 d3, d5, d9\n\t"
-      "vmul.f64 d7, d7, d18\n\t"
+      "vfma.f64 d1, d5, d30\n\t"
+      "vfma.f64 d17, d8, d6\n\t"
+      "vfma.f64 d0, d5, d22\n\t"
+      "vld1.64 {d30}, [%[dv]]\n\t"
       "vadd.f64 d24, d16, d18\n\t"
+      "vmul.f64 d7, d7, d18\n\t"
+      "vld1.64 {d6}, [%[dv]]\n\t"
       "vfma.f64 d30, d8, d31\n\t"
-      "vld1.64 {d31}, [%[pv]]\n\t"
-      "vld1.64 {d6}, [%[pv]]\n\t"
-      "vmul.f64 d1, d1, d18\n\t"
+      "vld1.64 {d31}, [%[dv]]\n\t"
       "vfma.f64 d31, d8, d9\n\t"
+      "vmul.f64 d1, d1, d18\n\t"
       "vfma.f64 d6, d8, d22\n\t"
-      "vmul.f64 d24, d24, d25\n\t"
-      "vmul.f64 d3, d3, d20\n\t"
       "vcvt.u32.f64 d7, d7, #16\n\t"
-      "vmul.f64 d2, d2, d19\n\t"
+      "vmul.f64 d3, d3, d20\n\t"
+      "vmul.f64 d24, d24, d25\n\t"
       "vmul.f64 d0, d0, d16\n\t"
+      "vmul.f64 d2, d2, d19\n\t"
       "vadd.f64 d28, d18, d19\n\t"
-      "vmul.f64 d4, d4, d21\n\t"
       "vmul.f64 d30, d30, d19\n\t"
       "vcvt.u32.f64 d3, d3, #16\n\t"
-      "vld1.64 {d22}, [%[pm]]\n\t"
       "vmul.f64 d6, d6, d16\n\t"
-      "vadd.f64 d5, d20, d21\n\t"
-      "vcvt.u32.f64 d2, d2, #16\n\t"
-      "vmul.f64 d31, d31, d20\n\t"
       "vmul.f64 d17, d17, d21\n\t"
-      "vcvt.u32.f64 d1, d1, #16\n\t"
-      "vcvt.u32.f64 d4, d4, #16\n\t"
+      "vmul.f64 d31, d31, d20\n\t"
+      "vcvt.u32.f64 d2, d2, #16\n\t"
+      "vmul.f64 d4, d4, d21\n\t"
+      "vld1.64 {d22}, [%[ddv]]\n\t"
+      "vadd.f64 d5, d20, d21\n\t"
       "vcvt.u32.f64 d6, d6, #16\n\t"
-      "vcvt.u32.f64 d0, d0, #16\n\t"
+      "vcvt.u32.f64 d1, d1, #16\n\t"
       "vcvt.u32.f64 d31, d31, #16\n\t"
+      "vcvt.u32.f64 d0, d0, #16\n\t"
       "vcvt.u32.f64 d17, d17, #16\n\t"
       "vcvt.u32.f64 d30, d30, #16\n\t"
+      "vcvt.u32.f64 d4, d4, #16\n\t"
       "vtrn.32 q0, q3\n\t"
       "vmin.u32 q0, q0, q11\n\t"
       "vtrn.32 d4, d17\n\t"
       "vtrn.32 q1, q15\n\t"
-      "vsub.i32 d6, d1, d0\n\t"
-      "vmin.u32 d4, d4, d23\n\t"
+      "vsub.i32 d11, d1, d0\n\t"
       "vadd.f64 d29, d19, d20\n\t"
-      "vcvt.f64.s32 d30, s12\n\t"
+      "vmin.u32 d4, d4, d23\n\t"
+      "vcvt.f64.s32 d30, s22\n\t"
       "vmin.u32 q1, q1, q11\n\t"
       "vmul.f64 d5, d5, d26\n\t"
-      "vcvt.f64.s32 d31, s13\n\t"
+      "vcvt.f64.s32 d31, s23\n\t"
       "vmul.f64 d30, d30, d24\n\t"
       "vsub.i32 d7, d4, d3\n\t"
+      "vmov %[t1], s22\n\t"
       "vmul.f64 d31, d31, d24\n\t"
       "vcvt.f64.s32 d9, s15\n\t"
       "vmul.f64 d29, d29, d25\n\t"
-      "vcvt.s32.f64 s12, d30\n\t"
       "vcvt.f64.s32 d8, s14\n\t"
-      "vmul.f64 d28, d28, d25\n\t"
-      "vcvt.s32.f64 s13, d31\n\t"
+      "vcvt.s32.f64 s12, d30\n\t"
       "vdiv.f64 d9, d9, d10\n\t"
-      "vdiv.f64 d8, d8, d10"
+      "vcvt.s32.f64 s13, d31\n\t"
+      "eor %[pz], %[t1], %[t1], asr #31\n\t"
+      "vmov %[ddu], %[ddv], d6\n\t"
+      "ssat %[c], #26, %[ddu]\n\t"
+      "eor %[nt], %[c], %[c], asr #31\n\t"
+      "sub %[du], %[t1], %[ddu], lsl #7\n\t"
+      "sub %[nt], %[nt], %[c], asr #31\n\t"
+      "rsb %[nt], %[nt], %[nt], lsl #4\n\t"
+      "add %[du], %[du], %[ddu], lsl #3\n\t"
+      "sub %[pz], %[pz], %[t1], asr #31\n\t"
+      "eor %[du], %[du], %[t1], asr #31\n\t"
+      "sub %[du], %[du], %[t1], asr #31\n\t"
+      "cmp %[pz], %[nt], lsl #3\n\t"
+      "itt lo\n\t"
+      "movlo %[du], %[pz]\n\t"
+      "movlo %[ddu], #0\n\t"
+      "vdiv.f64 d8, d8, d10\n\t"
+      "lsr %[du], %[du], #4\n\t"
+      "eor %[du], %[du], %[t1], asr #31\n\t"
+      "sub %[du], %[du], %[t1], asr #31\n\t"
+      "ssat %[c], #26, %[ddv]\n\t"
+      "vmov %[t1], s23\n\t"
+      "eor %[pz], %[t1], %[t1], asr #31\n\t"
+      "sub %[pz], %[pz], %[t1], asr #31\n\t"
+      "eor %[nt], %[c], %[c], asr #31\n\t"
+      "sub %[nt], %[nt], %[c], asr #31\n\t"
+      "rsb %[nt], %[nt], %[nt], lsl #4\n\t"
+      "sub %[dv], %[t1], %[ddv], lsl #7\n\t"
+      "add %[dv], %[dv], %[ddv], lsl #3\n\t"
+      "eor %[dv], %[dv], %[t1], asr #31\n\t"
+      "sub %[dv], %[dv], %[t1], asr #31\n\t"
+      "cmp %[pz], %[nt], lsl #3\n\t"
+      "itt lo\n\t"
+      "movlo %[dv], %[pz]\n\t"
+      "movlo %[ddv], #0\n\t"
+      "lsr %[dv], %[dv], #4\n\t"
+      "vmul.f64 d28, d28, d25\n\t"
+      "eor %[dv], %[dv], %[t1], asr #31\n\t"
+      "sub %[dv], %[dv], %[t1], asr #31"
 
-      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
-      : [pz] "r"(&p.zi0), [pu] "r"(&p.uz0), [pv] "r"(&p.vz0), [pp] "r"(&p.px0), [pm] "r"(&p.umax),
-        [c] "r"(kMidConsts), [c2] "r"(kMidConsts + 4), [nm33] "r"(n - 33), "m"(p), "m"(kMidConsts)
-      : "cc", "d7", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
-        "d30", "d31");
-  r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
+      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9), [du] "=&r"(du),
+        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [pz] "+r"(pz), [c] "+r"(c), [nt] "+r"(nt)
+      : "m"(p), "m"(kMidConsts), "m"(kMidN)
+      : "cc", "d6", "d7", "d10", "d11", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25",
+        "d26", "d27", "d30", "d31");
+  r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[6] = o6, r[7] = o7, r[8] = o8;
   *q89 = o9;
+  *su = RunSteps{int32_t(du), int32_t(ddu)}, *sv = RunSteps{int32_t(dv), int32_t(ddv)};
 }
 
 SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
@@ -280,7 +341,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
   V4 q89;
-  mid_prologue(p, n, r, &q89);
+  RunSteps su, sv;
+  mid_prologue(p, n, r, &q89, &su, &sv);
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
@@ -289,10 +351,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   register double curve __asm__("d5") = r[8];
   register double c1 __asm__("d28") = r[6];
   register double c2 __asm__("d29") = r[7];
-  int32_t u0, v0, u1, v1, iu0, iv0;
-  lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
-  RunSteps su, sv;
-  steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
+  int32_t u0, v0, u1, v1;
+  lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1);
   // Run 0; beside it runs 1 and 2's steps: their deltas [du_1, dv_1, du_2, dv_2] (vsub.i32
   // on the packed samples, exact as doubles), ddf = delta c_r, cvt_sat, then steps16_dd per
   // lane in one q register (the 32-bit form: pd = |delta|; accepted iff
