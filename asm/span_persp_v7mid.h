@@ -44,16 +44,21 @@ static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && 
               offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
               offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
               "the prologue loads zi0 / dzi, uz0 / duz, vz0 / dvz, px0 / [umax, vmax] in pairs (vld1.64)");
-// kMinZi, -1/16, 1/2, 1, 16, 32: loaded by the prologue (two vld1.64).
-alignas(8) constexpr double kMidConsts[6] = {kMinZi, -0.0625, 0.5, 1.0, 16.0, 32.0};
-// Per span length n (kMidMin .. kMidMax): [n - 49, n - 33] (the last run's divisor L and the
-// last sample's offset from P + 32), exact doubles, loaded by the prologue (no conversion).
+// kMinZi, -1/16, 1/2, 1: the prologue's constants (in kMidN's rows).
+constexpr double kMidConsts[4] = {kMinZi, -0.0625, 0.5, 1.0};
+// Per span length n (kMidMin .. kMidMax), in the order the prologue loads them (one pointer,
+// post-incremented): 16, 32, L = n - 49 (the last run's divisor), n - 33 (the last sample's
+// offset from P + 32), then kMidConsts; exact doubles (no conversion in the prologue).
 struct MidNTable {
-  alignas(16) double row[kMidMax - kMidMin + 1][2];
+  alignas(16) double row[kMidMax - kMidMin + 1][8];
 };
 constexpr MidNTable kMidN = [] {
   MidNTable t{};
-  for (int n = kMidMin; n <= kMidMax; ++n) t.row[n - kMidMin][0] = n - 49, t.row[n - kMidMin][1] = n - 33;
+  for (int n = kMidMin; n <= kMidMax; ++n) {
+    const double r[8] = {16.0, 32.0, double(n - 49), double(n - 33), kMidConsts[0], kMidConsts[1], kMidConsts[2],
+                         kMidConsts[3]};
+    for (int i = 0; i < 8; ++i) t.row[n - kMidMin][i] = r[i];
+  }
   return t;
 }();
 
@@ -137,8 +142,8 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // each depth's accumulator d16, d18 .. d21 (zix with the first, d17), urow into t_0 .. t_4 =
 // d0 .. d4 (ux with t_4, d5), vrow into s_0 .. s_4 = d6, d7, d30, d31, d17 (vx with s_1,
 // d8), [P, [umax, vmax]] into d22, d23 ([umax, vmax] again into d22 once P is read),
-// kMidConsts into d24 .. d29 (kMinZi, -1/16, 1/2, 1, 16, 32), kMidN's row into d10, d11 (L,
-// n - 33). Positions x0 .. x4 in d22, d30, d31, d9, d6; depths (clamped, then 1 / zi in
+// kMidN's row for n (one pointer, post-incremented): 16, 32 into d28, d29, L, n - 33 into
+// d10, d11, kMinZi, -1/16, 1/2, 1 into d24 .. d27. Positions x0 .. x4 in d22, d30, d31, d9, d6; depths (clamped, then 1 / zi in
 // place) d16, d18 .. d21; zck = zix * -1/16 in d25, zh = zix * 0.5 in d26; depth sums
 // z_0 + z_1 .. z_3 + z_4 in d24, d28, d29, d5, made c_0, c_1, c_2 (times zck) and curve
 // (times zh); t = urow + ux x, s = vrow + vx x (fused), times z in place, converted in
@@ -153,62 +158,61 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // delta - 120 dd as delta - (dd << 7) + (dd << 3) (mod 2^32, as mls) and 120 |x| as
 // (16 |x| - |x|) << 3 inside the compare (|x| <= 2^25: 15 |x| < 2^29, 120 |x| < 2^32, the
 // same unsigned compare: lo here is hi there with the operands swapped); the address
-// registers (p + 16 .. p + 56, kMidConsts + 4) are the outputs' registers until then.
+// registers (p + 16 .. p + 56) are the outputs' registers until then.
 // r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; q89: the quotients; su, sv: run 0's steps.
 SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d8");
-  uint32_t du, ddu, dv, ddv, t1;
+  uint32_t du, ddu, dv, ddv, t1, t2;
   const double* pz = &p.zi0;
-  const double* c = kMidConsts;
   const double* nt = kMidN.row[n - kMidMin];
   __asm__ volatile(
       // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search.py
       // --arch=armv7; the model issues VFP / NEON in order: each waits least on its inputs).
-      "add %[ddu], %[pz], #48\n\t"
       "vld1.64 {d19}, [%[pz]]\n\t"
-      "add %[t1], %[c], #32\n\t"
+      "add %[ddu], %[pz], #48\n\t"
       "vld1.64 {d22, d23}, [%[ddu]]\n\t"
       "vld1.64 {d16, d17}, [%[pz]]\n\t"
-      "vld1.64 {d28, d29}, [%[t1]]\n\t"
+      "vld1.64 {d28, d29}, [%[nt]]!\n\t"
       "vfma.f64 d16, d17, d22\n\t"
       "vld1.64 {d21}, [%[pz]]\n\t"
       "vld1.64 {d18}, [%[pz]]\n\t"
       "vadd.f64 d31, d22, d29\n\t"
-      "vld1.64 {d10, d11}, [%[nt]]\n\t"
-      "vld1.64 {d24-d27}, [%[c]]\n\t"
+      "vld1.64 {d10, d11}, [%[nt]]!\n\t"
+      "vld1.64 {d24-d27}, [%[nt]]\n\t"
       "vadd.f64 d30, d22, d28\n\t"
-      "add %[du], %[pz], #16\n\t"
-      "vld1.64 {d2}, [%[du]]\n\t"
       "vfma.f64 d18, d17, d30\n\t"
+      "vld1.64 {d20}, [%[pz]]\n\t"
+      "add %[du], %[pz], #16\n\t"
+      "vadd.f64 d9, d30, d29\n\t"
+      "vld1.64 {d2}, [%[du]]\n\t"
       "vfma.f64 d19, d17, d31\n\t"
       "vadd.f64 d6, d30, d28\n\t"
-      "vadd.f64 d9, d30, d29\n\t"
       "vcmpe.f64 d16, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
       "vld1.64 {d0}, [%[du]]\n\t"
       "it le\n\t"
       "vmovle.f64 d16, d24\n\t"
-      "vld1.64 {d20}, [%[pz]]\n\t"
       "vadd.f64 d6, d6, d11\n\t"
       "vfma.f64 d20, d17, d9\n\t"
       "add %[dv], %[pz], #32\n\t"
       "vcmpe.f64 d18, d24\n\t"
-      "vdiv.f64 d16, d27, d16\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
+      "vld1.64 {d7, d8}, [%[dv]]\n\t"
+      "vdiv.f64 d16, d27, d16\n\t"
       "it le\n\t"
       "vmovle.f64 d18, d24\n\t"
-      "vdiv.f64 d18, d27, d18\n\t"
-      "vcmpe.f64 d19, d24\n\t"
-      "vld1.64 {d3}, [%[du]]\n\t"
       "vfma.f64 d21, d17, d6\n\t"
+      "vdiv.f64 d18, d27, d18\n\t"
+      "vld1.64 {d3}, [%[du]]\n\t"
+      "vcmpe.f64 d19, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
       "it le\n\t"
       "vmovle.f64 d19, d24\n\t"
+      "vld1.64 {d1}, [%[du]]\n\t"
       "vcmpe.f64 d20, d24\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
-      "vld1.64 {d1}, [%[du]]\n\t"
       "it le\n\t"
       "vmovle.f64 d20, d24\n\t"
       "vdiv.f64 d20, d27, d20\n\t"
@@ -217,103 +221,102 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, Run
       "vdiv.f64 d19, d27, d19\n\t"
       "vmul.f64 d26, d17, d26\n\t"
       "vcmpe.f64 d21, d24\n\t"
+      "vfma.f64 d7, d8, d30\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
       "it le\n\t"
       "vmovle.f64 d21, d24\n\t"
-      "vfma.f64 d4, d5, d6\n\t"
-      "vdiv.f64 d21, d27, d21\n\t"
-      "vld1.64 {d7, d8}, [%[dv]]\n\t"
-      "vfma.f64 d7, d8, d30\n\t"
       "vfma.f64 d2, d5, d31\n\t"
+      "vdiv.f64 d21, d27, d21\n\t"
+      "vfma.f64 d4, d5, d6\n\t"
       "vmul.f64 d25, d17, d25\n\t"
-      "vld1.64 {d17}, [%[dv]]\n\t"
       "vfma.f64 d3, d5, d9\n\t"
-      "vfma.f64 d1, d5, d30\n\t"
+      "vld1.64 {d17}, [%[dv]]\n\t"
       "vfma.f64 d17, d8, d6\n\t"
+      "vfma.f64 d1, d5, d30\n\t"
       "vfma.f64 d0, d5, d22\n\t"
       "vld1.64 {d30}, [%[dv]]\n\t"
-      "vadd.f64 d24, d16, d18\n\t"
+      "vfma.f64 d30, d8, d31\n\t"
       "vmul.f64 d7, d7, d18\n\t"
       "vld1.64 {d6}, [%[dv]]\n\t"
-      "vfma.f64 d30, d8, d31\n\t"
       "vld1.64 {d31}, [%[dv]]\n\t"
+      "vadd.f64 d24, d16, d18\n\t"
       "vfma.f64 d31, d8, d9\n\t"
-      "vmul.f64 d1, d1, d18\n\t"
       "vfma.f64 d6, d8, d22\n\t"
+      "vmul.f64 d1, d1, d18\n\t"
       "vcvt.u32.f64 d7, d7, #16\n\t"
       "vmul.f64 d3, d3, d20\n\t"
       "vmul.f64 d24, d24, d25\n\t"
-      "vmul.f64 d0, d0, d16\n\t"
       "vmul.f64 d2, d2, d19\n\t"
-      "vadd.f64 d28, d18, d19\n\t"
       "vmul.f64 d30, d30, d19\n\t"
-      "vcvt.u32.f64 d3, d3, #16\n\t"
+      "vmul.f64 d0, d0, d16\n\t"
+      "vadd.f64 d28, d18, d19\n\t"
       "vmul.f64 d6, d6, d16\n\t"
+      "vcvt.u32.f64 d3, d3, #16\n\t"
+      "vmul.f64 d4, d4, d21\n\t"
       "vmul.f64 d17, d17, d21\n\t"
       "vmul.f64 d31, d31, d20\n\t"
       "vcvt.u32.f64 d2, d2, #16\n\t"
-      "vmul.f64 d4, d4, d21\n\t"
+      "vcvt.u32.f64 d0, d0, #16\n\t"
       "vld1.64 {d22}, [%[ddv]]\n\t"
-      "vadd.f64 d5, d20, d21\n\t"
       "vcvt.u32.f64 d6, d6, #16\n\t"
       "vcvt.u32.f64 d1, d1, #16\n\t"
-      "vcvt.u32.f64 d31, d31, #16\n\t"
-      "vcvt.u32.f64 d0, d0, #16\n\t"
-      "vcvt.u32.f64 d17, d17, #16\n\t"
-      "vcvt.u32.f64 d30, d30, #16\n\t"
       "vcvt.u32.f64 d4, d4, #16\n\t"
+      "vcvt.u32.f64 d30, d30, #16\n\t"
+      "vcvt.u32.f64 d31, d31, #16\n\t"
+      "vcvt.u32.f64 d17, d17, #16\n\t"
       "vtrn.32 q0, q3\n\t"
       "vmin.u32 q0, q0, q11\n\t"
       "vtrn.32 d4, d17\n\t"
+      "vmin.u32 d4, d4, d23\n\t"
       "vtrn.32 q1, q15\n\t"
       "vsub.i32 d11, d1, d0\n\t"
       "vadd.f64 d29, d19, d20\n\t"
-      "vmin.u32 d4, d4, d23\n\t"
+      "vadd.f64 d5, d20, d21\n\t"
       "vcvt.f64.s32 d30, s22\n\t"
       "vmin.u32 q1, q1, q11\n\t"
-      "vmul.f64 d5, d5, d26\n\t"
       "vcvt.f64.s32 d31, s23\n\t"
+      "vmul.f64 d5, d5, d26\n\t"
       "vmul.f64 d30, d30, d24\n\t"
       "vsub.i32 d7, d4, d3\n\t"
       "vmov %[t1], s22\n\t"
       "vmul.f64 d31, d31, d24\n\t"
       "vcvt.f64.s32 d9, s15\n\t"
       "vmul.f64 d29, d29, d25\n\t"
-      "vcvt.f64.s32 d8, s14\n\t"
       "vcvt.s32.f64 s12, d30\n\t"
-      "vdiv.f64 d9, d9, d10\n\t"
-      "vcvt.s32.f64 s13, d31\n\t"
+      "vcvt.f64.s32 d8, s14\n\t"
       "eor %[pz], %[t1], %[t1], asr #31\n\t"
-      "vmov %[ddu], %[ddv], d6\n\t"
-      "ssat %[c], #26, %[ddu]\n\t"
-      "eor %[nt], %[c], %[c], asr #31\n\t"
-      "sub %[du], %[t1], %[ddu], lsl #7\n\t"
-      "sub %[nt], %[nt], %[c], asr #31\n\t"
-      "rsb %[nt], %[nt], %[nt], lsl #4\n\t"
-      "add %[du], %[du], %[ddu], lsl #3\n\t"
+      "vdiv.f64 d9, d9, d10\n\t"
       "sub %[pz], %[pz], %[t1], asr #31\n\t"
+      "vcvt.s32.f64 s13, d31\n\t"
+      "vmov %[ddu], %[ddv], d6\n\t"
+      "ssat %[t2], #26, %[ddu]\n\t"
+      "eor %[nt], %[t2], %[t2], asr #31\n\t"
+      "sub %[du], %[t1], %[ddu], lsl #7\n\t"
+      "sub %[nt], %[nt], %[t2], asr #31\n\t"
+      "add %[du], %[du], %[ddu], lsl #3\n\t"
+      "rsb %[nt], %[nt], %[nt], lsl #4\n\t"
       "eor %[du], %[du], %[t1], asr #31\n\t"
-      "sub %[du], %[du], %[t1], asr #31\n\t"
+      "vdiv.f64 d8, d8, d10\n\t"
       "cmp %[pz], %[nt], lsl #3\n\t"
+      "sub %[du], %[du], %[t1], asr #31\n\t"
       "itt lo\n\t"
       "movlo %[du], %[pz]\n\t"
       "movlo %[ddu], #0\n\t"
-      "vdiv.f64 d8, d8, d10\n\t"
       "lsr %[du], %[du], #4\n\t"
       "eor %[du], %[du], %[t1], asr #31\n\t"
       "sub %[du], %[du], %[t1], asr #31\n\t"
-      "ssat %[c], #26, %[ddv]\n\t"
       "vmov %[t1], s23\n\t"
       "eor %[pz], %[t1], %[t1], asr #31\n\t"
       "sub %[pz], %[pz], %[t1], asr #31\n\t"
-      "eor %[nt], %[c], %[c], asr #31\n\t"
-      "sub %[nt], %[nt], %[c], asr #31\n\t"
-      "rsb %[nt], %[nt], %[nt], lsl #4\n\t"
       "sub %[dv], %[t1], %[ddv], lsl #7\n\t"
+      "ssat %[t2], #26, %[ddv]\n\t"
+      "eor %[nt], %[t2], %[t2], asr #31\n\t"
+      "sub %[nt], %[nt], %[t2], asr #31\n\t"
+      "rsb %[nt], %[nt], %[nt], lsl #4\n\t"
       "add %[dv], %[dv], %[ddv], lsl #3\n\t"
+      "cmp %[pz], %[nt], lsl #3\n\t"
       "eor %[dv], %[dv], %[t1], asr #31\n\t"
       "sub %[dv], %[dv], %[t1], asr #31\n\t"
-      "cmp %[pz], %[nt], lsl #3\n\t"
       "itt lo\n\t"
       "movlo %[dv], %[pz]\n\t"
       "movlo %[ddv], #0\n\t"
@@ -323,8 +326,8 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, Run
       "sub %[dv], %[dv], %[t1], asr #31"
 
       : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9), [du] "=&r"(du),
-        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [pz] "+r"(pz), [c] "+r"(c), [nt] "+r"(nt)
-      : "m"(p), "m"(kMidConsts), "m"(kMidN)
+        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [t2] "=&r"(t2), [pz] "+r"(pz), [nt] "+r"(nt)
+      : "m"(p), "m"(kMidN)
       : "cc", "d6", "d7", "d10", "d11", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25",
         "d26", "d27", "d30", "d31");
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[6] = o6, r[7] = o7, r[8] = o8;
