@@ -46,8 +46,8 @@ static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && 
               "the prologue loads zi0 / dzi, uz0 / duz, vz0 / dvz, px0 / [umax, vmax] in pairs (vld1.64)");
 // kMinZi, -1/16, 1/2, 1: the prologue's constants (in kMidN's rows).
 constexpr double kMidConsts[4] = {kMinZi, -0.0625, 0.5, 1.0};
-// Per span length n (kMidMin .. kMidMax), in the order the prologue loads them (one pointer,
-// post-incremented): 16, 32, L = n - 49 (the last run's divisor), n - 33 (the last sample's
+// Per span length n (kMidMin .. kMidMax), as the prologue loads them (three vld1.64 from the
+// row, + 16, + 32): 16, 32, L = n - 49 (the last run's divisor), n - 33 (the last sample's
 // offset from P + 32), then kMidConsts; exact doubles (no conversion in the prologue).
 struct MidNTable {
   alignas(16) double row[kMidMax - kMidMin + 1][8];
@@ -142,11 +142,11 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // each depth's accumulator d16, d18 .. d21 (zix with the first, d17), urow into t_0 .. t_4 =
 // d0 .. d4 (ux with t_4, d5), vrow into s_0 .. s_4 = d6, d7, d30, d31, d17 (vx with s_1,
 // d8), [P, [umax, vmax]] into d22, d23 ([umax, vmax] again into d22 once P is read),
-// kMidN's row for n (one pointer, post-incremented): 16, 32 into d28, d29, L, n - 33 into
-// d10, d11, kMinZi, -1/16, 1/2, 1 into d24 .. d27. Positions x0 .. x4 in d22, d30, d31, d9, d6; depths (clamped, then 1 / zi in
-// place) d16, d18 .. d21; zck = zix * -1/16 in d25, zh = zix * 0.5 in d26; depth sums
-// z_0 + z_1 .. z_3 + z_4 in d24, d28, d29, d5, made c_0, c_1, c_2 (times zck) and curve
-// (times zh); t = urow + ux x, s = vrow + vx x (fused), times z in place, converted in
+// kMidN's row for n (the row, + 16, + 32): 16, 32 into d28, d29, L, n - 33 into d10,
+// d11, kMinZi, -1/16, 1/2, 1 into d24 .. d27. Positions x0 .. x4 in d22, d30, d31, d9, d6;
+// depths (clamped, then 1 / zi in place) d16, d18 .. d21; zck = zix * -1/16 in d25,
+// zh = zix * 0.5 in d26; depth sums z_0 + z_1 .. z_3 + z_4 in d24, d28, d29, d5, made c_0,
+// c_1, c_2 (times zck) and curve (times zh); t = urow + ux x, s = vrow + vx x (fused), times z in place, converted in
 // place (vcvt.u32.f64 #16); vtrn.32 pairs q0 / q3, q1 / q15, d4 / d17 (sample j's [u, v]
 // in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d11,
 // converted (d30, d31), times c_0, cvt_sat into d6; the last run's [du, dv] in d7,
@@ -158,7 +158,7 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // delta - 120 dd as delta - (dd << 7) + (dd << 3) (mod 2^32, as mls) and 120 |x| as
 // (16 |x| - |x|) << 3 inside the compare (|x| <= 2^25: 15 |x| < 2^29, 120 |x| < 2^32, the
 // same unsigned compare: lo here is hi there with the operands swapped); the address
-// registers (p + 16 .. p + 56) are the outputs' registers until then.
+// registers (p + 16 .. p + 56, the row + 16, + 32) are the outputs' registers until then.
 // r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; q89: the quotients; su, sv: run 0's steps.
 SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
@@ -328,7 +328,8 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, Run
       "sub %[dv], %[dv], %[t1], asr #31"
 
       : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9), [du] "=&r"(du),
-        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3), [pz] "+r"(pz)
+        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3),
+        [pz] "+r"(pz)
       : [nt] "r"(nt), "m"(p), "m"(kMidN)
       : "cc", "d6", "d7", "d10", "d11", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25",
         "d26", "d27", "d30", "d31");
