@@ -365,8 +365,10 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   // 120 min(|dd|, 2^25) <= pd, as ssat(dd, 26) decides it there: |dd| >= 2^25 rejects either
   // way; dd' = accepted ? dd : 0; d = mirror((pd - 120 mirror(dd')) >> 4), mirror by delta's
   // sign, computed as (delta + (delta < 0 ? 15 : 0) - 120 dd') >> 4 (arithmetic: the shift
-  // rounds down, the bias makes it round toward zero; exact in int32, |delta - 120 dd'| <=
-  // pd < 2^31). Outputs: q0 = the four d (d0 run 1's, d1 run 2's: uv1 is dead after its
+  // rounds down, the bias makes it round toward zero). delta + bias and 120 dd' fit int32
+  // (120 |dd'| <= pd < 2^31), their difference only in 33 bits (up to 2 pd when dd' and
+  // delta differ in sign: deltas near +-2^31 on textures 32767 texels wide): vhsub.s32
+  // halves it exactly (floor), then >> 3 (floor(floor(x / 2) / 8) = floor(x / 16)). Outputs: q0 = the four d (d0 run 1's, d1 run 2's: uv1 is dead after its
   // lanes), q3 = the four dd (d6, d7): registers run 1 leaves alone, so no copies.
   register double d1r __asm__("d0"), dd1r __asm__("d6"), dd2r __asm__("d7");
   {
@@ -521,8 +523,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vand q3, q3, q12\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "vsub.i32 q9, q15, q9\n\t"
-                     "vshr.s32 q0, q9, #4\n\t"
+                     "vhsub.s32 q9, q15, q9\n\t"
+                     "vshr.s32 q0, q9, #3\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), [uv1] "+w"(uv1), "=&w"(dd1r), "=&w"(dd2r)
                      : SB_V7_RUN_INPUTS(dest), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1), [c2] "w"(c2)
