@@ -4,9 +4,10 @@
 // (anonymous namespace).
 //
 // persp_fast computes a pass's samples beside the runs before it; for four runs that
-// pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers, no
-// copies) computes the five samples (the divides back to back, the other samples' work in
-// their latency), run 0's ddf and the last run's quotients; runs 1 and 2's steps (ddf and
+// pipeline costs more than it hides. Here: one asm prologue (fixed VFP registers; the
+// fields' copies that the destructive vfma needs loaded again from p, not moved) computes
+// the five samples (the divides back to back, the other samples' work in their latency),
+// run 0's ddf and the last run's quotients; runs 1 and 2's steps (ddf and
 // steps16_dd in NEON lanes) are computed beside run 0's pixels, the last run's (last_ddi,
 // last_dd in NEON lanes) beside run 1's and run 2's (each run one asm statement whose
 // values stay in registers, with VFP / NEON work between its pixel groups). Every double
@@ -18,9 +19,10 @@
 //               (t z) 2^16 = t (z 2^16) exactly (a power-of-two scaling commutes with
 //               rounding; when t z is subnormal both give |value| < 1, fix 0; overflow gives
 //               infinity either way; NaN -> 0 either way; z 2^16 <= 2^46 is exact and
-//               finite), so vcvt.u32.f64 (truncating, saturating, NaN -> 0) of that product
-//               is min_ufixed16 / cvt_ufixed16's value; v likewise; u, v side by side in one
-//               d register, clamped by one vmin.u32 against [umax, vmax]
+//               finite), so vcvt.u32.f64 #16 (fixed point: truncating, saturating, NaN -> 0,
+//               of t z times 2^16 exactly) is min_ufixed16 / cvt_ufixed16's value; v
+//               likewise; the conversions (each in the low half of its register) paired by
+//               vtrn.32 into [u, v] per d register, clamped by vmin.u32 against [umax, vmax]
 //   full runs   ddf = delta (zck (z_a + z_b)), zck = zix * -1/16 (persp_fast's argument:
 //               the walker's -2 (delta / 16 * curve), same bits), cvt_sat, steps16_dd
 //   last run    q = double(delta) / (n - 49) (last_quotient), curve = (zix * 0.5) (z_3 + z_4),
@@ -41,9 +43,24 @@ constexpr int kMidMin = 50, kMidMax = 64;
 static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, uz0) == 16 &&
               offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
               offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
-              "the prologue loads zi0 .. vmax with two vld1.64 (d16 .. d23)");
-// kMinZi, 2^16, -1/16, 1/2: loaded together by the prologue.
-alignas(8) constexpr double kMidConsts[4] = {kMinZi, 65536.0, -0.0625, 0.5};
+              "the prologue loads zi0 / dzi, uz0 / duz, vz0 / dvz, px0 / [umax, vmax] in pairs (vld1.64)");
+// kMinZi, -1/16, 1/2, 1: the prologue's constants (in kMidN's rows).
+constexpr double kMidConsts[4] = {kMinZi, -0.0625, 0.5, 1.0};
+// Per span length n (kMidMin .. kMidMax), as the prologue loads them (three vld1.64 from the
+// row, + 16, + 32): 16, 32, L = n - 49 (the last run's divisor), n - 33 (the last sample's
+// offset from P + 32), then kMidConsts; exact doubles (no conversion in the prologue).
+struct MidNTable {
+  alignas(16) double row[kMidMax - kMidMin + 1][8];
+};
+constexpr MidNTable kMidN = [] {
+  MidNTable t{};
+  for (int n = kMidMin; n <= kMidMax; ++n) {
+    const double r[8] = {16.0, 32.0, double(n - 49), double(n - 33), kMidConsts[0], kMidConsts[1], kMidConsts[2],
+                         kMidConsts[3]};
+    for (int i = 0; i < 8; ++i) t.row[n - kMidMin][i] = r[i];
+  }
+  return t;
+}();
 
 // The int32 a conversion (vcvt.s32.f64) left in a single register.
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
@@ -121,151 +138,204 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
                    : "memory");
 }
 
-// The prologue: d16 .. d22 = zrow, zix, urow, ux, vrow, vx, P; d23 = [umax, vmax] (two
-// vld1.64 from p); d24 .. d27 = kMidConsts (then zck = zix * -1/16 in d26, zh = zix * 0.5
-// in d27). Positions x0 .. x4 in d22, d30, d31, d29, d28; depths d5, d6, d7, d1, d16
-// (clamped, then 1 / zi); t = urow + ux x, s = vrow + vx x in d17 / d24, d22 / d2, d30 / d3,
-// d31 / d4, d18 / d20 (samples 0 .. 4); depth sums z_0 + z_1 .. z_3 + z_4 in d19, d21, d28,
-// d29, made c_0, c_1, c_2 (times zck) and curve (times zh); z 2^16 in place; the products
-// in place; their conversions into s0 .. s9 (sample j's [u, v] in d_j), clamped by vmin.u32
-// with d23; run 0's [u_1 - u_0, v_1 - v_0] in d6, converted (d17, d24), times c_0, cvt_sat
-// into d6. Outputs: d0 .. d4 the samples, d6 run 0's [iu, iv], d28 c_1, d29 c_2, d5 curve.
-// A register is reused only after its value's last read (in order: each vcvt into s_2j /
-// s_2j+1 reads a product whose register is no longer needed). The multiply-adds are fused,
-// as the compiled walker's are (GCC contracts them; the tests compare bit for bit).
-// r: the samples [u, v] (d0 .. d4), run 0's [iu, iv] (d5), c_1, c_2, curve.
-SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89) {
+// The prologue. Loads (vld1.64: the model dual-issues them, unlike vmov / vldr): zrow into
+// each depth's accumulator d16, d18 .. d21 (zix with the first, d17), urow into t_0 .. t_4 =
+// d0 .. d4 (ux with t_4, d5), vrow into s_0 .. s_4 = d6, d7, d30, d31, d17 (vx with s_1,
+// d8), [P, [umax, vmax]] into d22, d23 ([umax, vmax] again into d22 once P is read),
+// kMidN's row for n (the row, + 16, + 32): 16, 32 into d28, d29, L, n - 33 into d10,
+// d11, kMinZi, -1/16, 1/2, 1 into d24 .. d27. Positions x0 .. x4 in d22, d30, d31, d9, d6;
+// depths (clamped, then 1 / zi in place) d16, d18 .. d21; zck = zix * -1/16 in d25,
+// zh = zix * 0.5 in d26; depth sums z_0 + z_1 .. z_3 + z_4 in d24, d28, d29, d5, made c_0,
+// c_1, c_2 (times zck) and curve (times zh); t = urow + ux x, s = vrow + vx x (fused), times z in place, converted in
+// place (vcvt.u32.f64 #16); vtrn.32 pairs q0 / q3, q1 / q15, d4 / d17 (sample j's [u, v]
+// in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d11,
+// converted (d30, d31), times c_0, cvt_sat into d6; the last run's [du, dv] in d7,
+// converted (d8, d9), divided by L. A register is reused only after its value's last read.
+// The multiply-adds are fused, as the compiled walker's are (GCC contracts them; the tests
+// compare bit for bit). Then run 0's steps16_dd for u and v in the same statement (its
+// integer work issued beside the VFP work): the deltas from d11 (one lane at a time into
+// t1), [iu, iv] from d6 into ddu, ddv; steps16_dd's operations (asm/span_persp_run.h) with
+// delta - 120 dd as delta - (dd << 7) + (dd << 3) (mod 2^32, as mls) and 120 |x| as
+// (16 |x| - |x|) << 3 inside the compare (|x| <= 2^25: 15 |x| < 2^29, 120 |x| < 2^32, the
+// same unsigned compare: lo here is hi there with the operands swapped); the address
+// registers (p + 16 .. p + 56, the row + 16, + 32) are the outputs' registers until then.
+// r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; q89: the quotients; su, sv: run 0's steps.
+SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
-  register double o5 __asm__("d6"), o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
+  register double o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d8");
+  uint32_t du, ddu, dv, ddv, t1, t2, t3;
+  const double* pz = &p.zi0;
+  const double* nt = kMidN.row[n - kMidMin];
   __asm__ volatile(
       // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search.py
       // --arch=armv7; the model issues VFP / NEON in order: each waits least on its inputs).
-      "vmov.f64 d28, #16.0\n\t"
-      "vld1.64 {d20-d23}, [%[p2]]\n\t"
-      "vadd.f64 d29, d28, d28\n\t"
-      "vld1.64 {d16-d19}, [%[p]]\n\t"
+      "add %[t2], %[nt], #32\n\t"
+      "add %[ddu], %[pz], #48\n\t"
+      "vld1.64 {d22, d23}, [%[ddu]]\n\t"
+      "add %[dv], %[pz], #32\n\t"
+      "vld1.64 {d16, d17}, [%[pz]]\n\t"
+      "vld1.64 {d24-d27}, [%[t2]]\n\t"
+      "vld1.64 {d20}, [%[pz]]\n\t"
+      "vld1.64 {d28, d29}, [%[nt]]\n\t"
+      "vfma.f64 d16, d17, d22\n\t"
+      "add %[t1], %[nt], #16\n\t"
       "vadd.f64 d30, d22, d28\n\t"
-      "vmov s0, %[nm33]\n\t"
-      "vcvt.f64.s32 d0, s0\n\t"
-      "vld1.64 {d24-d27}, [%[c]]\n\t"
-      "vmov.f64 d5, d16\n\t"
-      "vfma.f64 d5, d17, d22\n\t"
+      "vld1.64 {d21}, [%[pz]]\n\t"
       "vadd.f64 d31, d22, d29\n\t"
-      "vadd.f64 d29, d30, d29\n\t"
-      "vsub.f64 d10, d0, d28\n\t"
-      "vmov.f64 d7, d16\n\t"
-      "vadd.f64 d28, d30, d28\n\t"
-      "vmov.f64 d6, d16\n\t"
-      "vfma.f64 d6, d17, d30\n\t"
-      "vfma.f64 d7, d17, d31\n\t"
-      "vcmpe.f64 d5, d24\n\t"
-      "vmov.f64 d1, d16\n\t"
-      "vmul.f64 d26, d17, d26\n\t"
-      "vmul.f64 d27, d17, d27\n\t"
-      "vadd.f64 d28, d28, d0\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d5, d24\n\t"
-      "vfma.f64 d1, d17, d29\n\t"
-      "vfma.f64 d16, d17, d28\n\t"
-      "vcmpe.f64 d6, d24\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d6, d24\n\t"
-      "vmov.f64 d17, #1.0\n\t"
-      "vcmpe.f64 d7, d24\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d7, d24\n\t"
-      "vcmpe.f64 d1, d24\n\t"
-      "vdiv.f64 d7, d17, d7\n\t"
-      "vdiv.f64 d5, d17, d5\n\t"
-      "vdiv.f64 d6, d17, d6\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
+      "vmul.f64 d25, d17, d25\n\t"
+      "vld1.64 {d18}, [%[pz]]\n\t"
+      "vfma.f64 d18, d17, d30\n\t"
+      "vld1.64 {d19}, [%[pz]]\n\t"
+      "add %[du], %[pz], #16\n\t"
+      "vld1.64 {d2}, [%[du]]\n\t"
+      "vadd.f64 d9, d30, d29\n\t"
+      "vld1.64 {d10, d11}, [%[t1]]\n\t"
+      "vadd.f64 d6, d30, d28\n\t"
+      "vfma.f64 d19, d17, d31\n\t"
       "vcmpe.f64 d16, d24\n\t"
-      "it le\n\t"
-      "vmovle.f64 d1, d24\n\t"
+      "vld1.64 {d7, d8}, [%[dv]]\n\t"
+      "vfma.f64 d20, d17, d9\n\t"
       "vmrs APSR_nzcv, fpscr\n\t"
-      "vdiv.f64 d1, d17, d1\n\t"
+      "vadd.f64 d6, d6, d11\n\t"
       "it le\n\t"
       "vmovle.f64 d16, d24\n\t"
-      "vdiv.f64 d16, d17, d16\n\t"
-      "vmov.f64 d2, d20\n\t"
-      "vmov.f64 d17, d18\n\t"
-      "vmov.f64 d3, d20\n\t"
-      "vfma.f64 d3, d21, d31\n\t"
-      "vmov.f64 d24, d20\n\t"
-      "vfma.f64 d24, d21, d22\n\t"
-      "vfma.f64 d17, d19, d22\n\t"
-      "vmov.f64 d22, d18\n\t"
-      "vfma.f64 d22, d19, d30\n\t"
-      "vfma.f64 d2, d21, d30\n\t"
-      "vmov.f64 d30, d18\n\t"
-      "vmov.f64 d4, d20\n\t"
-      "vfma.f64 d4, d21, d29\n\t"
-      "vfma.f64 d30, d19, d31\n\t"
-      "vmov.f64 d31, d18\n\t"
-      "vfma.f64 d20, d21, d28\n\t"
-      "vfma.f64 d18, d19, d28\n\t"
-      "vfma.f64 d31, d19, d29\n\t"
-      "vadd.f64 d19, d5, d6\n\t"
-      "vmul.f64 d5, d5, d25\n\t"
-      "vadd.f64 d21, d6, d7\n\t"
-      "vmul.f64 d6, d6, d25\n\t"
-      "vadd.f64 d28, d7, d1\n\t"
-      "vmul.f64 d7, d7, d25\n\t"
-      "vadd.f64 d29, d1, d16\n\t"
-      "vmul.f64 d16, d16, d25\n\t"
-      "vmul.f64 d17, d17, d5\n\t"
-      "vmul.f64 d1, d1, d25\n\t"
-      "vmul.f64 d24, d24, d5\n\t"
-      "vmul.f64 d30, d30, d7\n\t"
-      "vmul.f64 d22, d22, d6\n\t"
-      "vmul.f64 d2, d2, d6\n\t"
-      "vcvt.u32.f64 s0, d17\n\t"
-      "vmul.f64 d18, d18, d16\n\t"
-      "vcvt.u32.f64 s1, d24\n\t"
-      "vmul.f64 d5, d29, d27\n\t"
-      "vmul.f64 d3, d3, d7\n\t"
-      "vmul.f64 d4, d4, d1\n\t"
-      "vmul.f64 d31, d31, d1\n\t"
-      "vcvt.u32.f64 s2, d22\n\t"
-      "vmul.f64 d20, d20, d16\n\t"
-      "vcvt.u32.f64 s3, d2\n\t"
-      "vcvt.u32.f64 s4, d30\n\t"
-      "vmin.u32 d0, d0, d23\n\t"
-      "vmin.u32 d1, d1, d23\n\t"
-      "vcvt.u32.f64 s5, d3\n\t"
-      "vmul.f64 d19, d19, d26\n\t"
-      "vcvt.u32.f64 s6, d31\n\t"
-      "vcvt.u32.f64 s7, d4\n\t"
-      "vsub.i32 d6, d1, d0\n\t"
-      "vcvt.u32.f64 s8, d18\n\t"
-      "vmin.u32 d3, d3, d23\n\t"
-      "vcvt.u32.f64 s9, d20\n\t"
-      "vcvt.f64.s32 d17, s12\n\t"
-      "vcvt.f64.s32 d24, s13\n\t"
-      "vmul.f64 d29, d28, d26\n\t"
+      "vcmpe.f64 d18, d24\n\t"
+      "vdiv.f64 d16, d27, d16\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "vld1.64 {d3}, [%[du]]\n\t"
+      "vcmpe.f64 d19, d24\n\t"
+      "it le\n\t"
+      "vmovle.f64 d18, d24\n\t"
+      "vdiv.f64 d18, d27, d18\n\t"
+      "vld1.64 {d0}, [%[du]]\n\t"
+      "vfma.f64 d21, d17, d6\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d19, d24\n\t"
+      "vcmpe.f64 d20, d24\n\t"
+      "vld1.64 {d4, d5}, [%[du]]\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "vfma.f64 d0, d5, d22\n\t"
+      "it le\n\t"
+      "vmovle.f64 d20, d24\n\t"
+      "vld1.64 {d1}, [%[du]]\n\t"
+      "vdiv.f64 d20, d27, d20\n\t"
+      "vmul.f64 d26, d17, d26\n\t"
+      "vcmpe.f64 d21, d24\n\t"
+      "vdiv.f64 d19, d27, d19\n\t"
+      "vfma.f64 d1, d5, d30\n\t"
+      "vmrs APSR_nzcv, fpscr\n\t"
+      "it le\n\t"
+      "vmovle.f64 d21, d24\n\t"
+      "vld1.64 {d17}, [%[dv]]\n\t"
+      "vdiv.f64 d21, d27, d21\n\t"
+      "vfma.f64 d7, d8, d30\n\t"
+      "vld1.64 {d30}, [%[dv]]\n\t"
+      "vfma.f64 d2, d5, d31\n\t"
+      "vfma.f64 d17, d8, d6\n\t"
+      "vfma.f64 d30, d8, d31\n\t"
+      "vfma.f64 d3, d5, d9\n\t"
+      "vfma.f64 d4, d5, d6\n\t"
+      "vld1.64 {d31}, [%[dv]]\n\t"
+      "vfma.f64 d31, d8, d9\n\t"
+      "vld1.64 {d6}, [%[dv]]\n\t"
+      "vmul.f64 d0, d0, d16\n\t"
+      "vmul.f64 d7, d7, d18\n\t"
+      "vmul.f64 d1, d1, d18\n\t"
+      "vadd.f64 d24, d16, d18\n\t"
+      "vfma.f64 d6, d8, d22\n\t"
+      "vcvt.u32.f64 d7, d7, #16\n\t"
+      "vcvt.u32.f64 d1, d1, #16\n\t"
+      "vmul.f64 d31, d31, d20\n\t"
+      "add %[ddv], %[pz], #56\n\t"
+      "vmul.f64 d3, d3, d20\n\t"
+      "vmul.f64 d24, d24, d25\n\t"
+      "vld1.64 {d22}, [%[ddv]]\n\t"
+      "vmul.f64 d2, d2, d19\n\t"
+      "vmul.f64 d6, d6, d16\n\t"
+      "vmul.f64 d30, d30, d19\n\t"
+      "vcvt.u32.f64 d31, d31, #16\n\t"
+      "vmul.f64 d4, d4, d21\n\t"
+      "vmul.f64 d17, d17, d21\n\t"
+      "vcvt.u32.f64 d0, d0, #16\n\t"
+      "vcvt.u32.f64 d2, d2, #16\n\t"
+      "vcvt.u32.f64 d6, d6, #16\n\t"
+      "vcvt.u32.f64 d3, d3, #16\n\t"
+      "vcvt.u32.f64 d4, d4, #16\n\t"
+      "vcvt.u32.f64 d17, d17, #16\n\t"
+      "vcvt.u32.f64 d30, d30, #16\n\t"
+      "vtrn.32 q0, q3\n\t"
+      "vmin.u32 q0, q0, q11\n\t"
+      "vtrn.32 d4, d17\n\t"
+      "vtrn.32 q1, q15\n\t"
+      "vsub.i32 d11, d1, d0\n\t"
+      "vadd.f64 d5, d20, d21\n\t"
+      "vadd.f64 d29, d19, d20\n\t"
+      "vcvt.f64.s32 d30, s22\n\t"
       "vmin.u32 d4, d4, d23\n\t"
-      "vmul.f64 d17, d17, d19\n\t"
-      "vmul.f64 d24, d24, d19\n\t"
+      "vmin.u32 q1, q1, q11\n\t"
+      "vcvt.f64.s32 d31, s23\n\t"
+      "vmul.f64 d30, d30, d24\n\t"
+      "vmov %[t1], s22\n\t"
       "vsub.i32 d7, d4, d3\n\t"
-      "vmin.u32 d2, d2, d23\n\t"
-      "vmul.f64 d28, d21, d26\n\t"
+      "vmul.f64 d31, d31, d24\n\t"
+      "vmul.f64 d5, d5, d26\n\t"
       "vcvt.f64.s32 d9, s15\n\t"
       "vcvt.f64.s32 d8, s14\n\t"
-      "vcvt.s32.f64 s12, d17\n\t"
-      "vcvt.s32.f64 s13, d24\n\t"
+      "vadd.f64 d28, d18, d19\n\t"
+      "vcvt.s32.f64 s12, d30\n\t"
+      "eor %[pz], %[t1], %[t1], asr #31\n\t"
+      "vcvt.s32.f64 s13, d31\n\t"
+      "sub %[pz], %[pz], %[t1], asr #31\n\t"
+      "vmov %[ddu], %[ddv], d6\n\t"
+      "ssat %[t2], #26, %[ddu]\n\t"
+      "eor %[t3], %[t2], %[t2], asr #31\n\t"
+      "sub %[t3], %[t3], %[t2], asr #31\n\t"
+      "sub %[du], %[t1], %[ddu], lsl #7\n\t"
+      "ssat %[t2], #26, %[ddv]\n\t"
+      "add %[du], %[du], %[ddu], lsl #3\n\t"
+      "rsb %[t3], %[t3], %[t3], lsl #4\n\t"
       "vdiv.f64 d9, d9, d10\n\t"
-      "vdiv.f64 d8, d8, d10"
-      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o5), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9)
-      : [p] "r"(&p), [p2] "r"(&p.vz0), [c] "r"(kMidConsts), [nm33] "r"(n - 33), "m"(p),
-        "m"(kMidConsts)
-      : "cc", "s14", "s15", "d10", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
-        "d30", "d31");
-  r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[5] = o5, r[6] = o6, r[7] = o7, r[8] = o8;
+      "eor %[du], %[du], %[t1], asr #31\n\t"
+      "sub %[du], %[du], %[t1], asr #31\n\t"
+      "cmp %[pz], %[t3], lsl #3\n\t"
+      "itt lo\n\t"
+      "movlo %[ddu], #0\n\t"
+      "movlo %[du], %[pz]\n\t"
+      "lsr %[du], %[du], #4\n\t"
+      "eor %[du], %[du], %[t1], asr #31\n\t"
+      "vdiv.f64 d8, d8, d10\n\t"
+      "sub %[du], %[du], %[t1], asr #31\n\t"
+      "eor %[t3], %[t2], %[t2], asr #31\n\t"
+      "vmul.f64 d28, d28, d25\n\t"
+      "vmov %[t1], s23\n\t"
+      "sub %[dv], %[t1], %[ddv], lsl #7\n\t"
+      "eor %[pz], %[t1], %[t1], asr #31\n\t"
+      "add %[dv], %[dv], %[ddv], lsl #3\n\t"
+      "sub %[t3], %[t3], %[t2], asr #31\n\t"
+      "eor %[dv], %[dv], %[t1], asr #31\n\t"
+      "sub %[dv], %[dv], %[t1], asr #31\n\t"
+      "rsb %[t3], %[t3], %[t3], lsl #4\n\t"
+      "sub %[pz], %[pz], %[t1], asr #31\n\t"
+      "cmp %[pz], %[t3], lsl #3\n\t"
+      "itt lo\n\t"
+      "movlo %[dv], %[pz]\n\t"
+      "movlo %[ddv], #0\n\t"
+      "vmul.f64 d29, d29, d25\n\t"
+      "lsr %[dv], %[dv], #4\n\t"
+      "eor %[dv], %[dv], %[t1], asr #31\n\t"
+      "sub %[dv], %[dv], %[t1], asr #31"
+
+      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9), [du] "=&r"(du),
+        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3),
+        [pz] "+r"(pz)
+      : [nt] "r"(nt), "m"(p), "m"(kMidN)
+      : "cc", "d6", "d7", "d10", "d11", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25",
+        "d26", "d27", "d30", "d31");
+  r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[6] = o6, r[7] = o7, r[8] = o8;
   *q89 = o9;
+  *su = RunSteps{int32_t(du), int32_t(ddu)}, *sv = RunSteps{int32_t(dv), int32_t(ddv)};
 }
 
 SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
@@ -277,7 +347,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
   V4 q89;
-  mid_prologue(p, n, r, &q89);
+  RunSteps su, sv;
+  mid_prologue(p, n, r, &q89, &su, &sv);
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
@@ -286,18 +357,18 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   register double curve __asm__("d5") = r[8];
   register double c1 __asm__("d28") = r[6];
   register double c2 __asm__("d29") = r[7];
-  int32_t u0, v0, u1, v1, iu0, iv0;
-  lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1), lanes(r[5], &iu0, &iv0);
-  RunSteps su, sv;
-  steps16_dd_uv(u1 - u0, iu0, v1 - v0, iv0, &su, &sv);
+  int32_t u0, v0, u1, v1;
+  lanes(r[0], &u0, &v0), lanes(uv1, &u1, &v1);
   // Run 0; beside it runs 1 and 2's steps: their deltas [du_1, dv_1, du_2, dv_2] (vsub.i32
   // on the packed samples, exact as doubles), ddf = delta c_r, cvt_sat, then steps16_dd per
   // lane in one q register (the 32-bit form: pd = |delta|; accepted iff
   // 120 min(|dd|, 2^25) <= pd, as ssat(dd, 26) decides it there: |dd| >= 2^25 rejects either
   // way; dd' = accepted ? dd : 0; d = mirror((pd - 120 mirror(dd')) >> 4), mirror by delta's
   // sign, computed as (delta + (delta < 0 ? 15 : 0) - 120 dd') >> 4 (arithmetic: the shift
-  // rounds down, the bias makes it round toward zero; exact in int32, |delta - 120 dd'| <=
-  // pd < 2^31). Outputs: q0 = the four d (d0 run 1's, d1 run 2's: uv1 is dead after its
+  // rounds down, the bias makes it round toward zero). delta + bias and 120 dd' fit int32
+  // (120 |dd'| <= pd < 2^31), their difference only in 33 bits (up to 2 pd when dd' and
+  // delta differ in sign: deltas near +-2^31 on textures 32767 texels wide): vhsub.s32
+  // halves it exactly (floor), then >> 3 (floor(floor(x / 2) / 8) = floor(x / 16)). Outputs: q0 = the four d (d0 run 1's, d1 run 2's: uv1 is dead after its
   // lanes), q3 = the four dd (d6, d7): registers run 1 leaves alone, so no copies.
   register double d1r __asm__("d0"), dd1r __asm__("d6"), dd2r __asm__("d7");
   {
@@ -452,8 +523,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vand q3, q3, q12\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "vsub.i32 q9, q15, q9\n\t"
-                     "vshr.s32 q0, q9, #4\n\t"
+                     "vhsub.s32 q9, q15, q9\n\t"
+                     "vshr.s32 q0, q9, #3\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), [uv1] "+w"(uv1), "=&w"(dd1r), "=&w"(dd2r)
                      : SB_V7_RUN_INPUTS(dest), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1), [c2] "w"(c2)

@@ -384,6 +384,37 @@ TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeGradients) {
   std::printf("[ asm      ] span_persp: %d four-run second-order spans, every variant identical\n", cases);
 }
 
+// Four-run second-order spans (49 .. 65 pixels; ARMv7: the mid path, whose prologue asm
+// computes run 0's steps16_dd with shifts for the 120 multiplies) on a texture 32767 texels
+// wide, as LongSpansMatchOnExtremeSteps: clamped samples swing between 0 and umax (deltas
+// near +-2^31, |delta - 120 dd| up to 2^32), the steps accepted and rejected.
+TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeSteps) {
+  std::mt19937 rng(49);
+  const int sw = 32767, sh = 3;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
+    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
+    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
+  };
+  int cases = 0;
+  for (int i = 0; i < 8500; ++i) {
+    sb::simd::PerspSpan p{};
+    p.zi0 = std::fabs(logu(-4, 0));
+    p.dzi = logu(-7, -2);
+    p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
+    p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
+    p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
+    p.umax = int32_t((uint32_t(sw) << 16) - 1);
+    p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = true;
+    const int n = 49 + i % 17;
+    ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " case " << i << " n " << n;
+    ++cases;
+  }
+  std::printf("[ asm      ] span_persp: %d four-run extreme-step spans, every variant identical\n", cases);
+}
+
 // surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
 // NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
 // scalar reference on every target: random walks (linear and second order) that stay
