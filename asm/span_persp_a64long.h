@@ -107,7 +107,7 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "add x6, x6, x8, lsr #60\n\t" "sub x10, x3, x10\n\t" "asr x12, x10, #63\n\t" "lsl x11, x15, #32\n\t"
       "add x11, x11, w9, sxtw\n\t" "add x10, x10, x12, lsr #60\n\t" "asr x6, x6, #4\n\t" "asr x10, x10, #4\n\t"
       "add x10, x6, x10, lsl #32\n\t" "add x17, x11, x10, lsl #1\n\t" "add x14, x13, x10\n\t" "lsl x20, x11, #2\n\t"
-      "add x19, x17, x11, lsl #1\n\t" "1:\n\t"
+      "add x19, x17, x11, lsl #1\n\t" "b 1f\n\t" ".p2align 11\n\t" "1:\n\t"
       "lsr w3, w14, #16\n\t" "lsr x1, x14, #48\n\t" "lsr w4, w13, #16\n\t" "lsr x2, x13, #48\n\t"
       "lsr x5, x27, #32\n\t" "madd w2, w2, w24, w4\n\t" "add x14, x14, x19\n\t" "madd w1, w1, w24, w3\n\t"
       "add x19, x19, x20\n\t" "add x13, x13, x17\n\t" "lsr x6, x14, #48\n\t" "lsr w8, w13, #16\n\t"
