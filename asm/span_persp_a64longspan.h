@@ -160,7 +160,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
         if constexpr (G <= 0) step(integral_constant<int, G + 6>{});
-        if constexpr (G == 5) step(integral_constant<int, 9>{});
+        if constexpr (G == 1) step(integral_constant<int, 9>{});
       };
       Run16<true> run(s1.u, s1.v, u1, v1);
       run.draw(dest, texels, w, stage2);
