@@ -35,7 +35,7 @@
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
 // [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers. Uses 64 bytes
-// below sp.
+// below sp. The loop starts at a 2 KiB boundary (the set-up branches over the padding).
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)

@@ -118,8 +118,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     using std::integral_constant;
     if constexpr (kTwo) {
       // Run r + 1's steps (steps16<true>(s1, sB, c1)'s operations, sB = t1: steps16_sel) in run r's
-      // stage slots 0 .. 5, one dependent step a group, then the last run's step groups 0 .. 3
-      // in slots 6 .. 9 (their inputs are known: no wait for run r + 1's steps).
+      // stage slots 0 .. 5, one dependent step a group, and the last run's step groups 0 .. 5
+      // in slots 4 .. 9 (their inputs are known: no wait for run r + 1's steps).
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
       double sz = 0, c1 = 0, f1u = 0, f1v = 0;
@@ -156,7 +156,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
                          pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
         return;
       }
-      // Run r + 1 with the last run's step groups 4 .. 6 and 9 in its slots 0 .. 2 and 5.
+      // Run r + 1 with the last run's step groups 6 and 9 in its slots 0 and 1 (last_steps_ddi's
+      // integer chain done before draw_last).
       auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
         if constexpr (G <= 0) step(integral_constant<int, G + 6>{});
