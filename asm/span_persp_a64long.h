@@ -34,8 +34,9 @@
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers. Uses 64 bytes
-// below sp.
+// [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers; four stack
+// slots of the caller's frame as memory operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
+// The loop starts at a 2 KiB boundary (the set-up branches over the padding).
 #pragma once
 #include "asm/span_persp_run.h"
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -62,6 +63,8 @@ static_assert(offsetof(PerspSpan, umax) == 56);
 static_assert(offsetof(PerspSpan, vmax) == 60);
 
 inline __attribute__((always_inline)) void long_passes2(LongPass& st, const PerspSpan& p, int n) {
+  float64x2_t s0, s16, s48;  // the asm's stack slots (kZrow, kUVrow, offl)
+  uint64_t s32;  // lim
   register const PerspSpan* r_p __asm__("x1") = &p;
   register int r_n __asm__("x2") = n;
   register uint64_t r_d __asm__("x0") = st.d;
@@ -77,43 +80,43 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
   register uint64_t r_w __asm__("x24") = st.w;
   register float64x2_t r_kMin __asm__("v21") = st.kMin;
   __asm__ volatile(
-      "sub sp, sp, #64\n\t" "add x4, x1, #40\n\t" "mov x6, #0xbfb0000000000000\n\t" "ldr d0, [x1, #48]\n\t"
-      "add x3, x1, #32\n\t" "ldr d3, [x1, #16]\n\t" "ldr d17, [x1, #24]\n\t" "fmov v18.2d, #16.0\n\t"
-      "fmov d23, x6\n\t" "ldr d16, [x1, #8]\n\t" "add x5, x1, #56\n\t" "sub w7, w2, #81\n\t"
-      "lsr w7, w7, #5\n\t" "ld1 {v17.d}[1], [x4]\n\t" "sub w9, w2, w7, lsl #5\n\t" "ld1 {v3.d}[1], [x3]\n\t"
-      "fmul d23, d16, d23\n\t" "fadd d5, d0, d18\n\t" "ld1r {v22.2d}, [x5]\n\t" "mov w11, #32\n\t"
-      "str q3, [sp, #16]\n\t" "ld1r {v1.2d}, [x1]\n\t" "dup v16.2d, v16.d[0]\n\t" "ldr q4, [sp, #16]\n\t"
-      "mov v0.d[1], v5.d[0]\n\t" "fmov v20.2d, #1.0\n\t" "fadd v19.2d, v18.2d, v18.2d\n\t" "str q1, [sp]\n\t"
-      "add x8, x0, x7, lsl #5\n\t" "dup v23.2d, v23.d[0]\n\t" "fmla v1.2d, v16.2d, v0.2d\n\t" "fmla v3.2d, v17.2d, v0.d[0]\n\t"
-      "fadd v30.2d, v0.2d, v19.2d\n\t" "ldr q2, [sp]\n\t" "sub w10, w9, #65\n\t" "ldr q6, [sp, #16]\n\t"
-      "cmp w10, #32\n\t" "sub w9, w9, #81\n\t" "ldr q25, [sp, #16]\n\t" "fmaxnm v1.2d, v1.2d, v21.2d\n\t"
-      "csel w10, w10, w11, lt\n\t" "fmla v2.2d, v16.2d, v30.2d\n\t" "fmla v6.2d, v17.2d, v30.d[0]\n\t" "fmla v4.2d, v17.2d, v0.d[1]\n\t"
-      "fdiv v31.2d, v20.2d, v1.2d\n\t" "scvtf d27, w9\n\t" "fmaxnm v2.2d, v2.2d, v21.2d\n\t" "scvtf d7, w10\n\t"
-      "fmla v25.2d, v17.2d, v30.d[1]\n\t" "fmul v3.2d, v3.2d, v31.d[0]\n\t" "fmul v4.2d, v4.2d, v31.d[1]\n\t" "fdiv v26.2d, v20.2d, v2.2d\n\t"
-      "fcvtzu v3.2d, v3.2d, #16\n\t" "faddp d1, v31.2d\n\t" "mov v7.d[1], v27.d[0]\n\t" "fcvtzu v4.2d, v4.2d, #16\n\t"
-      "fadd d24, d5, d18\n\t" "uqxtn v3.2s, v3.2d\n\t" "fmul v6.2d, v6.2d, v26.d[0]\n\t" "uqxtn2 v3.4s, v4.2d\n\t"
-      "ext v29.16b, v31.16b, v26.16b, #8\n\t" "fmul v25.2d, v25.2d, v26.d[1]\n\t" "umin v3.4s, v3.4s, v22.4s\n\t" "fcvtzu v6.2d, v6.2d, #16\n\t"
-      "fcvtzu v25.2d, v25.2d, #16\n\t" "fmul d1, d1, v23.d[0]\n\t" "fadd v2.2d, v29.2d, v26.2d\n\t" "str q7, [sp, #48]\n\t"
-      "fmov x13, d3\n\t" "mov x25, v3.d[1]\n\t" "uqxtn v6.2s, v6.2d\n\t" "lsr x3, x25, #32\n\t"
-      "sub w2, w25, w13\n\t" "sub x3, x3, x13, lsr #32\n\t" "uqxtn2 v6.4s, v25.2d\n\t" "fadd d28, d24, d18\n\t"
-      "scvtf d4, w2\n\t" "scvtf d5, w3\n\t" "add x8, x8, #32\n\t" "fmul v27.2d, v2.2d, v23.d[0]\n\t"
-      "mov v24.d[1], v28.d[0]\n\t" "fmul d4, d4, d1\n\t" "umin v6.4s, v6.4s, v22.4s\n\t" "fmul d5, d5, d1\n\t"
-      "sxtw x2, w2\n\t" "cmp x2, #0\n\t" "fcvtzs w4, d4\n\t" "fcvtzs w5, d5\n\t"
-      "cneg x7, x2, lt\n\t" "str x8, [sp, #32]\n\t" "sbfiz x6, x4, #7, #32\n\t" "sub x6, x6, w4, sxtw #3\n\t"
-      "add x8, x6, x7\n\t" "cmp x8, x7, lsl #1\n\t" "mov x27, v6.d[1]\n\t" "csel w9, w4, wzr, ls\n\t"
-      "csel x6, x6, xzr, ls\n\t" "sbfiz x10, x5, #7, #32\n\t" "cmp x3, #0\n\t" "sub x10, x10, w5, sxtw #3\n\t"
-      "sub x6, x2, x6\n\t" "cneg x11, x3, lt\n\t" "asr x8, x6, #63\n\t" "add x12, x10, x11\n\t"
-      "cmp x12, x11, lsl #1\n\t" "fmov x26, d6\n\t" "csel x10, x10, xzr, ls\n\t" "csel w15, w5, wzr, ls\n\t"
-      "add x6, x6, x8, lsr #60\n\t" "sub x10, x3, x10\n\t" "asr x12, x10, #63\n\t" "lsl x11, x15, #32\n\t"
-      "add x11, x11, w9, sxtw\n\t" "add x10, x10, x12, lsr #60\n\t" "asr x6, x6, #4\n\t" "asr x10, x10, #4\n\t"
-      "add x10, x6, x10, lsl #32\n\t" "add x17, x11, x10, lsl #1\n\t" "add x14, x13, x10\n\t" "lsl x20, x11, #2\n\t"
-      "add x19, x17, x11, lsl #1\n\t" "1:\n\t"
+      "add x4, x1, #40\n\t" "ldr d0, [x1, #48]\n\t" "mov x6, #0xbfb0000000000000\n\t" "ldr d16, [x1, #8]\n\t"
+      "add x3, x1, #32\n\t" "ldr d17, [x1, #24]\n\t" "ldr d3, [x1, #16]\n\t" "fmov v18.2d, #16.0\n\t"
+      "fmov d23, x6\n\t" "add x5, x1, #56\n\t" "sub w7, w2, #81\n\t" "lsr w7, w7, #5\n\t"
+      "ld1 {v17.d}[1], [x4]\n\t" "sub w9, w2, w7, lsl #5\n\t" "ld1 {v3.d}[1], [x3]\n\t" "fadd d5, d0, d18\n\t"
+      "fmul d23, d16, d23\n\t" "ld1r {v22.2d}, [x5]\n\t" "str q3, %[s16]\n\t" "mov w11, #32\n\t"
+      "ld1r {v1.2d}, [x1]\n\t" "ldr q4, %[s16]\n\t" "dup v16.2d, v16.d[0]\n\t" "mov v0.d[1], v5.d[0]\n\t"
+      "fmov v20.2d, #1.0\n\t" "fadd v19.2d, v18.2d, v18.2d\n\t" "str q1, %[s0]\n\t" "add x8, x0, x7, lsl #5\n\t"
+      "dup v23.2d, v23.d[0]\n\t" "fmla v1.2d, v16.2d, v0.2d\n\t" "fmla v3.2d, v17.2d, v0.d[0]\n\t" "fadd v30.2d, v0.2d, v19.2d\n\t"
+      "ldr q2, %[s0]\n\t" "sub w10, w9, #65\n\t" "ldr q6, %[s16]\n\t" "cmp w10, #32\n\t"
+      "sub w9, w9, #81\n\t" "ldr q25, %[s16]\n\t" "fmaxnm v1.2d, v1.2d, v21.2d\n\t" "csel w10, w10, w11, lt\n\t"
+      "fmla v2.2d, v16.2d, v30.2d\n\t" "fmla v4.2d, v17.2d, v0.d[1]\n\t" "fmla v6.2d, v17.2d, v30.d[0]\n\t" "fdiv v31.2d, v20.2d, v1.2d\n\t"
+      "scvtf d27, w9\n\t" "fmaxnm v2.2d, v2.2d, v21.2d\n\t" "scvtf d7, w10\n\t" "fmla v25.2d, v17.2d, v30.d[1]\n\t"
+      "fmul v3.2d, v3.2d, v31.d[0]\n\t" "fmul v4.2d, v4.2d, v31.d[1]\n\t" "fdiv v26.2d, v20.2d, v2.2d\n\t" "fcvtzu v3.2d, v3.2d, #16\n\t"
+      "faddp d1, v31.2d\n\t" "mov v7.d[1], v27.d[0]\n\t" "fcvtzu v4.2d, v4.2d, #16\n\t" "fadd d24, d5, d18\n\t"
+      "uqxtn v3.2s, v3.2d\n\t" "fmul v25.2d, v25.2d, v26.d[1]\n\t" "fmul v6.2d, v6.2d, v26.d[0]\n\t" "ext v29.16b, v31.16b, v26.16b, #8\n\t"
+      "uqxtn2 v3.4s, v4.2d\n\t" "umin v3.4s, v3.4s, v22.4s\n\t" "fcvtzu v6.2d, v6.2d, #16\n\t" "fcvtzu v25.2d, v25.2d, #16\n\t"
+      "fmul d1, d1, v23.d[0]\n\t" "fadd v2.2d, v29.2d, v26.2d\n\t" "str q7, %[s48]\n\t" "fmov x13, d3\n\t"
+      "mov x25, v3.d[1]\n\t" "uqxtn v6.2s, v6.2d\n\t" "lsr x3, x25, #32\n\t" "sub w2, w25, w13\n\t"
+      "sub x3, x3, x13, lsr #32\n\t" "uqxtn2 v6.4s, v25.2d\n\t" "fadd d28, d24, d18\n\t" "scvtf d4, w2\n\t"
+      "scvtf d5, w3\n\t" "add x8, x8, #32\n\t" "sxtw x2, w2\n\t" "mov v24.d[1], v28.d[0]\n\t"
+      "umin v6.4s, v6.4s, v22.4s\n\t" "fmul d4, d4, d1\n\t" "fmul v27.2d, v2.2d, v23.d[0]\n\t" "fmul d5, d5, d1\n\t"
+      "cmp x2, #0\n\t" "str x8, %[s32]\n\t" "fcvtzs w4, d4\n\t" "fcvtzs w5, d5\n\t"
+      "cneg x7, x2, lt\n\t" "sbfiz x6, x4, #7, #32\n\t" "sub x6, x6, w4, sxtw #3\n\t" "add x8, x6, x7\n\t"
+      "cmp x8, x7, lsl #1\n\t" "mov x27, v6.d[1]\n\t" "csel x6, x6, xzr, ls\n\t" "csel w9, w4, wzr, ls\n\t"
+      "sbfiz x10, x5, #7, #32\n\t" "cmp x3, #0\n\t" "sub x10, x10, w5, sxtw #3\n\t" "sub x6, x2, x6\n\t"
+      "asr x8, x6, #63\n\t" "cneg x11, x3, lt\n\t" "add x12, x10, x11\n\t" "cmp x12, x11, lsl #1\n\t"
+      "fmov x26, d6\n\t" "csel x10, x10, xzr, ls\n\t" "csel w15, w5, wzr, ls\n\t" "add x6, x6, x8, lsr #60\n\t"
+      "sub x10, x3, x10\n\t" "asr x12, x10, #63\n\t" "lsl x11, x15, #32\n\t" "add x11, x11, w9, sxtw\n\t"
+      "add x10, x10, x12, lsr #60\n\t" "asr x6, x6, #4\n\t" "asr x10, x10, #4\n\t" "add x10, x6, x10, lsl #32\n\t"
+      "add x14, x13, x10\n\t" "add x17, x11, x10, lsl #1\n\t" "add x19, x17, x11, lsl #1\n\t" "lsl x20, x11, #2\n\t"
+      "b 1f\n\t" ".p2align 11\n\t" "1:\n\t"
       "lsr w3, w14, #16\n\t" "lsr x1, x14, #48\n\t" "lsr w4, w13, #16\n\t" "lsr x2, x13, #48\n\t"
       "lsr x5, x27, #32\n\t" "madd w2, w2, w24, w4\n\t" "add x14, x14, x19\n\t" "madd w1, w1, w24, w3\n\t"
       "add x19, x19, x20\n\t" "add x13, x13, x17\n\t" "lsr x6, x14, #48\n\t" "lsr w8, w13, #16\n\t"
-      "lsr x3, x13, #48\n\t" "lsr w7, w14, #16\n\t" "madd w3, w3, w24, w8\n\t" "ldr q1, [sp, #16]\n\t"
+      "lsr x3, x13, #48\n\t" "lsr w7, w14, #16\n\t" "madd w3, w3, w24, w8\n\t" "ldr q1, %[s16]\n\t"
       "add x17, x17, x20\n\t" "add x14, x14, x19\n\t" "lsr x4, x26, #32\n\t" "lsr w9, w14, #16\n\t"
-      "madd w6, w6, w24, w7\n\t" "ldr q0, [sp]\n\t" "sub w7, w26, w25\n\t" "add x13, x13, x17\n\t"
+      "madd w6, w6, w24, w7\n\t" "ldr q0, %[s0]\n\t" "sub w7, w26, w25\n\t" "add x13, x13, x17\n\t"
       "sub x8, x4, x25, lsr #32\n\t" "add x17, x17, x20\n\t" "add x19, x19, x20\n\t" "sub x4, x5, x26, lsr #32\n\t"
       "lsr x10, x13, #48\n\t" "lsr w11, w13, #16\n\t" "lsr x5, x14, #48\n\t" "madd w10, w10, w24, w11\n\t"
       "add x13, x13, x17\n\t" "add x14, x14, x19\n\t" "lsr x21, x13, #48\n\t" "lsr w15, w13, #16\n\t"
@@ -138,7 +141,7 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "lsr w16, w14, #16\n\t" "madd w9, w9, w24, w5\n\t" "sbfiz x5, x28, #7, #32\n\t" "madd w21, w21, w24, w16\n\t"
       "cneg x16, x7, lt\n\t" "sub x5, x5, w28, sxtw #3\n\t" "add x19, x19, x20\n\t" "add x22, x5, x16\n\t"
       "cmp x22, x16, lsl #1\n\t" "fcvtzs w16, d4\n\t" "fmaxnm v0.2d, v0.2d, v21.2d\n\t" "fadd v24.2d, v24.2d, v18.2d\n\t"
-      "scvtf d2, w4\n\t" "ldr q3, [sp, #16]\n\t" "csel w22, w28, wzr, ls\n\t" "csel x5, x5, xzr, ls\n\t"
+      "scvtf d2, w4\n\t" "ldr q3, %[s16]\n\t" "csel w22, w28, wzr, ls\n\t" "csel x5, x5, xzr, ls\n\t"
       "sub x28, x7, x5\n\t" "cmp x8, #0\n\t" "asr x5, x28, #63\n\t" "sbfiz x7, x16, #7, #32\n\t"
       "sub x7, x7, w16, sxtw #3\n\t" "add x28, x28, x5, lsr #60\n\t" "asr x5, x28, #4\n\t" "cneg x28, x8, lt\n\t"
       "add x30, x7, x28\n\t" "cmp x30, x28, lsl #1\n\t" "fmul d2, d2, v27.d[1]\n\t" "ldrb w21, [x23, w21, uxtw]\n\t"
@@ -189,11 +192,10 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "ldrb w4, [x23, w4, uxtw]\n\t" "fmul v27.2d, v1.2d, v23.d[0]\n\t" "umin v0.4s, v0.4s, v22.4s\n\t" "ldrb w15, [x23, w15, uxtw]\n\t"
       "orr x5, x1, x3, lsl #16\n\t" "orr x1, x10, x9, lsl #8\n\t" "mov x25, x27\n\t" "str w2, [x0, #20]\n\t"
       "orr x2, x15, x4, lsl #8\n\t" "mov x27, v0.d[1]\n\t" "str w5, [x0, #24]\n\t" "orr x3, x1, x2, lsl #16\n\t"
-      "ldr x1, [sp, #32]\n\t" "fmov x26, d0\n\t" "str w3, [x0, #28]\n\t" "add x0, x0, #32\n\t"
-      "cmp x0, x1\n\t" "b.lo 1b\n\t" "b.ne 2f\n\t" "ldr q19, [sp, #48]\n\t"
-      "b 1b\n\t" "2:\n\t"
-      "add sp, sp, #64"
-      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn), "+r"(r_tx), "+r"(r_w)
+      "ldr x1, %[s32]\n\t" "fmov x26, d0\n\t" "str w3, [x0, #28]\n\t" "add x0, x0, #32\n\t"
+      "cmp x0, x1\n\t" "b.lo 1b\n\t" "b.ne 2f\n\t" "ldr q19, %[s48]\n\t"
+      "b 1b\n\t" "2:"
+      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn), "+r"(r_tx), "+r"(r_w), [s0] "=m"(s0), [s16] "=m"(s16), [s32] "=m"(s32), [s48] "=m"(s48)
       : "w"(r_kMin)
       : "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v22", "v23", "v24", "v25", "v27", "v28", "v30", "v31", "cc", "memory");
   st.d = r_d;

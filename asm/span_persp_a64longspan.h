@@ -118,14 +118,14 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     using std::integral_constant;
     if constexpr (kTwo) {
       // Run r + 1's steps (steps16<true>(s1, sB, c1)'s operations, sB = t1: steps16_sel) in run r's
-      // stage slots 0 .. 5, one dependent step a group, then the last run's step groups 0 .. 3
-      // in slots 6 .. 9 (their inputs are known: no wait for run r + 1's steps).
+      // stage slots 0 .. 5, one dependent step a group, and the last run's step groups 0 .. 5
+      // in slots 4 .. 9 (their inputs are known: no wait for run r + 1's steps).
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
       double sz = 0, c1 = 0, f1u = 0, f1v = 0;
       auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
-        if constexpr (G >= 6) step(integral_constant<int, G - 6>{});
+        if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
         if constexpr (G == 0) {
           d1u = t1.u - s1.u, d1v = t1.v - s1.v, sz = s1.z + t1.z;
           pin(d1u), pin(d1v), pin(sz);
@@ -149,7 +149,6 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       run0.draw(dest, texels, w, stage1);
       dest += 16;
       if (last == 16) {
-        step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
         short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u),
                          pack_steps(v1.d, u1.d), pack_steps(v1.dd, u1.dd),
@@ -157,11 +156,12 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
                          pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
         return;
       }
-      // Run r + 1 with the last run's step groups 4 .. 6 and 9 in its slots 0 .. 2 and 5.
+      // Run r + 1 with the last run's step groups 6 and 9 in its slots 0 and 1 (last_steps_ddi's
+      // integer chain done before draw_last).
       auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
-        if constexpr (G <= 2) step(integral_constant<int, G + 4>{});
-        if constexpr (G == 5) step(integral_constant<int, 9>{});
+        if constexpr (G <= 0) step(integral_constant<int, G + 6>{});
+        if constexpr (G == 1) step(integral_constant<int, 9>{});
       };
       Run16<true> run(s1.u, s1.v, u1, v1);
       run.draw(dest, texels, w, stage2);

@@ -552,6 +552,32 @@ SB_INLINE bool lin_short_a64(const PerspItem& x) {
   return (uint32_t(x.n) - 17u < uint32_t(kShortMax - 16)) & ((!x.span.second_order) | !nonzero_bits(x.span.dzi));
 }
 void lin_pairs_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+// is_long_a64(x) as one flag chain after the loads (cmp, two ccmp, as short_curve_a64: no
+// cset / and chain through the A53's 3-cycle integer writebacks), the chain started from the
+// first load; also loads x.n and x.dest (n_out, dest_out) in the same statement.
+SB_INLINE bool long_next_a64(const PerspItem& x, int& n_out, uint8_t*& dest_out) {
+  uint64_t bits;
+  uint32_t so;
+  int32_t n;
+  uint8_t* d;
+  uint32_t k;
+  bool r;
+  __asm__(
+      "ldrb %w[so], %[som]\n\t"
+      "mov %w[k], #80\n\t"
+      "ldr %w[n], %[nm]\n\t"
+      "ldr %x[b], %[dzi]\n\t"
+      "ldr %x[d], %[dm]\n\t"
+      "cmp %w[so], #0\n\t"
+      "lsl %x[b], %x[b], #1\n\t"
+      "ccmp %w[n], %w[k], #4, ne\n\t"
+      "ccmp %x[b], #0, #4, gt"
+      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [n] "=&r"(n), [d] "=&r"(d), [k] "=&r"(k)
+      : [dzi] "m"(x.span.dzi), [som] "m"(x.span.second_order), [nm] "m"(x.n), [dm] "m"(x.dest));
+  n_out = n;
+  dest_out = d;
+  return r;
+}
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
 // dzi == 0.0 tested on its bits (nonzero_bits: no FP load and compare on the test's chain).
 SB_INLINE bool is_lin_a64(const PerspItem& x) {
@@ -575,8 +601,7 @@ __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int 
     persp_long_a64_inl(dest, n, texels, width, *q);
     if (next == end) return;
     const PerspItem* it = next++;
-    const bool is_long = is_long_a64(*it);
-    dest = it->dest, n = it->n;
+    const bool is_long = long_next_a64(*it, n, dest);
     if (!is_long) return batch_from(it, end, texels, width);
     // q = &it->span computed here, after the test, from next in its register (in the set-up's
     // qemu block: llvm-mca times that block as a loop of its own, and a q from the block

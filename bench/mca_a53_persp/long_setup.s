@@ -7,28 +7,28 @@
 // [sp, #48] offl = [min(lastl - 33, 32), lastl - 49] (full = (n - 81) / 32 + 1, lastl = n -
 // 32 full in 49 .. 80) (sp already lowered by 64). Reloads what it stored: order_search --mem.
 add x4, x1, #40
-mov x6, #0xbfb0000000000000
 ldr d0, [x1, #48]
+mov x6, #0xbfb0000000000000
+ldr d16, [x1, #8]
 add x3, x1, #32
-ldr d3, [x1, #16]
 ldr d17, [x1, #24]
+ldr d3, [x1, #16]
 fmov v18.2d, #16.0
 fmov d23, x6
-ldr d16, [x1, #8]
 add x5, x1, #56
 sub w7, w2, #81
 lsr w7, w7, #5
 ld1 {v17.d}[1], [x4]
 sub w9, w2, w7, lsl #5
 ld1 {v3.d}[1], [x3]
-fmul d23, d16, d23
 fadd d5, d0, d18
+fmul d23, d16, d23
 ld1r {v22.2d}, [x5]
-mov w11, #32
 str q3, [sp, #16]
+mov w11, #32
 ld1r {v1.2d}, [x1]
-dup v16.2d, v16.d[0]
 ldr q4, [sp, #16]
+dup v16.2d, v16.d[0]
 mov v0.d[1], v5.d[0]
 fmov v20.2d, #1.0
 fadd v19.2d, v18.2d, v18.2d
@@ -47,8 +47,8 @@ ldr q25, [sp, #16]
 fmaxnm v1.2d, v1.2d, v21.2d
 csel w10, w10, w11, lt
 fmla v2.2d, v16.2d, v30.2d
-fmla v6.2d, v17.2d, v30.d[0]
 fmla v4.2d, v17.2d, v0.d[1]
+fmla v6.2d, v17.2d, v30.d[0]
 fdiv v31.2d, v20.2d, v1.2d
 scvtf d27, w9
 fmaxnm v2.2d, v2.2d, v21.2d
@@ -63,10 +63,10 @@ mov v7.d[1], v27.d[0]
 fcvtzu v4.2d, v4.2d, #16
 fadd d24, d5, d18
 uqxtn v3.2s, v3.2d
-fmul v6.2d, v6.2d, v26.d[0]
-uqxtn2 v3.4s, v4.2d
-ext v29.16b, v31.16b, v26.16b, #8
 fmul v25.2d, v25.2d, v26.d[1]
+fmul v6.2d, v6.2d, v26.d[0]
+ext v29.16b, v31.16b, v26.16b, #8
+uqxtn2 v3.4s, v4.2d
 umin v3.4s, v3.4s, v22.4s
 fcvtzu v6.2d, v6.2d, #16
 fcvtzu v25.2d, v25.2d, #16
@@ -84,30 +84,30 @@ fadd d28, d24, d18
 scvtf d4, w2
 scvtf d5, w3
 add x8, x8, #32
-fmul v27.2d, v2.2d, v23.d[0]
-mov v24.d[1], v28.d[0]
-fmul d4, d4, d1
-umin v6.4s, v6.4s, v22.4s
-fmul d5, d5, d1
 sxtw x2, w2
+mov v24.d[1], v28.d[0]
+umin v6.4s, v6.4s, v22.4s
+fmul d4, d4, d1
+fmul v27.2d, v2.2d, v23.d[0]
+fmul d5, d5, d1
 cmp x2, #0
+str x8, [sp, #32]
 fcvtzs w4, d4
 fcvtzs w5, d5
 cneg x7, x2, lt
-str x8, [sp, #32]
 sbfiz x6, x4, #7, #32
 sub x6, x6, w4, sxtw #3
 add x8, x6, x7
 cmp x8, x7, lsl #1
 mov x27, v6.d[1]
-csel w9, w4, wzr, ls
 csel x6, x6, xzr, ls
+csel w9, w4, wzr, ls
 sbfiz x10, x5, #7, #32
 cmp x3, #0
 sub x10, x10, w5, sxtw #3
 sub x6, x2, x6
-cneg x11, x3, lt
 asr x8, x6, #63
+cneg x11, x3, lt
 add x12, x10, x11
 cmp x12, x11, lsl #1
 fmov x26, d6
@@ -122,7 +122,7 @@ add x10, x10, x12, lsr #60
 asr x6, x6, #4
 asr x10, x10, #4
 add x10, x6, x10, lsl #32
-add x17, x11, x10, lsl #1
 add x14, x13, x10
-lsl x20, x11, #2
+add x17, x11, x10, lsl #1
 add x19, x17, x11, lsl #1
+lsl x20, x11, #2
