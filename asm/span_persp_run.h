@@ -649,10 +649,10 @@ SB_INLINE void tail_store(uint8_t* __restrict dest, const uint8_t* t) {
 }
 // kHalves: pixels 0 .. 7 as two chunks of 4 (ARMv7's mid path: the 8-chunk's eight positions,
 // live at once, were spilled there, 16 stack loads / stores; A9 persp64 7.60 -> 7.51).
-// draw_last_pos: the same from the position already in TailPos form (p as tail_pos<kCurve>
-// returns it: the caller's packed registers, e.g. asm/span_persp_a64mid.h's last run).
 template <bool kCurve, bool kHalves = false>
-SB_INLINE void draw_last_pos(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, TailPos p) {
+SB_INLINE void draw_last(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
+                         uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+  TailPos p = tail_pos<kCurve>(u, v, du, dv, ddu, ddv);
   auto chunk = [&](auto cc) SB_LAMBDA_INLINE {
     constexpr int C = decltype(cc)::value;
     uint8_t t[C];
@@ -668,11 +668,6 @@ SB_INLINE void draw_last_pos(uint8_t* __restrict dest, int n, const uint8_t* __r
   if (n & 4) chunk(std::integral_constant<int, 4>{});
   if (n & 2) chunk(std::integral_constant<int, 2>{});
   if (n & 1) chunk(std::integral_constant<int, 1>{});
-}
-template <bool kCurve, bool kHalves = false>
-SB_INLINE void draw_last(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint32_t u,
-                         uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-  draw_last_pos<kCurve, kHalves>(dest, n, texels, w, tail_pos<kCurve>(u, v, du, dv, ddu, ddv));
 }
 
 // ARMv7: max_or_lo without a branch (vcmpe, vmrs, a conditional vmov: le is x <= lo or
