@@ -1,22 +1,22 @@
-add x1, x13, x9
 add x2, x10, x9, lsl #1
+add x1, x13, x9
 lsl x4, x10, #2
-add x11, x13, x2
-lsr x7, x1, #48
 lsr w6, w13, #16
-lsr w8, w1, #16
+lsr x7, x1, #48
 add x3, x2, x10, lsl #1
+lsr w8, w1, #16
+add x11, x13, x2
 lsr x5, x13, #48
 madd w14, w7, w18, w8
 add x2, x2, x4
 madd w12, w5, w18, w6
 add x1, x1, x3
 add x3, x3, x4
-lsr x15, x11, #48
-lsr w19, w1, #16
-lsr w16, w11, #16
 lsr x17, x1, #48
+lsr x15, x11, #48
+lsr w16, w11, #16
 add x11, x11, x2
+lsr w19, w1, #16
 ldrb w20, [x26, w12, uxtw]
 add x2, x2, x4
 madd w22, w15, w18, w16
@@ -24,73 +24,73 @@ ldrb w21, [x26, w14, uxtw]
 madd w5, w17, w18, w19
 add x1, x1, x3
 add x3, x3, x4
+lsr w12, w1, #16
 lsr w7, w11, #16
 lsr x6, x11, #48
 lsr x8, x1, #48
-lsr w12, w1, #16
 ldrb w16, [x26, w5, uxtw]
 madd w19, w8, w18, w12
+orr x14, x20, x21, lsl #8
 add x11, x11, x2
 madd w17, w6, w18, w7
-orr x14, x20, x21, lsl #8
 ldrb w15, [x26, w22, uxtw]
 add x1, x1, x3
 add x3, x3, x4
 lsr x20, x11, #48
-add x2, x2, x4
 lsr x22, x1, #48
 lsr w5, w1, #16
+add x1, x1, x3
+add x2, x2, x4
+add x3, x3, x4
 lsr w21, w11, #16
 add x11, x11, x2
-add x1, x1, x3
-add x3, x3, x4
 add x2, x2, x4
 orr x6, x15, x16, lsl #8
 ldrb w8, [x26, w17, uxtw]
-madd w15, w20, w18, w21
 madd w16, w22, w18, w5
+madd w15, w20, w18, w21
 ldrb w12, [x26, w19, uxtw]
-orr x7, x14, x6, lsl #16
 add x5, x23, x24
+orr x7, x14, x6, lsl #16
 lsr x14, x11, #48
-lsr w19, w1, #16
 lsr w6, w11, #16
+lsr w19, w1, #16
 lsr x17, x1, #48
+add x1, x1, x3
 ldrb w21, [x26, w15, uxtw]
 orr x20, x8, x12, lsl #8
 add x8, x25, x24, lsl #1
-add x1, x1, x3
-add x12, x8, x25, lsl #1
-add x3, x3, x4
 add x11, x11, x2
+add x12, x8, x25, lsl #1
 lsl x15, x25, #2
 madd w24, w14, w18, w6
 ldrb w22, [x26, w16, uxtw]
 madd w25, w17, w18, w19
+add x3, x3, x4
 lsr w19, w1, #16
 add x2, x2, x4
-lsr x14, x11, #48
 lsr x17, x1, #48
 lsr w6, w11, #16
+lsr x14, x11, #48
 add x1, x1, x3
 add x11, x11, x2
-add x3, x3, x4
 add x2, x2, x4
+add x3, x3, x4
 orr x4, x21, x22, lsl #8
 orr x21, x20, x4, lsl #16
-orr x22, x7, x21, lsl #32
-ldrb w4, [x26, w25, uxtw]
 ldrb w20, [x26, w24, uxtw]
-madd w7, w14, w18, w6
+orr x22, x7, x21, lsl #32
 madd w21, w17, w18, w19
+ldrb w4, [x26, w25, uxtw]
 str x22, [x28, #32]
+madd w7, w14, w18, w6
 lsr x22, x11, #48
 lsr x25, x1, #48
 lsr w24, w11, #16
-add x11, x11, x2
 lsr w14, w1, #16
-ldrb w19, [x26, w21, uxtw]
+add x11, x11, x2
 ldrb w17, [x26, w7, uxtw]
+ldrb w19, [x26, w21, uxtw]
 madd w2, w22, w18, w24
 orr x6, x20, x4, lsl #8
 add x1, x1, x3
@@ -100,25 +100,25 @@ lsr x20, x11, #48
 lsr w21, w1, #16
 lsr x7, x1, #48
 madd w11, w20, w18, w4
-orr x22, x17, x19, lsl #8
+add x16, x28, #48
 madd w1, w7, w18, w21
 ldrb w25, [x26, w2, uxtw]
+orr x22, x17, x19, lsl #8
 ldrb w14, [x26, w3, uxtw]
-orr x24, x6, x22, lsl #16
 ldrb w19, [x26, w11, uxtw]
+orr x24, x6, x22, lsl #16
 ldrb w6, [x26, w1, uxtw]
-add x16, x28, #48
-orr x17, x25, x14, lsl #8
-lsr x20, x23, #48
 lsr x21, x5, #48
+orr x17, x25, x14, lsl #8
 orr x22, x19, x6, lsl #8
+lsr x20, x23, #48
 lsr w4, w23, #16
 orr x2, x17, x22, lsl #16
-orr x3, x24, x2, lsl #32
 madd w7, w20, w18, w4
 lsr w25, w5, #16
-str x3, [x28, #40]
+orr x3, x24, x2, lsl #32
 madd w14, w21, w18, w25
+str x3, [x28, #40]
 tbz w0, #3, 1f
 add x23, x23, x8
 add x8, x8, x15
