@@ -3,7 +3,8 @@
 # span (asm/span_persp_a64mid.h's runs_k3) as one asm block with virtual core registers,
 # allocated here (the register freed longest ago first), in five regions: run 2 with the last
 # run's chain set-up, then chunks of 8, 4, 2, 1 pixels, each behind a tbz on the length's bit.
-#   gen_run2l.py OUT.s [pre]   (pre: each region computes the next chunk's first two texel offsets)
+#   gen_run2l.py OUT.s [pre] [w4]   (pre: each region computes the next chunk's first two texel
+#   offsets; w4: run 2's pixels in four 32-bit stores, not two 64-bit ones)
 # Inputs: run 2 x13 = uv (v 2^32 + u), x9 = duv, x10 = dduv; the last run x23, x24, x25 (the
 # same packing); w in w18, texels x26, dest x28, the last run's length in w0. Chains as Run16:
 # c0 = uv_k, c1 = uv_{k+1}, stepped by e0 = 2 d + dd, e1 = 2 d + 3 dd, each e by 4 dd a pixel
@@ -11,6 +12,7 @@
 import sys
 out = sys.argv[1]
 PRE = "pre" in sys.argv[2:]  # each region computes the texel offsets of the next chunk's first pair
+W4 = "w4" in sys.argv[2:]  # run 2 stored as four words (else two 64-bit stores)
 POOL = [1, 2, 3, 4, 5, 6, 7, 8, 11, 12, 14, 15, 16, 17, 19, 20, 21, 22, 9, 10, 13]
 regions = []  # lists of (fmt, writes, reads)
 
@@ -48,14 +50,15 @@ def pixels(pfx, npairs, c0in, upd_last, chains, pre=False):
     return st
 
 
-def gather(pfx, npairs, store):
-    """the orr tree of npairs pairs (1, 2, 4, 8 pairs: 64-bit words of 8) and its stores."""
+def gather(pfx, npairs, store, words=False):
+    """the orr tree of npairs pairs (1, 2, 4, 8 pairs: 64-bit words of 8, or of 4 if words)
+    and its stores."""
     D = {g: [] for g in range(npairs)}
     for g in range(npairs):
         D[g].append((f"orr {{{pfx}p{g}}}, {{{pfx}b{2*g}}}, {{{pfx}b{2*g+1}}}, lsl #8", [f"{pfx}p{g}"], [f"{pfx}b{2*g}", f"{pfx}b{2*g+1}"]))
         if npairs >= 2 and g % 2 == 1:
             D[g].append((f"orr {{{pfx}q{g//2}}}, {{{pfx}p{g-1}}}, {{{pfx}p{g}}}, lsl #16", [f"{pfx}q{g//2}"], [f"{pfx}p{g-1}", f"{pfx}p{g}"]))
-        if npairs >= 4 and g % 4 == 3:
+        if npairs >= 4 and g % 4 == 3 and not words:
             j = g // 4
             D[g].append((f"orr {{{pfx}r{j}}}, {{{pfx}q{2*j}}}, {{{pfx}q{2*j+1}}}, lsl #32", [f"{pfx}r{j}"], [f"{pfx}q{2*j}", f"{pfx}q{2*j+1}"]))
         D[g] += store(g)
@@ -87,7 +90,10 @@ r0 = [("add {c1}, {c0in}, {d}", ["c1"], ["c0in", "d"]),
       ("add {e1}, {e0}, {dd}, lsl #1", ["e1"], ["e0", "dd"]),
       ("lsl {dd4}, {dd}, #2", ["dd4"], ["dd"])]
 st = pixels("", 8, "c0in", False, ("c0", "c1", "e0", "e1", "dd4"))
-D = gather("", 8, lambda g: [(f"str {{r{g//4}}}, [x28, #{32 + 8 * (g // 4)}]", [], [f"r{g//4}"])] if g % 4 == 3 else [])
+if W4:  # four 32-bit stores (two orr fewer, two stores more)
+    D = gather("", 8, lambda g: [(f"str {{q{g//2}}}:w, [x28, #{32 + 4 * (g // 2)}]", [], [f"q{g//2}"])] if g % 2 == 1 else [], True)
+else:
+    D = gather("", 8, lambda g: [(f"str {{r{g//4}}}, [x28, #{32 + 8 * (g // 4)}]", [], [f"r{g//4}"])] if g % 4 == 3 else [])
 body = pipeline(st, D, 8)
 setup = [("add {L1}, {Lx}, {Ld}", ["L1"], ["Lx", "Ld"]),
          ("add {Le0}, {Ldd}, {Ld}, lsl #1", ["Le0"], ["Ldd", "Ld"]),
