@@ -85,6 +85,9 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
   __asm__("vmov %0, %1, %P2" : "=r"(a), "=r"(b) : "w"(x));
   *lo = a, *hi = b;
 }
+// lanes() on a register variable itself (the asm operand is the variable: the compiler then
+// reads it where it is bound, with no copy into another register, e.g. a callee-saved one).
+#define SB_V7_LANES(x, lo, hi) __asm__("vmov %0, %1, %P2" : "=r"(lo), "=r"(hi) : "w"(x))
 
 // One 16-pixel second-order run in one asm statement: surface_span's pixels
 // (u_{k+1} = u_k + du_k, du_{k+1} = du_k + ddu, likewise v; texel (v_k >> 16) w + (u_k >> 16)),
@@ -326,7 +329,7 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 #define SB_V7_PRO_CLOB                                                                                     \
   "cc", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d26", "d27", "d30", "d31"
 template <bool kOwnSave>
-SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, RunSteps* su, RunSteps* sv) {
+SB_INLINE V4 mid_prologue(const PerspSpan& p, int n, double r[9], RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d24");
@@ -348,8 +351,8 @@ SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, Run
     __asm__ volatile(SB_V7_PROLOGUE : SB_V7_PRO_OUT : SB_V7_PRO_IN : SB_V7_PRO_CLOB, "d8", "d9", "d10", "d11");
   }
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[6] = o6, r[7] = o7, r[8] = o8;
-  *q89 = o9;
   *su = RunSteps{int32_t(du), int32_t(ddu)}, *sv = RunSteps{int32_t(dv), int32_t(ddv)};
+  return o9;
 }
 
 SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
@@ -362,11 +365,9 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   const uint32_t w = uint32_t(width);
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
-  V4 q89;
   RunSteps su, sv;
-  mid_prologue<kOwnSave>(p, n, r, &q89, &su, &sv);
+  register V4 qd __asm__("d24") = mid_prologue<kOwnSave>(p, n, r, &su, &sv);
   // The quotients [qu, qv] (d25, d24: q12, which run 0 leaves alone) until run 1 reads them.
-  register V4 qd __asm__("d24") = q89;
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
@@ -556,7 +557,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
   };
   // d2: the last run's ddf, converted (I); d0: trunc(q) (L); d6: scratch (delta in run 1).
-  register double qi __asm__("d2");
+  register double qi __asm__("d6");
   register double sdr __asm__("d0");
   // The last run's steps (last_ddi, last_steps_i: last_dd per lane, u and v in one d
   // register), beside runs 1 and 2: ddf = -2 (q curve) converted (cvt_sat) and kept if
@@ -573,7 +574,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   register V4 h9 __asm__("d18"), h10 __asm__("d20"), h11 __asm__("d22"), h12 __asm__("d24") = qd;
   register V4 h13 __asm__("d26"), h14 __asm__("d28"), h15 __asm__("d30");
   u0 = u1, v0 = v1;
-  lanes(uv2, &u1, &v1);
+  SB_V7_LANES(uv2, u1, v1);
   steps_of(sd1, sdd1, &su, &sv);
   {
     RunRegs rr = run_regs(u0, v0, su, sv);
@@ -617,7 +618,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[v], %[dv]\n\t"
                      "vabs.s32 d23, d0\n\t"
                      "str %[a], [%[d]]\n\t"
-                     "vsub.i32 d6, d4, d3\n\t"
+                     "vsub.i32 d2, d4, d3\n\t"
                      "add %[u], %[du]\n\t"
                      "smulbt %[a], %[w], %[v]\n\t"
                      "add %[dv], %[ddv]\n\t"
@@ -638,7 +639,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[v], %[dv]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[u], %[du]\n\t"
-                     "vcvt.s32.f64 s4, d16\n\t"
+                     "vcvt.s32.f64 s12, d16\n\t"
                      "orr %[a], %[a], %[b], lsl #8\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "add %[v], %[dv]\n\t"
@@ -651,8 +652,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "vcvt.s32.f64 s5, d17\n\t"
-                     "vmul.i32 d19, d2, d26\n\t"
+                     "vcvt.s32.f64 s13, d17\n\t"
+                     "vmul.i32 d19, d6, d26\n\t"
                      "add %[du], %[ddu]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "add %[v], %[dv]\n\t"
@@ -664,7 +665,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[v], %[dv]\n\t"
                      "uxtah %[a], %[a], %[u], ror #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "vabs.s32 d30, d2\n\t"
+                     "vabs.s32 d30, d6\n\t"
                      "ldrb %[a], [%[tx], %[a]]\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[dv], %[ddv]\n\t"
@@ -677,7 +678,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "orr %[a], %[a], %[b], lsl #8\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "add %[v], %[dv]\n\t"
-                     "vshr.s32 d21, d6, #31\n\t"
+                     "vshr.s32 d21, d2, #31\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "vcgt.u32 d20, d25, d30\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
@@ -686,7 +687,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vcgt.u32 d18, d24, d29\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "vabs.s32 d22, d6\n\t"
+                     "vabs.s32 d22, d2\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "vand d20, d20, d18\n\t"
                      "add %[du], %[ddu]\n\t"
@@ -725,17 +726,17 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "vand d2, d2, d20\n\t"
+                     "vand d6, d6, d20\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      : SB_V7_RUN_OPERANDS(d1), [qi] "=w"(qi), [sd] "=w"(sdr), "=w"(h9), "=w"(h10), "=w"(h11),
                        "+w"(h12), "=w"(h13), "=w"(h14), "=w"(h15)
                      : SB_V7_RUN_INPUTS(d1), [cv] "w"(curve), [uv3] "w"(uv3), [uv4] "w"(uv4), [k] "r"(kk)
-                     : "memory", "d6", "d16", "d17");
+                     : "memory", "d2", "d16", "d17");
   }
   // Run 2; beside it the rest of the last run's steps.
   u0 = u1, v0 = v1;
-  lanes(uv3, &u1, &v1);
+  SB_V7_LANES(uv3, u1, v1);
   steps_of(sd2, sdd2, &su, &sv);
   RunSteps lu, lv;
   {
@@ -801,7 +802,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vshr.s32 d25, d19, #1\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[du], %[ddu]\n\t"
-                     "vand d6, d19, d28\n\t"
+                     "vand d2, d19, d28\n\t"
                      "add %[v], %[dv]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
@@ -809,12 +810,12 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vsub.i32 d25, d23, d25\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[du], %[ddu]\n\t"
-                     "vand d6, d6, d29\n\t"
+                     "vand d2, d2, d29\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "vqmovn.u64 d16, q8\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "vsub.i32 d25, d25, d6\n\t"
+                     "vsub.i32 d25, d25, d2\n\t"
                      "add %[v], %[dv]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[u], %[du]\n\t"
@@ -843,7 +844,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "add %[u], %[du]\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "vbic d2, d2, d16\n\t"
+                     "vbic d6, d6, d16\n\t"
                      "add %[du], %[ddu]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
@@ -879,7 +880,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[du], %[ddu]\n\t"
                      "add %[u], %[du]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "vmov %[du], %[dv], d2\n\t"
+                     "vmov %[du], %[dv], d6\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
@@ -887,7 +888,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vmov %[a], %[b], d16\n\t"
                      : SB_V7_RUN_OPERANDS(d2), [qi] "+w"(qi), "+w"(h9), "+w"(h12), "+w"(h14), "+w"(h15)
                      : SB_V7_RUN_INPUTS(d2), [L] "w"(sdr), "w"(h10), "w"(h11), "w"(h13)
-                     : "memory", "d6", "d16", "d17");
+                     : "memory", "d2", "d16", "d17");
     lu = RunSteps{int32_t(a), int32_t(du)}, lv = RunSteps{int32_t(b), int32_t(dv)};
   }
   // The last run (n - 48 pixels from sample 3 to sample 4).
@@ -904,6 +905,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
 #undef SB_V7_PRO_IN
 #undef SB_V7_PRO_OUT
 #undef SB_V7_PROLOGUE
+#undef SB_V7_LANES
 #undef SB_V7_RUN_OPERANDS
 #undef SB_V7_RUN
 #undef SB_V7_HI_END
