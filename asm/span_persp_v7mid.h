@@ -123,7 +123,7 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
 // order bench/order_search.py --arch=armv7 --runs found within the statement against the
 // Cortex-A9 model (on the blocks as qemu cuts them; every reordering keeps each register's and
 // memory's order of reads and writes). The VFP / NEON registers are
-// named as bound (uv1 .. uv4 = d1 .. d4, curve = d5, c1 = d28, c2 = d29, L = sd = d10; those
+// named as bound (uv1 .. uv4 = d1 .. d4, curve = d5, c1 = d28, c2 = d29, L = sd = d0; those
 // stay listed as operands).
 #define SB_V7_RUN_OPERANDS(dst)                                                               \
   [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "=&r"(a), [b] "=&r"(b), \
@@ -153,7 +153,8 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // place (vcvt.u32.f64 #16); vtrn.32 pairs q0 / q3, q1 / q15, d4 / d17 (sample j's [u, v]
 // in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d11,
 // converted (d30, d31), times c_0, cvt_sat into d6; the last run's [du, dv] in d7,
-// converted (d8, d9), divided by L. A register is reused only after its value's last read.
+// converted (d8, d9), divided by L into d25, d24 (qu after zck's last read). A register is
+// reused only after its value's last read. d8 .. d11 are the prologue's own (see mid_prologue).
 // The multiply-adds are fused, as the compiled walker's are (GCC contracts them; the tests
 // compare bit for bit). Then run 0's steps16_dd for u and v in the same statement (its
 // integer work issued beside the VFP work): the deltas from d11 (one lane at a time into
@@ -162,7 +163,8 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // (16 |x| - |x|) << 3 inside the compare (|x| <= 2^25: 15 |x| < 2^29, 120 |x| < 2^32, the
 // same unsigned compare: lo here is hi there with the operands swapped); the address
 // registers (p + 16 .. p + 56, the row + 16, + 32) are the outputs' registers until then.
-// r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; q89: the quotients; su, sv: run 0's steps.
+// r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; su, sv: run 0's steps; returns the
+// quotients [qv, qu] (d24, d25).
 // The prologue's instructions (mid_prologue), one string.
 #define SB_V7_PROLOGUE \
   "add %[t2], %[nt], #32\n\t" \
@@ -367,7 +369,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   double r[9];
   RunSteps su, sv;
   register V4 qd __asm__("d24") = mid_prologue<kOwnSave>(p, n, r, &su, &sv);
-  // The quotients [qu, qv] (d25, d24: q12, which run 0 leaves alone) until run 1 reads them.
+  // The quotients [qv, qu] (d24, d25: q12, which run 0 leaves alone) until run 1 reads them.
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
@@ -556,7 +558,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     lanes(d, &a, &b), lanes(dd, &c, &e);
     *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
   };
-  // d2: the last run's ddf, converted (I); d0: trunc(q) (L); d6: scratch (delta in run 1).
+  // d6: the last run's ddf, converted (I); d0: trunc(q) (L); d2: scratch (delta in run 1).
+  // Runs 1 and 2 keep to d0 .. d7, d16 .. d31 (no callee-saved register: see mid_prologue).
   register double qi __asm__("d6");
   register double sdr __asm__("d0");
   // The last run's steps (last_ddi, last_steps_i: last_dd per lane, u and v in one d
@@ -566,8 +569,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   // r = pd - s Q, m = (s - 1) pdd (pdd = dd mirrored by sg; masking and mirroring commute
   // with the product), d0 = Q - (m >> 1) - (m & 1 and s > 2 r), mirrored; rejected iff
   // T |dd| > pd (T = s (s - 1) / 2; the 64-bit product minus pd, saturating, is not 0): then
-  // linear and 0, else d0 and dd. Handed from run 1 to run 2 in fixed registers: d8 = I
-  // (ranged), d10 = L, d31 = |I| ranged, d27 = T, d19 = m (masked), d21 = sg, d22 = pd,
+  // linear and 0, else d0 and dd. Handed from run 1 to run 2 in fixed registers: d6 = I
+  // (ranged), d0 = L, d31 = |I| ranged, d27 = T, d19 = m (masked), d21 = sg, d22 = pd,
   // d23 = Q, d24 = S, d28 = r, d29 = [1, 1]. The results leave through a, b (d) and du, dv
   // (dd), free once the pixels are drawn.
   // Hand-off quads (d18 .. d31 in pairs; only the named halves carry values).
