@@ -800,12 +800,34 @@ void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* 
 }
 
 #if defined(__arm__) && !defined(__aarch64__)
+#if defined(SB_V7_MID)
+namespace {
+// The single-span entry's other spans (every one but persp_mid_v7's), out of line: reached
+// from surface_span_persp_fast by a tail branch, so their registers are saved here, not on
+// the entry's path.
+__attribute__((noinline)) void persp_one_rest_v7(uint8_t* dest, int n, const uint8_t* texels, int width, int,
+                                                 const PerspSpan& p) {
+  persp_one(dest, n, texels, width, p);
+}
+}  // namespace
+#endif
 // ARMv7: after the batch entry (the object's last function), so that its code size does not
 // move the batch entry's inlined long-span loop against 4 KiB pages (where qemu cuts the
 // blocks bench/count.sh times; the tail's staged run moved it: A9 persp1920 6.92 -> 6.98).
-void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
+// With SB_V7_MID: persp_mid_v7's spans (kMidMin .. kMidMax pixels, second order, dzi != 0)
+// drawn here, the others by persp_one_rest_v7 (a tail call), so this function saves only what
+// persp_mid_v7 uses (r4 .. r11: its asm keeps to d0 .. d7, d16 .. d31 between statements).
+void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& p) {
+#if defined(SB_V7_MID)
+  if (uint32_t(n - kMidMin) <= uint32_t(kMidMax - kMidMin) && p.second_order && !is_zero_v7(p.dzi)) {
+    return persp_mid_v7<true>(dest, n, texels, width, p);
+  }
+  return persp_one_rest_v7(dest, n, texels, width, height, p);
+#else
+  (void)height;
   persp_one(dest, n, texels, width, p);
+#endif
 }
 #endif
 

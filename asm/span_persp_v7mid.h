@@ -85,6 +85,9 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
   __asm__("vmov %0, %1, %P2" : "=r"(a), "=r"(b) : "w"(x));
   *lo = a, *hi = b;
 }
+// lanes() on a register variable itself (the asm operand is the variable: the compiler then
+// reads it where it is bound, with no copy into another register, e.g. a callee-saved one).
+#define SB_V7_LANES(x, lo, hi) __asm__("vmov %0, %1, %P2" : "=r"(lo), "=r"(hi) : "w"(x))
 
 // One 16-pixel second-order run in one asm statement: surface_span's pixels
 // (u_{k+1} = u_k + du_k, du_{k+1} = du_k + ddu, likewise v; texel (v_k >> 16) w + (u_k >> 16)),
@@ -120,7 +123,7 @@ SB_INLINE void lanes(double x, int32_t* lo, int32_t* hi) {
 // order bench/order_search.py --arch=armv7 --runs found within the statement against the
 // Cortex-A9 model (on the blocks as qemu cuts them; every reordering keeps each register's and
 // memory's order of reads and writes). The VFP / NEON registers are
-// named as bound (uv1 .. uv4 = d1 .. d4, curve = d5, c1 = d28, c2 = d29, L = sd = d10; those
+// named as bound (uv1 .. uv4 = d1 .. d4, curve = d5, c1 = d28, c2 = d29, L = sd = d0; those
 // stay listed as operands).
 #define SB_V7_RUN_OPERANDS(dst)                                                               \
   [u] "+&r"(u), [v] "+&r"(v), [du] "+&r"(du), [dv] "+&r"(dv), [a] "=&r"(a), [b] "=&r"(b), \
@@ -150,7 +153,8 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // place (vcvt.u32.f64 #16); vtrn.32 pairs q0 / q3, q1 / q15, d4 / d17 (sample j's [u, v]
 // in d_j), clamped by vmin.u32 with q11 / d23; run 0's [u_1 - u_0, v_1 - v_0] in d11,
 // converted (d30, d31), times c_0, cvt_sat into d6; the last run's [du, dv] in d7,
-// converted (d8, d9), divided by L. A register is reused only after its value's last read.
+// converted (d8, d9), divided by L into d25, d24 (qu after zck's last read). A register is
+// reused only after its value's last read. d8 .. d11 are the prologue's own (see mid_prologue).
 // The multiply-adds are fused, as the compiled walker's are (GCC contracts them; the tests
 // compare bit for bit). Then run 0's steps16_dd for u and v in the same statement (its
 // integer work issued beside the VFP work): the deltas from d11 (one lane at a time into
@@ -159,196 +163,213 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 // (16 |x| - |x|) << 3 inside the compare (|x| <= 2^25: 15 |x| < 2^29, 120 |x| < 2^32, the
 // same unsigned compare: lo here is hi there with the operands swapped); the address
 // registers (p + 16 .. p + 56, the row + 16, + 32) are the outputs' registers until then.
-// r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; q89: the quotients; su, sv: run 0's steps.
-SB_INLINE void mid_prologue(const PerspSpan& p, int n, double r[9], V4* q89, RunSteps* su, RunSteps* sv) {
+// r: the samples [u, v] (d0 .. d4), c_1, c_2, curve; su, sv: run 0's steps; returns the
+// quotients [qv, qu] (d24, d25).
+// The prologue's instructions (mid_prologue), one string.
+#define SB_V7_PROLOGUE \
+  "add %[t2], %[nt], #32\n\t" \
+  "add %[ddu], %[pz], #48\n\t" \
+  "vld1.64 {d22, d23}, [%[ddu]]\n\t" \
+  "add %[dv], %[pz], #32\n\t" \
+  "vld1.64 {d16, d17}, [%[pz]]\n\t" \
+  "vld1.64 {d24-d27}, [%[t2]]\n\t" \
+  "vld1.64 {d20}, [%[pz]]\n\t" \
+  "vld1.64 {d28, d29}, [%[nt]]\n\t" \
+  "vfma.f64 d16, d17, d22\n\t" \
+  "add %[t1], %[nt], #16\n\t" \
+  "vadd.f64 d30, d22, d28\n\t" \
+  "vld1.64 {d21}, [%[pz]]\n\t" \
+  "vadd.f64 d31, d22, d29\n\t" \
+  "vmul.f64 d25, d17, d25\n\t" \
+  "vld1.64 {d18}, [%[pz]]\n\t" \
+  "vfma.f64 d18, d17, d30\n\t" \
+  "vld1.64 {d19}, [%[pz]]\n\t" \
+  "add %[du], %[pz], #16\n\t" \
+  "vld1.64 {d2}, [%[du]]\n\t" \
+  "vadd.f64 d9, d30, d29\n\t" \
+  "vld1.64 {d10, d11}, [%[t1]]\n\t" \
+  "vadd.f64 d6, d30, d28\n\t" \
+  "vfma.f64 d19, d17, d31\n\t" \
+  "vcmpe.f64 d16, d24\n\t" \
+  "vld1.64 {d7, d8}, [%[dv]]\n\t" \
+  "vfma.f64 d20, d17, d9\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "vadd.f64 d6, d6, d11\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 d16, d24\n\t" \
+  "vcmpe.f64 d18, d24\n\t" \
+  "vdiv.f64 d16, d27, d16\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "vld1.64 {d3}, [%[du]]\n\t" \
+  "vcmpe.f64 d19, d24\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 d18, d24\n\t" \
+  "vdiv.f64 d18, d27, d18\n\t" \
+  "vld1.64 {d0}, [%[du]]\n\t" \
+  "vfma.f64 d21, d17, d6\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 d19, d24\n\t" \
+  "vcmpe.f64 d20, d24\n\t" \
+  "vld1.64 {d4, d5}, [%[du]]\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "vfma.f64 d0, d5, d22\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 d20, d24\n\t" \
+  "vld1.64 {d1}, [%[du]]\n\t" \
+  "vdiv.f64 d20, d27, d20\n\t" \
+  "vmul.f64 d26, d17, d26\n\t" \
+  "vcmpe.f64 d21, d24\n\t" \
+  "vdiv.f64 d19, d27, d19\n\t" \
+  "vfma.f64 d1, d5, d30\n\t" \
+  "vmrs APSR_nzcv, fpscr\n\t" \
+  "it le\n\t" \
+  "vmovle.f64 d21, d24\n\t" \
+  "vld1.64 {d17}, [%[dv]]\n\t" \
+  "vdiv.f64 d21, d27, d21\n\t" \
+  "vfma.f64 d7, d8, d30\n\t" \
+  "vld1.64 {d30}, [%[dv]]\n\t" \
+  "vfma.f64 d2, d5, d31\n\t" \
+  "vfma.f64 d17, d8, d6\n\t" \
+  "vfma.f64 d30, d8, d31\n\t" \
+  "vfma.f64 d3, d5, d9\n\t" \
+  "vfma.f64 d4, d5, d6\n\t" \
+  "vld1.64 {d31}, [%[dv]]\n\t" \
+  "vfma.f64 d31, d8, d9\n\t" \
+  "vld1.64 {d6}, [%[dv]]\n\t" \
+  "vmul.f64 d0, d0, d16\n\t" \
+  "vmul.f64 d7, d7, d18\n\t" \
+  "vmul.f64 d1, d1, d18\n\t" \
+  "vadd.f64 d24, d16, d18\n\t" \
+  "vfma.f64 d6, d8, d22\n\t" \
+  "vcvt.u32.f64 d7, d7, #16\n\t" \
+  "vcvt.u32.f64 d1, d1, #16\n\t" \
+  "vmul.f64 d31, d31, d20\n\t" \
+  "add %[ddv], %[pz], #56\n\t" \
+  "vmul.f64 d3, d3, d20\n\t" \
+  "vmul.f64 d24, d24, d25\n\t" \
+  "vld1.64 {d22}, [%[ddv]]\n\t" \
+  "vmul.f64 d2, d2, d19\n\t" \
+  "vmul.f64 d6, d6, d16\n\t" \
+  "vmul.f64 d30, d30, d19\n\t" \
+  "vcvt.u32.f64 d31, d31, #16\n\t" \
+  "vmul.f64 d4, d4, d21\n\t" \
+  "vmul.f64 d17, d17, d21\n\t" \
+  "vcvt.u32.f64 d0, d0, #16\n\t" \
+  "vcvt.u32.f64 d2, d2, #16\n\t" \
+  "vcvt.u32.f64 d6, d6, #16\n\t" \
+  "vcvt.u32.f64 d3, d3, #16\n\t" \
+  "vcvt.u32.f64 d4, d4, #16\n\t" \
+  "vcvt.u32.f64 d17, d17, #16\n\t" \
+  "vcvt.u32.f64 d30, d30, #16\n\t" \
+  "vtrn.32 q0, q3\n\t" \
+  "vmin.u32 q0, q0, q11\n\t" \
+  "vtrn.32 d4, d17\n\t" \
+  "vtrn.32 q1, q15\n\t" \
+  "vsub.i32 d11, d1, d0\n\t" \
+  "vadd.f64 d5, d20, d21\n\t" \
+  "vadd.f64 d29, d19, d20\n\t" \
+  "vcvt.f64.s32 d30, s22\n\t" \
+  "vmin.u32 d4, d4, d23\n\t" \
+  "vmin.u32 q1, q1, q11\n\t" \
+  "vcvt.f64.s32 d31, s23\n\t" \
+  "vmul.f64 d30, d30, d24\n\t" \
+  "vmov %[t1], s22\n\t" \
+  "vsub.i32 d7, d4, d3\n\t" \
+  "vmul.f64 d31, d31, d24\n\t" \
+  "vmul.f64 d5, d5, d26\n\t" \
+  "vcvt.f64.s32 d9, s15\n\t" \
+  "vcvt.f64.s32 d8, s14\n\t" \
+  "vadd.f64 d28, d18, d19\n\t" \
+  "vcvt.s32.f64 s12, d30\n\t" \
+  "eor %[pz], %[t1], %[t1], asr #31\n\t" \
+  "vcvt.s32.f64 s13, d31\n\t" \
+  "sub %[pz], %[pz], %[t1], asr #31\n\t" \
+  "vmov %[ddu], %[ddv], d6\n\t" \
+  "ssat %[t2], #26, %[ddu]\n\t" \
+  "eor %[t3], %[t2], %[t2], asr #31\n\t" \
+  "sub %[t3], %[t3], %[t2], asr #31\n\t" \
+  "sub %[du], %[t1], %[ddu], lsl #7\n\t" \
+  "ssat %[t2], #26, %[ddv]\n\t" \
+  "add %[du], %[du], %[ddu], lsl #3\n\t" \
+  "rsb %[t3], %[t3], %[t3], lsl #4\n\t" \
+  "vdiv.f64 d24, d9, d10\n\t" \
+  "eor %[du], %[du], %[t1], asr #31\n\t" \
+  "sub %[du], %[du], %[t1], asr #31\n\t" \
+  "cmp %[pz], %[t3], lsl #3\n\t" \
+  "itt lo\n\t" \
+  "movlo %[ddu], #0\n\t" \
+  "movlo %[du], %[pz]\n\t" \
+  "lsr %[du], %[du], #4\n\t" \
+  "eor %[du], %[du], %[t1], asr #31\n\t" \
+  "sub %[du], %[du], %[t1], asr #31\n\t" \
+  "eor %[t3], %[t2], %[t2], asr #31\n\t" \
+  "vmul.f64 d28, d28, d25\n\t" \
+  "vmov %[t1], s23\n\t" \
+  "sub %[dv], %[t1], %[ddv], lsl #7\n\t" \
+  "eor %[pz], %[t1], %[t1], asr #31\n\t" \
+  "add %[dv], %[dv], %[ddv], lsl #3\n\t" \
+  "sub %[t3], %[t3], %[t2], asr #31\n\t" \
+  "eor %[dv], %[dv], %[t1], asr #31\n\t" \
+  "sub %[dv], %[dv], %[t1], asr #31\n\t" \
+  "rsb %[t3], %[t3], %[t3], lsl #4\n\t" \
+  "sub %[pz], %[pz], %[t1], asr #31\n\t" \
+  "cmp %[pz], %[t3], lsl #3\n\t" \
+  "itt lo\n\t" \
+  "movlo %[dv], %[pz]\n\t" \
+  "movlo %[ddv], #0\n\t" \
+  "vmul.f64 d29, d29, d25\n\t" \
+  "vdiv.f64 d25, d8, d10\n\t" \
+  "lsr %[dv], %[dv], #4\n\t" \
+  "eor %[dv], %[dv], %[t1], asr #31\n\t" \
+  "sub %[dv], %[dv], %[t1], asr #31"
+#define SB_V7_PRO_OUT                                                                                       \
+  "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9), [du] "=&r"(du), \
+      [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3),  \
+      [pz] "+r"(pz)
+#define SB_V7_PRO_IN [nt] "r"(nt), "m"(p), "m"(kMidN)
+#define SB_V7_PRO_CLOB                                                                                     \
+  "cc", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d26", "d27", "d30", "d31"
+template <bool kOwnSave>
+SB_INLINE V4 mid_prologue(const PerspSpan& p, int n, double r[9], RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
-  register V4 o9 __asm__("d8");
+  register V4 o9 __asm__("d24");
   uint32_t du, ddu, dv, ddv, t1, t2, t3;
   const double* pz = &p.zi0;
   const double* nt = kMidN.row[n - kMidMin];
-  __asm__ volatile(
+  // d8 .. d11 (callee-saved) are scratch in the prologue: kOwnSave saves and restores them
+  // inside the statement (vst1.64 / vld1.64: the single-span entry then saves none), else
+  // they are clobbers (saved once by the batch function).
       // In the order a search against llvm-mca's Cortex-A9 model found (bench/order_search.py
       // --arch=armv7; the model issues VFP / NEON in order: each waits least on its inputs).
-      "add %[t2], %[nt], #32\n\t"
-      "add %[ddu], %[pz], #48\n\t"
-      "vld1.64 {d22, d23}, [%[ddu]]\n\t"
-      "add %[dv], %[pz], #32\n\t"
-      "vld1.64 {d16, d17}, [%[pz]]\n\t"
-      "vld1.64 {d24-d27}, [%[t2]]\n\t"
-      "vld1.64 {d20}, [%[pz]]\n\t"
-      "vld1.64 {d28, d29}, [%[nt]]\n\t"
-      "vfma.f64 d16, d17, d22\n\t"
-      "add %[t1], %[nt], #16\n\t"
-      "vadd.f64 d30, d22, d28\n\t"
-      "vld1.64 {d21}, [%[pz]]\n\t"
-      "vadd.f64 d31, d22, d29\n\t"
-      "vmul.f64 d25, d17, d25\n\t"
-      "vld1.64 {d18}, [%[pz]]\n\t"
-      "vfma.f64 d18, d17, d30\n\t"
-      "vld1.64 {d19}, [%[pz]]\n\t"
-      "add %[du], %[pz], #16\n\t"
-      "vld1.64 {d2}, [%[du]]\n\t"
-      "vadd.f64 d9, d30, d29\n\t"
-      "vld1.64 {d10, d11}, [%[t1]]\n\t"
-      "vadd.f64 d6, d30, d28\n\t"
-      "vfma.f64 d19, d17, d31\n\t"
-      "vcmpe.f64 d16, d24\n\t"
-      "vld1.64 {d7, d8}, [%[dv]]\n\t"
-      "vfma.f64 d20, d17, d9\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "vadd.f64 d6, d6, d11\n\t"
-      "it le\n\t"
-      "vmovle.f64 d16, d24\n\t"
-      "vcmpe.f64 d18, d24\n\t"
-      "vdiv.f64 d16, d27, d16\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "vld1.64 {d3}, [%[du]]\n\t"
-      "vcmpe.f64 d19, d24\n\t"
-      "it le\n\t"
-      "vmovle.f64 d18, d24\n\t"
-      "vdiv.f64 d18, d27, d18\n\t"
-      "vld1.64 {d0}, [%[du]]\n\t"
-      "vfma.f64 d21, d17, d6\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d19, d24\n\t"
-      "vcmpe.f64 d20, d24\n\t"
-      "vld1.64 {d4, d5}, [%[du]]\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "vfma.f64 d0, d5, d22\n\t"
-      "it le\n\t"
-      "vmovle.f64 d20, d24\n\t"
-      "vld1.64 {d1}, [%[du]]\n\t"
-      "vdiv.f64 d20, d27, d20\n\t"
-      "vmul.f64 d26, d17, d26\n\t"
-      "vcmpe.f64 d21, d24\n\t"
-      "vdiv.f64 d19, d27, d19\n\t"
-      "vfma.f64 d1, d5, d30\n\t"
-      "vmrs APSR_nzcv, fpscr\n\t"
-      "it le\n\t"
-      "vmovle.f64 d21, d24\n\t"
-      "vld1.64 {d17}, [%[dv]]\n\t"
-      "vdiv.f64 d21, d27, d21\n\t"
-      "vfma.f64 d7, d8, d30\n\t"
-      "vld1.64 {d30}, [%[dv]]\n\t"
-      "vfma.f64 d2, d5, d31\n\t"
-      "vfma.f64 d17, d8, d6\n\t"
-      "vfma.f64 d30, d8, d31\n\t"
-      "vfma.f64 d3, d5, d9\n\t"
-      "vfma.f64 d4, d5, d6\n\t"
-      "vld1.64 {d31}, [%[dv]]\n\t"
-      "vfma.f64 d31, d8, d9\n\t"
-      "vld1.64 {d6}, [%[dv]]\n\t"
-      "vmul.f64 d0, d0, d16\n\t"
-      "vmul.f64 d7, d7, d18\n\t"
-      "vmul.f64 d1, d1, d18\n\t"
-      "vadd.f64 d24, d16, d18\n\t"
-      "vfma.f64 d6, d8, d22\n\t"
-      "vcvt.u32.f64 d7, d7, #16\n\t"
-      "vcvt.u32.f64 d1, d1, #16\n\t"
-      "vmul.f64 d31, d31, d20\n\t"
-      "add %[ddv], %[pz], #56\n\t"
-      "vmul.f64 d3, d3, d20\n\t"
-      "vmul.f64 d24, d24, d25\n\t"
-      "vld1.64 {d22}, [%[ddv]]\n\t"
-      "vmul.f64 d2, d2, d19\n\t"
-      "vmul.f64 d6, d6, d16\n\t"
-      "vmul.f64 d30, d30, d19\n\t"
-      "vcvt.u32.f64 d31, d31, #16\n\t"
-      "vmul.f64 d4, d4, d21\n\t"
-      "vmul.f64 d17, d17, d21\n\t"
-      "vcvt.u32.f64 d0, d0, #16\n\t"
-      "vcvt.u32.f64 d2, d2, #16\n\t"
-      "vcvt.u32.f64 d6, d6, #16\n\t"
-      "vcvt.u32.f64 d3, d3, #16\n\t"
-      "vcvt.u32.f64 d4, d4, #16\n\t"
-      "vcvt.u32.f64 d17, d17, #16\n\t"
-      "vcvt.u32.f64 d30, d30, #16\n\t"
-      "vtrn.32 q0, q3\n\t"
-      "vmin.u32 q0, q0, q11\n\t"
-      "vtrn.32 d4, d17\n\t"
-      "vtrn.32 q1, q15\n\t"
-      "vsub.i32 d11, d1, d0\n\t"
-      "vadd.f64 d5, d20, d21\n\t"
-      "vadd.f64 d29, d19, d20\n\t"
-      "vcvt.f64.s32 d30, s22\n\t"
-      "vmin.u32 d4, d4, d23\n\t"
-      "vmin.u32 q1, q1, q11\n\t"
-      "vcvt.f64.s32 d31, s23\n\t"
-      "vmul.f64 d30, d30, d24\n\t"
-      "vmov %[t1], s22\n\t"
-      "vsub.i32 d7, d4, d3\n\t"
-      "vmul.f64 d31, d31, d24\n\t"
-      "vmul.f64 d5, d5, d26\n\t"
-      "vcvt.f64.s32 d9, s15\n\t"
-      "vcvt.f64.s32 d8, s14\n\t"
-      "vadd.f64 d28, d18, d19\n\t"
-      "vcvt.s32.f64 s12, d30\n\t"
-      "eor %[pz], %[t1], %[t1], asr #31\n\t"
-      "vcvt.s32.f64 s13, d31\n\t"
-      "sub %[pz], %[pz], %[t1], asr #31\n\t"
-      "vmov %[ddu], %[ddv], d6\n\t"
-      "ssat %[t2], #26, %[ddu]\n\t"
-      "eor %[t3], %[t2], %[t2], asr #31\n\t"
-      "sub %[t3], %[t3], %[t2], asr #31\n\t"
-      "sub %[du], %[t1], %[ddu], lsl #7\n\t"
-      "ssat %[t2], #26, %[ddv]\n\t"
-      "add %[du], %[du], %[ddu], lsl #3\n\t"
-      "rsb %[t3], %[t3], %[t3], lsl #4\n\t"
-      "vdiv.f64 d9, d9, d10\n\t"
-      "eor %[du], %[du], %[t1], asr #31\n\t"
-      "sub %[du], %[du], %[t1], asr #31\n\t"
-      "cmp %[pz], %[t3], lsl #3\n\t"
-      "itt lo\n\t"
-      "movlo %[ddu], #0\n\t"
-      "movlo %[du], %[pz]\n\t"
-      "lsr %[du], %[du], #4\n\t"
-      "eor %[du], %[du], %[t1], asr #31\n\t"
-      "vdiv.f64 d8, d8, d10\n\t"
-      "sub %[du], %[du], %[t1], asr #31\n\t"
-      "eor %[t3], %[t2], %[t2], asr #31\n\t"
-      "vmul.f64 d28, d28, d25\n\t"
-      "vmov %[t1], s23\n\t"
-      "sub %[dv], %[t1], %[ddv], lsl #7\n\t"
-      "eor %[pz], %[t1], %[t1], asr #31\n\t"
-      "add %[dv], %[dv], %[ddv], lsl #3\n\t"
-      "sub %[t3], %[t3], %[t2], asr #31\n\t"
-      "eor %[dv], %[dv], %[t1], asr #31\n\t"
-      "sub %[dv], %[dv], %[t1], asr #31\n\t"
-      "rsb %[t3], %[t3], %[t3], lsl #4\n\t"
-      "sub %[pz], %[pz], %[t1], asr #31\n\t"
-      "cmp %[pz], %[t3], lsl #3\n\t"
-      "itt lo\n\t"
-      "movlo %[dv], %[pz]\n\t"
-      "movlo %[ddv], #0\n\t"
-      "vmul.f64 d29, d29, d25\n\t"
-      "lsr %[dv], %[dv], #4\n\t"
-      "eor %[dv], %[dv], %[t1], asr #31\n\t"
-      "sub %[dv], %[dv], %[t1], asr #31"
-
-      : "=w"(o0), "=w"(o1), "=w"(o2), "=w"(o3), "=w"(o4), "=w"(o6), "=w"(o7), "=w"(o8), "=w"(o9), [du] "=&r"(du),
-        [ddu] "=&r"(ddu), [dv] "=&r"(dv), [ddv] "=&r"(ddv), [t1] "=&r"(t1), [t2] "=&r"(t2), [t3] "=&r"(t3),
-        [pz] "+r"(pz)
-      : [nt] "r"(nt), "m"(p), "m"(kMidN)
-      : "cc", "d6", "d7", "d10", "d11", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25",
-        "d26", "d27", "d30", "d31");
+  if constexpr (kOwnSave) {
+    alignas(16) double save[4];
+    __asm__ volatile("vst1.64 {d8-d11}, [%[sv]:128]\n\t" SB_V7_PROLOGUE "\n\tvld1.64 {d8-d11}, [%[sv]:128]"
+                     : SB_V7_PRO_OUT, "=m"(save)
+                     : SB_V7_PRO_IN, [sv] "r"(save)
+                     : SB_V7_PRO_CLOB);
+  } else {
+    __asm__ volatile(SB_V7_PROLOGUE : SB_V7_PRO_OUT : SB_V7_PRO_IN : SB_V7_PRO_CLOB, "d8", "d9", "d10", "d11");
+  }
   r[0] = o0, r[1] = o1, r[2] = o2, r[3] = o3, r[4] = o4, r[6] = o6, r[7] = o7, r[8] = o8;
-  *q89 = o9;
   *su = RunSteps{int32_t(du), int32_t(ddu)}, *sv = RunSteps{int32_t(dv), int32_t(ddv)};
+  return o9;
 }
 
 SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSteps& sv) {
   return {uint32_t(u), uint32_t(v), uint32_t(su.d), uint32_t(sv.d), uint32_t(su.dd), uint32_t(sv.dd)};
 }
 
+// kOwnSave: the prologue saves the d8 .. d11 it uses (the single-span entry; see mid_prologue).
+template <bool kOwnSave = false>
 SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   const uint32_t w = uint32_t(width);
   const int steps = n - 49;  // the last run's (1 .. 15)
   double r[9];
-  V4 q89;
   RunSteps su, sv;
-  mid_prologue(p, n, r, &q89, &su, &sv);
+  register V4 qd __asm__("d24") = mid_prologue<kOwnSave>(p, n, r, &su, &sv);
+  // The quotients [qv, qu] (d24, d25: q12, which run 0 leaves alone) until run 1 reads them.
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
@@ -469,9 +490,9 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[v], %[dv]\n\t"
-                     "vabs.s32 q12, q3\n\t"
+                     "vabs.s32 q8, q3\n\t"
                      "orr %[a], %[a], %[b], lsl #8\n\t"
-                     "vmin.u32 q12, q12, q11\n\t"
+                     "vmin.u32 q8, q8, q11\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[du], %[ddu]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
@@ -486,7 +507,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[u], %[du]\n\t"
                      "add %[du], %[ddu]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
-                     "vmul.i32 q12, q12, q10\n\t"
+                     "vmul.i32 q8, q8, q10\n\t"
                      "add %[v], %[dv]\n\t"
                      "add %[u], %[du]\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
@@ -510,25 +531,25 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[dv], %[ddv]\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #8\n\t"
-                     "vcge.u32 q12, q13, q12\n\t"
+                     "vcge.u32 q8, q13, q8\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[u], %[du]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
-                     "vand q9, q9, q12\n\t"
+                     "vand q9, q9, q8\n\t"
                      "add %[v], %[dv]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
-                     "vand q3, q3, q12\n\t"
+                     "vand q3, q3, q8\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "vhsub.s32 q9, q15, q9\n\t"
                      "vshr.s32 q0, q9, #3\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      : SB_V7_RUN_OPERANDS(dest), "=&w"(d1r), [uv1] "+w"(uv1), "=&w"(dd1r), "=&w"(dd2r)
-                     : SB_V7_RUN_INPUTS(dest), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1), [c2] "w"(c2)
-                     : "memory", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27",
+                     : SB_V7_RUN_INPUTS(dest), [uv2] "w"(uv2), [uv3] "w"(uv3), [c1] "w"(c1), [c2] "w"(c2), [qd] "w"(qd)
+                     : "memory", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d26", "d27",
                        "d30", "d31");
   }
   const double sd1 = d1r, sd2 = uv1, sdd1 = dd1r, sdd2 = dd2r;
@@ -537,9 +558,10 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     lanes(d, &a, &b), lanes(dd, &c, &e);
     *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
   };
-  // d8, d9: the last run's quotients [qu, qv] (then d8: its ddf, converted); d10: trunc(q).
-  register V4 qq __asm__("d8") = q89;
-  register double sdr __asm__("d10");
+  // d6: the last run's ddf, converted (I); d0: trunc(q) (L); d2: scratch (delta in run 1).
+  // Runs 1 and 2 keep to d0 .. d7, d16 .. d31 (no callee-saved register: see mid_prologue).
+  register double qi __asm__("d6");
+  register double sdr __asm__("d0");
   // The last run's steps (last_ddi, last_steps_i: last_dd per lane, u and v in one d
   // register), beside runs 1 and 2: ddf = -2 (q curve) converted (cvt_sat) and kept if
   // |i| < 1e9 (and steps > 1), linear = trunc(q) (|q| < 2^31), delta [du, dv] (vsub.i32);
@@ -547,15 +569,15 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   // r = pd - s Q, m = (s - 1) pdd (pdd = dd mirrored by sg; masking and mirroring commute
   // with the product), d0 = Q - (m >> 1) - (m & 1 and s > 2 r), mirrored; rejected iff
   // T |dd| > pd (T = s (s - 1) / 2; the 64-bit product minus pd, saturating, is not 0): then
-  // linear and 0, else d0 and dd. Handed from run 1 to run 2 in fixed registers: d8 = I
-  // (ranged), d10 = L, d31 = |I| ranged, d27 = T, d19 = m (masked), d21 = sg, d22 = pd,
+  // linear and 0, else d0 and dd. Handed from run 1 to run 2 in fixed registers: d6 = I
+  // (ranged), d0 = L, d31 = |I| ranged, d27 = T, d19 = m (masked), d21 = sg, d22 = pd,
   // d23 = Q, d24 = S, d28 = r, d29 = [1, 1]. The results leave through a, b (d) and du, dv
   // (dd), free once the pixels are drawn.
   // Hand-off quads (d18 .. d31 in pairs; only the named halves carry values).
-  register V4 h9 __asm__("d18"), h10 __asm__("d20"), h11 __asm__("d22"), h12 __asm__("d24");
+  register V4 h9 __asm__("d18"), h10 __asm__("d20"), h11 __asm__("d22"), h12 __asm__("d24") = qd;
   register V4 h13 __asm__("d26"), h14 __asm__("d28"), h15 __asm__("d30");
   u0 = u1, v0 = v1;
-  lanes(uv2, &u1, &v1);
+  SB_V7_LANES(uv2, u1, v1);
   steps_of(sd1, sdd1, &su, &sv);
   {
     RunRegs rr = run_regs(u0, v0, su, sv);
@@ -564,21 +586,21 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     uint8_t* const d1 = dest + 16;
     const uint32_t* const kk = kMidLast[steps];
     __asm__ volatile("smulbt %[a], %[w], %[v]\n\t"
-                     "vmul.f64 d16, d8, d5\n\t"
+                     "vmul.f64 d16, d25, d5\n\t"
                      "uxtah %[a], %[a], %[u], ror #16\n\t"
                      "add %[v], %[dv]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[dv], %[ddv]\n\t"
-                     "vcvt.s32.f64 s20, d8\n\t"
+                     "vcvt.s32.f64 s0, d25\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "add %[du], %[ddu]\n\t"
                      "add %[v], %[dv]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[u], %[du]\n\t"
-                     "vcvt.s32.f64 s21, d9\n\t"
+                     "vcvt.s32.f64 s1, d24\n\t"
                      "ldrb %[a], [%[tx], %[a]]\n\t"
-                     "vmul.f64 d17, d9, d5\n\t"
+                     "vmul.f64 d17, d24, d5\n\t"
                      "add %[du], %[ddu]\n\t"
                      "vmov.f64 d18, #-2.0\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
@@ -597,9 +619,9 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[du], %[ddu]\n\t"
                      "vmov.i32 d29, #1\n\t"
                      "add %[v], %[dv]\n\t"
-                     "vabs.s32 d23, d10\n\t"
+                     "vabs.s32 d23, d0\n\t"
                      "str %[a], [%[d]]\n\t"
-                     "vsub.i32 d9, d4, d3\n\t"
+                     "vsub.i32 d2, d4, d3\n\t"
                      "add %[u], %[du]\n\t"
                      "smulbt %[a], %[w], %[v]\n\t"
                      "add %[dv], %[ddv]\n\t"
@@ -620,7 +642,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[v], %[dv]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[u], %[du]\n\t"
-                     "vcvt.s32.f64 s16, d16\n\t"
+                     "vcvt.s32.f64 s12, d16\n\t"
                      "orr %[a], %[a], %[b], lsl #8\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "add %[v], %[dv]\n\t"
@@ -633,8 +655,8 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "vcvt.s32.f64 s17, d17\n\t"
-                     "vmul.i32 d19, d8, d26\n\t"
+                     "vcvt.s32.f64 s13, d17\n\t"
+                     "vmul.i32 d19, d6, d26\n\t"
                      "add %[du], %[ddu]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "add %[v], %[dv]\n\t"
@@ -646,7 +668,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[v], %[dv]\n\t"
                      "uxtah %[a], %[a], %[u], ror #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "vabs.s32 d30, d8\n\t"
+                     "vabs.s32 d30, d6\n\t"
                      "ldrb %[a], [%[tx], %[a]]\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[dv], %[ddv]\n\t"
@@ -659,7 +681,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "orr %[a], %[a], %[b], lsl #8\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
                      "add %[v], %[dv]\n\t"
-                     "vshr.s32 d21, d9, #31\n\t"
+                     "vshr.s32 d21, d2, #31\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "vcgt.u32 d20, d25, d30\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
@@ -668,7 +690,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vcgt.u32 d18, d24, d29\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "vabs.s32 d22, d9\n\t"
+                     "vabs.s32 d22, d2\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "vand d20, d20, d18\n\t"
                      "add %[du], %[ddu]\n\t"
@@ -707,17 +729,17 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "smulbt %[b], %[w], %[v]\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "vand d8, d8, d20\n\t"
+                     "vand d6, d6, d20\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "str %[a], [%[d], #12]\n\t"
-                     : SB_V7_RUN_OPERANDS(d1), [qq] "+w"(qq), [sd] "=w"(sdr), "=w"(h9), "=w"(h10), "=w"(h11),
-                       "=w"(h12), "=w"(h13), "=w"(h14), "=w"(h15)
+                     : SB_V7_RUN_OPERANDS(d1), [qi] "=w"(qi), [sd] "=w"(sdr), "=w"(h9), "=w"(h10), "=w"(h11),
+                       "+w"(h12), "=w"(h13), "=w"(h14), "=w"(h15)
                      : SB_V7_RUN_INPUTS(d1), [cv] "w"(curve), [uv3] "w"(uv3), [uv4] "w"(uv4), [k] "r"(kk)
-                     : "memory", "d16", "d17");
+                     : "memory", "d2", "d16", "d17");
   }
   // Run 2; beside it the rest of the last run's steps.
   u0 = u1, v0 = v1;
-  lanes(uv3, &u1, &v1);
+  SB_V7_LANES(uv3, u1, v1);
   steps_of(sd2, sdd2, &su, &sv);
   RunSteps lu, lv;
   {
@@ -783,7 +805,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vshr.s32 d25, d19, #1\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "add %[du], %[ddu]\n\t"
-                     "vand d9, d19, d28\n\t"
+                     "vand d2, d19, d28\n\t"
                      "add %[v], %[dv]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
@@ -791,12 +813,12 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "vsub.i32 d25, d23, d25\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[du], %[ddu]\n\t"
-                     "vand d9, d9, d29\n\t"
+                     "vand d2, d2, d29\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "vqmovn.u64 d16, q8\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
-                     "vsub.i32 d25, d25, d9\n\t"
+                     "vsub.i32 d25, d25, d2\n\t"
                      "add %[v], %[dv]\n\t"
                      "add %[dv], %[ddv]\n\t"
                      "add %[u], %[du]\n\t"
@@ -825,7 +847,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "add %[u], %[du]\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
-                     "vbic d8, d8, d16\n\t"
+                     "vbic d6, d6, d16\n\t"
                      "add %[du], %[ddu]\n\t"
                      "orr %[a], %[a], %[b], lsl #16\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
@@ -837,7 +859,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[dv], %[ddv]\n\t"
                      "add %[u], %[du]\n\t"
                      "add %[du], %[ddu]\n\t"
-                     "vbsl d16, d10, d25\n\t"
+                     "vbsl d16, d0, d25\n\t"
                      "str %[a], [%[d], #8]\n\t"
                      "smulbt %[a], %[w], %[v]\n\t"
                      "add %[v], %[dv]\n\t"
@@ -861,15 +883,15 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      "add %[du], %[ddu]\n\t"
                      "add %[u], %[du]\n\t"
                      "smulbt %[b], %[w], %[v]\n\t"
-                     "vmov %[du], %[dv], d8\n\t"
+                     "vmov %[du], %[dv], d6\n\t"
                      "uxtah %[b], %[b], %[u], ror #16\n\t"
                      "ldrb %[b], [%[tx], %[b]]\n\t"
                      "orr %[a], %[a], %[b], lsl #24\n\t"
                      "str %[a], [%[d], #12]\n\t"
                      "vmov %[a], %[b], d16\n\t"
-                     : SB_V7_RUN_OPERANDS(d2), [qq] "+w"(qq), "+w"(h9), "+w"(h12), "+w"(h14), "+w"(h15)
+                     : SB_V7_RUN_OPERANDS(d2), [qi] "+w"(qi), "+w"(h9), "+w"(h12), "+w"(h14), "+w"(h15)
                      : SB_V7_RUN_INPUTS(d2), [L] "w"(sdr), "w"(h10), "w"(h11), "w"(h13)
-                     : "memory", "d16", "d17");
+                     : "memory", "d2", "d16", "d17");
     lu = RunSteps{int32_t(a), int32_t(du)}, lv = RunSteps{int32_t(b), int32_t(dv)};
   }
   // The last run (n - 48 pixels from sample 3 to sample 4).
@@ -882,6 +904,11 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   }
 }
 #undef SB_V7_RUN_INPUTS
+#undef SB_V7_PRO_CLOB
+#undef SB_V7_PRO_IN
+#undef SB_V7_PRO_OUT
+#undef SB_V7_PROLOGUE
+#undef SB_V7_LANES
 #undef SB_V7_RUN_OPERANDS
 #undef SB_V7_RUN
 #undef SB_V7_HI_END

@@ -415,6 +415,56 @@ TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeSteps) {
   std::printf("[ asm      ] span_persp: %d four-run extreme-step spans, every variant identical\n", cases);
 }
 
+#if defined(__arm__) && !defined(__aarch64__)
+// One surface_span_persp_fast call with d8 .. d15 (callee-saved under the AAPCS) holding
+// known values: true if they hold them after the call.
+__attribute__((noinline)) bool keeps_d8_d15(uint8_t* dest, int n, const uint8_t* surf, int sw, int sh,
+                                            const sb::simd::PerspSpan& p) {
+  void (*volatile fn)(uint8_t*, int, const uint8_t*, int, int, const sb::simd::PerspSpan&) =
+      sb::simd::surface_span_persp_fast;
+  register double r8 __asm__("d8") = 1.25, r9 __asm__("d9") = -2.5, r10 __asm__("d10") = 3.75;
+  register double r11 __asm__("d11") = -4.125, r12 __asm__("d12") = 5.0625, r13 __asm__("d13") = -6.5;
+  register double r14 __asm__("d14") = 7.75, r15 __asm__("d15") = -8.875;
+  __asm__ volatile("" : "+w"(r8), "+w"(r9), "+w"(r10), "+w"(r11), "+w"(r12), "+w"(r13), "+w"(r14), "+w"(r15));
+  fn(dest, n, surf, sw, sh, p);
+  __asm__ volatile("" : "+w"(r8), "+w"(r9), "+w"(r10), "+w"(r11), "+w"(r12), "+w"(r13), "+w"(r14), "+w"(r15));
+  return r8 == 1.25 && r9 == -2.5 && r10 == 3.75 && r11 == -4.125 && r12 == 5.0625 && r13 == -6.5 && r14 == 7.75 &&
+         r15 == -8.875;
+}
+#endif
+
+// ARMv7: the single-span entry draws the mid path's spans (50 .. 64 pixels, second order)
+// with no compiler saves of d8 .. d15 (its prologue asm saves the d8 .. d11 it uses itself,
+// asm/span_persp_v7mid.h) and tail-calls the other paths: every path keeps the callee-saved
+// VFP registers, and draws what the scalar reference draws.
+TEST(AsmSpanPersp, SingleEntryKeepsCalleeSavedRegisters) {
+#if defined(__arm__) && !defined(__aarch64__)
+  std::mt19937 rng(5064);
+  const int sw = 300, sh = 200;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<uint8_t> ref(300), got(300);
+  for (int i = 0; i < 3000; ++i) {
+    sb::simd::PerspSpan p{};
+    p.zi0 = std::ldexp(unit(rng) + 1.0, -int(rng() % 16));
+    p.dzi = i % 5 == 4 ? 0.0 : p.zi0 * std::ldexp(unit(rng), -int(rng() % 12));
+    p.uz0 = unit(rng) * p.zi0 * sw, p.duz = std::ldexp(unit(rng), -int(rng() % 12)) * sw;
+    p.vz0 = unit(rng) * p.zi0 * sh, p.dvz = std::ldexp(unit(rng), -int(rng() % 12)) * sh;
+    p.px0 = double(rng() % 200) + 0.5;
+    p.umax = int32_t((uint32_t(sw) << 16) - 1);
+    p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    p.second_order = i % 7 != 6;
+    const int n = i % 2 ? 49 + int(rng() % 17) : int(rng() % 260);
+    sb::simd::surface_span_persp_scalar(ref.data(), n, surf.data(), sw, sh, p);
+    ASSERT_TRUE(keeps_d8_d15(got.data(), n, surf.data(), sw, sh, p)) << " case " << i << " n " << n;
+    ASSERT_TRUE(std::equal(ref.begin(), ref.begin() + n, got.begin())) << " case " << i << " n " << n;
+  }
+#else
+  GTEST_SKIP() << "ARMv7 only";
+#endif
+}
+
 // surface_span_fast (asm/surface_span.h) shares the whole-span drawer's 16-pixel runs; the
 // NEON table holds it (asm_kernels_test covers it there), and here it is compared with the
 // scalar reference on every target: random walks (linear and second order) that stay
