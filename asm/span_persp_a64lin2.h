@@ -347,7 +347,24 @@ SB_INLINE ShortLinSetup short_lin_setup2(int na, const PerspSpan& pa, int nb, co
 // Span b's ShortLinSetup (nb pixels) from the samples short_lin_setup2 stored to buf: the
 // integer steps of short_lin_setup2's block on them (the same instructions; tab is the
 // address of kShortLinPos - 504: row nb's magic at tab + 32 nb).
-SB_INLINE ShortLinSetup short_lin_finish(int nb, const uint64_t* buf) {
+//
+// The same block also tests the next pair (lin_pairs_a64's loop test, in the integer
+// block's spare slots; from bench/mca_a53_lin2/finish.s, see bench/mca_a53_persp/README.md):
+// again = 1 when at least four items are left from it (it + 4 <= end) and it[2], it[3] are
+// both lin_short_a64's (16 < n <= 64 = kShortMax, asserted at lin_pairs_a64; second_order
+// off or dzi's bits +-0: (-second_order & dzi << 1) == 0, second_order a 0 / 1 byte), else
+// 0. it[2], it[3] are read only when it + 4 <= end (else it[0], it[1]: again is 0 then), so
+// it[0], it[1] must be readable items. it and end are memory operands (the caller's
+// variables, which the compiler keeps on the stack across the drawing anyway): loaded by
+// the block, they take no register of their own (with them in registers the compiler
+// spilled width around the drawing).
+SB_INLINE ShortLinSetup short_lin_finish(int nb, const uint64_t* buf, const PerspItem* const& it,
+                                         const PerspItem* const& end, uint32_t& again) {
+  static_assert(sizeof(PerspItem) == 88 && offsetof(PerspItem, n) == 8 && offsetof(PerspItem, span) == 16 &&
+                    offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, second_order) == 64 &&
+                    sizeof(bool) == 1,
+                "the test's offsets: it[2] at 176, n +8, dzi +24, second_order +80; it[3] at 264");
+  register uint64_t ragain __asm__("x1");
   register uint64_t rx0 __asm__("x13");
   register uint64_t rx1 __asm__("x23");
   register uint64_t rx2 __asm__("x19");
@@ -358,79 +375,113 @@ SB_INLINE ShortLinSetup short_lin_finish(int nb, const uint64_t* buf) {
   register uint64_t rld __asm__("x28");
   __asm__ volatile(
 // BEGIN lin_finish
+        "ldr x12, %[itm]\n\t"
+        "ldr x14, %[endm]\n\t"
+        "ldp x19, x3, [%[buf], #32]\n\t"
+        "add x7, %[tab], %[nb], lsl #5\n\t"
         "ldp x4, x6, [%[buf], #64]\n\t"
         "sub w22, %w[nb], #1\n\t"
-        "ldp x19, x3, [%[buf], #32]\n\t"
+        "sub x14, x14, x12\n\t"
         "and w28, w22, #15\n\t"
-        "ldp x23, x2, [%[buf], #16]\n\t"
-        "cmp w28, #0\n\t"
-        "ldp x13, x1, [%[buf]]\n\t"
-        "add x7, %[tab], %[nb], lsl #5\n\t"
-        "ldp x25, x5, [%[buf], #48]\n\t"
-        "csinc w28, w28, wzr, ne\n\t"
-        "sub w24, w19, w23\n\t"
+        "cmp x14, #352\n\t"
         "lsr w22, w22, #4\n\t"
-        "asr w14, w24, #31\n\t"
-        "sub w10, w2, w1\n\t"
-        "ldr x7, [x7]\n\t"
-        "sub w9, w23, w13\n\t"
-        "orr x13, x13, x1, lsl #32\n\t"
-        "sub w20, w25, w19\n\t"
-        "sub w15, w5, w3\n\t"
-        "cmp w22, #2\n\t"
-        "sub w12, w3, w2\n\t"
-        "asr w11, w10, #31\n\t"
-        "sub w4, w4, w25\n\t"
-        "asr w8, w9, #31\n\t"
-        "asr w16, w12, #31\n\t"
-        "asr w21, w15, #31\n\t"
-        "csel w4, w20, w4, eq\n\t"
-        "add w10, w10, w11, lsr #28\n\t"
+        "sub x14, x12, #176\n\t"
+        "ldp x23, x2, [%[buf], #16]\n\t"
+        "csel x12, x12, x14, ge\n\t"
+        "cset w14, lt\n\t"
+        "ldp x25, x5, [%[buf], #48]\n\t"
+        "ldrb w17, [x12, #256]\n\t"
+        "ldrb w21, [x12, #344]\n\t"
+        "ldr x8, [x12, #200]\n\t"
+        "sub w24, w19, w23\n\t"
+        "ldr w11, [x12, #184]\n\t"
+        "neg x17, x17\n\t"
+        "ldr w16, [x12, #272]\n\t"
         "sub w6, w6, w5\n\t"
-        "asr w17, w20, #31\n\t"
-        "csel w6, w15, w6, eq\n\t"
-        "csel w4, w24, w4, lt\n\t"
+        "ldr x15, [x12, #288]\n\t"
+        "and x17, x17, x8, lsl #1\n\t"
+        "sub w12, w3, w2\n\t"
+        "neg x21, x21\n\t"
+        "sub w11, w11, #17\n\t"
+        "cmp w11, #47\n\t"
+        "orr x17, x17, x14\n\t"
+        "ldp x13, x14, [%[buf]]\n\t"
+        "sub w16, w16, #17\n\t"
+        "mov w8, #47\n\t"
+        "ccmp w16, w8, #2, ls\n\t"
+        "and x21, x21, x15, lsl #1\n\t"
+        "orr x17, x17, x21\n\t"
+        "ldr x7, [x7]\n\t"
+        "sub w10, w2, w14\n\t"
+        "sub w9, w23, w13\n\t"
+        "ccmp x17, #0, #0, ls\n\t"
+        "sub w4, w4, w25\n\t"
+        "asr w16, w12, #31\n\t"
+        "sub w20, w25, w19\n\t"
+        "asr w11, w10, #31\n\t"
+        "orr x23, x23, x2, lsl #32\n\t"
+        "cset w1, eq\n\t"
+        "cmp w28, #0\n\t"
+        "asr w8, w9, #31\n\t"
+        "orr x13, x13, x14, lsl #32\n\t"
+        "sub w15, w5, w3\n\t"
+        "orr x25, x25, x5, lsl #32\n\t"
+        "csinc w28, w28, wzr, ne\n\t"
+        "cmp w22, #2\n\t"
+        "asr w21, w15, #31\n\t"
+        "add w10, w10, w11, lsr #28\n\t"
+        "asr w14, w24, #31\n\t"
         "add w9, w9, w8, lsr #28\n\t"
-        "csel w6, w12, w6, lt\n\t"
+        "csel w6, w15, w6, eq\n\t"
         "add w15, w15, w21, lsr #28\n\t"
         "asr w15, w15, #4\n\t"
+        "csel w6, w12, w6, lt\n\t"
+        "sbfiz x21, x6, #29, #32\n\t"
+        "csel w4, w20, w4, eq\n\t"
+        "csel w4, w24, w4, lt\n\t"
+        "orr x19, x19, x3, lsl #32\n\t"
+        "asr w17, w20, #31\n\t"
         "sbfiz x8, x4, #29, #32\n\t"
         "add w24, w24, w14, lsr #28\n\t"
         "smulh x8, x8, x7\n\t"
-        "orr x19, x19, x3, lsl #32\n\t"
         "add w20, w20, w17, lsr #28\n\t"
-        "asr w10, w10, #4\n\t"
         "add w12, w12, w16, lsr #28\n\t"
         "asr w12, w12, #4\n\t"
         "add w4, w8, w4, lsr #31\n\t"
-        "sbfx x24, x24, #4, #28\n\t"
-        "sbfx x9, x9, #4, #28\n\t"
-        "sbfiz x21, x6, #29, #32\n\t"
         "sbfx x20, x20, #4, #28\n\t"
-        "add x24, x24, x12, lsl #32\n\t"
+        "sbfx x9, x9, #4, #28\n\t"
+        "sbfx x24, x24, #4, #28\n\t"
         "smulh x21, x21, x7\n\t"
-        "orr x23, x23, x2, lsl #32\n\t"
-        "add w6, w21, w6, lsr #31\n\t"
-        "orr x25, x25, x5, lsl #32\n\t"
         "add x20, x20, x15, lsl #32\n\t"
-        "add x9, x9, x10, lsl #32\n\t"
+        "add x24, x24, x12, lsl #32\n\t"
+        "asr w10, w10, #4\n\t"
+        "add w6, w21, w6, lsr #31\n\t"
         "lsl x6, x6, #32\n\t"
+        "add x9, x9, x10, lsl #32\n\t"
         "add x28, x6, w4, sxtw"
 // END lin_finish
-      : "=&r"(rx0), "=&r"(rx1), "=&r"(rx2), "=&r"(rx3), "=&r"(rd0), "=&r"(rd1), "=&r"(rd2), "=&r"(rld)
-      : [nb] "r"(nb), [buf] "r"(buf), [tab] "r"(reinterpret_cast<uintptr_t>(&kShortLinPos) - 504)
-      : "cc", "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x10", "x11", "x12", "x14", "x15", "x16", "x17",
+      : "=&r"(rx0), "=&r"(rx1), "=&r"(rx2), "=&r"(rx3), "=&r"(rd0), "=&r"(rd1), "=&r"(rd2), "=&r"(rld),
+        "=&r"(ragain)
+      : [nb] "r"(nb), [buf] "r"(buf), [tab] "r"(reinterpret_cast<uintptr_t>(&kShortLinPos) - 504), [itm] "m"(it),
+        [endm] "m"(end)
+      : "cc", "memory", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x10", "x11", "x12", "x14", "x15", "x16", "x17",
         "x21", "x22");
+  again = uint32_t(ragain);
   return ShortLinSetup{rx0, rx1, rx2, rx3, rd0, rd1, rd2, rld};
 }
 
-// Two linear spans a, b of 17 .. 64 pixels each (persp_short_lin's contract for each): the
-// same pixels as persp_short_lin(a) then persp_short_lin(b).
-SB_INLINE void persp_short_lin2(uint8_t* desta, int na, const PerspSpan& pa, uint8_t* destb, int nb,
-                                const PerspSpan& pb, const uint8_t* texels, int width) {
+// Two linear spans it[0], it[1] of 17 .. 64 pixels each (persp_short_lin's contract for
+// each): the same pixels as persp_short_lin(it[0]) then persp_short_lin(it[1]). Returns
+// short_lin_finish's next-pair test (it + 4 <= end and it[2], it[3] pairable).
+SB_INLINE uint32_t persp_short_lin2(const PerspItem* const& it, const PerspItem* const& end, const uint8_t* texels,
+                                    int width) {
   alignas(16) uint64_t buf[10];
-  short_lin_draw(desta, na, texels, width, short_lin_setup2(na, pa, nb, pb, buf));
-  short_lin_draw(destb, nb, texels, width, short_lin_finish(nb, buf));
+  const int nb = it[1].n;
+  short_lin_draw(it[0].dest, it[0].n, texels, width, short_lin_setup2(it[0].n, it[0].span, nb, it[1].span, buf));
+  uint32_t again;
+  const ShortLinSetup sb = short_lin_finish(nb, buf, it, end, again);
+  short_lin_draw(it[1].dest, nb, texels, width, sb);
+  return again;
 }
 
 }  // namespace
