@@ -471,16 +471,19 @@ SB_INLINE ShortLinSetup short_lin_finish(int nb, const uint64_t* buf, const Pers
 }
 
 // Two linear spans it[0], it[1] of 17 .. 64 pixels each (persp_short_lin's contract for
-// each): the same pixels as persp_short_lin(it[0]) then persp_short_lin(it[1]). Returns
+// each): the same pixels as persp_short_lin(it[0]) then persp_short_lin(it[1]); it += 2
+// (before span b's drawing: the add in the finish's block, not in the loop's end). Returns
 // short_lin_finish's next-pair test (it + 4 <= end and it[2], it[3] pairable).
-SB_INLINE uint32_t persp_short_lin2(const PerspItem* const& it, const PerspItem* const& end, const uint8_t* texels,
+SB_INLINE uint32_t persp_short_lin2(const PerspItem*& it, const PerspItem* const& end, const uint8_t* texels,
                                     int width) {
   alignas(16) uint64_t buf[10];
   const int nb = it[1].n;
   short_lin_draw(it[0].dest, it[0].n, texels, width, short_lin_setup2(it[0].n, it[0].span, nb, it[1].span, buf));
   uint32_t again;
   const ShortLinSetup sb = short_lin_finish(nb, buf, it, end, again);
-  short_lin_draw(it[1].dest, nb, texels, width, sb);
+  uint8_t* const destb = it[1].dest;
+  it += 2;
+  short_lin_draw(destb, nb, texels, width, sb);
   return again;
 }
 

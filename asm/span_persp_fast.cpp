@@ -771,8 +771,7 @@ __attribute__((noinline)) void lin_pairs_a64(const PerspItem* it, const PerspIte
   do {
     // The next pair's test (it[2], it[3], or none when fewer than four items are left) in
     // span b's set-up block (short_lin_finish: the integer block's spare slots).
-    again = persp_short_lin2(it, end, texels, width);
-    it += 2;
+    again = persp_short_lin2(it, end, texels, width);  // it += 2
   } while (again);
   return batch_from(it, end, texels, width);
 }
