@@ -766,17 +766,12 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
 // its own (the pair block uses nearly all of them) and the batch loop's code does not move.
 __attribute__((noinline)) void lin_pairs_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels,
                                              int width) {
-  bool again;
+  static_assert(kShortMax == 64, "short_lin_finish's next-pair test: n 17 .. 64 (n - 17 <= 47)");
+  uint32_t again;
   do {
-    persp_short_lin2(it[0].dest, it[0].n, it[0].span, it[1].dest, it[1].n, it[1].span, texels, width);
-    it += 2;
-    // The next pair's test without branches between (one block): a, b are it[0], it[1], or
-    // the pair just drawn's it[-1] when fewer than two items are left (no read past end;
-    // has_two false then).
-    const bool has_two = end - it >= 2;
-    const PerspItem& a = has_two ? it[0] : it[-1];
-    const PerspItem& b = has_two ? it[1] : it[-1];
-    again = has_two & lin_short_a64(a) & lin_short_a64(b);
+    // The next pair's test (it[2], it[3], or none when fewer than four items are left) in
+    // span b's set-up block (short_lin_finish: the integer block's spare slots).
+    again = persp_short_lin2(it, end, texels, width);  // it += 2
   } while (again);
   return batch_from(it, end, texels, width);
 }

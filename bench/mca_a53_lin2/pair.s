@@ -1,67 +1,67 @@
-add x16, x0, #16
-sub w22, w7, #1
-add x10, x4, #48
 add x14, x0, #48
 ld1r {v10.2d}, [x4]
+sub w22, w7, #1
+add x10, x4, #48
+add x9, x11, x7, lsl #5
 fmov v1.2d, #16.0
 ld1r {v3.2d}, [x10]
-add x9, x11, x7, lsl #5
+add x15, x4, #16
 ld1r {v9.2d}, [x10]
-sub x7, x9, #504
+add x16, x0, #16
 ld1r {v8.2d}, [x14]
 ldr q6, [x11]
-add x12, x11, x27, lsl #5
+sub x7, x9, #504
 ld1 {v3.d}[1], [x14]
-ldp q4, q5, [x9, #-528]
+add x12, x11, x27, lsl #5
 ld2 {v16.d, v17.d}[0], [x4]
+ldp q4, q5, [x9, #-528]
 fadd v0.2d, v9.2d, v6.2d
-ldp q13, q14, [x12, #-528]
-add x15, x4, #16
-fadd v15.2d, v8.2d, v6.2d
 fadd v3.2d, v3.2d, v1.2d
-ld1r {v2.2d}, [x0]
-ld2 {v16.d, v17.d}[1], [x0]
+ldp q13, q14, [x12, #-528]
 ldr x7, [x7]
-ld1r {v12.2d}, [x0]
+ld1r {v2.2d}, [x0]
+fadd v15.2d, v8.2d, v6.2d
 zip1 v5.2d, v5.2d, v14.2d
+ld2 {v22.2d, v23.2d}, [x15]
 fadd v3.2d, v3.2d, v1.2d
 fmov v1.2d, #1.0
 ld1r {v11.2d}, [x4]
-fadd v7.2d, v0.2d, v4.2d
+ld1r {v12.2d}, [x0]
 fadd v30.2d, v15.2d, v13.2d
-ld2 {v22.2d, v23.2d}, [x15]
+ld2 {v16.d, v17.d}[1], [x0]
 fadd v3.2d, v3.2d, v5.2d
-fmla v12.2d, v15.2d, v17.d[1]
-fmla v10.2d, v0.2d, v17.d[0]
-ld1r {v31.2d}, [x2]
-mov v21.16b, v22.16b
-mov v18.16b, v22.16b
-fmla v11.2d, v7.2d, v17.d[0]
-fmla v16.2d, v17.2d, v3.2d
-ld2 {v28.2d, v29.2d}, [x16]
-fmaxnm v10.2d, v10.2d, v31.2d
-fmla v2.2d, v30.2d, v17.d[1]
-fmla v21.2d, v23.2d, v7.d[1]
-mov v19.16b, v22.16b
-mov v24.16b, v28.16b
 mov v20.16b, v22.16b
-mov v26.16b, v28.16b
-fmaxnm v16.2d, v16.2d, v31.2d
+ld1r {v31.2d}, [x2]
+mov v18.16b, v22.16b
+fadd v7.2d, v0.2d, v4.2d
+mov v21.16b, v22.16b
+fmla v10.2d, v0.2d, v17.d[0]
+ld2 {v28.2d, v29.2d}, [x16]
+fmla v16.2d, v17.2d, v3.2d
+fmla v2.2d, v30.2d, v17.d[1]
+fmla v11.2d, v7.2d, v17.d[0]
+fmla v12.2d, v15.2d, v17.d[1]
 mov v27.16b, v28.16b
-fmaxnm v12.2d, v12.2d, v31.2d
-fmaxnm v11.2d, v11.2d, v31.2d
-frecpe v4.2d, v10.2d
+mov v26.16b, v28.16b
+mov v19.16b, v22.16b
+fmaxnm v10.2d, v10.2d, v31.2d
 mov v25.16b, v28.16b
 fmaxnm v2.2d, v2.2d, v31.2d
-fmla v19.2d, v23.2d, v0.d[1]
-fmla v18.2d, v23.2d, v0.d[0]
-fmla v27.2d, v29.2d, v30.d[1]
-fmla v20.2d, v23.2d, v7.d[0]
-fmla v26.2d, v29.2d, v30.d[0]
-fmla v25.2d, v29.2d, v15.d[1]
+fmaxnm v16.2d, v16.2d, v31.2d
+mov v24.16b, v28.16b
+fmaxnm v12.2d, v12.2d, v31.2d
+fmaxnm v11.2d, v11.2d, v31.2d
+fmla v21.2d, v23.2d, v7.d[1]
 fmla v28.2d, v29.2d, v3.d[1]
-fmla v24.2d, v29.2d, v15.d[0]
+fmla v18.2d, v23.2d, v0.d[0]
 fmla v22.2d, v23.2d, v3.d[0]
+fmla v25.2d, v29.2d, v15.d[1]
+fmla v20.2d, v23.2d, v7.d[0]
+fmla v24.2d, v29.2d, v15.d[0]
+fmla v19.2d, v23.2d, v0.d[1]
+fmla v26.2d, v29.2d, v30.d[0]
+fmla v27.2d, v29.2d, v30.d[1]
+frecpe v4.2d, v10.2d
 frecpe v5.2d, v11.2d
 frecpe v13.2d, v12.2d
 frecpe v14.2d, v2.2d
@@ -88,37 +88,37 @@ fmax v31.2d, v31.2d, v16.2d
 fmul v4.2d, v4.2d, v9.2d
 fmul v5.2d, v5.2d, v8.2d
 fmul v13.2d, v13.2d, v29.2d
-fmul v14.2d, v14.2d, v23.2d
-mov v9.16b, v1.16b
-mov v8.16b, v1.16b
 mov v29.16b, v1.16b
-fmul v6.2d, v6.2d, v17.2d
+mov v9.16b, v1.16b
+fmul v14.2d, v14.2d, v23.2d
+mov v8.16b, v1.16b
 mov v23.16b, v1.16b
+fmul v6.2d, v6.2d, v17.2d
+mov v17.16b, v1.16b
 mov x14, v12.d[1]
 fmov x3, d10
-mov v17.16b, v1.16b
 fmls v9.2d, v10.2d, v4.2d
 fmls v8.2d, v11.2d, v5.2d
 fmls v29.2d, v12.2d, v13.2d
-fmls v23.2d, v2.2d, v14.2d
 mov x5, v10.d[1]
-mov x1, v16.d[1]
 fmov x9, d11
+mov x1, v16.d[1]
 fmls v17.2d, v16.2d, v6.2d
+fmls v23.2d, v2.2d, v14.2d
 fmla v4.2d, v4.2d, v9.2d
 fmla v5.2d, v5.2d, v8.2d
-mov x8, v11.d[1]
+fmla v13.2d, v13.2d, v29.2d
 fmov x10, d16
 fmov x13, d12
-fmla v14.2d, v14.2d, v23.2d
-fmla v6.2d, v6.2d, v17.2d
-fmla v13.2d, v13.2d, v29.2d
-mov v9.16b, v1.16b
+mov x8, v11.d[1]
 mov v8.16b, v1.16b
-mov v29.16b, v1.16b
-mov v17.16b, v1.16b
+mov v9.16b, v1.16b
+fmla v6.2d, v6.2d, v17.2d
+fmla v14.2d, v14.2d, v23.2d
 mov v23.16b, v1.16b
+mov v29.16b, v1.16b
 fmaxp d31, v31.2d
+mov v17.16b, v1.16b
 fmov x17, d2
 mov x19, v2.d[1]
 fmls v9.2d, v10.2d, v4.2d
@@ -135,55 +135,55 @@ fmla v14.2d, v14.2d, v23.2d
 fmla v6.2d, v6.2d, v17.2d
 uxtl v0.2d, v0.2s
 ldr d15, [x0, #56]
-add x10, x10, #1
-add x5, x5, #1
 add x8, x8, #1
 add x14, x14, #1
-add x1, x1, #1
-add x9, x9, #1
-add x3, x3, #1
 add x13, x13, #1
+add x9, x9, #1
+add x1, x1, #1
+add x5, x5, #1
+add x3, x3, #1
+add x10, x10, #1
 lsl x3, x3, #12
-lsl x5, x5, #12
-lsl x9, x9, #12
-add x17, x17, #1
-lsl x8, x8, #12
-lsl x1, x1, #12
-lsl x10, x10, #12
-add x19, x19, #1
-lsl x13, x13, #12
-lsl x14, x14, #12
-clz x5, x5
-clz x8, x8
-clz x13, x13
-clz x10, x10
-clz x1, x1
-clz x14, x14
 clz x3, x3
+lsl x13, x13, #12
+lsl x9, x9, #12
+lsl x5, x5, #12
+lsl x10, x10, #12
+lsl x1, x1, #12
+lsl x14, x14, #12
+add x17, x17, #1
+clz x14, x14
 clz x9, x9
+clz x10, x10
+lsl x8, x8, #12
+add x19, x19, #1
+clz x1, x1
+clz x8, x8
+clz x5, x5
+clz x13, x13
 lsl x17, x17, #12
+lsl x19, x19, #12
 lsr x6, x6, #52
 orr x3, x3, x5
 orr x13, x13, x14
-lsl x19, x19, #12
 clz x17, x17
 orr x9, x9, x8
 uxtl v15.2d, v15.2s
-add x6, x6, #25
-clz x19, x19
+ucvtf v0.2d, v0.2d, #16
 orr x10, x10, x1
-orr x17, x17, x19
+add x6, x6, #25
 orr x10, x10, x13
 orr x3, x3, x9
-and w28, w22, #15
-ucvtf v0.2d, v0.2d, #16
+clz x19, x19
 ucvtf v15.2d, v15.2d, #16
-cmp w28, #0
+orr x17, x17, x19
+and w28, w22, #15
 orr x3, x3, x10
+cmp w28, #0
 lsr x6, x6, #5
 orr x17, x17, x6
-lsr w22, w22, #4
 orr x3, x3, x17
+lsr w22, w22, #4
 csinc w28, w28, wzr, ne
 tbz x3, #6, 2f
 fdiv v4.2d, v1.2d, v10.2d

@@ -517,7 +517,7 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
 // non-finite), limits up to 2^32 - 1.
 TEST(AsmSpanPerspBatch, PairedLinearSetupMatchesTwoSingleSetups) {
   std::mt19937 rng(5150);
-  long cases = 0;
+  long cases = 0, pairs_next = 0;
   auto same = [](const sb::simd::ShortLinSetup& a, const sb::simd::ShortLinSetup& b) {
     return a.x0 == b.x0 && a.x1 == b.x1 && a.x2 == b.x2 && a.x3 == b.x3 && a.d0 == b.d0 && a.d1 == b.d1 &&
            a.d2 == b.d2 && a.ld == b.ld;
@@ -529,14 +529,35 @@ TEST(AsmSpanPerspBatch, PairedLinearSetupMatchesTwoSingleSetups) {
     const int na = 17 + int(rng() % 48), nb = 17 + int(rng() % 48);
     alignas(16) uint64_t buf[10];
     const sb::simd::ShortLinSetup ga = sb::simd::short_lin_setup2(na, pa, nb, pb, buf);
-    const sb::simd::ShortLinSetup gb = sb::simd::short_lin_finish(nb, buf);
+    // The finish block's next-pair test: items it[0 .. 3], end 2 .. 4 items on (it[2], it[3]
+    // read only when four are left), each of it[2], it[3] with an n, second_order and dzi
+    // around the test's edges (n 16 / 17 / 64 / 65 / 0 / negative; dzi +-0, tiny, NaN).
+    PerspItem items[4] = {};
+    for (PerspItem& x : items) {
+      static const int ns[] = {16, 17, 40, 64, 65, 0, -5, 1000};
+      static const double dz[] = {0.0, -0.0, 1e-300, -2.5, std::numeric_limits<double>::quiet_NaN()};
+      x.n = rng() % 4 ? 17 + int(rng() % 48) : ns[rng() % 8];
+      x.span.second_order = rng() % 2;
+      x.span.dzi = dz[rng() % 5];
+    }
+    const int left = 2 + int(rng() % 3);
+    uint32_t again = 7;
+    const sb::simd::ShortLinSetup gb = sb::simd::short_lin_finish(nb, buf, items, items + left, again);
+    auto pairable = [](const PerspItem& x) {
+      return x.n > 16 && x.n <= 64 && (!x.span.second_order || x.span.dzi == 0.0);
+    };
+    const uint32_t want = left == 4 && pairable(items[2]) && pairable(items[3]);
+    pairs_next += want;
+    ASSERT_EQ(again, want) << " trial " << trial << " left " << left;
     const sb::simd::ShortLinSetup ra = sb::simd::short_lin_setup(na, pa);
     const sb::simd::ShortLinSetup rb = sb::simd::short_lin_setup(nb, pb);
     ASSERT_TRUE(same(ga, ra)) << " span a, trial " << trial << " na " << na;
     ASSERT_TRUE(same(gb, rb)) << " span b, trial " << trial << " nb " << nb;
     ++cases;
   }
-  std::printf("[ asm      ] span_persp batch: %ld paired linear set-ups, both spans as the single block's\n", cases);
+  std::printf("[ asm      ] span_persp batch: %ld paired linear set-ups, both spans as the single block's"
+              " (next pair's test: %ld pairable)\n", cases, pairs_next);
+  EXPECT_GT(pairs_next, cases / 20);
 }
 #endif
 
