@@ -187,7 +187,9 @@ SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, 
 // latency gaps of the steps' last vector levels (the block is bench/mca_a53_p64/steps_pass.s,
 // the two blocks one after the other plus the packing, then ordered by
 // bench/order_search.py; its first 132 lines since searched again as the pair loop's qemu
-// block, bench/mca_a53_pair/steps_pair_s.s). Draws dest[0 .. 31]; st as short_steps_k3v's. Returns the second
+// block, bench/mca_a53_pair/steps_pair_s.s; lines 133 .. 332, the first pass's tail, as its three
+// inlined copies' qemu blocks cut them, bench/mca_a53_pair/steps_tail_s.s).
+// Draws dest[0 .. 31]; st as short_steps_k3v's. Returns the second
 // pass's arguments (st's values, the steps packed) in x13, x9, x10, x23, x24, x25, where
 // short_pass takes them: loaded back from st (stored by the block before the first pass) and
 // packed after the first pass's last reads of those registers (b_d, b_dd once run 1 has
