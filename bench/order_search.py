@@ -13,7 +13,8 @@
 # selects and ccmp read the flags. A last line that is a branch stays last; labels and other
 # branches are barriers, except a branch annotated `// ! rA rB ..` (to fallback code that
 # rewrites rA from the listed registers and returns), which reads those registers and its own
-# and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow).
+# and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow),
+# --tail=K the last K (e.g. the compiler's code after an asm statement, timed with it).
 # --cuts=A,B (body line indexes, labels not counted) scores the sum over the blocks cut
 # there, as qemu's translation blocks are timed by bench/count.sh. --lcuts=A,B/C,..: several
 # layouts of fixed cuts (the same text reached by two code copies cut at other places), scored
@@ -347,6 +348,7 @@ if __name__ == "__main__":
     MEM = "mem" in opt
     LOAD = [l.split()[0].startswith("ld") and not l.endswith(":") for l in lines]
     last = len(lines) - 1 if (v7_is_branch if V7 else is_branch)(lines[-1].split()[0]) else len(lines)
+    last = min(last, len(lines) - int(opt.get("tail", 0)))  # --tail=K: the last K lines stay
     REGION = run_regions(lines) if "runs" in opt else None
     RSPAN = {}
     for k, rg in enumerate(REGION or []):
