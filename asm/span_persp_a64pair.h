@@ -81,8 +81,8 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // [z_2 + z_3, z_3 + z_4] (the sums of the pair vectors, then trn1 / trn2 to each span), c =
 // zs (dzi * -1/16) by lane. Ordered for the in-order A53 (bench/mca_a53_pair: gen_pair.py,
 // vsched.py, order_search.py; its first 124 lines last searched as the qemu block that starts
-// at a page, loop_r1e_s.s, lines 167 .. 238 (from 2:) with the compiler's 7 lines after them,
-// loop_r2e_s.s); the accumulators are loaded (ldr d, ld1 lane), not copied.
+// at a page, loop_r1e_s.s, lines 124 .. 159 (to b.ne 2f) loop_r0e_s.s, lines 167 .. 238 (from
+// 2:) with the compiler's 7 lines after them, loop_r2e_s.s); the accumulators are loaded (ldr d, ld1 lane), not copied.
 // With it (this pair's items: it[0] = a's, it[1] = b's) and end, next = the loop's next pair
 // test: it + 3 < end and it[2], it[3] both pairable_a64 (n 17 .. kShortMax, second_order,
 // dzi's bits other than the sign not all 0), without branches: x7 = it + 2, or it again when
@@ -243,27 +243,26 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmla v29.2d, v29.2d, v25.2d\n\t"
         "umaxv s19, v19.4s\n\t"
         "ld1 {v17.d}[1], [x10]\n\t"
-        "add x13, %[pb], #56\n\t"
         "ld1 {v21.d}[1], [x6]\n\t"
         "cset %w[h], hi\n\t"
         "ldr d7, [%[pa], #24]\n\t"
         "ld1 {v9.d}[1], [x11]\n\t"
         "fmov w6, s19\n\t"
         "mov v18.16b, v21.16b\n\t"
+        "mov v26.16b, v17.16b\n\t"
         "ld1 {v7.d}[1], [x7]\n\t"
         "mov v23.16b, v17.16b\n\t"
-        "mov v26.16b, v17.16b\n\t"
         "mov v22.16b, v21.16b\n\t"
         "mov v2.16b, v21.16b\n\t"
         "mov v25.16b, v17.16b\n\t"
         "mov v24.16b, v17.16b\n\t"
         "mov v16.16b, v21.16b\n\t"
         "fmla v17.2d, v9.2d, v14.d[1]\n\t"
+        "fmla v18.2d, v7.2d, v12.d[0]\n\t"
         "fmla v30.2d, v30.2d, v3.2d\n\t"
         "fmla v21.2d, v7.2d, v14.d[0]\n\t"
         "fmla v26.2d, v9.2d, v0.d[1]\n\t"
         "fmla v25.2d, v9.2d, v12.d[1]\n\t"
-        "fmla v18.2d, v7.2d, v12.d[0]\n\t"
         "fmla v22.2d, v7.2d, v8.d[0]\n\t"
         "fmla v15.2d, v15.2d, v5.2d\n\t"
         "fmla v23.2d, v9.2d, v6.d[1]\n\t"
@@ -271,6 +270,7 @@ SB_INLINE void short_samples2(const PerspSpan& a, int na, const PerspSpan& b, in
         "fmla v24.2d, v9.2d, v8.d[1]\n\t"
         "fmla v2.2d, v7.2d, v6.d[0]\n\t"
         "cmn w6, #1\n\t"
+        "add x13, %[pb], #56\n\t"
         "add x8, %[pa], #56\n\t"
         "b.ne 2f\n\t"
         "ldr q3, [%[kc], #16]\n\t"
