@@ -13,9 +13,12 @@
 # selects and ccmp read the flags. A last line that is a branch stays last; labels and other
 # branches are barriers, except a branch annotated `// ! rA rB ..` (to fallback code that
 # rewrites rA from the listed registers and returns), which reads those registers and its own
-# and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow).
+# and writes rA. --head=K pins the first K lines (e.g. stores a loop entry label must follow),
+# --tail=K the last K (e.g. the compiler's code after an asm statement, timed with it).
 # --cuts=A,B (body line indexes, labels not counted) scores the sum over the blocks cut
-# there, as qemu's translation blocks are timed by bench/count.sh. --qcuts=P[,P2..]: cuts as qemu 7.2
+# there, as qemu's translation blocks are timed by bench/count.sh. --lcuts=A,B/C,..: several
+# layouts of fixed cuts (the same text reached by two code copies cut at other places), scored
+# by the sum over all their blocks; no line moves across any layout's cut (the cuts stay). --qcuts=P[,P2..]: cuts as qemu 7.2
 # with the hotblocks plugin makes them for each order (bench/qemu_cuts.py: op counts, a page end at
 # body index P, 0 for none; several: the sum over those code placements): for straight loop bodies
 # longer than qemu translates in one block. --mem keeps loads in order
@@ -42,6 +45,7 @@ import random, re, subprocess, sys
 
 BRANCHES = ("b", "cbz", "cbnz", "tbz", "tbnz")  # and b.cond (not bif, bit, bsl)
 V7, REGION, QCUTS = False, None, None  # --arch=armv7, --runs, --qcuts (set by main)
+LCUTS, SEGS = [], []  # --lcuts (set by main)
 CACHE = {}  # per cpu: cycles of blocks already timed
 ACCUMULATE = ("bfxil", "bfi", "ins", "tbx", "smlal", "smlal2", "movk", "sli", "sri", "fmla", "fmls", "mls", "mla",
               "bit", "bif", "bsl", "ssra", "usra", "sqxtn2", "uqxtn2", "xtn2")
@@ -241,6 +245,14 @@ def cycles(orders, cpu):
         body = [lines[i] for i in o if not lines[i].endswith(":")]
         b = [0] + CUTS + [len(body)]
         return [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+    if LCUTS:
+        def blocks(o):  # --lcuts: every layout's fixed cuts, the sum
+            body = [lines[i] for i in o if not lines[i].endswith(":")]
+            res = []
+            for cl in LCUTS:
+                b = [0] + cl + [len(body)]
+                res += [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
+            return res
     if QCUTS is not None:
         def blocks(o):
             body = [lines[i] for i in o if not lines[i].endswith(":")]
@@ -249,7 +261,7 @@ def cycles(orders, cpu):
                 b = [0] + qemu_cuts.cuts(body, page=page) + [len(body)]
                 res += [body[b[k]:b[k + 1]] for k in range(len(b) - 1)]
             return res
-    parts = [blocks(o) if CUTS or QCUTS is not None else [[lines[i] for i in o]] for o in orders]
+    parts = [blocks(o) if CUTS or LCUTS or QCUTS is not None else [[lines[i] for i in o]] for o in orders]
     cmt, strip = ("@", "@") if V7 else ("#", "//")
 
     def text_of(blk):
@@ -287,6 +299,9 @@ def window(order, i):
     lo_min, hi_max = head, last - 1
     if REGION:  # --runs: within the run's statement (its lines keep their positions as a set)
         lo_min, hi_max = max(lo_min, RSPAN[REGION[x]][0]), min(hi_max, RSPAN[REGION[x]][1])
+    if LCUTS:  # within the segment between the layouts' cuts (no line crosses a cut)
+        lo_min = max([lo_min] + [c for c in SEGS if c <= i])
+        hi_max = min([hi_max] + [c - 1 for c in SEGS if c > i])
     while lo - 1 >= lo_min and not dep(order[lo - 1], x):
         lo -= 1
     while hi + 1 <= hi_max and not dep(x, order[hi + 1]):
@@ -320,6 +335,8 @@ if __name__ == "__main__":
     W57 = float(opt.get("a57", 0))  # 0: A57 breaks ties only
     CUTS = [int(c) for c in opt["cuts"].split(",")] if "cuts" in opt else []
     QCUTS = [int(c) for c in opt["qcuts"].split(",")] if "qcuts" in opt else None
+    LCUTS = [[int(c) for c in g.split(",") if c] for g in opt["lcuts"].split("/")] if "lcuts" in opt else []
+    SEGS = sorted({c for cl in LCUTS for c in cl})
     if QCUTS is not None:
         import os
         sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -331,6 +348,7 @@ if __name__ == "__main__":
     MEM = "mem" in opt
     LOAD = [l.split()[0].startswith("ld") and not l.endswith(":") for l in lines]
     last = len(lines) - 1 if (v7_is_branch if V7 else is_branch)(lines[-1].split()[0]) else len(lines)
+    last = min(last, len(lines) - int(opt.get("tail", 0)))  # --tail=K: the last K lines stay
     REGION = run_regions(lines) if "runs" in opt else None
     RSPAN = {}
     for k, rg in enumerate(REGION or []):
