@@ -262,27 +262,35 @@ TEST(AsmSpanPersp, VariantsAgreeOnNonFiniteAndHugeGradients) {
 // texture 32767 texels wide, so that clamped samples swing between 0 and umax (deltas near
 // +-2^31, |delta - 120 dd| up to 2^32) under strong curvature; lengths at each pass boundary
 // (the loop runs while more than 48 pixels are left, two runs a pass) and random ones.
+// A second-order span over a sw x sh surface with extreme steps: 1/z, u / z and v / z and
+// their gradients drawn log-uniformly (dzi up to 10^dzi_hi), u steps sometimes 1000x larger,
+// so the per-run deltas reach +-2^31.
+sb::simd::PerspSpan extreme_step_span(std::mt19937& rng, int sw, int sh, double dzi_hi) {
+  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
+    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
+    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
+  };
+  sb::simd::PerspSpan p{};
+  p.zi0 = std::fabs(logu(-4, 0));
+  p.dzi = logu(-7, dzi_hi);
+  p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
+  p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
+  p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
+  p.umax = int32_t((uint32_t(sw) << 16) - 1);
+  p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+  p.second_order = true;
+  return p;
+}
+
 TEST(AsmSpanPersp, LongSpansMatchOnExtremeSteps) {
   std::mt19937 rng(11);
   const int sw = 32767, sh = 3;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
   const int lengths[] = {65, 79, 80, 81, 82, 95, 96, 97, 112, 113, 127, 128, 129, 144, 145, 160, 161, 176, 177, 1920};
-  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
-    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
-    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
-  };
   int cases = 0;
   for (int i = 0; i < 6000; ++i) {
-    sb::simd::PerspSpan p{};
-    p.zi0 = std::fabs(logu(-4, 0));
-    p.dzi = logu(-7, -3);
-    p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
-    p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
-    p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
-    p.umax = int32_t((uint32_t(sw) << 16) - 1);
-    p.vmax = int32_t((uint32_t(sh) << 16) - 1);
-    p.second_order = true;
+    const sb::simd::PerspSpan p = extreme_step_span(rng, sw, sh, -3);
     const int n = i < 2000 ? lengths[i % 20] : 65 + int(rng() % 1936);
     ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " case " << i << " n " << n;
     ++cases;
@@ -393,21 +401,9 @@ TEST(AsmSpanPersp, FourRunSpansMatchOnExtremeSteps) {
   const int sw = 32767, sh = 3;
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
-  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
-    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
-    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
-  };
   int cases = 0;
   for (int i = 0; i < 8500; ++i) {
-    sb::simd::PerspSpan p{};
-    p.zi0 = std::fabs(logu(-4, 0));
-    p.dzi = logu(-7, -2);
-    p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
-    p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
-    p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
-    p.umax = int32_t((uint32_t(sw) << 16) - 1);
-    p.vmax = int32_t((uint32_t(sh) << 16) - 1);
-    p.second_order = true;
+    const sb::simd::PerspSpan p = extreme_step_span(rng, sw, sh, -2);
     const int n = 49 + i % 17;
     ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " case " << i << " n " << n;
     ++cases;
