@@ -44,6 +44,7 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "block_mip0": "surface_block mip 0", "block_mip1": "surface_block mip 1",
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
+          "palette2": "expand_palette (x2)", "palette3": "expand_palette (x3)", "palette4": "expand_palette (x4)",
           "alias32": "alias_span (17-47 px spans, mean 32, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
           "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (spans of 50-64 px, mean 57)",
           "persp1920lin": "surface_span_persp (1920 px, linear steps)",
@@ -51,7 +52,7 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "persp64single": "surface_span_persp (spans of 50-64 px, one call each)",
           "persp192": "surface_span_persp (spans of 179-205 px, mean 192)",
           "persp192lin": "surface_span_persp (spans of 179-205 px, linear steps)"}
-UNIT = {"palette": "src px"}
+UNIT = {"palette": "src px", "palette2": "out px", "palette3": "out px", "palette4": "out px"}
 
 
 def sh(cmd, **kw):
@@ -424,7 +425,7 @@ def main():
                 cells.append("")
             else:
                 mark = "†" if gather and c == "znver3" and variant in ("avx2g",) or (
-                    gather and c == "znver3" and case in ("palette", "lit16") and variant == "avx2") else ""
+                    gather and c == "znver3" and case in ("palette", "palette2", "lit16") and variant == "avx2") else ""
                 cells.append(fmt(cyc[c]) + mark)
         ratio = fmt(s_ipu / ipu) if s_ipu and ipu else "—"
         cr = [s_cyc[c] / cyc[c] for c in cyc if cyc.get(c) and s_cyc.get(c)]

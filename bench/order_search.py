@@ -140,6 +140,10 @@ def v7_is_branch(op):
         r"b(eq|ne|le|lt|ge|gt|ls|hi|cs|cc|mi|pl|vs|vc|hs|lo)(\.[wn])?", op) is not None
 
 
+V7_FLAG_SETTERS = ("add", "sub", "rsb", "adc", "sbc", "and", "orr", "eor", "bic", "lsl", "lsr", "asr", "ror",
+                   "mov", "mvn", "mul", "orn")
+
+
 def parse_v7(l):
     """(reads, writes, memory class, barrier) of one ARMv7 line. Memory class: None, "free"
     (ldrb), "ld" / "st", with ":TAG" for a line tagged `@m=TAG`."""
@@ -171,7 +175,7 @@ def parse_v7(l):
         reads = set(inside)
         if post:
             writes |= inside
-    elif base in ("cmp", "tst"):
+    elif base in ("cmp", "tst", "cmn", "teq"):
         reads, writes = set().union(*allr), {"flags"}
     elif base in ("vcmp", "vcmpe"):
         reads, writes = set().union(*allr), {"fpscr"}
@@ -188,6 +192,8 @@ def parse_v7(l):
             reads |= {"flags"} | writes
         if toks and toks[0].startswith("s"):  # s-register writes are partial: read the d too
             reads |= allr[0]
+        if base.endswith("s") and base[:-1] in V7_FLAG_SETTERS:  # adds, lsrs, movs ...: set the flags
+            writes |= {"flags"}
     if flags:
         reads |= {"flags"}
     mem = None
