@@ -162,8 +162,8 @@ def parse_v7(l):
     post = "!" in rest
     inside = set().union(*[v7_regs(t) for t in re.findall(r"[a-z]+\d*", memm.group(1))]) if memm else set()
     base = op.split(".")[0]
-    is_store = base in ("str", "strd", "strb", "vst1", "vstr", "strh")
-    is_load = base in ("ldr", "ldrd", "ldrb", "vld1", "vldr", "ldrh")
+    is_store = base in ("str", "strd", "strb", "vst1", "vst2", "vst3", "vst4", "vstr", "strh")
+    is_load = base in ("ldr", "ldrd", "ldrb", "vld1", "vld2", "vld3", "vld4", "vldr", "ldrh")
     reads, writes = set(), set()
     if is_store:
         reads = set().union(*allr)
