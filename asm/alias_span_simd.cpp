@@ -136,55 +136,10 @@ void alias_span_sse2(uint8_t* __restrict dest, uint16_t* __restrict zbuf, int n,
 #if !defined(__ARM_NEON) && !defined(__ARM_NEON__)
 #error "SB_SIMD_HAVE_NEON is set but this file is not compiled for NEON"
 #endif
-#include <arm_neon.h>
-
 #include "asm/alias_span_a64.h"
+#include "asm/alias_span_v7.h"
 
 namespace sb::simd::detail {
-
-namespace {
-
-// One group of 8 pixels from lane values at its first pixel (S, T, L, Z: lanes 0..3 in
-// [0], 4..7 in [1]): the z test and the z buffer's new contents (one load, one store), then
-// all 8 texels fetched (the contract keeps every lane's coordinates in range, hidden or
-// not), packed into one 64-bit word and blended with dest's 8 bytes under the visibility
-// mask: a hidden pixel is rewritten with the byte it already holds. A group drawn twice
-// over the same pixels gives the same bytes (a drawn pixel's z now equals its own z, so it
-// passes again and draws the same texel), which lets the span's last group overlap the one
-// before it instead of taking a scalar tail.
-[[gnu::always_inline]] inline void alias_group8(uint8_t* __restrict d, uint16_t* __restrict zb,
-                                          const uint8_t* __restrict skin, const uint8_t* __restrict colormap,
-                                          uint32x4_t S0, uint32x4_t S1, uint32x4_t T0, uint32x4_t T1,
-                                          uint32x4_t L0, uint32x4_t L1, uint32x4_t Z0, uint32x4_t Z1,
-                                          uint16x4_t w16, uint64_t* __restrict sr) {
-  const uint16x8_t zn = vcombine_u16(vshrn_n_u32(Z0, 16), vshrn_n_u32(Z1, 16));
-  const uint16x8_t zo = vld1q_u16(zb);
-  const uint16x8_t vis = vcgeq_u16(zn, zo);
-  vst1q_u16(zb, vbslq_u16(vis, zn, zo));
-  const uint64_t m = vget_lane_u64(vreinterpret_u64_u8(vmovn_u16(vis)), 0);
-  // Skin offsets (t >> 16) * width + (s >> 16) from 16-bit halves (both < 2^15: the contract)
-  // and colormap row offsets (l >> 16) * 256, interleaved by vst2q so one 64-bit load brings
-  // lane j's pair to a core register: offset in the low word, row in the high one.
-  uint32x4x2_t p0, p1;
-  p0.val[0] = vmlal_u16(vshrq_n_u32(S0, 16), vshrn_n_u32(T0, 16), w16);
-  p1.val[0] = vmlal_u16(vshrq_n_u32(S1, 16), vshrn_n_u32(T1, 16), w16);
-  p0.val[1] = vshlq_n_u32(vshrq_n_u32(L0, 16), 8);
-  p1.val[1] = vshlq_n_u32(vshrq_n_u32(L1, 16), 8);
-  vst2q_u32(reinterpret_cast<uint32_t*>(sr), p0);
-  vst2q_u32(reinterpret_cast<uint32_t*>(sr + 4), p1);
-  uint64_t px = 0;
-#pragma GCC unroll 8
-  for (int j = 0; j < 8; ++j) {
-    const uint32_t tex = skin[uint32_t(sr[j])];
-    px |= uint64_t(colormap[uint32_t(sr[j] >> 32) + tex]) << (8 * j);
-  }
-  uint64_t old;
-  std::memcpy(&old, d, 8);
-  px = (px & m) | (old & ~m);
-  std::memcpy(d, &px, 8);
-}
-
-}  // namespace
 
 void alias_span_neon(uint8_t* __restrict dest, uint16_t* __restrict zbuf, int n, const uint8_t* __restrict skin,
                      int skin_width, const uint8_t* __restrict colormap, const AliasSpan& a) {
@@ -195,31 +150,8 @@ void alias_span_neon(uint8_t* __restrict dest, uint16_t* __restrict zbuf, int n,
   // One asm statement, software pipelined (asm/alias_span_a64.h).
   alias_span_a64(dest, zbuf, n, skin, colormap, a, w);
 #else
-  const uint32_t ds = uint32_t(a.ds), dt = uint32_t(a.dt), dl = uint32_t(a.dlight), dz = uint32_t(a.dzi);
-  static constexpr uint32_t kIndex[4] = {0, 1, 2, 3};
-  const uint32x4_t idx = vld1q_u32(kIndex);
-  const uint16x4_t w16 = vdup_n_u16(uint16_t(w));
-  alignas(16) uint64_t sr[8];
-  // Lanes 0..3 of each quantity at pixel k from one multiply-add each.
-  auto at = [&](uint32_t x, uint32_t d, uint32_t k) { return vmlaq_n_u32(vdupq_n_u32(x + k * d), idx, d); };
-  uint32x4_t S0 = at(s, ds, 0), T0 = at(t, dt, 0), L0 = at(l, dl, 0), Z0 = at(z, dz, 0);
-  const uint32x4_t S4 = vdupq_n_u32(4 * ds), T4 = vdupq_n_u32(4 * dt), L4 = vdupq_n_u32(4 * dl),
-                   Z4 = vdupq_n_u32(4 * dz);
-  int k = 0;
-  for (; k + 8 <= n; k += 8) {
-    const uint32x4_t S1 = vaddq_u32(S0, S4), T1 = vaddq_u32(T0, T4), L1 = vaddq_u32(L0, L4), Z1 = vaddq_u32(Z0, Z4);
-    alias_group8(dest + k, zbuf + k, skin, colormap, S0, S1, T0, T1, L0, L1, Z0, Z1, w16, sr);
-    S0 = vaddq_u32(S1, S4);
-    T0 = vaddq_u32(T1, T4);
-    L0 = vaddq_u32(L1, L4);
-    Z0 = vaddq_u32(Z1, Z4);
-  }
-  if (k < n) {  // the last n % 8 pixels: a group ending at pixel n - 1, over pixels already drawn
-    const uint32_t b = uint32_t(n - 8);
-    S0 = at(s, ds, b), T0 = at(t, dt, b), L0 = at(l, dl, b), Z0 = at(z, dz, b);
-    alias_group8(dest + b, zbuf + b, skin, colormap, S0, vaddq_u32(S0, S4), T0, vaddq_u32(T0, T4), L0,
-                 vaddq_u32(L0, L4), Z0, vaddq_u32(Z0, Z4), w16, sr);
-  }
+  // One asm statement (asm/alias_span_v7.h).
+  alias_span_v7(dest, zbuf, n, skin, colormap, a, w);
 #endif
 }
 

@@ -295,7 +295,8 @@ void z_span_avx2(uint16_t* __restrict z, int n, uint32_t zi, uint32_t step) {
 
 void expand_palette_avx2(const uint8_t* src, ptrdiff_t src_stride, int width, int height, const uint32_t* palette,
                          uint32_t* dst, ptrdiff_t dst_stride, int scale) {
-  const size_t row_bytes = size_t(width) * size_t(scale) * sizeof(uint32_t);
+  // Scales 3 and up: one 16-byte store (or more) a pixel and row, as in the SSE2 version.
+  if (scale >= 3) return expand_palette_sse2(src, src_stride, width, height, palette, dst, dst_stride, scale);
   const int* pal = reinterpret_cast<const int*>(palette);
   for (int y = 0; y < height; ++y) {
     const uint8_t* s = src + y * src_stride;
@@ -308,30 +309,26 @@ void expand_palette_avx2(const uint8_t* src, ptrdiff_t src_stride, int width, in
     if (scale == 1) {
       for (; x + 8 <= width; x += 8) _mm256_storeu_si256(reinterpret_cast<__m256i*>(d + x), gather8(x));
       for (; x < width; ++x) d[x] = palette[s[x]];
-    } else if (scale == 2) {
+      continue;
+    }
+    // Every output row stored from the registers (no copy of a written row).
+    if (scale == 2) {
       for (; x + 8 <= width; x += 8) {
         const __m256i c = gather8(x);
         const __m256i lo = _mm256_unpacklo_epi32(c, c), hi = _mm256_unpackhi_epi32(c, c);  // 0 0 1 1 | 4 4 5 5 ...
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(d + 2 * x), _mm256_permute2x128_si256(lo, hi, 0x20));
-        _mm256_storeu_si256(reinterpret_cast<__m256i*>(d + 2 * x + 8), _mm256_permute2x128_si256(lo, hi, 0x31));
-      }
-      for (; x < width; ++x) d[2 * x] = d[2 * x + 1] = palette[s[x]];
-    } else {
-      // As in the SSE2 version: per pixel, ceil(scale / 8) stores of eight copies, the
-      // spill into the following squares overwritten by them; pixels whose stores would
-      // pass the row's end exactly.
-      const int q = (scale + 7) / 8;
-      for (; x * scale + 8 * q <= width * scale; ++x) {
-        const __m256i c = _mm256_set1_epi32(int32_t(palette[s[x]]));
-        uint32_t* p = d + x * scale;
-        for (int i = 0; i < q; ++i) _mm256_storeu_si256(reinterpret_cast<__m256i*>(p + 8 * i), c);
-      }
-      for (; x < width; ++x) {
-        const uint32_t c = palette[s[x]];
-        for (int i = 0; i < scale; ++i) d[x * scale + i] = c;
+        const __m256i a = _mm256_permute2x128_si256(lo, hi, 0x20), b = _mm256_permute2x128_si256(lo, hi, 0x31);
+        for (int j = 0; j < 2; ++j) {
+          uint32_t* p = d + j * dst_stride + 2 * x;
+          _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), a);
+          _mm256_storeu_si256(reinterpret_cast<__m256i*>(p + 8), b);
+        }
       }
     }
-    for (int j = 1; j < scale; ++j) std::memcpy(d + j * dst_stride, d, row_bytes);
+    for (; x < width; ++x) {
+      const uint32_t c = palette[s[x]];
+      for (int j = 0; j < scale; ++j)
+        for (int i = 0; i < scale; ++i) d[j * dst_stride + x * scale + i] = c;
+    }
   }
 }
 

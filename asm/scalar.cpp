@@ -1,7 +1,6 @@
 // asm/scalar.cpp: the scalar references of every kernel (see each kernel's header for the
 // contract). These are the definitions the tuned variants must match byte for byte, so
 // they are written for clarity first and speed second.
-#include <cstring>
 
 #include "asm/alias_span.h"
 #include "asm/palette_expand.h"
@@ -79,19 +78,21 @@ void z_span_scalar(uint16_t* __restrict z, int n, uint32_t zi, uint32_t step) {
 
 void expand_palette_scalar(const uint8_t* src, ptrdiff_t src_stride, int width, int height,
                            const uint32_t* palette, uint32_t* dst, ptrdiff_t dst_stride, int scale) {
-  const size_t row_bytes = size_t(width) * size_t(scale) * sizeof(uint32_t);
+  // Each output row written from the source row (no copy of a written row: every variant
+  // writes each output row once, so all of their work is in their own code).
   for (int y = 0; y < height; ++y) {
     const uint8_t* s = src + y * src_stride;
-    uint32_t* d = dst + ptrdiff_t(y) * scale * dst_stride;
-    if (scale == 1) {
-      for (int x = 0; x < width; ++x) d[x] = palette[s[x]];
-    } else {
-      for (int x = 0; x < width; ++x) {
-        const uint32_t c = palette[s[x]];
-        for (int i = 0; i < scale; ++i) d[x * scale + i] = c;
+    for (int j = 0; j < scale; ++j) {
+      uint32_t* d = dst + (ptrdiff_t(y) * scale + j) * dst_stride;
+      if (scale == 1) {
+        for (int x = 0; x < width; ++x) d[x] = palette[s[x]];
+      } else {
+        for (int x = 0; x < width; ++x) {
+          const uint32_t c = palette[s[x]];
+          for (int i = 0; i < scale; ++i) d[x * scale + i] = c;
+        }
       }
     }
-    for (int j = 1; j < scale; ++j) std::memcpy(d + j * dst_stride, d, row_bytes);
   }
 }
 

@@ -93,9 +93,25 @@ void z_span_sse2(uint16_t* __restrict z, int n, uint32_t zi, uint32_t step) {
 
 // ---------------------------------------------------------------- 4. palette expansion
 
+}  // namespace
+
+// Scales 3 and 4 (the scale a compile-time constant): one 16-byte store of four copies a pixel
+// and row; at scale 3 it spills one word into the next pixel's square, which is written
+// afterwards. Pixels whose store would pass the row's end are left to the caller. Returns the
+// pixels done.
+template <int S>
+static int expand_rows_x34(const uint8_t* s, int width, const uint32_t* palette, uint32_t* d, ptrdiff_t dst_stride) {
+  int x = 0;
+  for (; x * S + 4 <= width * S; ++x) {
+    const __m128i c = _mm_set1_epi32(int32_t(palette[s[x]]));
+#pragma GCC unroll 4
+    for (int j = 0; j < S; ++j) _mm_storeu_si128(reinterpret_cast<__m128i*>(d + j * dst_stride + x * S), c);
+  }
+  return x;
+}
+
 void expand_palette_sse2(const uint8_t* src, ptrdiff_t src_stride, int width, int height, const uint32_t* palette,
                          uint32_t* dst, ptrdiff_t dst_stride, int scale) {
-  const size_t row_bytes = size_t(width) * size_t(scale) * sizeof(uint32_t);
   for (int y = 0; y < height; ++y) {
     const uint8_t* s = src + y * src_stride;
     uint32_t* d = dst + ptrdiff_t(y) * scale * dst_stride;
@@ -107,32 +123,45 @@ void expand_palette_sse2(const uint8_t* src, ptrdiff_t src_stride, int width, in
         _mm_storeu_si128(reinterpret_cast<__m128i*>(d + x), c);
       }
       for (; x < width; ++x) d[x] = palette[s[x]];
-    } else if (scale == 2) {
+      continue;
+    }
+    // Every output row stored from the registers (no copy of a written row).
+    if (scale == 2) {
       for (; x + 4 <= width; x += 4) {
         const __m128i c = _mm_setr_epi32(int32_t(palette[s[x]]), int32_t(palette[s[x + 1]]),
                                          int32_t(palette[s[x + 2]]), int32_t(palette[s[x + 3]]));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(d + 2 * x), _mm_unpacklo_epi32(c, c));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(d + 2 * x + 4), _mm_unpackhi_epi32(c, c));
+        const __m128i lo = _mm_unpacklo_epi32(c, c), hi = _mm_unpackhi_epi32(c, c);
+        for (int j = 0; j < 2; ++j) {
+          uint32_t* p = d + j * dst_stride + 2 * x;
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(p), lo);
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(p + 4), hi);
+        }
       }
-      for (; x < width; ++x) d[2 * x] = d[2 * x + 1] = palette[s[x]];
+    } else if (scale <= 4) {
+      x = scale == 3 ? expand_rows_x34<3>(s, width, palette, d, dst_stride)
+                     : expand_rows_x34<4>(s, width, palette, d, dst_stride);
     } else {
-      // Each pixel: ceil(scale / 4) stores of four copies; the last store may spill into
+      // Each pixel: ceil(scale / 4) stores of four copies a row; the last store may spill into
       // the following pixels' squares, which are written afterwards. Pixels whose stores
       // would pass the row's end are written exactly.
       const int q = (scale + 3) / 4;
       for (; x * scale + 4 * q <= width * scale; ++x) {
         const __m128i c = _mm_set1_epi32(int32_t(palette[s[x]]));
-        uint32_t* p = d + x * scale;
-        for (int i = 0; i < q; ++i) _mm_storeu_si128(reinterpret_cast<__m128i*>(p + 4 * i), c);
-      }
-      for (; x < width; ++x) {
-        const uint32_t c = palette[s[x]];
-        for (int i = 0; i < scale; ++i) d[x * scale + i] = c;
+        for (int j = 0; j < scale; ++j) {
+          uint32_t* p = d + j * dst_stride + x * scale;
+          for (int i = 0; i < q; ++i) _mm_storeu_si128(reinterpret_cast<__m128i*>(p + 4 * i), c);
+        }
       }
     }
-    for (int j = 1; j < scale; ++j) std::memcpy(d + j * dst_stride, d, row_bytes);
+    for (; x < width; ++x) {
+      const uint32_t c = palette[s[x]];
+      for (int j = 0; j < scale; ++j)
+        for (int i = 0; i < scale; ++i) d[j * dst_stride + x * scale + i] = c;
+    }
   }
 }
+
+namespace {
 
 }  // namespace
 

@@ -21,6 +21,9 @@ void alias_span_neon(uint8_t* dest, uint16_t* zbuf, int n, const uint8_t* skin, 
 extern const Kernels kSse2;
 extern const Kernels kAvx2;
 extern const Kernels kAvx2Gather;
+// asm/sse2.cpp's palette expansion (avx2's takes it for scales 3 and up).
+void expand_palette_sse2(const uint8_t* src, ptrdiff_t src_stride, int width, int height, const uint32_t* palette,
+                         uint32_t* dst, ptrdiff_t dst_stride, int scale);
 #endif
 #if defined(SB_SIMD_HAVE_NEON)
 extern const Kernels kNeon;

@@ -1,18 +1,18 @@
 #!/usr/bin/env bash
 # bench/count.sh: instruction counts and estimated cycles for every asm/ kernel x target x
-# variant, plus instructions per pixel per frame (x86-64), as one table printed and written
+# variant, plus instructions per pixel per frame (x86-64, aarch64, armhf), as one table printed and written
 # to bench/counts.md. Deterministic counts, model-estimated cycles; never pass/fail.
 #
 #   bench/count.sh            everything (about 2 minutes on 2 cores once built)
-#   bench/count.sh --quick    kernels only, no whole-frame callgrind runs
+#   bench/count.sh --quick    kernels only, no whole-frame runs
 #   bench/count.sh --only=block_mip,span [--variants=scalar,neon]   the cases whose names
 #                             start so (starbow_count_kernels list), those variants; only those
 #                             rows of bench/counts.md are replaced (see bench/count_report.py)
 #
 # Builds (only what it needs, own build dirs, -no-pie so addresses match the binary):
 #   build/count          starbow_count_kernels + starbow (x86-64, native)
-#   build/count-aarch64  starbow_count_kernels (toolchain/aarch64-linux-gnu.cmake)
-#   build/count-armhf    starbow_count_kernels (toolchain/arm-linux-gnueabihf.cmake, NEON)
+#   build/count-aarch64  starbow_count_kernels + starbow (toolchain/aarch64-linux-gnu.cmake)
+#   build/count-armhf    starbow_count_kernels + starbow (toolchain/arm-linux-gnueabihf.cmake, NEON)
 #   build/qemu-plugins   libinsn.so, libhotblocks.so from Debian's qemu source package
 #                        (cached: built once; a private apt sources list with deb-src lines)
 # Needs (Debian): valgrind qemu-user g++-aarch64-linux-gnu g++-arm-linux-gnueabihf llvm-14
@@ -100,8 +100,13 @@ build() {  # dir target...: the build's output goes to build/<dir>.log, its end 
   }
 }
 build count starbow_count_kernels starbow
-build count-aarch64 starbow_count_kernels
-build count-armhf starbow_count_kernels
+if [[ " $* " == *" --quick "* || " $* " == *" --only="* || " $* " == *" --variants="* ]]; then
+  build count-aarch64 starbow_count_kernels
+  build count-armhf starbow_count_kernels
+else  # whole frames on ARM too (the headless starbow under qemu-user)
+  build count-aarch64 starbow_count_kernels starbow
+  build count-armhf starbow_count_kernels starbow
+fi
 
 echo "== counting (progress on stderr)"
 python3 bench/count_report.py "$@"

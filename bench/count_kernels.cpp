@@ -18,6 +18,8 @@
 //                64x64 texture (>> m), 17x17 light grid
 //   z1920        z span fill, 1920 pixels
 //   palette      8-bit to 32-bit palette expansion, 320x200 at scale 1 (source pixels)
+//   palette2/3/4 the same 320x200 frame at scale 2, 3 and 4 (output pixels: 640x400 ..
+//                1280x800, the SDL window's -scale)
 //   alias32      alias-model spans: 60 spans of 17-47 pixels (mean 32, pairs 32 - k and 32 + k
 //                for k = 0 .. 15, so every length mod 8 occurs), all visible (a 1920-pixel
 //                row's worth), 296x194 skin, full light range
@@ -96,7 +98,7 @@ const Kernels* find_variant(const char* name) {
 }
 
 const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
-                              "block_mip2", "block_mip3", "z1920", "palette", "alias32", "alias1920h",
+                              "block_mip2", "block_mip3", "z1920", "palette", "palette2", "palette3", "palette4", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
                               "persp192", "persp192lin"};
 
@@ -134,7 +136,10 @@ long units_of(const char* c) {
     const int e = kSurf >> (c[9] - '0');
     return long(e) * e;
   }
-  if (std::strcmp(c, "palette") == 0) return long(kPalW) * kPalH;
+  if (std::strncmp(c, "palette", 7) == 0) {
+    const long scale = c[7] ? c[7] - '0' : 1;
+    return long(kPalW) * kPalH * scale * scale;
+  }
   return 0;
 }
 
@@ -251,13 +256,15 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     for (long r = 0; r < reps; ++r) k.surface_spans_persp(items.data(), int(items.size()), surf.data(), kSurf, kSurf);
     return checksum(dest.data(), dest.size());
   }
-  if (std::strcmp(c, "palette") == 0) {
+  if (std::strncmp(c, "palette", 7) == 0) {
+    const int scale = c[7] ? c[7] - '0' : 1;
     std::vector<uint8_t> src(size_t(kPalW) * kPalH);
     for (auto& s : src) s = uint8_t(rng.next() >> 24);
     uint32_t pal[256];
     for (auto& p : pal) p = rng.next();
-    std::vector<uint32_t> dst(src.size());
-    for (long r = 0; r < reps; ++r) k.expand_palette(src.data(), kPalW, kPalW, kPalH, pal, dst.data(), kPalW, 1);
+    std::vector<uint32_t> dst(src.size() * scale * scale);
+    for (long r = 0; r < reps; ++r)
+      k.expand_palette(src.data(), kPalW, kPalW, kPalH, pal, dst.data(), kPalW * scale, scale);
     return checksum(reinterpret_cast<const uint8_t*>(dst.data()), dst.size() * 4);
   }
   return 0;

@@ -10,10 +10,12 @@
 #         cycles/unit = sum over hot blocks in sb::simd code of (llvm-mca cycles per block
 #                       iteration x executions) / (R * units)
 #       "cover" = share of the kernel's counted instructions that those blocks hold (hotblocks
-#       lists only the 20 most executed blocks; the rest, e.g. libc memcpy, is not timed).
+#       lists the 400 most executed blocks (count.sh's build); code outside the binary, e.g.
+#       libc's memcpy, is not timed).
 #   Each block is timed on its own as if it looped (llvm-mca's model), so overlap between
 #   consecutive blocks on out-of-order cores is not credited: a mild over-estimate there.
-# Also the whole frame on x86-64: callgrind over a flythrough of F and 2F frames.
+# Also the whole frame: x86-64 by callgrind over a flythrough of F and 2F frames, aarch64 and
+# armhf by qemu-user's insn plugin over the same flythroughs.
 #
 # Writes the table to stdout and to bench/counts.md.
 # Filter (bench/count.sh --quick passes arguments through): --only=PREFIX[,PREFIX...] keeps
@@ -44,6 +46,7 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "block_mip0": "surface_block mip 0", "block_mip1": "surface_block mip 1",
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
+          "palette2": "expand_palette (x2)", "palette3": "expand_palette (x3)", "palette4": "expand_palette (x4)",
           "alias32": "alias_span (17-47 px spans, mean 32, visible)", "alias1920h": "alias_span (1920 px, half hidden)",
           "persp1920": "surface_span_persp (1 span, 1920 px)", "persp64": "surface_span_persp (spans of 50-64 px, mean 57)",
           "persp1920lin": "surface_span_persp (1920 px, linear steps)",
@@ -51,7 +54,7 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "persp64single": "surface_span_persp (spans of 50-64 px, one call each)",
           "persp192": "surface_span_persp (spans of 179-205 px, mean 192)",
           "persp192lin": "surface_span_persp (spans of 179-205 px, linear steps)"}
-UNIT = {"palette": "src px"}
+UNIT = {"palette": "src px", "palette2": "out px", "palette3": "out px", "palette4": "out px"}
 
 
 def sh(cmd, **kw):
@@ -285,15 +288,16 @@ def self_cost(outfile, pattern):
     return total
 
 
+def frame_args(exe, quake_dir, res):
+    """The flythrough's command line (without the frame count) and the map's label."""
+    if os.path.isdir(os.path.join(quake_dir, "lq1")):
+        return [exe, "-basedir", quake_dir, "-game", "lq1", "-res", res, "+viewmap", "lq_e0m1"], "lq_e0m1"
+    return [exe, "-res", res, "+viewmap", "sample"], "sample (no LibreQuake data)"
+
+
 def frames(quake_dir, f1, f2, res):
     w, h = map(int, res.split("x"))
-    exe = f"{B}/count/starbow"
-    if os.path.isdir(os.path.join(quake_dir, "lq1")):
-        base = [exe, "-basedir", quake_dir, "-game", "lq1", "-res", res, "+viewmap", "lq_e0m1"]
-        label = "lq_e0m1"
-    else:
-        base = [exe, "-res", res, "+viewmap", "sample"]
-        label = "sample (no LibreQuake data)"
+    base, label = frame_args(f"{B}/count/starbow", quake_dir, res)
     rows = []
     for mode, env_extra in (("tuned", {}), ("scalar", {"STARBOW_SCALAR": "1"})):
         env = dict(os.environ, **env_extra)
@@ -307,6 +311,27 @@ def frames(quake_dir, f1, f2, res):
             os.unlink(of)
         px = (f2 - f1) * w * h
         rows.append((mode, (tot[1] - tot[0]) / px, (span[1] - span[0]) / px, (tot[1] - tot[0]) / (f2 - f1)))
+    return label, rows
+
+
+def frames_qemu(t, quake_dir, f1, f2, res):
+    """aarch64 / armhf: the same flythroughs under qemu-user, counted by the insn plugin (the
+    whole process: no per-function split). Rows: (mode, instr/pixel/frame, instr/frame)."""
+    w, h = map(int, res.split("x"))
+    exe = os.path.join(os.path.dirname(t["exe"]), "starbow")
+    base, label = frame_args(exe, quake_dir, res)
+    rows = []
+    for mode, env_extra in (("tuned", {}), ("scalar", {"STARBOW_SCALAR": "1"})):
+        tot = []
+        for f in (f1, f2):
+            log = f"/tmp/sb_count_frame_{os.getpid()}.log"
+            r = sh(t["qemu"] + ["-plugin", f"{PLUG}/libinsn.so", "-d", "plugin", "-D", log] + base
+                   + ["+flythrough", str(f), "+quit"], env=dict(os.environ, **env_extra), cwd=ROOT)
+            m = re.search(r"insns:\s*(\d+)", open(log).read())
+            if r.returncode or not m:
+                raise RuntimeError(f"{t['name']} flythrough failed: {r.stderr[-800:]}")
+            tot.append(int(m.group(1)))
+        rows.append((mode, (tot[1] - tot[0]) / ((f2 - f1) * w * h), (tot[1] - tot[0]) / (f2 - f1)))
     return label, rows
 
 
@@ -379,6 +404,15 @@ def main():
             frame = frames(qd, 50, 100, "320x240")
         except RuntimeError as e:
             print(f"frames: {e}", file=sys.stderr)
+    arm_frames = []
+    if not quick:
+        qd = os.environ.get("STARBOW_QUAKE_DIR", os.path.join(ROOT, "..", "shared", "quake"))
+        for t in TARGETS[1:]:
+            if os.path.exists(os.path.join(os.path.dirname(t["exe"]), "starbow")):
+                try:
+                    arm_frames.append((t["name"],) + frames_qemu(t, qd, 50, 100, "320x240"))
+                except RuntimeError as e:
+                    print(f"frames: {e}", file=sys.stderr)
 
     md = ["# Instruction counts and estimated cycles (bench/count.sh)", "",
           "Generated by `bench/count.sh`; deterministic instruction counts, model-estimated cycles. Not a test.", "",
@@ -424,7 +458,7 @@ def main():
                 cells.append("")
             else:
                 mark = "†" if gather and c == "znver3" and variant in ("avx2g",) or (
-                    gather and c == "znver3" and case in ("palette", "lit16") and variant == "avx2") else ""
+                    gather and c == "znver3" and case in ("palette", "palette2", "lit16") and variant == "avx2") else ""
                 cells.append(fmt(cyc[c]) + mark)
         ratio = fmt(s_ipu / ipu) if s_ipu and ipu else "—"
         cr = [s_cyc[c] / cyc[c] for c in cyc if cyc.get(c) and s_cyc.get(c)]
@@ -446,6 +480,19 @@ def main():
                "|---|---|---|---|---|"]
         for mode, ppf, span, pf in rows:
             md.append(f"| {mode} | {ppf:.1f} | {span:.1f} | {pf / 1e6:.2f} M | 59.1 per pixel, span drawer 19.8 |")
+    if arm_frames:
+        md += ["", f"## Whole frames, aarch64 and armhf (qemu-user, `insn` plugin; {arm_frames[0][1]}, 320x240, "
+               "flythrough 100 minus 50 frames)", "",
+               "The same flythroughs as above, cross-built (`starbow`, headless) and run under qemu-user; the plugin "
+               "counts the whole process, so there is no span-kernel column. Instruction counts, not cycles, and the "
+               "instruction sets differ (x86-64 has memory operands, aarch64 paired loads and shifted operands, "
+               "armhf's scalar 64-bit divides are library calls): compare rows of one target.", "",
+               "| target | kernels | instr/pixel/frame | instr/frame | tuned ÷ scalar |", "|---|---|---|---|---|"]
+        for name, label, rows in arm_frames:
+            scalar = dict((m, pf) for m, _, pf in rows).get("scalar")
+            for mode, ppf, pf in rows:
+                md.append(f"| {name} | {mode} | {ppf:.1f} | {pf / 1e6:.2f} M | "
+                          + (f"{pf / scalar:.2f}" if scalar else "—") + " |")
     md += ["", f"Run time: {time.time() - t0:.0f} s."]
     text = "\n".join(md) + "\n"
     if ONLY or VARIANTS:

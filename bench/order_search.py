@@ -140,6 +140,10 @@ def v7_is_branch(op):
         r"b(eq|ne|le|lt|ge|gt|ls|hi|cs|cc|mi|pl|vs|vc|hs|lo)(\.[wn])?", op) is not None
 
 
+V7_FLAG_SETTERS = ("add", "sub", "rsb", "adc", "sbc", "and", "orr", "eor", "bic", "lsl", "lsr", "asr", "ror",
+                   "mov", "mvn", "mul", "orn")
+
+
 def parse_v7(l):
     """(reads, writes, memory class, barrier) of one ARMv7 line. Memory class: None, "free"
     (ldrb), "ld" / "st", with ":TAG" for a line tagged `@m=TAG`."""
@@ -158,8 +162,8 @@ def parse_v7(l):
     post = "!" in rest
     inside = set().union(*[v7_regs(t) for t in re.findall(r"[a-z]+\d*", memm.group(1))]) if memm else set()
     base = op.split(".")[0]
-    is_store = base in ("str", "strd", "strb", "vst1", "vstr", "strh")
-    is_load = base in ("ldr", "ldrd", "ldrb", "vld1", "vldr", "ldrh")
+    is_store = base in ("str", "strd", "strb", "vst1", "vst2", "vst3", "vst4", "vstr", "strh")
+    is_load = base in ("ldr", "ldrd", "ldrb", "vld1", "vld2", "vld3", "vld4", "vldr", "ldrh")
     reads, writes = set(), set()
     if is_store:
         reads = set().union(*allr)
@@ -171,7 +175,7 @@ def parse_v7(l):
         reads = set(inside)
         if post:
             writes |= inside
-    elif base in ("cmp", "tst"):
+    elif base in ("cmp", "tst", "cmn", "teq"):
         reads, writes = set().union(*allr), {"flags"}
     elif base in ("vcmp", "vcmpe"):
         reads, writes = set().union(*allr), {"fpscr"}
@@ -188,6 +192,8 @@ def parse_v7(l):
             reads |= {"flags"} | writes
         if toks and toks[0].startswith("s"):  # s-register writes are partial: read the d too
             reads |= allr[0]
+        if base.endswith("s") and base[:-1] in V7_FLAG_SETTERS:  # adds, lsrs, movs ...: set the flags
+            writes |= {"flags"}
     if flags:
         reads |= {"flags"}
     mem = None
