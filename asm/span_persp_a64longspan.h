@@ -122,29 +122,52 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       // in slots 4 .. 9 (their inputs are known: no wait for run r + 1's steps).
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
-      double sz = 0, c1 = 0, f1u = 0, f1v = 0;
-      auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
+      double f1u = 0, f1v = 0;
+      // Run r + 1's ddf in the loop's form, delta (zck (z_{r+1} + z_{r+2})) with the asm's cc[0]
+      // (the same dd as steps16_sel's -2 ((delta / 16) (zc / 2 (z1 + z2))): the scalings by
+      // 1/16, 1/2 and -2 are exact wherever dd is kept; elsewhere both give a rejected dd).
+      const double cc1 = vgetq_lane_f64(st.cc, 0);
+      auto r1steps = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
-        if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
         if constexpr (G == 0) {
-          d1u = t1.u - s1.u, d1v = t1.v - s1.v, sz = s1.z + t1.z;
-          pin(d1u), pin(d1v), pin(sz);
+          d1u = t1.u - s1.u, d1v = t1.v - s1.v;
+          pin(d1u), pin(d1v);
         } else if constexpr (G == 1) {
-          f1u = double(d1u) / 16, f1v = double(d1v) / 16, c1 = zc * 0.5 * sz;
-          pin(f1u), pin(f1v), pin(c1);
+          f1u = double(d1u), f1v = double(d1v);
+          pin(f1u), pin(f1v);
         } else if constexpr (G == 2) {
-          f1u = f1u * c1, f1v = f1v * c1;
+          f1u = f1u * cc1, f1v = f1v * cc1;
           pin(f1u), pin(f1v);
         } else if constexpr (G == 3) {
-          f1u = -2.0 * f1u, f1v = -2.0 * f1v;
-          pin(f1u), pin(f1v);
-        } else if constexpr (G == 4) {
           i1u = cvt_sat(f1u), i1v = cvt_sat(f1v);
           pin(i1u), pin(i1v);
-        } else if constexpr (G == 5) {
+        } else if constexpr (G == 4) {
           u1 = steps16_dd(d1u, i1u), v1 = steps16_dd(d1v, i1v);
         }
       };
+      auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
+        constexpr int G = decltype(g)::value;
+        if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
+        r1steps(g);
+      };
+      if (last != 16) {
+        // Run r + 1's steps and the last run's step groups side by side (two independent
+        // chains, one group of each at a time), then runs r and r + 1 as one short_pass, then
+        // the last run (draw_last below).
+        r1steps(integral_constant<int, 0>{}), step(integral_constant<int, 0>{});
+        r1steps(integral_constant<int, 1>{}), step(integral_constant<int, 1>{});
+        r1steps(integral_constant<int, 2>{}), step(integral_constant<int, 2>{});
+        r1steps(integral_constant<int, 3>{}), step(integral_constant<int, 3>{});
+        r1steps(integral_constant<int, 4>{}), step(integral_constant<int, 4>{});
+        r1steps(integral_constant<int, 5>{}), step(integral_constant<int, 5>{});
+        step(integral_constant<int, 6>{});
+        step(integral_constant<int, 9>{});
+        short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
+                         pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd),
+                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pack_steps(v1.d, u1.d),
+                         pack_steps(v1.dd, u1.dd));
+        dest += 16;
+      } else {
       Run16<true> run0(s0.u, s0.v, su, sv);
       run0.draw(dest, texels, w, stage1);
       dest += 16;
@@ -165,6 +188,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       };
       Run16<true> run(s1.u, s1.v, u1, v1);
       run.draw(dest, texels, w, stage2);
+      }
     } else {
       if (last == 16) {
         // Two full runs left: the steps first, then both runs as one short_pass.
