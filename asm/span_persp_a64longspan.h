@@ -145,6 +145,49 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
           u1 = steps16_dd(d1u, i1u), v1 = steps16_dd(d1v, i1v);
         }
       };
+      // Run r + 1's steps16_dd packed (b_d = v1.d 2^32 + u1.d, b_dd likewise: pack_steps), in the
+      // loop's form (asm/span_persp_a64long.h: accept iff 120 |dd| <= |delta|, d = trunc((delta -
+      // 120 dd') / 16), dd' = dd accepted, else 0; |delta| < 2^31), u and v interleaved.
+      uint64_t b_d = 0, b_dd = 0;
+      auto r1packed = [&]() SB_LAMBDA_INLINE {
+        uint64_t xu, xv, yu, yv, pu, pv, tu, tv;
+        uint32_t du2 = uint32_t(i1u), dv2 = uint32_t(i1v);
+        __asm__(
+            "sxtw %[xu], %w[du]\n\t"
+            "sxtw %[xv], %w[dv]\n\t"
+            "sbfiz %[yu], %[iu], #7, #32\n\t"
+            "sbfiz %[yv], %[iv], #7, #32\n\t"
+            "sub %[yu], %[yu], %w[iu], sxtw #3\n\t"
+            "sub %[yv], %[yv], %w[iv], sxtw #3\n\t"
+            "cmp %[xu], #0\n\t"
+            "cneg %[pu], %[xu], lt\n\t"
+            "cmp %[xv], #0\n\t"
+            "cneg %[pv], %[xv], lt\n\t"
+            "add %[tu], %[yu], %[pu]\n\t"
+            "add %[tv], %[yv], %[pv]\n\t"
+            "cmp %[tu], %[pu], lsl #1\n\t"
+            "csel %w[iu], %w[iu], wzr, ls\n\t"
+            "csel %[yu], %[yu], xzr, ls\n\t"
+            "cmp %[tv], %[pv], lsl #1\n\t"
+            "csel %w[iv], %w[iv], wzr, ls\n\t"
+            "csel %[yv], %[yv], xzr, ls\n\t"
+            "sub %[xu], %[xu], %[yu]\n\t"
+            "sub %[xv], %[xv], %[yv]\n\t"
+            "asr %[tu], %[xu], #63\n\t"
+            "asr %[tv], %[xv], #63\n\t"
+            "add %[xu], %[xu], %[tu], lsr #60\n\t"
+            "add %[xv], %[xv], %[tv], lsr #60\n\t"
+            "asr %[xu], %[xu], #4\n\t"
+            "lsl %[yv], %[iv], #32\n\t"
+            "asr %[xv], %[xv], #4\n\t"
+            "add %[bdd], %[yv], %w[iu], sxtw\n\t"
+            "add %[bd], %[xu], %[xv], lsl #32"
+            : [bd] "=&r"(b_d), [bdd] "=&r"(b_dd), [xu] "=&r"(xu), [xv] "=&r"(xv), [yu] "=&r"(yu),
+              [yv] "=&r"(yv), [pu] "=&r"(pu), [pv] "=&r"(pv), [tu] "=&r"(tu), [tv] "=&r"(tv),
+              [iu] "+&r"(du2), [iv] "+&r"(dv2)
+            : [du] "r"(d1u), [dv] "r"(d1v)
+            : "cc");
+      };
       auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
         if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
@@ -158,14 +201,14 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
         r1steps(integral_constant<int, 1>{}), step(integral_constant<int, 1>{});
         r1steps(integral_constant<int, 2>{}), step(integral_constant<int, 2>{});
         r1steps(integral_constant<int, 3>{}), step(integral_constant<int, 3>{});
-        r1steps(integral_constant<int, 4>{}), step(integral_constant<int, 4>{});
-        r1steps(integral_constant<int, 5>{}), step(integral_constant<int, 5>{});
+        r1packed(), step(integral_constant<int, 4>{});
+        step(integral_constant<int, 5>{});
         step(integral_constant<int, 6>{});
         step(integral_constant<int, 9>{});
-        short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
-                         pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd),
-                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pack_steps(v1.d, u1.d),
-                         pack_steps(v1.dd, u1.dd));
+        // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
+        // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves).
+        short_pass<true>(dest, texels, uint64_t(width), st.c0, dp, uint64_t(ddp),
+                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd);
         dest += 16;
       } else {
       Run16<true> run0(s0.u, s0.v, su, sv);
