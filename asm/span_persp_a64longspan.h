@@ -197,11 +197,11 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
         // Run r + 1's steps and the last run's step groups side by side (two independent
         // chains, one group of each at a time), then runs r and r + 1 as one short_pass, then
         // the last run (draw_last below).
-        r1steps(integral_constant<int, 0>{}), step(integral_constant<int, 0>{});
-        r1steps(integral_constant<int, 1>{}), step(integral_constant<int, 1>{});
-        r1steps(integral_constant<int, 2>{}), step(integral_constant<int, 2>{});
-        r1steps(integral_constant<int, 3>{}), step(integral_constant<int, 3>{});
-        r1packed(), step(integral_constant<int, 4>{});
+        step(integral_constant<int, 0>{}), r1steps(integral_constant<int, 0>{});
+        step(integral_constant<int, 1>{}), r1steps(integral_constant<int, 1>{});
+        step(integral_constant<int, 2>{}), r1steps(integral_constant<int, 2>{});
+        step(integral_constant<int, 3>{}), r1steps(integral_constant<int, 3>{});
+        step(integral_constant<int, 4>{}), r1packed();
         step(integral_constant<int, 5>{});
         step(integral_constant<int, 6>{});
         step(integral_constant<int, 9>{});
