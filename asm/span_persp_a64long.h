@@ -34,8 +34,9 @@
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}], cc as above (cc[0]: run r + 1's), tx and w as they came in. Operands in the loop's registers; four stack
-// slots of the caller's frame as memory operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
+// [z_{r+2}, z_{r+3}], cc as above (cc[0]: run r + 1's factor), tx and w as they came in.
+// Operands in the loop's registers; four stack slots of the caller's frame as memory
+// operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
 // The loop starts at a 2 KiB boundary (the set-up branches over the padding).
 #pragma once
 #include "asm/span_persp_run.h"

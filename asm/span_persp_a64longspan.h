@@ -117,9 +117,10 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     };
     using std::integral_constant;
     if constexpr (kTwo) {
-      // Run r + 1's steps (steps16<true>(s1, sB, c1)'s operations, sB = t1: steps16_sel) in run r's
-      // stage slots 0 .. 5, one dependent step a group, and the last run's step groups 0 .. 5
-      // in slots 4 .. 9 (their inputs are known: no wait for run r + 1's steps).
+      // Runs r, r + 1, then the last run. Run r + 1's steps (steps16<true>(s1, sB, c1)'s
+      // result, sB = t1) and the last run's step groups, then (last < 16) runs r and r + 1 as
+      // one short_pass and the last run by draw_last below, or (last == 16) run r with the step
+      // groups in its stage slots, then run r + 1 and the last run as one short_pass.
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
       double f1u = 0, f1v = 0;
@@ -211,26 +212,17 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
                          uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd);
         dest += 16;
       } else {
-      Run16<true> run0(s0.u, s0.v, su, sv);
-      run0.draw(dest, texels, w, stage1);
-      dest += 16;
-      if (last == 16) {
+        // last == 16: run r + 1's steps in run r's stage slots 0 .. 4, one dependent step a
+        // group, and the last run's step groups 0 .. 5 in slots 4 .. 9.
+        Run16<true> run0(s0.u, s0.v, su, sv);
+        run0.draw(dest, texels, w, stage1);
+        dest += 16;
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
         short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u),
                          pack_steps(v1.d, u1.d), pack_steps(v1.dd, u1.dd),
                          uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u),
                          pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
         return;
-      }
-      // Run r + 1 with the last run's step groups 6 and 9 in its slots 0 and 1 (last_steps_ddi's
-      // integer chain done before draw_last).
-      auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
-        constexpr int G = decltype(g)::value;
-        if constexpr (G <= 0) step(integral_constant<int, G + 6>{});
-        if constexpr (G == 1) step(integral_constant<int, 9>{});
-      };
-      Run16<true> run(s1.u, s1.v, u1, v1);
-      run.draw(dest, texels, w, stage2);
       }
     } else {
       if (last == 16) {
