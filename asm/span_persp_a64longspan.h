@@ -17,6 +17,89 @@
 namespace sb::simd {
 namespace {
 
+// The left > 32 tail's steps (last < 16) as one asm block with fixed scratch registers (x9 -
+// x17, v16 - v25), in an order from bench/order_search.py (bench/mca_a53_persp/tail2_steps.s,
+// written in by tail2_inline.py there): run r + 1's steps packed (b_d, b_dd as pack_steps: ddf =
+// double(d1u) cc, dd = fcvtzs(ddf), then steps16_dd in the long loop's 12-op form) beside the
+// last run's step groups 0 .. 6 of persp_long_a64_inl's tail (the same operations: du, dv the
+// last run's deltas, y = kRecipSteps[s], sf = double(s), z1, z2 its two depths, zh = zc / 2;
+// outputs lnu, lnv = trunc(q), ddu, ddv = the range-masked dd, for last_steps_ddi).
+SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, double cc, double y, double sf,
+                           double z1, double z2, double zh, uint64_t& b_d, uint64_t& b_dd, int32_t& l_u,
+                           int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
+  __asm__(
+      // BEGIN tail2_steps
+      "sxtw x11, %w[d1u]\n\t"
+      "sxtw x12, %w[d1v]\n\t"
+      "cmp x11, #0\n\t"
+      "fadd d20, %d[z1], %d[z2]\n\t"
+      "scvtf d16, %w[du]\n\t"
+      "scvtf d17, %w[dv]\n\t"
+      "scvtf d24, %w[d1u]\n\t"
+      "cneg x15, x11, lt\n\t"
+      "cmp x12, #0\n\t"
+      "scvtf d25, %w[d1v]\n\t"
+      "fmul d18, d16, %d[y]\n\t"
+      "fmul d19, d17, %d[y]\n\t"
+      "fmul d24, d24, %d[cc]\n\t"
+      "fmov d23, #-2.0\n\t"
+      "cneg x16, x12, lt\n\t"
+      "fmul d25, d25, %d[cc]\n\t"
+      "fmul d20, %d[zh], d20\n\t"
+      "fcvtzs w9, d24\n\t"
+      "fmsub d22, d19, %d[sf], d17\n\t"
+      "fmsub d21, d18, %d[sf], d16\n\t"
+      "fmul d20, d20, d23\n\t"
+      "fcvtzs w10, d25\n\t"
+      "sbfiz x13, x9, #7, #32\n\t"
+      "sub x13, x13, w9, sxtw #3\n\t"
+      "add x17, x13, x15\n\t"
+      "sbfiz x14, x10, #7, #32\n\t"
+      "cmp x17, x15, lsl #1\n\t"
+      "sub x14, x14, w10, sxtw #3\n\t"
+      "fmadd d18, d21, %d[y], d18\n\t"
+      "fmadd d19, d22, %d[y], d19\n\t"
+      "add %[bdd], x14, x16\n\t"
+      "csel x13, x13, xzr, ls\n\t"
+      "csel w9, w9, wzr, ls\n\t"
+      "cmp %[bdd], x16, lsl #1\n\t"
+      "sub x11, x11, x13\n\t"
+      "csel x14, x14, xzr, ls\n\t"
+      "mov w13, #0xc9ff\n\t"
+      "sub x12, x12, x14\n\t"
+      "csel w10, w10, wzr, ls\n\t"
+      "asr x17, x11, #63\n\t"
+      "asr %[bdd], x12, #63\n\t"
+      "fmul d22, d19, d20\n\t"
+      "fcvtzs %w[lu], d18\n\t"
+      "fcvtzs %w[lv], d19\n\t"
+      "fmul d21, d18, d20\n\t"
+      "add x12, x12, %[bdd], lsr #60\n\t"
+      "add x11, x11, x17, lsr #60\n\t"
+      "lsl x14, x10, #32\n\t"
+      "movk w13, #0x3b9a, lsl #16\n\t"
+      "asr x11, x11, #4\n\t"
+      "add %[bdd], x14, w9, sxtw\n\t"
+      "mov w14, #0x93ff\n\t"
+      "fcvtzs %w[ddu], d21\n\t"
+      "fcvtzs %w[ddv], d22\n\t"
+      "asr x12, x12, #4\n\t"
+      "movk w14, #0x7735, lsl #16\n\t"
+      "add %[bd], x11, x12, lsl #32\n\t"
+      "add w11, %w[ddu], w13\n\t"
+      "cmp w11, w14\n\t"
+      "add w12, %w[ddv], w13\n\t"
+      "csel %w[ddu], %w[ddu], wzr, lo\n\t"
+      "cmp w12, w14\n\t"
+      "csel %w[ddv], %w[ddv], wzr, lo"
+      // END tail2_steps
+      : [bd] "=&r"(b_d), [bdd] "=&r"(b_dd), [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
+      : [du] "r"(du), [dv] "r"(dv), [d1u] "r"(d1u), [d1v] "r"(d1v), [cc] "w"(cc), [y] "w"(y), [sf] "w"(sf),
+        [z1] "w"(z1), [z2] "w"(z2), [zh] "w"(zh)
+      : "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21",
+        "v22", "v23", "v24", "v25", "cc");
+}
+
 // aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
 // samples, steps and runs with its passes as one asm block (asm/span_persp_a64long.h: the
 // first samples in 2-lane vectors, each lane persp_fast's scalar operation, the same bits:
@@ -146,49 +229,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
           u1 = steps16_dd(d1u, i1u), v1 = steps16_dd(d1v, i1v);
         }
       };
-      // Run r + 1's steps16_dd packed (b_d = v1.d 2^32 + u1.d, b_dd likewise: pack_steps), in the
-      // loop's form (asm/span_persp_a64long.h: accept iff 120 |dd| <= |delta|, d = trunc((delta -
-      // 120 dd') / 16), dd' = dd accepted, else 0; |delta| < 2^31), u and v interleaved.
-      uint64_t b_d = 0, b_dd = 0;
-      auto r1packed = [&]() SB_LAMBDA_INLINE {
-        uint64_t xu, xv, yu, yv, pu, pv, tu, tv;
-        uint32_t du2 = uint32_t(i1u), dv2 = uint32_t(i1v);
-        __asm__(
-            "sxtw %[xu], %w[du]\n\t"
-            "sxtw %[xv], %w[dv]\n\t"
-            "sbfiz %[yu], %[iu], #7, #32\n\t"
-            "sbfiz %[yv], %[iv], #7, #32\n\t"
-            "sub %[yu], %[yu], %w[iu], sxtw #3\n\t"
-            "sub %[yv], %[yv], %w[iv], sxtw #3\n\t"
-            "cmp %[xu], #0\n\t"
-            "cneg %[pu], %[xu], lt\n\t"
-            "cmp %[xv], #0\n\t"
-            "cneg %[pv], %[xv], lt\n\t"
-            "add %[tu], %[yu], %[pu]\n\t"
-            "add %[tv], %[yv], %[pv]\n\t"
-            "cmp %[tu], %[pu], lsl #1\n\t"
-            "csel %w[iu], %w[iu], wzr, ls\n\t"
-            "csel %[yu], %[yu], xzr, ls\n\t"
-            "cmp %[tv], %[pv], lsl #1\n\t"
-            "csel %w[iv], %w[iv], wzr, ls\n\t"
-            "csel %[yv], %[yv], xzr, ls\n\t"
-            "sub %[xu], %[xu], %[yu]\n\t"
-            "sub %[xv], %[xv], %[yv]\n\t"
-            "asr %[tu], %[xu], #63\n\t"
-            "asr %[tv], %[xv], #63\n\t"
-            "add %[xu], %[xu], %[tu], lsr #60\n\t"
-            "add %[xv], %[xv], %[tv], lsr #60\n\t"
-            "asr %[xu], %[xu], #4\n\t"
-            "lsl %[yv], %[iv], #32\n\t"
-            "asr %[xv], %[xv], #4\n\t"
-            "add %[bdd], %[yv], %w[iu], sxtw\n\t"
-            "add %[bd], %[xu], %[xv], lsl #32"
-            : [bd] "=&r"(b_d), [bdd] "=&r"(b_dd), [xu] "=&r"(xu), [xv] "=&r"(xv), [yu] "=&r"(yu),
-              [yv] "=&r"(yv), [pu] "=&r"(pu), [pv] "=&r"(pv), [tu] "=&r"(tu), [tv] "=&r"(tv),
-              [iu] "+&r"(du2), [iv] "+&r"(dv2)
-            : [du] "r"(d1u), [dv] "r"(d1v)
-            : "cc");
-      };
+      uint64_t b_d = 0, b_dd = 0;  // run r + 1's steps packed (tail2_steps)
       auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
         if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
@@ -196,15 +237,10 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       };
       if (last != 16) {
         // Run r + 1's steps and the last run's step groups side by side (two independent
-        // chains, one group of each at a time), then runs r and r + 1 as one short_pass, then
-        // the last run (draw_last below).
-        step(integral_constant<int, 0>{}), r1steps(integral_constant<int, 0>{});
-        step(integral_constant<int, 1>{}), r1steps(integral_constant<int, 1>{});
-        step(integral_constant<int, 2>{}), r1steps(integral_constant<int, 2>{});
-        step(integral_constant<int, 3>{}), r1steps(integral_constant<int, 3>{});
-        step(integral_constant<int, 4>{}), r1packed();
-        step(integral_constant<int, 5>{});
-        step(integral_constant<int, 6>{});
+        // chains, tail2_steps), last_steps_ddi, then runs r and r + 1 as one short_pass, then the
+        // last run (draw_last below).
+        tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, b_d,
+                    b_dd, lnu, lnv, ddu, ddv);
         step(integral_constant<int, 9>{});
         // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
         // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves).
