@@ -34,8 +34,9 @@
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers; four stack
-// slots of the caller's frame as memory operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
+// [z_{r+2}, z_{r+3}], cc as above (cc[0]: run r + 1's factor), tx and w as they came in.
+// Operands in the loop's registers; four stack slots of the caller's frame as memory
+// operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
 // The loop starts at a 2 KiB boundary (the set-up branches over the padding).
 #pragma once
 #include "asm/span_persp_run.h"
@@ -49,7 +50,7 @@ namespace {
 
 struct LongPass {
   uint64_t d, tx, w, c0, c1, dd4, nA, nB, nC;
-  float64x2_t kMin, z23, zsn;
+  float64x2_t kMin, z23, zsn, cc;
 };
 // PerspSpan's fields as the set-up loads them.
 static_assert(offsetof(PerspSpan, zi0) == 0);
@@ -76,6 +77,7 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
   register uint64_t r_nC __asm__("x27");
   register float64x2_t r_z23 __asm__("v26");
   register float64x2_t r_zsn __asm__("v29");
+  register float64x2_t r_cc __asm__("v27");
   register uint64_t r_tx __asm__("x23") = st.tx;
   register uint64_t r_w __asm__("x24") = st.w;
   register float64x2_t r_kMin __asm__("v21") = st.kMin;
@@ -195,9 +197,9 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "ldr x1, %[s32]\n\t" "fmov x26, d0\n\t" "str w3, [x0, #28]\n\t" "add x0, x0, #32\n\t"
       "cmp x0, x1\n\t" "b.lo 1b\n\t" "b.ne 2f\n\t" "ldr q19, %[s48]\n\t"
       "b 1b\n\t" "2:"
-      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn), "+r"(r_tx), "+r"(r_w), [s0] "=m"(s0), [s16] "=m"(s16), [s32] "=m"(s32), [s48] "=m"(s48)
+      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn), "=w"(r_cc), "+r"(r_tx), "+r"(r_w), [s0] "=m"(s0), [s16] "=m"(s16), [s32] "=m"(s32), [s48] "=m"(s48)
       : "w"(r_kMin)
-      : "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v22", "v23", "v24", "v25", "v27", "v28", "v30", "v31", "cc", "memory");
+      : "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v22", "v23", "v24", "v25", "v28", "v30", "v31", "cc", "memory");
   st.d = r_d;
   st.c0 = r_c0;
   st.c1 = r_c1;
@@ -207,6 +209,7 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
   st.nC = r_nC;
   st.z23 = r_z23;
   st.zsn = r_zsn;
+  st.cc = r_cc;
   st.tx = r_tx;
   st.w = r_w;
 }

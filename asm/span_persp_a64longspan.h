@@ -17,6 +17,89 @@
 namespace sb::simd {
 namespace {
 
+// The left > 32 tail's steps (last < 16) as one asm block with fixed scratch registers (x9 -
+// x17, v16 - v25), in an order from bench/order_search.py (bench/mca_a53_persp/tail2_steps.s,
+// written in by tail2_inline.py there): run r + 1's steps packed (b_d, b_dd as pack_steps: ddf =
+// double(d1u) cc, dd = fcvtzs(ddf), then steps16_dd in the long loop's 12-op form) beside the
+// last run's step groups 0 .. 6 of persp_long_a64_inl's tail (the same operations: du, dv the
+// last run's deltas, y = kRecipSteps[s], sf = double(s), z1, z2 its two depths, zh = zc / 2;
+// outputs lnu, lnv = trunc(q), ddu, ddv = the range-masked dd, for last_steps_ddi).
+SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, double cc, double y, double sf,
+                           double z1, double z2, double zh, uint64_t& b_d, uint64_t& b_dd, int32_t& l_u,
+                           int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
+  __asm__(
+      // BEGIN tail2_steps
+      "sxtw x11, %w[d1u]\n\t"
+      "sxtw x12, %w[d1v]\n\t"
+      "cmp x11, #0\n\t"
+      "fadd d20, %d[z1], %d[z2]\n\t"
+      "scvtf d16, %w[du]\n\t"
+      "scvtf d17, %w[dv]\n\t"
+      "scvtf d24, %w[d1u]\n\t"
+      "cneg x15, x11, lt\n\t"
+      "cmp x12, #0\n\t"
+      "scvtf d25, %w[d1v]\n\t"
+      "fmul d18, d16, %d[y]\n\t"
+      "fmul d19, d17, %d[y]\n\t"
+      "fmul d24, d24, %d[cc]\n\t"
+      "fmov d23, #-2.0\n\t"
+      "cneg x16, x12, lt\n\t"
+      "fmul d25, d25, %d[cc]\n\t"
+      "fmul d20, %d[zh], d20\n\t"
+      "fcvtzs w9, d24\n\t"
+      "fmsub d22, d19, %d[sf], d17\n\t"
+      "fmsub d21, d18, %d[sf], d16\n\t"
+      "fmul d20, d20, d23\n\t"
+      "fcvtzs w10, d25\n\t"
+      "sbfiz x13, x9, #7, #32\n\t"
+      "sub x13, x13, w9, sxtw #3\n\t"
+      "add x17, x13, x15\n\t"
+      "sbfiz x14, x10, #7, #32\n\t"
+      "cmp x17, x15, lsl #1\n\t"
+      "sub x14, x14, w10, sxtw #3\n\t"
+      "fmadd d18, d21, %d[y], d18\n\t"
+      "fmadd d19, d22, %d[y], d19\n\t"
+      "add %[bdd], x14, x16\n\t"
+      "csel x13, x13, xzr, ls\n\t"
+      "csel w9, w9, wzr, ls\n\t"
+      "cmp %[bdd], x16, lsl #1\n\t"
+      "sub x11, x11, x13\n\t"
+      "csel x14, x14, xzr, ls\n\t"
+      "mov w13, #0xc9ff\n\t"
+      "sub x12, x12, x14\n\t"
+      "csel w10, w10, wzr, ls\n\t"
+      "asr x17, x11, #63\n\t"
+      "asr %[bdd], x12, #63\n\t"
+      "fmul d22, d19, d20\n\t"
+      "fcvtzs %w[lu], d18\n\t"
+      "fcvtzs %w[lv], d19\n\t"
+      "fmul d21, d18, d20\n\t"
+      "add x12, x12, %[bdd], lsr #60\n\t"
+      "add x11, x11, x17, lsr #60\n\t"
+      "lsl x14, x10, #32\n\t"
+      "movk w13, #0x3b9a, lsl #16\n\t"
+      "asr x11, x11, #4\n\t"
+      "add %[bdd], x14, w9, sxtw\n\t"
+      "mov w14, #0x93ff\n\t"
+      "fcvtzs %w[ddu], d21\n\t"
+      "fcvtzs %w[ddv], d22\n\t"
+      "asr x12, x12, #4\n\t"
+      "movk w14, #0x7735, lsl #16\n\t"
+      "add %[bd], x11, x12, lsl #32\n\t"
+      "add w11, %w[ddu], w13\n\t"
+      "cmp w11, w14\n\t"
+      "add w12, %w[ddv], w13\n\t"
+      "csel %w[ddu], %w[ddu], wzr, lo\n\t"
+      "cmp w12, w14\n\t"
+      "csel %w[ddv], %w[ddv], wzr, lo"
+      // END tail2_steps
+      : [bd] "=&r"(b_d), [bdd] "=&r"(b_dd), [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
+      : [du] "r"(du), [dv] "r"(dv), [d1u] "r"(d1u), [d1v] "r"(d1v), [cc] "w"(cc), [y] "w"(y), [sf] "w"(sf),
+        [z1] "w"(z1), [z2] "w"(z2), [zh] "w"(zh)
+      : "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21",
+        "v22", "v23", "v24", "v25", "cc");
+}
+
 // aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
 // samples, steps and runs with its passes as one asm block (asm/span_persp_a64long.h: the
 // first samples in 2-lane vectors, each lane persp_fast's scalar operation, the same bits:
@@ -117,38 +200,59 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     };
     using std::integral_constant;
     if constexpr (kTwo) {
-      // Run r + 1's steps (steps16<true>(s1, sB, c1)'s operations, sB = t1: steps16_sel) in run r's
-      // stage slots 0 .. 5, one dependent step a group, and the last run's step groups 0 .. 5
-      // in slots 4 .. 9 (their inputs are known: no wait for run r + 1's steps).
+      // Runs r, r + 1, then the last run. Run r + 1's steps (steps16<true>(s1, sB, c1)'s
+      // result, sB = t1) and the last run's step groups, then (last < 16) runs r and r + 1 as
+      // one short_pass and the last run by draw_last below, or (last == 16) run r with the step
+      // groups in its stage slots, then run r + 1 and the last run as one short_pass.
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
-      double sz = 0, c1 = 0, f1u = 0, f1v = 0;
-      auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
+      double f1u = 0, f1v = 0;
+      // Run r + 1's ddf in the loop's form, delta (zck (z_{r+1} + z_{r+2})) with the asm's cc[0]
+      // (the same dd as steps16_sel's -2 ((delta / 16) (zc / 2 (z1 + z2))): the scalings by
+      // 1/16, 1/2 and -2 are exact wherever dd is kept; elsewhere both give a rejected dd).
+      const double cc1 = vgetq_lane_f64(st.cc, 0);
+      auto r1steps = [&](auto g) SB_LAMBDA_INLINE {
         constexpr int G = decltype(g)::value;
-        if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
         if constexpr (G == 0) {
-          d1u = t1.u - s1.u, d1v = t1.v - s1.v, sz = s1.z + t1.z;
-          pin(d1u), pin(d1v), pin(sz);
+          d1u = t1.u - s1.u, d1v = t1.v - s1.v;
+          pin(d1u), pin(d1v);
         } else if constexpr (G == 1) {
-          f1u = double(d1u) / 16, f1v = double(d1v) / 16, c1 = zc * 0.5 * sz;
-          pin(f1u), pin(f1v), pin(c1);
+          f1u = double(d1u), f1v = double(d1v);
+          pin(f1u), pin(f1v);
         } else if constexpr (G == 2) {
-          f1u = f1u * c1, f1v = f1v * c1;
+          f1u = f1u * cc1, f1v = f1v * cc1;
           pin(f1u), pin(f1v);
         } else if constexpr (G == 3) {
-          f1u = -2.0 * f1u, f1v = -2.0 * f1v;
-          pin(f1u), pin(f1v);
-        } else if constexpr (G == 4) {
           i1u = cvt_sat(f1u), i1v = cvt_sat(f1v);
           pin(i1u), pin(i1v);
-        } else if constexpr (G == 5) {
+        } else if constexpr (G == 4) {
           u1 = steps16_dd(d1u, i1u), v1 = steps16_dd(d1v, i1v);
         }
       };
-      Run16<true> run0(s0.u, s0.v, su, sv);
-      run0.draw(dest, texels, w, stage1);
-      dest += 16;
-      if (last == 16) {
+      uint64_t b_d = 0, b_dd = 0;  // run r + 1's steps packed (tail2_steps)
+      auto stage1 = [&](auto g) SB_LAMBDA_INLINE {
+        constexpr int G = decltype(g)::value;
+        if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
+        r1steps(g);
+      };
+      if (last != 16) {
+        // Run r + 1's steps and the last run's step groups side by side (two independent
+        // chains, tail2_steps), last_steps_ddi, then runs r and r + 1 as one short_pass, then the
+        // last run (draw_last below).
+        tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, b_d,
+                    b_dd, lnu, lnv, ddu, ddv);
+        step(integral_constant<int, 9>{});
+        // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
+        // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves).
+        short_pass<true>(dest, texels, uint64_t(width), st.c0, dp, uint64_t(ddp),
+                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd);
+        dest += 16;
+      } else {
+        // last == 16: run r + 1's steps in run r's stage slots 0 .. 4, one dependent step a
+        // group, and the last run's step groups 0 .. 5 in slots 4 .. 9.
+        Run16<true> run0(s0.u, s0.v, su, sv);
+        run0.draw(dest, texels, w, stage1);
+        dest += 16;
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
         short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u),
                          pack_steps(v1.d, u1.d), pack_steps(v1.dd, u1.dd),
@@ -156,15 +260,6 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
                          pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
         return;
       }
-      // Run r + 1 with the last run's step groups 6 and 9 in its slots 0 and 1 (last_steps_ddi's
-      // integer chain done before draw_last).
-      auto stage2 = [&](auto g) SB_LAMBDA_INLINE {
-        constexpr int G = decltype(g)::value;
-        if constexpr (G <= 0) step(integral_constant<int, G + 6>{});
-        if constexpr (G == 1) step(integral_constant<int, 9>{});
-      };
-      Run16<true> run(s1.u, s1.v, u1, v1);
-      run.draw(dest, texels, w, stage2);
     } else {
       if (last == 16) {
         // Two full runs left: the steps first, then both runs as one short_pass.

@@ -555,27 +555,31 @@ void lin_pairs_a64(const PerspItem* it, const PerspItem* end, const uint8_t* tex
 // is_long_a64(x) as one flag chain after the loads (cmp, two ccmp, as short_curve_a64: no
 // cset / and chain through the A53's 3-cycle integer writebacks), the chain started from the
 // first load; also loads x.n and x.dest (n_out, dest_out) in the same statement.
-SB_INLINE bool long_next_a64(const PerspItem& x, int& n_out, uint8_t*& dest_out) {
+SB_INLINE bool long_next_a64(const PerspItem& x, int& n_out, uint8_t*& dest_out, const PerspSpan*& span_out) {
   uint64_t bits;
   uint32_t so;
   int32_t n;
   uint8_t* d;
   uint32_t k;
+  const PerspSpan* sp;
   bool r;
+  static_assert(offsetof(PerspItem, span) == 16);
   __asm__(
       "ldrb %w[so], %[som]\n\t"
       "mov %w[k], #80\n\t"
       "ldr %w[n], %[nm]\n\t"
       "ldr %x[b], %[dzi]\n\t"
       "ldr %x[d], %[dm]\n\t"
+      "add %x[sp], %x[base], #16\n\t"
       "cmp %w[so], #0\n\t"
       "lsl %x[b], %x[b], #1\n\t"
       "ccmp %w[n], %w[k], #4, ne\n\t"
       "ccmp %x[b], #0, #4, gt"
-      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [n] "=&r"(n), [d] "=&r"(d), [k] "=&r"(k)
-      : [dzi] "m"(x.span.dzi), [som] "m"(x.span.second_order), [nm] "m"(x.n), [dm] "m"(x.dest));
+      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [n] "=&r"(n), [d] "=&r"(d), [k] "=&r"(k), [sp] "=&r"(sp)
+      : [dzi] "m"(x.span.dzi), [som] "m"(x.span.second_order), [nm] "m"(x.n), [dm] "m"(x.dest), [base] "r"(&x));
   n_out = n;
   dest_out = d;
+  span_out = sp;
   return r;
 }
 // persp_lin_a64's items: linear (second_order off or dzi 0) and longer than kShortMax.
@@ -601,13 +605,10 @@ __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int 
     persp_long_a64_inl(dest, n, texels, width, *q);
     if (next == end) return;
     const PerspItem* it = next++;
-    const bool is_long = long_next_a64(*it, n, dest);
+    // q = &it->span from the test's block (no latch block, and the set-up's block does not
+    // compute it from a register it rewrites later: llvm-mca times that block as a loop).
+    const bool is_long = long_next_a64(*it, n, dest, q);
     if (!is_long) return batch_from(it, end, texels, width);
-    // q = &it->span computed here, after the test, from next in its register (in the set-up's
-    // qemu block: llvm-mca times that block as a loop of its own, and a q from the block
-    // before would depend on the loop's last use of its register).
-    static_assert(offsetof(PerspItem, span) == 16 && sizeof(PerspItem) == 88);
-    __asm__ volatile("sub %0, %1, #72" : "=r"(q) : "r"(next));  // next = it + 1
   }
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first

@@ -513,7 +513,7 @@ def emit_header2(ins, outh):
 # outputs the state the C++ code reads after the loop. Implies the folded last pass.
 SETUP = "--setup" in sys.argv
 S_OUT_X = ["c0", "c1", "dd4", "nA", "nB", "nC"]
-S_OUT_V = ["z23", "zsn"]
+S_OUT_V = ["z23", "zsn", "cc"]  # cc: run r + 1's ddf factor for the tail (cc[0])
 S_IN_X = ["tx", "w"]
 S_IN_V = ["kMin"]
 # PerspSpan's fields the set-up loads (offsets as long_setup.s takes them)
@@ -555,8 +555,9 @@ HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-orde
 // is the loop body once more, k32's register then holding offl. Outputs (the next pass's
 // state, r advanced by 2): d, c0 = sample r packed, c1 - c0 its run's packed step, dd4 4
 // times its packed second step, nA, nB, nC samples r + 1 .. r + 3, zsn[0] = z_{r+1}, z23 =
-// [z_{r+2}, z_{r+3}], tx and w as they came in. Operands in the loop's registers; four stack
-// slots of the caller's frame as memory operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
+// [z_{r+2}, z_{r+3}], cc as above (cc[0]: run r + 1's factor), tx and w as they came in.
+// Operands in the loop's registers; four stack slots of the caller's frame as memory
+// operands (s0 kZrow, s16 kUVrow, s32 lim, s48 offl).
 // The loop starts at a 2 KiB boundary (the set-up branches over the padding).
 #pragma once
 #include "asm/span_persp_run.h"
@@ -570,7 +571,7 @@ namespace {
 
 struct LongPass {
   uint64_t d, tx, w, c0, c1, dd4, nA, nB, nC;
-  float64x2_t kMin, z23, zsn;
+  float64x2_t kMin, z23, zsn, cc;
 };
 // PerspSpan's fields as the set-up loads them.
 %(asserts)s
