@@ -11,6 +11,7 @@
 #include "asm/span_persp_a64longspan.h"
 #include "asm/span_persp_a64pair.h"
 #include "asm/span_persp_v7mid.h"
+#include "asm/span_persp_v7pass.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -37,8 +38,10 @@ namespace {
 // ARMv7: persp_fast inlined into surface_span_persp_fast (one function entry per span).
 #if defined(__arm__) && !defined(__aarch64__)
 #define SB_V7_INLINE inline __attribute__((always_inline))
+#define SB_V7_LAMBDA_INLINE __attribute__((always_inline))
 #else
 #define SB_V7_INLINE
+#define SB_V7_LAMBDA_INLINE
 #endif
 
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
@@ -270,7 +273,18 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     int32_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
     RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
-    auto stage_a = [&](auto g) {
+#if defined(SB_V7_NEON_STEPS)
+    // ARMv7 second order: run r + 2's steps in NEON lanes (asm/span_persp_v7pass.h: the
+    // same operations and bits as steps16_dd_uv below), from the clamped samples' d
+    // registers: the conversion in stage_a's slots 4 .. 8, the steps in stage_b's 0 .. 5,
+    // the lanes read in its slot 9.
+    constexpr bool kV7N = kCurve;
+    double du2d = 0.0, dv2d = 0.0, ddu2 = 0.0, ddv2 = 0.0;
+    V7Steps st2{};
+#else
+    constexpr bool kV7N = false;
+#endif
+    auto stage_a = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
         qu2 = tu2 * z2, qv2 = tv2 * z2, qu3 = tu3 * z3, qv3 = tv3 * z3;
@@ -302,36 +316,80 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         } else {
           s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
         }
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) du2d = v7_sub_lo(qu3, qu2), dv2d = v7_sub_lo(qv3, qv2);
+#endif
       } else if constexpr (G == 5) {
         if constexpr (kCurve) {
           fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
         } else {
           u1 = {(s2u - s1.u) / 16, 0}, v1 = {(s2v - s1.v) / 16, 0};
         }
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) fu2 = v7_cvt_lo(du2d), fv2 = v7_cvt_lo(dv2d), st2.d = v7_pack(du2d, dv2d);
+#endif
       } else if constexpr (G == 6) {
         if constexpr (kCurve) fu1 = fu1 * c1, fv1 = fv1 * c1;
+        if constexpr (kV7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_1(st2);
+#endif
       } else if constexpr (G == 7) {
         if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) ddu2 = v7_sat_lo(fu2), ddv2 = v7_sat_lo(fv2);
+#endif
       } else if constexpr (G == 8) {
         if constexpr (kCurve) steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
       } else if constexpr (G == 9) {
         if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
       }
     };
-    auto stage_b = [&](auto g) {
+    auto stage_b = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
         if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
         tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) st2.dd = v7_pack(ddu2, ddv2);
+#endif
       } else if constexpr (G == 1) {
-        if constexpr (kCurve) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+        if constexpr (kCurve && !kV7N) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_2(st2);
+#endif
+      } else if constexpr (G == 2) {
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_3(st2);
+#endif
       } else if constexpr (G == 3) {
-        if constexpr (kCurve) fu2 = fu2 * c2, fv2 = fv2 * c2;
+        if constexpr (kCurve && !kV7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_3b(st2);
+#endif
+      } else if constexpr (G == 4) {
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_4(st2);
+#endif
       } else if constexpr (G == 5) {
-        if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+        if constexpr (kCurve && !kV7N) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_4b(st2);
+#endif
+      } else if constexpr (G == 6) {
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_5(st2);
+#endif
+      } else if constexpr (G == 7) {
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_5b(st2);
+#endif
       } else if constexpr (G == 8) {
-        if constexpr (kCurve) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
+        if constexpr (kCurve && !kV7N) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) v7_steps_out(st2, &u2, &v2);
+#endif
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
     };
