@@ -274,15 +274,47 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
 #if defined(SB_V7_NEON_STEPS)
-    // ARMv7 second order: run r + 2's steps in NEON lanes (asm/span_persp_v7pass.h: the
-    // same operations and bits as steps16_dd_uv below), from the clamped samples' d
-    // registers: the conversion in stage_a's slots 4 .. 8, the steps in stage_b's 0 .. 5,
-    // the lanes read in its slot 9.
+    // ARMv7 second order: run r + 2's steps (u2, v2) in NEON lanes (asm/span_persp_v7pass.h:
+    // steps16_dd_uv's operations and bits) from the clamped samples' d registers, in their
+    // own stage (stage_n): the conversion in run a's slots 4 .. 7 (beside stage_a), the
+    // steps in run b's slots 0 .. 7, the lanes read in its slot 9 (slot 29 here).
     constexpr bool kV7N = kCurve;
-    double du2d = 0.0, dv2d = 0.0, ddu2 = 0.0, ddv2 = 0.0;
-    V7Steps st2{};
+    double du2d, dv2d, ddu2, ddv2;  // each set before it is read (the slots' order)
+    V7Steps st2;
+    auto stage_n = [&](auto g) SB_V7_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 4) {
+        du2d = v7_sub_lo(qu3, qu2), dv2d = v7_sub_lo(qv3, qv2);
+      } else if constexpr (G == 5) {
+        fu2 = v7_cvt_lo(du2d), fv2 = v7_cvt_lo(dv2d), st2.d = v7_pack(du2d, dv2d);
+      } else if constexpr (G == 6) {
+        fu2 = fu2 * c2, fv2 = fv2 * c2;
+        v7_steps_1(st2);
+      } else if constexpr (G == 7) {
+        ddu2 = v7_sat_lo(fu2), ddv2 = v7_sat_lo(fv2);
+      } else if constexpr (G == 20) {
+        st2.dd = v7_pack(ddu2, ddv2);
+      } else if constexpr (G == 21) {
+        v7_steps_2(st2);
+      } else if constexpr (G == 22) {
+        v7_steps_3(st2);
+      } else if constexpr (G == 23) {
+        v7_steps_3b(st2);
+      } else if constexpr (G == 24) {
+        v7_steps_4(st2);
+      } else if constexpr (G == 25) {
+        v7_steps_4b(st2);
+      } else if constexpr (G == 26) {
+        v7_steps_5(st2);
+      } else if constexpr (G == 27) {
+        v7_steps_5b(st2);
+      } else if constexpr (G == 29) {
+        v7_steps_out(st2, &u2, &v2);
+      }
+    };
 #else
     constexpr bool kV7N = false;
+    auto stage_n = [](auto) {};
 #endif
     auto stage_a = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
@@ -316,29 +348,16 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         } else {
           s2u = int32_t(qu2), s2v = int32_t(qv2), s3u = int32_t(qu3), s3v = int32_t(qv3);
         }
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) du2d = v7_sub_lo(qu3, qu2), dv2d = v7_sub_lo(qv3, qv2);
-#endif
       } else if constexpr (G == 5) {
         if constexpr (kCurve) {
           fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
         } else {
           u1 = {(s2u - s1.u) / 16, 0}, v1 = {(s2v - s1.v) / 16, 0};
         }
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) fu2 = v7_cvt_lo(du2d), fv2 = v7_cvt_lo(dv2d), st2.d = v7_pack(du2d, dv2d);
-#endif
       } else if constexpr (G == 6) {
         if constexpr (kCurve) fu1 = fu1 * c1, fv1 = fv1 * c1;
-        if constexpr (kV7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_1(st2);
-#endif
       } else if constexpr (G == 7) {
         if constexpr (kCurve) iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) ddu2 = v7_sat_lo(fu2), ddv2 = v7_sat_lo(fv2);
-#endif
       } else if constexpr (G == 8) {
         if constexpr (kCurve) steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
       } else if constexpr (G == 9) {
@@ -350,56 +369,38 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       if constexpr (G == 0) {
         if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
         tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) st2.dd = v7_pack(ddu2, ddv2);
-#endif
       } else if constexpr (G == 1) {
         if constexpr (kCurve && !kV7N) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_2(st2);
-#endif
-      } else if constexpr (G == 2) {
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_3(st2);
-#endif
       } else if constexpr (G == 3) {
         if constexpr (kCurve && !kV7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_3b(st2);
-#endif
-      } else if constexpr (G == 4) {
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_4(st2);
-#endif
       } else if constexpr (G == 5) {
         if constexpr (kCurve && !kV7N) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_4b(st2);
-#endif
-      } else if constexpr (G == 6) {
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_5(st2);
-#endif
-      } else if constexpr (G == 7) {
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_5b(st2);
-#endif
       } else if constexpr (G == 8) {
         if constexpr (kCurve && !kV7N) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
-#if defined(SB_V7_NEON_STEPS)
-        if constexpr (kV7N) v7_steps_out(st2, &u2, &v2);
-#endif
+        if constexpr (kV7N) stage_n(std::integral_constant<int, 29>{});  // u2, v2 from the lanes
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
     };
-    {
+    if constexpr (kV7N) {  // stage_n beside stage_a and stage_b (after each slot's work)
+      run_a.draw(dest, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
+        stage_a(g);
+        stage_n(g);
+      });
+    } else {
       run_a.draw(dest, texels, w, stage_a);
     }
     group_end();
     {
       if constexpr (!kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);
-      run_b.draw(dest + 16, texels, w, stage_b);
+      if constexpr (kV7N) {
+        run_b.draw(dest + 16, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
+          stage_b(g);
+          stage_n(std::integral_constant<int, 20 + decltype(g)::value>{});
+        });
+      } else {
+        run_b.draw(dest + 16, texels, w, stage_b);
+      }
     }
     group_end();
     dest += 32;

@@ -23,8 +23,13 @@
 
 #include "asm/span_persp_run.h"
 
-#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_NEON) && \
-    defined(__ARM_FP) && (__ARM_FP & 8)
+// Off unless SB_V7_PASS_NEON is defined (-DSB_V7_PASS_NEON): measured (A9) persp192
+// 8.15 -> 8.04 and persp1920 6.95 -> 6.93, but the batch function's other paths moved with
+// it (persp64 7.26 -> 7.31, persp64lin 7.43 -> 7.51, persp1920lin 4.67 -> 4.70, persp192lin
+// 5.49 -> 5.52: GCC's allocation and the code's layout), so main keeps steps16_dd_uv.
+#define SB_V7_PASS_NEON 1  // EXPERIMENT
+#if defined(SB_V7_PASS_NEON) && defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && \
+    defined(__ARM_NEON) && defined(__ARM_FP) && (__ARM_FP & 8)
 #define SB_V7_NEON_STEPS 1
 namespace sb::simd {
 namespace {
@@ -98,10 +103,8 @@ SB_INLINE void v7_steps_5b(V7Steps& s) { __asm__("vshr.s32 %P[d], %P[d], #3" : [
 // The lanes into RunSteps (u: lane 0, v: lane 1).
 SB_INLINE void v7_steps_out(const V7Steps& s, RunSteps* su, RunSteps* sv) {
   int32_t d0, d1, e0, e1;
-  __asm__("vmov %[d0], %[d1], %P[d]\n\t"
-          "vmov %[e0], %[e1], %P[dd]"
-          : [d0] "=&r"(d0), [d1] "=&r"(d1), [e0] "=&r"(e0), [e1] "=&r"(e1)
-          : [d] "w"(s.d), [dd] "w"(s.dd));
+  __asm__("vmov %[d0], %[d1], %P[d]" : [d0] "=r"(d0), [d1] "=r"(d1) : [d] "w"(s.d));
+  __asm__("vmov %[e0], %[e1], %P[dd]" : [e0] "=r"(e0), [e1] "=r"(e1) : [dd] "w"(s.dd));
   *su = RunSteps{d0, e0}, *sv = RunSteps{d1, e1};
 }
 }  // namespace
