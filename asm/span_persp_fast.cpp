@@ -247,6 +247,16 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   constexpr bool kEarlyB = false;
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
+#if defined(SB_V7_NEON_STEPS)
+  // ARMv7 second order: samples r + 2 and r + 3 enter each pass converted and clamped
+  // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
+  // converted in its second run; so the first run starts its steps' chains at once.
+  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0;
+  if constexpr (kCurve) {
+    cq2u = min_ufixed16(cvt_ufixed16(tu2 * z2), kUmax), cq2v = min_ufixed16(cvt_ufixed16(tv2 * z2), kVmax);
+    cq3u = min_ufixed16(cvt_ufixed16(tu3 * z3), kUmax), cq3v = min_ufixed16(cvt_ufixed16(tv3 * z3), kVmax);
+  }
+#endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_fast_a64vec.inc"  // the aarch64 vector pipeline (see there)
@@ -280,36 +290,61 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     // steps in run b's slots 0 .. 7, the lanes read in its slot 9 (slot 29 here).
     constexpr bool kV7N = kCurve;
     double du2d, dv2d, ddu2, ddv2;  // each set before it is read (the slots' order)
+    double nq4u, nq4v, nq5u, nq5v;  // the next pass's samples 2, 3 (4, 5 here), converted
     V7Steps st2;
     auto stage_n = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
-      if constexpr (G == 4) {
-        du2d = v7_sub_lo(qu3, qu2), dv2d = v7_sub_lo(qv3, qv2);
-      } else if constexpr (G == 5) {
+      if constexpr (G == 0) {
+        du2d = v7_sub_lo(cq3u, cq2u), dv2d = v7_sub_lo(cq3v, cq2v);
+      } else if constexpr (G == 1) {
         fu2 = v7_cvt_lo(du2d), fv2 = v7_cvt_lo(dv2d), st2.d = v7_pack(du2d, dv2d);
-      } else if constexpr (G == 6) {
+      } else if constexpr (G == 2) {
         fu2 = fu2 * c2, fv2 = fv2 * c2;
         v7_steps_1(st2);
-      } else if constexpr (G == 7) {
+      } else if constexpr (G == 3) {
         ddu2 = v7_sat_lo(fu2), ddv2 = v7_sat_lo(fv2);
-      } else if constexpr (G == 20) {
+      } else if constexpr (G == 4) {
         st2.dd = v7_pack(ddu2, ddv2);
-      } else if constexpr (G == 21) {
+      } else if constexpr (G == 5) {
         v7_steps_2(st2);
-      } else if constexpr (G == 22) {
+      } else if constexpr (G == 6) {
         v7_steps_3(st2);
-      } else if constexpr (G == 23) {
+      } else if constexpr (G == 7) {
         v7_steps_3b(st2);
-      } else if constexpr (G == 24) {
+      } else if constexpr (G == 20) {
         v7_steps_4(st2);
-      } else if constexpr (G == 25) {
+      } else if constexpr (G == 21) {
+        nq4u = tu4 * z4, nq4v = tv4 * z4, nq5u = tu5 * z5, nq5v = tv5 * z5;
         v7_steps_4b(st2);
-      } else if constexpr (G == 26) {
+      } else if constexpr (G == 22) {
+        nq4u = cvt_ufixed16(nq4u), nq4v = cvt_ufixed16(nq4v), nq5u = cvt_ufixed16(nq5u), nq5v = cvt_ufixed16(nq5v);
         v7_steps_5(st2);
-      } else if constexpr (G == 27) {
+      } else if constexpr (G == 23) {
+        nq4u = min_ufixed16(nq4u, kUmax), nq4v = min_ufixed16(nq4v, kVmax);
+        nq5u = min_ufixed16(nq5u, kUmax), nq5v = min_ufixed16(nq5v, kVmax);
         v7_steps_5b(st2);
       } else if constexpr (G == 29) {
         v7_steps_out(st2, &u2, &v2);
+      }
+    };
+    // The first run's own stage (stage_a's operations, samples 2 and 3 already converted).
+    auto stage_a7 = [&](auto g) SB_V7_LAMBDA_INLINE {
+      constexpr int G = decltype(g)::value;
+      if constexpr (G == 0) {
+        s2u = fixed16_bits_v(cq2u), s2v = fixed16_bits_v(cq2v);
+        sum1 = s1.z + z2, sum2 = z2 + z3;
+        zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
+      } else if constexpr (G == 1) {
+        c1 = zck * sum1, c2 = zck * sum2;
+        fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
+      } else if constexpr (G == 2) {
+        fu1 = fu1 * c1, fv1 = fv1 * c1;
+      } else if constexpr (G == 3) {
+        recip2(zi4, zi5, &z4, &z5);
+      } else if constexpr (G == 4) {
+        iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
+      } else if constexpr (G == 8) {
+        steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
       }
     };
 #else
@@ -378,13 +413,18 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       } else if constexpr (G == 8) {
         if constexpr (kCurve && !kV7N) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
-        if constexpr (kV7N) stage_n(std::integral_constant<int, 29>{});  // u2, v2 from the lanes
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) {  // u2, v2 from the lanes; sample r + 3's bits (read from here on only)
+          stage_n(std::integral_constant<int, 29>{});
+          s3u = fixed16_bits_v(cq3u), s3v = fixed16_bits_v(cq3v);
+        }
+#endif
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
     };
     if constexpr (kV7N) {  // stage_n beside stage_a and stage_b (after each slot's work)
       run_a.draw(dest, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
-        stage_a(g);
+        stage_a7(g);
         stage_n(g);
       });
     } else {
@@ -415,6 +455,9 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos2 = pos4;
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kV7N) cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
+#endif
 #if !defined(__x86_64__)
   };
 #if defined(__arm__) && !defined(__aarch64__)
