@@ -251,7 +251,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // ARMv7 second order: samples r + 2 and r + 3 enter each pass converted and clamped
   // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
   // converted in its second run; so the first run starts its steps' chains at once.
-  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0;
+  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
   if constexpr (kCurve) {
     cq2u = min_ufixed16(cvt_ufixed16(tu2 * z2), kUmax), cq2v = min_ufixed16(cvt_ufixed16(tv2 * z2), kVmax);
     cq3u = min_ufixed16(cvt_ufixed16(tu3 * z3), kUmax), cq3v = min_ufixed16(cvt_ufixed16(tv3 * z3), kVmax);
@@ -289,16 +289,19 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     // own stage (stage_n): the conversion in run a's slots 4 .. 7 (beside stage_a), the
     // steps in run b's slots 0 .. 7, the lanes read in its slot 9 (slot 29 here).
     constexpr bool kV7N = kCurve;
-    double du2d, dv2d, ddu2, ddv2;  // each set before it is read (the slots' order)
+    double du2d, dv2d, ddu2, ddv2, du1d, dv1d;  // each set before it is read (the slots' order)
     double nq4u, nq4v, nq5u, nq5v;  // the next pass's samples 2, 3 (4, 5 here), converted
     V7Steps st2;
     auto stage_n = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
         du2d = v7_sub_lo(cq3u, cq2u), dv2d = v7_sub_lo(cq3v, cq2v);
+        du1d = v7_sub_lo(cq2u, cq1u), dv1d = v7_sub_lo(cq2v, cq1v);
       } else if constexpr (G == 1) {
+        fu1 = v7_cvt_lo(du1d), fv1 = v7_cvt_lo(dv1d);
         fu2 = v7_cvt_lo(du2d), fv2 = v7_cvt_lo(dv2d), st2.d = v7_pack(du2d, dv2d);
       } else if constexpr (G == 2) {
+        fu1 = fu1 * c1, fv1 = fv1 * c1;
         fu2 = fu2 * c2, fv2 = fv2 * c2;
         v7_steps_1(st2);
       } else if constexpr (G == 3) {
@@ -336,9 +339,6 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
       } else if constexpr (G == 1) {
         c1 = zck * sum1, c2 = zck * sum2;
-        fu1 = double(s2u - s1.u), fv1 = double(s2v - s1.v);
-      } else if constexpr (G == 2) {
-        fu1 = fu1 * c1, fv1 = fv1 * c1;
       } else if constexpr (G == 3) {
         recip2(zi4, zi5, &z4, &z5);
       } else if constexpr (G == 4) {
@@ -456,7 +456,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kV7N) cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
+    if constexpr (kV7N) cq1u = cq3u, cq1v = cq3v, cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
 #endif
 #if !defined(__x86_64__)
   };
