@@ -798,6 +798,26 @@ void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels
 }
 #endif
 
+#if defined(SB_V7_NEON_STEPS) && defined(SB_V7_MID)
+#define SB_V7_LONG_RUN 1
+// ARMv7 batches: a second-order span of 49 pixels or more that persp_mid_v7 does not draw
+// (n = 49 or n > kMidMax), as spans_range tests it.
+SB_INLINE bool long_v7(const PerspItem& x) {
+  return x.span.second_order && !is_zero_v7(x.span.dzi) && x.n >= 49 &&
+         uint32_t(x.n - kMidMin) > uint32_t(kMidMax - kMidMin);
+}
+// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
+// in this function's loop (its own frame and register allocation, one call a run of them);
+// returns the first item that is not one (or end).
+__attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
+                                                             const uint8_t* texels, int width) {
+  do {
+    persp_fast<true>(it->dest, it->n, texels, width, it->span);
+    ++it;
+  } while (it != end && long_v7(*it));
+  return it;
+}
+#endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -850,6 +870,38 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       continue;
     }
     persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);
+    ++it;
+  }
+#elif defined(SB_V7_LONG_RUN)
+  // ARMv7: persp_one's dispatch, but the second-order spans of 49 pixels and more that are
+  // not persp_mid_v7's drawn out of line by persp_long_run_v7 (with the consecutive ones
+  // after them: one call a run of them), the rest of persp_fast<true>'s spans (n <= 48)
+  // here, with that bound stated (its long-span loop folds away): the loop's code is then
+  // only in persp_long_run_v7, and this function's register allocation does not move with it.
+  while (it != end) {
+    const PerspSpan& p = it->span;
+    const int n = it->n;
+    const bool is_short = n > 16 && n <= kShortMax;
+    if (!p.second_order || is_zero_v7(p.dzi)) {
+      if (is_short) {
+        persp_short_inl<false>(it->dest, n, texels, width, p);
+      } else {
+        persp_fast<false>(it->dest, n, texels, width, p);
+      }
+      ++it;
+      continue;
+    }
+    if (is_short) {
+      persp_short_inl<true>(it->dest, n, texels, width, p);
+    } else if (n >= kMidMin && n <= kMidMax) {
+      persp_mid_v7(it->dest, n, texels, width, p);
+    } else if (n >= 49) {
+      it = persp_long_run_v7(it, end, texels, width);
+      continue;
+    } else {
+      if (n > 48) __builtin_unreachable();
+      persp_fast<true>(it->dest, n, texels, width, p);
+    }
     ++it;
   }
 #else
