@@ -482,6 +482,17 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     z2 = z3;
     pos2 = pos3;
     t2 = t3;
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kCurve) cq2u = cq3u, cq2v = cq3v;
+#endif
+  };
+  // Sample r + 2. ARMv7 second order: as the loop (or the set-up before it) converted it (the
+  // same operations as sample(pos2, z2), so the same bits).
+  auto sample2 = [&]() SB_LAMBDA_INLINE {
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kCurve) return Sample{fixed16_bits_v(cq2u), fixed16_bits_v(cq2v), z2};
+#endif
+    return sample(pos2, z2);
   };
 #if defined(__arm__) && !defined(__aarch64__)
   if (kCurve && left > 32) {
@@ -497,7 +508,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
-        s2 = sample(pos2, z2);
+        s2 = sample2();
       } else if constexpr (G == 1) {  // the pass's stage_a operations (c1 = zck (z_1 + z_2))
         c1 = zck * (s1.z + s2.z);
       } else if constexpr (G == 2) {
@@ -539,7 +550,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       if constexpr (G == 0) {
         // Field by field (a select of the structs made GCC keep s1 in memory, stored in
         // every pass).
-        const Sample t = sample(pos2, z2);
+        const Sample t = sample2();
         const bool has2 = steps > 0;
         s2.u = has2 ? t.u : s1.u, s2.v = has2 ? t.v : s1.v, s2.z = has2 ? t.z : s1.z;
       } else if constexpr (G == 1) {
