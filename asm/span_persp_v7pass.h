@@ -23,13 +23,8 @@
 
 #include "asm/span_persp_run.h"
 
-// Off unless SB_V7_PASS_NEON is defined (-DSB_V7_PASS_NEON): measured (A9) persp192
-// 8.15 -> 8.04 and persp1920 6.95 -> 6.93, but the batch function's other paths moved with
-// it (persp64 7.26 -> 7.31, persp64lin 7.43 -> 7.51, persp1920lin 4.67 -> 4.70, persp192lin
-// 5.49 -> 5.52: GCC's allocation and the code's layout), so main keeps steps16_dd_uv.
-#define SB_V7_PASS_NEON 1  // EXPERIMENT
-#if defined(SB_V7_PASS_NEON) && defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && \
-    defined(__ARM_NEON) && defined(__ARM_FP) && (__ARM_FP & 8)
+#if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__) && defined(__ARM_NEON) && defined(__ARM_FP) && \
+    (__ARM_FP & 8)
 #define SB_V7_NEON_STEPS 1
 namespace sb::simd {
 namespace {
