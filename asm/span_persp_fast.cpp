@@ -53,7 +53,7 @@ namespace {
 #else
 #define SB_PERSP_FAST_BODY SB_V7_INLINE void persp_fast
 #endif
-template <bool kCurve>
+template <bool kCurve, bool kLong = false>
 SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
@@ -252,7 +252,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
   // converted in its second run; so the first run starts its steps' chains at once.
   double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
-  if constexpr (kCurve) {
+  if constexpr (kCurve && kLong) {
     cq2u = min_ufixed16(cvt_ufixed16(tu2 * z2), kUmax), cq2v = min_ufixed16(cvt_ufixed16(tv2 * z2), kVmax);
     cq3u = min_ufixed16(cvt_ufixed16(tu3 * z3), kUmax), cq3v = min_ufixed16(cvt_ufixed16(tv3 * z3), kVmax);
   }
@@ -288,7 +288,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     // steps16_dd_uv's operations and bits) from the clamped samples' d registers, in their
     // own stage (stage_n): the conversion in run a's slots 4 .. 7 (beside stage_a), the
     // steps in run b's slots 0 .. 7, the lanes read in its slot 9 (slot 29 here).
-    constexpr bool kV7N = kCurve;
+    constexpr bool kV7N = kCurve && kLong;
     double du2d, dv2d, ddu2, ddv2, du1d, dv1d;  // each set before it is read (the slots' order)
     double nq4u, nq4v, nq5u, nq5v;  // the next pass's samples 2, 3 (4, 5 here), converted
     V7Steps st2;
@@ -483,14 +483,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos2 = pos3;
     t2 = t3;
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kCurve) cq2u = cq3u, cq2v = cq3v;
+    if constexpr (kCurve && kLong) cq2u = cq3u, cq2v = cq3v;
 #endif
   };
   // Sample r + 2. ARMv7 second order: as the loop (or the set-up before it) converted it (the
   // same operations as sample(pos2, z2), so the same bits).
   auto sample2 = [&]() SB_LAMBDA_INLINE {
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kCurve) return Sample{fixed16_bits_v(cq2u), fixed16_bits_v(cq2v), z2};
+    if constexpr (kCurve && kLong) return Sample{fixed16_bits_v(cq2u), fixed16_bits_v(cq2v), z2};
 #endif
     return sample(pos2, z2);
   };
@@ -823,7 +823,7 @@ SB_INLINE bool long_v7(const PerspItem& x) {
 __attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
                                                              const uint8_t* texels, int width) {
   do {
-    persp_fast<true>(it->dest, it->n, texels, width, it->span);
+    persp_fast<true, true>(it->dest, it->n, texels, width, it->span);
     ++it;
   } while (it != end && long_v7(*it));
   return it;
