@@ -53,7 +53,12 @@ namespace {
 #else
 #define SB_PERSP_FAST_BODY SB_V7_INLINE void persp_fast
 #endif
+// kLong (ARMv7): persp_long_run_v7's instance (the NEON pass; see there).
+#if defined(SB_V7_NEON_STEPS)
 template <bool kCurve, bool kLong = false>
+#else
+template <bool kCurve>
+#endif
 SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
@@ -347,9 +352,9 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
       }
     };
+#define SB_CURVE_NOT_V7N (kCurve && !kV7N)
 #else
-    constexpr bool kV7N = false;
-    auto stage_n = [](auto) {};
+#define SB_CURVE_NOT_V7N kCurve
 #endif
     auto stage_a = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
@@ -405,13 +410,13 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
         tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
       } else if constexpr (G == 1) {
-        if constexpr (kCurve && !kV7N) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+        if constexpr (SB_CURVE_NOT_V7N) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
       } else if constexpr (G == 3) {
-        if constexpr (kCurve && !kV7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
+        if constexpr (SB_CURVE_NOT_V7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
       } else if constexpr (G == 5) {
-        if constexpr (kCurve && !kV7N) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+        if constexpr (SB_CURVE_NOT_V7N) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
       } else if constexpr (G == 8) {
-        if constexpr (kCurve && !kV7N) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
+        if constexpr (SB_CURVE_NOT_V7N) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
 #if defined(SB_V7_NEON_STEPS)
         if constexpr (kV7N) {  // u2, v2 from the lanes; sample r + 3's bits (read from here on only)
@@ -422,23 +427,29 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
     };
+#if defined(SB_V7_NEON_STEPS)
     if constexpr (kV7N) {  // stage_n beside stage_a and stage_b (after each slot's work)
       run_a.draw(dest, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
         stage_a7(g);
         stage_n(g);
       });
-    } else {
+    } else
+#endif
+    {
       run_a.draw(dest, texels, w, stage_a);
     }
     group_end();
     {
       if constexpr (!kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);
+#if defined(SB_V7_NEON_STEPS)
       if constexpr (kV7N) {
         run_b.draw(dest + 16, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
           stage_b(g);
           stage_n(std::integral_constant<int, 20 + decltype(g)::value>{});
         });
-      } else {
+      } else
+#endif
+      {
         run_b.draw(dest + 16, texels, w, stage_b);
       }
     }
@@ -486,15 +497,15 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if constexpr (kCurve && kLong) cq2u = cq3u, cq2v = cq3v;
 #endif
   };
-  // Sample r + 2. ARMv7 second order: as the loop (or the set-up before it) converted it (the
-  // same operations as sample(pos2, z2), so the same bits).
+#if defined(__arm__) && !defined(__aarch64__)
+  // Sample r + 2. persp_long_run_v7's instance: as the loop (or the set-up before it)
+  // converted it (the same operations as sample(pos2, z2), so the same bits).
   auto sample2 = [&]() SB_LAMBDA_INLINE {
 #if defined(SB_V7_NEON_STEPS)
     if constexpr (kCurve && kLong) return Sample{fixed16_bits_v(cq2u), fixed16_bits_v(cq2v), z2};
 #endif
     return sample(pos2, z2);
   };
-#if defined(__arm__) && !defined(__aarch64__)
   if (kCurve && left > 32) {
     // ARMv7 second order: as below, sample r + 2 and run r + 1's steps computed beside run
     // r's pixels (stage slots; before draw16 the modelled Cortex-A9's in-order FP pipe and
@@ -614,6 +625,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #endif
 }
 #undef SB_PERSP_FAST_BODY
+#undef SB_CURVE_NOT_V7N
 #if defined(__aarch64__) && defined(__GNUC__)
 template <bool kCurve>
 void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
