@@ -515,6 +515,15 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     double c1 = 0.0, fu = 0.0, fv = 0.0;
     int32_t iu = 0, iv = 0;
     RunSteps u1{}, v1{};
+#if defined(SB_V7_NEON_STEPS) && defined(SB_V7_MID)
+    if constexpr (kCurve && kLong) {  // run r in one asm statement, the ddf in its VFP slots
+      v7_tail_run(dest, texels, w, run_regs(s0.u, s0.v, su, sv), cq1u, cq1v, cq2u, cq2v, s1.z, z2, zck, &iu, &iv);
+      s2 = sample2();
+      steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
+      next_run(s2, u1, v1);
+    } else
+#endif
+    {
     Run16<kCurve> run(s0.u, s0.v, su, sv);
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
@@ -533,6 +542,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       }
     });
     next_run(s2, u1, v1);
+    }
   } else
 #endif
   if (left > 32) {  // one run more whose next run is full and not the last
