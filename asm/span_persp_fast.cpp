@@ -289,69 +289,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
 #if defined(SB_V7_NEON_STEPS)
-    // ARMv7 second order: run r + 2's steps (u2, v2) in NEON lanes (asm/span_persp_v7pass.h:
-    // steps16_dd_uv's operations and bits) from the clamped samples' d registers, in their
-    // own stage (stage_n): the conversion in run a's slots 4 .. 7 (beside stage_a), the
-    // steps in run b's slots 0 .. 7, the lanes read in its slot 9 (slot 29 here).
-    constexpr bool kV7N = kCurve && kLong;
-    double du2d, dv2d, ddu2, ddv2, du1d, dv1d;  // each set before it is read (the slots' order)
-    double nq4u, nq4v, nq5u, nq5v;  // the next pass's samples 2, 3 (4, 5 here), converted
-    V7Steps st2;
-    auto stage_n = [&](auto g) SB_V7_LAMBDA_INLINE {
-      constexpr int G = decltype(g)::value;
-      if constexpr (G == 0) {
-        du2d = v7_sub_lo(cq3u, cq2u), dv2d = v7_sub_lo(cq3v, cq2v);
-        du1d = v7_sub_lo(cq2u, cq1u), dv1d = v7_sub_lo(cq2v, cq1v);
-      } else if constexpr (G == 1) {
-        fu1 = v7_cvt_lo(du1d), fv1 = v7_cvt_lo(dv1d);
-        fu2 = v7_cvt_lo(du2d), fv2 = v7_cvt_lo(dv2d), st2.d = v7_pack(du2d, dv2d);
-      } else if constexpr (G == 2) {
-        fu1 = fu1 * c1, fv1 = fv1 * c1;
-        fu2 = fu2 * c2, fv2 = fv2 * c2;
-        v7_steps_1(st2);
-      } else if constexpr (G == 3) {
-        ddu2 = v7_sat_lo(fu2), ddv2 = v7_sat_lo(fv2);
-      } else if constexpr (G == 4) {
-        st2.dd = v7_pack(ddu2, ddv2);
-      } else if constexpr (G == 5) {
-        v7_steps_2(st2);
-      } else if constexpr (G == 6) {
-        v7_steps_3(st2);
-      } else if constexpr (G == 7) {
-        v7_steps_3b(st2);
-      } else if constexpr (G == 20) {
-        v7_steps_4(st2);
-      } else if constexpr (G == 21) {
-        nq4u = tu4 * z4, nq4v = tv4 * z4, nq5u = tu5 * z5, nq5v = tv5 * z5;
-        v7_steps_4b(st2);
-      } else if constexpr (G == 22) {
-        nq4u = cvt_ufixed16(nq4u), nq4v = cvt_ufixed16(nq4v), nq5u = cvt_ufixed16(nq5u), nq5v = cvt_ufixed16(nq5v);
-        v7_steps_5(st2);
-      } else if constexpr (G == 23) {
-        nq4u = min_ufixed16(nq4u, kUmax), nq4v = min_ufixed16(nq4v, kVmax);
-        nq5u = min_ufixed16(nq5u, kUmax), nq5v = min_ufixed16(nq5v, kVmax);
-        v7_steps_5b(st2);
-      } else if constexpr (G == 29) {
-        v7_steps_out(st2, &u2, &v2);
-      }
-    };
-    // The first run's own stage (stage_a's operations, samples 2 and 3 already converted).
-    auto stage_a7 = [&](auto g) SB_V7_LAMBDA_INLINE {
-      constexpr int G = decltype(g)::value;
-      if constexpr (G == 0) {
-        s2u = fixed16_bits_v(cq2u), s2v = fixed16_bits_v(cq2v);
-        sum1 = s1.z + z2, sum2 = z2 + z3;
-        zi4 = zrow + zix * pos4, zi5 = zrow + zix * pos5;
-      } else if constexpr (G == 1) {
-        c1 = zck * sum1, c2 = zck * sum2;
-      } else if constexpr (G == 3) {
-        recip2(zi4, zi5, &z4, &z5);
-      } else if constexpr (G == 4) {
-        iu1 = cvt_sat(fu1), iv1 = cvt_sat(fv1);
-      } else if constexpr (G == 8) {
-        steps16_dd_uv(s2u - s1.u, iu1, s2v - s1.v, iv1, &u1, &v1);  // u, v interleaved
-      }
-    };
+#include "asm/span_persp_fast_v7pass.inc"  // kV7N, stage_n, stage_a7 (see there)
 #define SB_CURVE_NOT_V7N (kCurve && !kV7N)
 #else
 #define SB_CURVE_NOT_V7N kCurve
