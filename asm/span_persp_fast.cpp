@@ -777,17 +777,10 @@ SB_INLINE bool long_v7(const PerspItem& x) {
   return x.span.second_order && !is_zero_v7(x.span.dzi) && x.n >= 49 &&
          uint32_t(x.n - kMidMin) > uint32_t(kMidMax - kMidMin);
 }
-// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
-// in this function's loop (its own frame and register allocation, one call a run of them);
-// returns the first item that is not one (or end).
-__attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
-                                                             const uint8_t* texels, int width) {
-  do {
-    persp_fast<true, true>(it->dest, it->n, texels, width, it->span);
-    ++it;
-  } while (it != end && long_v7(*it));
-  return it;
-}
+// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true,
+// true> (defined after the entries, the object's last function: its size moves no other code
+// against qemu's 4 KiB page cuts).
+const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
@@ -911,6 +904,11 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 }
 #endif
 
+#if defined(SB_V7_LONG_RUN)
+// ARMv7: page-aligned (persp_long_run_v7, which the compiler emits before it, no longer moves
+// its blocks against qemu's 4 KiB page cuts).
+__attribute__((aligned(4096)))
+#endif
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
 #if defined(__aarch64__) && defined(__GNUC__)
   batch_from(items, items + (count > 0 ? count : 0), texels, width);
@@ -937,6 +935,9 @@ __attribute__((noinline)) void persp_one_rest_v7(uint8_t* dest, int n, const uin
 // With SB_V7_MID: persp_mid_v7's spans (kMidMin .. kMidMax pixels, second order, dzi != 0)
 // drawn here, the others by persp_one_rest_v7 (a tail call), so this function saves only what
 // persp_mid_v7 uses (r4 .. r11: its asm keeps to d0 .. d7, d16 .. d31 between statements).
+#if defined(SB_V7_LONG_RUN)
+__attribute__((aligned(4096)))  // as the batch entry (see there)
+#endif
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& p) {
 #if defined(SB_V7_MID)
@@ -949,6 +950,22 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   persp_one(dest, n, texels, width, p);
 #endif
 }
+#endif
+
+#if defined(SB_V7_LONG_RUN)
+namespace {
+// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
+// in this function's loop (its own frame and register allocation, one call a run of them);
+// returns the first item that is not one (or end).
+__attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
+                                                             const uint8_t* texels, int width) {
+  do {
+    persp_fast<true, true>(it->dest, it->n, texels, width, it->span);
+    ++it;
+  } while (it != end && long_v7(*it));
+  return it;
+}
+}  // namespace
 #endif
 
 }  // namespace sb::simd
