@@ -778,8 +778,8 @@ SB_INLINE bool long_v7(const PerspItem& x) {
          uint32_t(x.n - kMidMin) > uint32_t(kMidMax - kMidMin);
 }
 // Such items from it on (it is one), while they follow each other: drawn by persp_fast<true,
-// true> (defined after the entries, the object's last function: its size moves no other code
-// against qemu's 4 KiB page cuts).
+// true> (defined at the end; GCC emits it before the entries, which are page-aligned so that
+// its size does not move their code against qemu's 4 KiB page cuts).
 const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
@@ -905,8 +905,8 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 #endif
 
 #if defined(SB_V7_LONG_RUN)
-// ARMv7: page-aligned (persp_long_run_v7, which the compiler emits before it, no longer moves
-// its blocks against qemu's 4 KiB page cuts).
+// ARMv7: page-aligned (persp_long_run_v7, which the compiler emits before it, does not move
+// its blocks against qemu's 4 KiB page cuts, where bench/count.sh's timed blocks end).
 __attribute__((aligned(4096)))
 #endif
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
