@@ -959,11 +959,13 @@ namespace {
 // returns the first item that is not one (or end).
 __attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
                                                              const uint8_t* texels, int width) {
+  const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
-    persp_fast<true, true>(it->dest, it->n, texels, width, it->span);
-    ++it;
-  } while (it != end && long_v7(*it));
-  return it;
+    persp_fast<true, true>(st[0]->dest, st[0]->n, texels, width, st[0]->span);
+    __asm__("" : "+m"(st));
+    ++st[0];
+  } while (st[0] != st[1] && long_v7(*st[0]));
+  return st[0];
 }
 }  // namespace
 #endif
