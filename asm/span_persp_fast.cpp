@@ -11,6 +11,7 @@
 #include "asm/span_persp_a64longspan.h"
 #include "asm/span_persp_a64pair.h"
 #include "asm/span_persp_v7mid.h"
+#include "asm/span_persp_v7pass.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -37,8 +38,10 @@ namespace {
 // ARMv7: persp_fast inlined into surface_span_persp_fast (one function entry per span).
 #if defined(__arm__) && !defined(__aarch64__)
 #define SB_V7_INLINE inline __attribute__((always_inline))
+#define SB_V7_LAMBDA_INLINE __attribute__((always_inline))
 #else
 #define SB_V7_INLINE
+#define SB_V7_LAMBDA_INLINE
 #endif
 
 // kCurve false: linear steps (Quake's way: second_order off, or a constant 1/z along the
@@ -50,7 +53,12 @@ namespace {
 #else
 #define SB_PERSP_FAST_BODY SB_V7_INLINE void persp_fast
 #endif
+// kLong (ARMv7): persp_long_run_v7's instance (the NEON pass; see there).
+#if defined(SB_V7_NEON_STEPS)
+template <bool kCurve, bool kLong = false>
+#else
 template <bool kCurve>
+#endif
 SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
   if (n <= 0) return;
   // Long spans. Runs r = 0, 1, ... of 16 pixels; sample j (a run's first pixel, or the
@@ -244,6 +252,16 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   constexpr bool kEarlyB = false;
 #endif
   Run16<kCurve> run_a(s0.u, s0.v, su, sv), run_b = run_a;
+#if defined(SB_V7_NEON_STEPS)
+  // ARMv7 second order: samples r + 2 and r + 3 enter each pass converted and clamped
+  // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
+  // converted in its second run; so the first run starts its steps' chains at once.
+  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
+  if constexpr (kCurve && kLong) {
+    cq2u = min_ufixed16(cvt_ufixed16(tu2 * z2), kUmax), cq2v = min_ufixed16(cvt_ufixed16(tv2 * z2), kVmax);
+    cq3u = min_ufixed16(cvt_ufixed16(tu3 * z3), kUmax), cq3v = min_ufixed16(cvt_ufixed16(tv3 * z3), kVmax);
+  }
+#endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_fast_a64vec.inc"  // the aarch64 vector pipeline (see there)
@@ -270,7 +288,13 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     int32_t iu1 = 0, iv1 = 0, iu2 = 0, iv2 = 0;
     RunSteps u1{}, v1{}, u2{}, v2{};
     double z4, z5;
-    auto stage_a = [&](auto g) {
+#if defined(SB_V7_NEON_STEPS)
+#include "asm/span_persp_fast_v7pass.inc"  // kV7N, stage_n, stage_a7 (see there)
+#define SB_CURVE_NOT_V7N (kCurve && !kV7N)
+#else
+#define SB_CURVE_NOT_V7N kCurve
+#endif
+    auto stage_a = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
         qu2 = tu2 * z2, qv2 = tv2 * z2, qu3 = tu3 * z3, qv3 = tv3 * z3;
@@ -318,30 +342,54 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
         if constexpr (kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);  // the second run's setup
       }
     };
-    auto stage_b = [&](auto g) {
+    auto stage_b = [&](auto g) SB_V7_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
         if constexpr (!kCurve) u2 = {(s3u - s2u) / 16, 0}, v2 = {(s3v - s2v) / 16, 0};
         tu4 = urow + ux * pos4, tv4 = vrow + vx * pos4, tu5 = urow + ux * pos5, tv5 = vrow + vx * pos5;
       } else if constexpr (G == 1) {
-        if constexpr (kCurve) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
+        if constexpr (SB_CURVE_NOT_V7N) fu2 = double(s3u - s2u), fv2 = double(s3v - s2v);
       } else if constexpr (G == 3) {
-        if constexpr (kCurve) fu2 = fu2 * c2, fv2 = fv2 * c2;
+        if constexpr (SB_CURVE_NOT_V7N) fu2 = fu2 * c2, fv2 = fv2 * c2;
       } else if constexpr (G == 5) {
-        if constexpr (kCurve) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
+        if constexpr (SB_CURVE_NOT_V7N) iu2 = cvt_sat(fu2), iv2 = cvt_sat(fv2);
       } else if constexpr (G == 8) {
-        if constexpr (kCurve) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
+        if constexpr (SB_CURVE_NOT_V7N) steps16_dd_uv(s3u - s2u, iu2, s3v - s2v, iv2, &u2, &v2);
       } else if constexpr (G == 9) {
+#if defined(SB_V7_NEON_STEPS)
+        if constexpr (kV7N) {  // u2, v2 from the lanes; sample r + 3's bits (read from here on only)
+          stage_n(std::integral_constant<int, 29>{});
+          s3u = fixed16_bits_v(cq3u), s3v = fixed16_bits_v(cq3v);
+        }
+#endif
         run_a = Run16<kCurve>(s2u, s2v, u2, v2);  // the next pass's first run, set up here
       }
     };
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kV7N) {  // stage_n beside stage_a and stage_b (after each slot's work)
+      run_a.draw(dest, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
+        stage_a7(g);
+        stage_n(g);
+      });
+    } else
+#endif
     {
       run_a.draw(dest, texels, w, stage_a);
     }
     group_end();
     {
       if constexpr (!kEarlyB) run_b = Run16<kCurve>(s1.u, s1.v, u1, v1);
-      run_b.draw(dest + 16, texels, w, stage_b);
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kV7N) {
+        run_b.draw(dest + 16, texels, w, [&](auto g) SB_V7_LAMBDA_INLINE {
+          stage_b(g);
+          stage_n(std::integral_constant<int, 20 + decltype(g)::value>{});
+        });
+      } else
+#endif
+      {
+        run_b.draw(dest + 16, texels, w, stage_b);
+      }
     }
     group_end();
     dest += 32;
@@ -356,6 +404,9 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos2 = pos4;
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kV7N) cq1u = cq3u, cq1v = cq3v, cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
+#endif
 #if !defined(__x86_64__)
   };
 #if defined(__arm__) && !defined(__aarch64__)
@@ -380,8 +431,19 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     z2 = z3;
     pos2 = pos3;
     t2 = t3;
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kCurve && kLong) cq2u = cq3u, cq2v = cq3v;
+#endif
   };
 #if defined(__arm__) && !defined(__aarch64__)
+  // Sample r + 2. persp_long_run_v7's instance: as the loop (or the set-up before it)
+  // converted it (the same operations as sample(pos2, z2), so the same bits).
+  auto sample2 = [&]() SB_LAMBDA_INLINE {
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kCurve && kLong) return Sample{fixed16_bits_v(cq2u), fixed16_bits_v(cq2v), z2};
+#endif
+    return sample(pos2, z2);
+  };
   if (kCurve && left > 32) {
     // ARMv7 second order: as below, sample r + 2 and run r + 1's steps computed beside run
     // r's pixels (stage slots; before draw16 the modelled Cortex-A9's in-order FP pipe and
@@ -391,11 +453,20 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     double c1 = 0.0, fu = 0.0, fv = 0.0;
     int32_t iu = 0, iv = 0;
     RunSteps u1{}, v1{};
+#if defined(SB_V7_NEON_STEPS) && defined(SB_V7_MID)
+    if constexpr (kCurve && kLong) {  // run r in one asm statement, the ddf in its VFP slots
+      v7_tail_run(dest, texels, w, run_regs(s0.u, s0.v, su, sv), cq1u, cq1v, cq2u, cq2v, s1.z, z2, zck, &iu, &iv);
+      s2 = sample2();
+      steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
+      next_run(s2, u1, v1);
+    } else
+#endif
+    {
     Run16<kCurve> run(s0.u, s0.v, su, sv);
     run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
       constexpr int G = decltype(g)::value;
       if constexpr (G == 0) {
-        s2 = sample(pos2, z2);
+        s2 = sample2();
       } else if constexpr (G == 1) {  // the pass's stage_a operations (c1 = zck (z_1 + z_2))
         c1 = zck * (s1.z + s2.z);
       } else if constexpr (G == 2) {
@@ -409,6 +480,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       }
     });
     next_run(s2, u1, v1);
+    }
   } else
 #endif
   if (left > 32) {  // one run more whose next run is full and not the last
@@ -437,7 +509,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       if constexpr (G == 0) {
         // Field by field (a select of the structs made GCC keep s1 in memory, stored in
         // every pass).
-        const Sample t = sample(pos2, z2);
+        const Sample t = sample2();
         const bool has2 = steps > 0;
         s2.u = has2 ? t.u : s1.u, s2.v = has2 ? t.v : s1.v, s2.z = has2 ? t.z : s1.z;
       } else if constexpr (G == 1) {
@@ -501,6 +573,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #endif
 }
 #undef SB_PERSP_FAST_BODY
+#undef SB_CURVE_NOT_V7N
 #if defined(__aarch64__) && defined(__GNUC__)
 template <bool kCurve>
 void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
@@ -697,6 +770,19 @@ void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels
 }
 #endif
 
+#if defined(SB_V7_NEON_STEPS) && defined(SB_V7_MID)
+#define SB_V7_LONG_RUN 1
+// ARMv7 batches: a second-order span of 49 pixels or more that persp_mid_v7 does not draw
+// (n = 49 or n > kMidMax), as spans_range tests it.
+SB_INLINE bool long_v7(const PerspItem& x) {
+  return x.span.second_order && !is_zero_v7(x.span.dzi) && x.n >= 49 &&
+         uint32_t(x.n - kMidMin) > uint32_t(kMidMax - kMidMin);
+}
+// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true,
+// true> (defined at the end; GCC emits it before the entries, which are page-aligned so that
+// its size does not move their code against qemu's 4 KiB page cuts).
+const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+#endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -751,6 +837,38 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);
     ++it;
   }
+#elif defined(SB_V7_LONG_RUN)
+  // ARMv7: persp_one's dispatch, but the second-order spans of 49 pixels and more that are
+  // not persp_mid_v7's drawn out of line by persp_long_run_v7 (with the consecutive ones
+  // after them: one call a run of them), the rest of persp_fast<true>'s spans (n <= 48)
+  // here, with that bound stated (its long-span loop folds away): the loop's code is then
+  // only in persp_long_run_v7, and this function's register allocation does not move with it.
+  while (it != end) {
+    const PerspSpan& p = it->span;
+    const int n = it->n;
+    const bool is_short = n > 16 && n <= kShortMax;
+    if (!p.second_order || is_zero_v7(p.dzi)) {
+      if (is_short) {
+        persp_short_inl<false>(it->dest, n, texels, width, p);
+      } else {
+        persp_fast<false>(it->dest, n, texels, width, p);
+      }
+      ++it;
+      continue;
+    }
+    if (is_short) {
+      persp_short_inl<true>(it->dest, n, texels, width, p);
+    } else if (n >= kMidMin && n <= kMidMax) {
+      persp_mid_v7(it->dest, n, texels, width, p);
+    } else if (n >= 49) {
+      it = persp_long_run_v7(it, end, texels, width);
+      continue;
+    } else {
+      if (n > 48) __builtin_unreachable();
+      persp_fast<true>(it->dest, n, texels, width, p);
+    }
+    ++it;
+  }
 #else
   for (; it != end; ++it) persp_one(it->dest, it->n, texels, width, it->span);
 #endif
@@ -787,6 +905,11 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 }
 #endif
 
+#if defined(SB_V7_LONG_RUN)
+// ARMv7: page-aligned (persp_long_run_v7, which the compiler emits before it, does not move
+// its blocks against qemu's 4 KiB page cuts, where bench/count.sh's timed blocks end).
+__attribute__((aligned(4096)))
+#endif
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
 #if defined(__aarch64__) && defined(__GNUC__)
   batch_from(items, items + (count > 0 ? count : 0), texels, width);
@@ -813,6 +936,9 @@ __attribute__((noinline)) void persp_one_rest_v7(uint8_t* dest, int n, const uin
 // With SB_V7_MID: persp_mid_v7's spans (kMidMin .. kMidMax pixels, second order, dzi != 0)
 // drawn here, the others by persp_one_rest_v7 (a tail call), so this function saves only what
 // persp_mid_v7 uses (r4 .. r11: its asm keeps to d0 .. d7, d16 .. d31 between statements).
+#if defined(SB_V7_LONG_RUN)
+__attribute__((aligned(4096)))  // as the batch entry (see there)
+#endif
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& p) {
 #if defined(SB_V7_MID)
@@ -825,6 +951,24 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
   persp_one(dest, n, texels, width, p);
 #endif
 }
+#endif
+
+#if defined(SB_V7_LONG_RUN)
+namespace {
+// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
+// in this function's loop (its own frame and register allocation, one call a run of them);
+// returns the first item that is not one (or end).
+__attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
+                                                             const uint8_t* texels, int width) {
+  const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
+  do {
+    persp_fast<true, true>(st[0]->dest, st[0]->n, texels, width, st[0]->span);
+    __asm__("" : "+m"(st));
+    ++st[0];
+  } while (st[0] != st[1] && long_v7(*st[0]));
+  return st[0];
+}
+}  // namespace
 #endif
 
 }  // namespace sb::simd

@@ -903,18 +903,13 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                           uint32_t(lu.dd), uint32_t(lv.dd));
   }
 }
-#undef SB_V7_RUN_INPUTS
 #undef SB_V7_PRO_CLOB
 #undef SB_V7_PRO_IN
 #undef SB_V7_PRO_OUT
 #undef SB_V7_PROLOGUE
 #undef SB_V7_LANES
-#undef SB_V7_RUN_OPERANDS
-#undef SB_V7_RUN
-#undef SB_V7_HI_END
-#undef SB_V7_HI
-#undef SB_V7_LO
-#undef SB_V7_PX
+// SB_V7_RUN and its parts (SB_V7_RUN_OPERANDS, SB_V7_RUN_INPUTS, SB_V7_PX ..) stay defined
+// for asm/span_persp_v7pass.h (which undefines them).
 #endif
 
 }  // namespace
