@@ -329,7 +329,10 @@ SB_INLINE void short_head_asm(const PerspSpan& p, int n, ShortHead& h) {
 SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int32x4_t& S01, int32x4_t& S23,
                               int32x4_t& S44, float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23,
                               double& zh) {
-  // One asm block, each operation the vector code's lane operation (the same bits):
+  // Contract: n = 17 .. kShortMax, h this span's head (h.idx = n - 17 picks kShortOffs's row;
+  // AsmSpanPerspBatch.EveryPartialLastRunLengthMatchesOnEveryPath draws every such n through
+  // the single entry). One asm block, each operation the vector code's lane operation (the
+  // same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
   // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
   // [u, v] products uvrow + uvx pos beside the depth chains; the reciprocals 1 / max(zi,

@@ -533,7 +533,7 @@ SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w6
   uint64_t bits, t;
   uint32_t so;
   bool r;
-  // With the sample block's head (SB_SHORT_HEAD_ASM's lines; its n - 17 the test's): ready
+  // With the sample block's head (short_head_asm's lines; its n - 17 the test's): ready
   // when short_samples1 starts. Other spans ignore them.
   register float64x2_t r0 __asm__("v0"), r1 __asm__("v1");
   // BEGIN short_curve_a64 (its order: bench/mca_a53_pair/README.md, "the single entry's head")
