@@ -292,10 +292,11 @@ struct alignas(16) ShortSamples {
 // short_samples1's head: its first load and constant, as their own asm text so that the
 // single-span entry does them in its test's block (short_curve_a64, asm/span_persp_fast.cpp:
 // the load's latency under the test's, before the branch) and persp_short_curve otherwise
-// (short_head_asm): pos = [px0, 0], sixteen = [16.0, 0] (pinned to v0, v1: short_samples1's
-// asm takes them there) and idx = n - 17 (kShortOffs's row).
+// (short_head_asm): pos = [px0, 0], sixteen = [16.0, 0], zc = dzi (pinned to v0, v1, v31:
+// short_samples1's asm takes them there) and idx = n - 17 (kShortOffs's row).
 struct ShortHead {
   float64x2_t pos, sixteen;
+  double zc;
   uint64_t idx;
 };
 // kShortOffs.at[n - 17] = {o_0, o_1, o_2, 0} for n = 17 .. 64: the sample offsets o_0 = min(32,
@@ -314,17 +315,19 @@ struct ShortOffsTable1 {
 constexpr ShortOffsTable1 kShortOffs;
 static_assert(sizeof(ShortOffs1) == 32 && kShortOffs.at[47].o[0] == 32.0 && kShortOffs.at[23].o[1] == 23.0 &&
               kShortOffs.at[0].o[2] == -16.0);
-static_assert(offsetof(PerspSpan, px0) == 48);
+static_assert(offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, dzi) == 8);
 // n = 17 .. kShortMax.
 SB_INLINE void short_head_asm(const PerspSpan& p, int n, ShortHead& h) {
   register float64x2_t r0 __asm__("v0"), r1 __asm__("v1");
+  register double r31 __asm__("v31");
   uint64_t t;
   __asm__("ldr d0, [%[p], #48]\n\t"
           "fmov d1, #16.0\n\t"
+          "ldr d31, [%[p], #8]\n\t"
           "sub %w[t], %w[n], #17"
-          : "=w"(r0), "=w"(r1), [t] "=r"(t)
+          : "=w"(r0), "=w"(r1), "=w"(r31), [t] "=r"(t)
           : [p] "r"(&p), [n] "r"(n), "m"(p));
-  h = ShortHead{r0, r1, t};
+  h = ShortHead{r0, r1, r31, t};
 }
 SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int32x4_t& S01, int32x4_t& S23,
                               int32x4_t& S44, float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23,
@@ -358,7 +361,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
   // read, the B and C reciprocals in v21, v23 (free once their [u, v] rows are multiplied in).
   // Its order: bench/order_search.py on the block as qemu cuts it after the single entry's
   // test (bench/mca_a53_pair/README.md, "the single entry's head").
-  register double rzh __asm__("v31") = p.dzi;
+  register double rzh __asm__("v31") = h.zc;
   register float64x2_t rzs01 __asm__("v0") = h.pos;
   register float64x2_t rzs23 __asm__("v1") = h.sixteen;
   register float64x2_t rc01 __asm__("v3");

@@ -536,6 +536,7 @@ SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w6
   // With the sample block's head (short_head_asm's lines; its n - 17 the test's): ready
   // when short_samples1 starts. Other spans ignore them.
   register float64x2_t r0 __asm__("v0"), r1 __asm__("v1");
+  register double r31 __asm__("v31");
   // BEGIN short_curve_a64 (its order: bench/mca_a53_pair/README.md, "the single entry's head")
   __asm__(
       "ldr %x[b], %[dzi]\n\t"
@@ -547,11 +548,12 @@ SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w6
       "ldr d0, [%[p], #48]\n\t"
       "ccmp %w[so], #0, #4, ls\n\t"
       "fmov d1, #16.0\n\t"
-      "ccmp %x[b], #0, #4, ne"
-      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [t] "=&r"(t), [w64] "=&r"(w64), "=w"(r0), "=w"(r1)
+      "ccmp %x[b], #0, #4, ne\n\t"
+      "ldr d31, [%[p], #8]"
+      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [t] "=&r"(t), [w64] "=&r"(w64), "=w"(r0), "=w"(r1), "=w"(r31)
       : [n] "r"(n), [w] "r"(width), [dzi] "m"(p.dzi), [som] "m"(p.second_order), [p] "r"(&p), "m"(p));
   // END short_curve_a64
-  h = ShortHead{r0, r1, t};
+  h = ShortHead{r0, r1, r31, t};
   return r;
 }
 // lin_pairs_a64's items: 16 < n <= kShortMax, linear (second_order off or dzi 0), without
