@@ -4,6 +4,7 @@
 // (it uses that file's last_steps and asm/span_persp_run.h's runs), which
 // asm/span_persp_fast.cpp includes (anonymous namespace: internal linkage).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <type_traits>
 
@@ -284,15 +285,57 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
 // A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
 // u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below); ShortSamples holds
 // them (asm/span_persp_a64pair.h's paired block stores them so); zh = zc * 0.5 (short_rest's).
-// Its order: bench/order_search.py on the block as qemu cuts it, the compiler's 14 lines
-// before it pinned (bench/mca_a53_pair/README.md, "single-span entry").
 struct alignas(16) ShortSamples {
   int32x4_t S01, S23, S44;
   float64x2_t zs01, zs23, c01, c23;
 };
-SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S01, int32x4_t& S23, int32x4_t& S44,
-                              float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23, double& zh) {
-  // One asm block, each operation the vector code's lane operation (the same bits):
+// short_samples1's head: its first load and constant, as their own asm text so that the
+// single-span entry does them in its test's block (short_curve_a64, asm/span_persp_fast.cpp:
+// the load's latency under the test's, before the branch) and persp_short_curve otherwise
+// (short_head_asm): pos = [px0, 0], sixteen = [16.0, 0], zc = dzi (pinned to v0, v1, v31:
+// short_samples1's asm takes them there) and idx = n - 17 (kShortOffs's row).
+struct ShortHead {
+  float64x2_t pos, sixteen;
+  double zc;
+  uint64_t idx;
+};
+// kShortOffs.at[n - 17] = {o_0, o_1, o_2, 0} for n = 17 .. 64: the sample offsets o_0 = min(32,
+// n - 1), o_1 = min(32, n - 17), o_2 = n - 33 as doubles (short_samples1 loads them: no
+// conversions in its block); 32-byte rows (an index shift).
+struct alignas(32) ShortOffs1 {
+  double o[4];
+};
+struct ShortOffsTable1 {
+  ShortOffs1 at[48];
+  constexpr ShortOffsTable1() : at{} {
+    for (int n = 17; n <= 64; ++n)
+      at[n - 17] = ShortOffs1{{double(n - 1 < 32 ? n - 1 : 32), double(n - 17 < 32 ? n - 17 : 32), double(n - 33), 0.0}};
+  }
+};
+constexpr ShortOffsTable1 kShortOffs;
+static_assert(sizeof(ShortOffs1) == 32 && kShortOffs.at[47].o[0] == 32.0 && kShortOffs.at[23].o[1] == 23.0 &&
+              kShortOffs.at[0].o[2] == -16.0);
+static_assert(offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, dzi) == 8);
+// n = 17 .. kShortMax.
+SB_INLINE void short_head_asm(const PerspSpan& p, int n, ShortHead& h) {
+  register float64x2_t r0 __asm__("v0"), r1 __asm__("v1");
+  register double r31 __asm__("v31");
+  uint64_t t;
+  __asm__("ldr d0, [%[p], #48]\n\t"
+          "fmov d1, #16.0\n\t"
+          "ldr d31, [%[p], #8]\n\t"
+          "sub %w[t], %w[n], #17"
+          : "=w"(r0), "=w"(r1), "=w"(r31), [t] "=r"(t)
+          : [p] "r"(&p), [n] "r"(n), "m"(p));
+  h = ShortHead{r0, r1, r31, t};
+}
+SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int32x4_t& S01, int32x4_t& S23,
+                              int32x4_t& S44, float64x2_t& zs01, float64x2_t& zs23, float64x2_t& c01, float64x2_t& c23,
+                              double& zh) {
+  // Contract: n = 17 .. kShortMax, h this span's head (h.idx = n - 17 picks kShortOffs's row;
+  // AsmSpanPerspBatch.EveryPartialLastRunLengthMatchesOnEveryPath draws every such n through
+  // the single entry). One asm block, each operation the vector code's lane operation (the
+  // same bits):
   // positions P_0, P_1 = P_0 + 16 ([P_0, P_1] = pA), pB = pA + [o_0, o_1], pC = (P_1 + 16)
   // + o_2 with o_j = min(32, n - 16 j - 1); zi = zrow + zix pos (fmla, fmadd); the
   // [u, v] products uvrow + uvx pos beside the depth chains; the reciprocals 1 / max(zi,
@@ -303,185 +346,183 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, double zc, int32x4_t& S
   // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
   // for the in-order A53 (a consumer after its producer's latency; its model also completes
   // in order, so each latency gap holds work of the same or shorter latency); the
-  // accumulators are loaded (ld1r, ld2), not copied, and pA, o are merged with trn1 (A72:
-  // latency 3, an element insert 8). zck = zc * -1/16 (the runs' steps below) in a gap too,
+  // accumulators are loaded (ld1r, ld2), not copied, and pA is merged with trn1 (A72:
+  // latency 3, an element insert 8); the offsets o are loaded as doubles (kShortOffs, row
+  // h.idx), not converted. zck = zc * -1/16 (the runs' steps below) in a gap too,
   // and zh = zc * 0.5 (short_rest's, the same bits as the compiler's multiply): zh is zc on
   // entry (one register, not a copy), multiplied after zck's product has read it.
   // Second order: the sums of neighbouring samples' z, zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
   // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
   // (the full runs' curve factors), also in the block (the conversions' latency gaps).
-  double zck;  // zc * -1/16 (the full runs' curve factors), in the block's spare slots
-  // zc in, zc * 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block; the
-  // block's own temporaries use v8 instead).
-  register double rzh __asm__("v31") = zc;
-  register float64x2_t rzs01 __asm__("v0");
-  register float64x2_t rzs23 __asm__("v1");
+  // zck = zc * -1/16 (the full runs' curve factors) in v6 once o_2 is read. zc (dzi) in, zc *
+  // 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block). Only
+  // caller-saved vector registers (no d8 .. d15 saves in the single entry): kMinZi in v5 until
+  // the Newton steps take it, the range test's maximum and the clamp in v4 once o_0, o_1 are
+  // read, the B and C reciprocals in v21, v23 (free once their [u, v] rows are multiplied in).
+  // Its order: bench/order_search.py on the block as qemu cuts it after the single entry's
+  // test (bench/mca_a53_pair/README.md, "the single entry's head").
+  register double rzh __asm__("v31") = h.zc;
+  register float64x2_t rzs01 __asm__("v0") = h.pos;
+  register float64x2_t rzs23 __asm__("v1") = h.sixteen;
   register float64x2_t rc01 __asm__("v3");
   register float64x2_t rc23 __asm__("v16");
   register int32x4_t rS01 __asm__("v5");
   register int32x4_t rS23 __asm__("v19");
   register int32x4_t rS44 __asm__("v7");
   uint64_t t0, t1, t2, t5, t6, t7;
+  // BEGIN short_samples1
   __asm__ volatile(
-      "sub %w[t5], %w[n], #1\n\t"
-      "mov %w[t7], #32\n\t"
-      "sub %w[t6], %w[n], #17\n\t"
-      "ld1r {v26.2d}, [%[p]]\n\t"
-      "cmp %w[t5], #32\n\t"
-      "fmov d1, #16.0\n\t"
-      "ldr d0, [%[p], #48]\n\t"
-      "csel %w[t5], %w[t5], %w[t7], lt\n\t"
-      "cmp %w[t6], #32\n\t"
+      "adrp %[t1], %[tbl]\n\t"
       "add %[t0], %[p], #16\n\t"
-      "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
-      "csel %w[t6], %w[t6], %w[t7], lt\n\t"
+      "add %[t1], %[t1], %[idx], lsl #5\n\t"
       "fadd d2, d0, d1\n\t"
-      "sub %w[t7], %w[n], #33\n\t"
-      "scvtf d5, %w[t6]\n\t"
-      "scvtf d4, %w[t5]\n\t"
+      "ld1r {v26.2d}, [%[p]]\n\t"
+      "ld2r {v16.2d, v17.2d}, [%[p]]\n\t"
+      "ldr q4, [%[t1], #:lo12:%[tbl]]\n\t"
+      "ldr d6, [%[t1], #:lo12:%[tbl]+16]\n\t"
       "trn1 v0.2d, v0.2d, v2.2d\n\t"
-      "fmov d18, #0.5\n\t"
-      "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
-      "fadd d3, d2, d1\n\t"
-      "scvtf d6, %w[t7]\n\t"
-      "trn1 v4.2d, v4.2d, v5.2d\n\t"
-      "ld1r {v8.2d}, [%[km]]\n\t"
-      "fmla v26.2d, v17.2d, v0.2d\n\t"
       "ld2 {v22.2d, v23.2d}, [%[t0]]\n\t"
-      "fadd v7.2d, v0.2d, v4.2d\n\t"
-      "fadd d3, d3, d6\n\t"
-      "ld1r {v27.2d}, [%[p]]\n\t"
+      "fadd d3, d2, d1\n\t"
       "mov %[t5], #0xbfb0000000000000\n\t"
+      "ld1r {v5.2d}, [%[km]]\n\t"
+      "ld1r {v27.2d}, [%[p]]\n\t"
       "fmov v1.2d, #1.0\n\t"
-      "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
-      "fmaxnm v26.2d, v26.2d, v8.2d\n\t"
-      "fmov %d[zck], %[t5]\n\t"
+      "fadd v7.2d, v0.2d, v4.2d\n\t"
+      "fmla v26.2d, v17.2d, v0.2d\n\t"
+      "ld2 {v20.2d, v21.2d}, [%[t0]]\n\t"
+      "fadd d3, d3, d6\n\t"
+      "fmov d6, %[t5]\n\t"
       "fmla v27.2d, v17.2d, v7.2d\n\t"
+      "ld2 {v29.2d, v30.2d}, [%[t0]]\n\t"
+      "fmaxnm v26.2d, v26.2d, v5.2d\n\t"
       "fmadd d28, d17, d3, d16\n\t"
-      "frecpe v2.2d, v26.2d\n\t"
-      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
       "fmla v22.2d, v23.2d, v7.d[0]\n\t"
-      "fmaxnm v27.2d, v27.2d, v8.2d\n\t"
-      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+      "fmla v20.2d, v21.2d, v0.d[1]\n\t"
+      "frecpe v2.2d, v26.2d\n\t"
+      "fmaxnm v27.2d, v27.2d, v5.2d\n\t"
+      "fmov d18, #0.5\n\t"
       "fmov %[t1], d26\n\t"
-      "fmul %d[zck], %d[zh], %d[zck]\n\t"
-      "fmul %d[zh], %d[zh], d18\n\t"
-      "fmaxnm d28, d28, d8\n\t"
+      "fmaxnm d28, d28, d5\n\t"
       "mov %[t2], v26.d[1]\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
-      "frecpe v6.2d, v27.2d\n\t"
-      "fmax v8.2d, v26.2d, v27.2d\n\t"
-      "mov %[t6], v27.d[1]\n\t"
-      "frecpe d4, d28\n\t"
+      "frecpe v21.2d, v27.2d\n\t"
+      "fmax v4.2d, v26.2d, v27.2d\n\t"
+      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
+      "fmul d6, %d[zh], d6\n\t"
       "fmov %[t7], d27\n\t"
-      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
+      "fmul %d[zh], %d[zh], d18\n\t"
+      "frecpe d23, d28\n\t"
+      "mov %[t6], v27.d[1]\n\t"
       "fmul v2.2d, v2.2d, v5.2d\n\t"
+      "ld2 {v18.2d, v19.2d}, [%[t0]]\n\t"
       "fmov %[t0], d28\n\t"
-      "frecps v16.2d, v27.2d, v6.2d\n\t"
-      "fmaxp d8, v8.2d\n\t"
-      "frecps d17, d28, d4\n\t"
+      "frecps v16.2d, v27.2d, v21.2d\n\t"
+      "fmaxp d4, v4.2d\n\t"
+      "frecps d17, d28, d23\n\t"
       "add %[t1], %[t1], #1\n\t"
       "add %[t0], %[t0], #1\n\t"
+      "lsl %[t1], %[t1], #12\n\t"
       "lsl %[t0], %[t0], #12\n\t"
       "add %[t6], %[t6], #1\n\t"
-      "lsl %[t1], %[t1], #12\n\t"
+      "fmul v21.2d, v21.2d, v16.2d\n\t"
+      "fmul d23, d23, d17\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
-      "fmul v6.2d, v6.2d, v16.2d\n\t"
-      "fmul d4, d4, d17\n\t"
-      "fmax d8, d8, d28\n\t"
+      "fmax d4, d4, d28\n\t"
       "add %[t7], %[t7], #1\n\t"
       "add %[t2], %[t2], #1\n\t"
-      "lsl %[t6], %[t6], #12\n\t"
-      "lsl %[t2], %[t2], #12\n\t"
       "lsl %[t7], %[t7], #12\n\t"
-      "frecps v16.2d, v27.2d, v6.2d\n\t"
-      "frecps d17, d28, d4\n\t"
       "clz %[t1], %[t1]\n\t"
+      "lsl %[t6], %[t6], #12\n\t"
+      "frecps v16.2d, v27.2d, v21.2d\n\t"
+      "frecps d17, d28, d23\n\t"
       "clz %[t7], %[t7]\n\t"
+      "clz %[t0], %[t0]\n\t"
+      "lsl %[t2], %[t2], #12\n\t"
       "fmul v2.2d, v2.2d, v5.2d\n\t"
-      "fmul v6.2d, v6.2d, v16.2d\n\t"
       "mov v5.16b, v1.16b\n\t"
-      "fmul d4, d4, d17\n\t"
+      "fmul v21.2d, v21.2d, v16.2d\n\t"
+      "fmul d23, d23, d17\n\t"
       "mov v16.16b, v1.16b\n\t"
-      "clz %[t2], %[t2]\n\t"
       "clz %[t6], %[t6]\n\t"
+      "clz %[t2], %[t2]\n\t"
       "orr %[t7], %[t7], %[t6]\n\t"
       "orr %[t1], %[t1], %[t2]\n\t"
-      "fmov %[t5], d8\n\t"
-      "fmsub d17, d28, d4, d1\n\t"
+      "fmov %[t5], d4\n\t"
       "fmls v5.2d, v26.2d, v2.2d\n\t"
-      "fmls v16.2d, v27.2d, v6.2d\n\t"
+      "fmsub d17, d28, d23, d1\n\t"
+      "fmls v16.2d, v27.2d, v21.2d\n\t"
       "orr %[t1], %[t1], %[t7]\n\t"
-      "clz %[t0], %[t0]\n\t"
       "lsr %[t5], %[t5], #52\n\t"
-      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
-      "fmadd d4, d4, d17, d4\n\t"
       "fmla v2.2d, v2.2d, v5.2d\n\t"
-      "fmla v6.2d, v6.2d, v16.2d\n\t"
+      "fmadd d23, d23, d17, d23\n\t"
+      "fmla v21.2d, v21.2d, v16.2d\n\t"
       "mov v5.16b, v1.16b\n\t"
       "mov v16.16b, v1.16b\n\t"
-      "add %[t5], %[t5], #0x19\n\t"
       "orr %[t1], %[t1], %[t0]\n\t"
+      "add %[t5], %[t5], #0x19\n\t"
       "lsr %[t5], %[t5], #5\n\t"
       "fmla v18.2d, v19.2d, v0.d[0]\n\t"
       "fmls v5.2d, v26.2d, v2.2d\n\t"
-      "fmls v16.2d, v27.2d, v6.2d\n\t"
-      "fmsub d17, d28, d4, d1\n\t"
-      "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+      "fmls v16.2d, v27.2d, v21.2d\n\t"
+      "fmsub d17, d28, d23, d1\n\t"
+      "fmla v29.2d, v30.2d, v3.d[0]\n\t"
       "orr %[t1], %[t1], %[t5]\n\t"
+      "fmla v24.2d, v25.2d, v7.d[1]\n\t"
+      "fmla v21.2d, v21.2d, v16.2d\n\t"
+      "fmadd d23, d23, d17, d23\n\t"
       "fmla v2.2d, v2.2d, v5.2d\n\t"
-      "fmla v6.2d, v6.2d, v16.2d\n\t"
-      "fmadd d4, d4, d17, d4\n\t"
       "tbz %[t1], #6, 2f\n\t"
       "fdiv v2.2d, v1.2d, v26.2d\n\t"
-      "fdiv v6.2d, v1.2d, v27.2d\n\t"
-      "fdiv d4, d1, d28\n\t"
+      "fdiv v21.2d, v1.2d, v27.2d\n\t"
+      "fdiv d23, d1, d28\n\t"
       "2:\n\t"
-      "ext v1.16b, v6.16b, v4.16b, #8\n\t"
-      "fmul v22.2d, v22.2d, v6.d[0]\n\t"
-      "fmul v18.2d, v18.2d, v2.d[0]\n\t"
-      "fmul v24.2d, v24.2d, v6.d[1]\n\t"
-      "fmul v29.2d, v29.2d, v4.d[0]\n\t"
-      "fmul v20.2d, v20.2d, v2.d[1]\n\t"
       "add %[t0], %[p], #56\n\t"
+      "fmul v18.2d, v18.2d, v2.d[0]\n\t"
+      "ext v1.16b, v21.16b, v23.16b, #8\n\t"
+      "fmul v22.2d, v22.2d, v21.d[0]\n\t"
+      "fmul v29.2d, v29.2d, v23.d[0]\n\t"
+      "fmul v20.2d, v20.2d, v2.d[1]\n\t"
+      "fmul v24.2d, v24.2d, v21.d[1]\n\t"
       "fcvtzu v18.2d, v18.2d, #16\n\t"
-      "ext v0.16b, v2.16b, v6.16b, #8\n\t"
+      "ext v0.16b, v2.16b, v21.16b, #8\n\t"
       "fcvtzu v22.2d, v22.2d, #16\n\t"
       "fcvtzu v29.2d, v29.2d, #16\n\t"
       "fcvtzu v20.2d, v20.2d, #16\n\t"
       "fcvtzu v24.2d, v24.2d, #16\n\t"
       "uqxtn v5.2s, v18.2d\n\t"
-      "fadd v0.2d, v2.2d, v0.2d\n\t"
+      "ld1r {v4.2d}, [%[t0]]\n\t"
       "uqxtn v19.2s, v22.2d\n\t"
       "uqxtn v7.2s, v29.2d\n\t"
-      "fadd v1.2d, v6.2d, v1.2d\n\t"
-      "ld1r {v8.2d}, [%[t0]]\n\t"
+      "fadd v0.2d, v2.2d, v0.2d\n\t"
       "uqxtn2 v5.4s, v20.2d\n\t"
-      "fmul v3.2d, v0.2d, %[zck].d[0]\n\t"
+      "fadd v1.2d, v21.2d, v1.2d\n\t"
       "uqxtn2 v19.4s, v24.2d\n\t"
       "uqxtn2 v7.4s, v29.2d\n\t"
-      "umin v5.4s, v5.4s, v8.4s\n\t"
-      "fmul v16.2d, v1.2d, %[zck].d[0]\n\t"
-      "umin v19.4s, v19.4s, v8.4s\n\t"
-      "umin v7.4s, v7.4s, v8.4s"
-      : "=&w"(rzs01), "=&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44), [t0] "=&r"(t0),
-        [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7), [zck] "=&w"(zck), [zh] "+&w"(rzh)
-      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), "m"(p), "m"(kMinZi)
+      "fmul v3.2d, v0.2d, v6.d[0]\n\t"
+      "umin v5.4s, v5.4s, v4.4s\n\t"
+      "fmul v16.2d, v1.2d, v6.d[0]\n\t"
+      "umin v19.4s, v19.4s, v4.4s\n\t"
+      "umin v7.4s, v7.4s, v4.4s"
+      : "+&w"(rzs01), "+&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44),
+        [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7),
+        [zh] "+&w"(rzh)
+      : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [idx] "r"(h.idx), [tbl] "S"(&kShortOffs), "m"(p), "m"(kMinZi)
       : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
-        "v29", "v30", "v8");
+        "v29", "v30");
+  // END short_samples1
   zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
   S01 = rS01, S23 = rS23, S44 = rS44;
   zh = rzh;
 }
-// persp_short_inl<true>'s span with zc (its dzi, or 0 for linear steps) given: the single-span
-// entry's dispatcher (asm/span_persp_fast.cpp) has tested second_order already.
+// persp_short_inl<true>'s span (second order, zc = dzi) with its sample block's head h done
+// (short_head_asm, or the single-span entry's test block).
 SB_INLINE void persp_short_curve(uint8_t* dest, int n, const uint8_t* texels, int64_t width, const PerspSpan& p,
-                                 double zc) {
+                                 const ShortHead& h) {
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
   int32x4_t S01, S23, S44;
   float64x2_t zs01, zs23, c01, c23;
   double zh;  // zc / 2, from the sample block's spare slots
-  short_samples1(p, n, zc, S01, S23, S44, zs01, zs23, c01, c23, zh);
+  short_samples1(p, n, h, S01, S23, S44, zs01, zs23, c01, c23, zh);
   short_rest<true>(dest, runs, last, texels, width, zh, S01, S23, S44, zs01, zs23, c01, c23);
 }
 template <bool kCurve>
@@ -489,7 +530,10 @@ SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int 
   if constexpr (!kCurve) {
     persp_short_lin(dest, n, texels, width, p);  // asm/span_persp_a64lin.h
   } else {
-    persp_short_curve(dest, n, texels, width, p, p.second_order ? p.dzi : 0.0);
+    // Only second-order spans come here (persp_one_c's curve): zc = dzi, the head's.
+    ShortHead h;
+    short_head_asm(p, n, h);
+    persp_short_curve(dest, n, texels, width, p, h);
   }
 }
 // The same, out of line (persp_fast's linear instance keeps a call to it); the

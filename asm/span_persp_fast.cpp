@@ -601,22 +601,32 @@ SB_INLINE bool pairable_a64(const PerspItem& x) {
 // persp_one's first test (the single-span entry): 16 < n <= kShortMax, second order and dzi
 // != 0 (on its bits: NaN and the infinities are non-zero), as one flag chain after the two
 // loads (cmp, two ccmp: no cset / and chain through the A53's 3-cycle integer writebacks).
-SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w64) {
+SB_INLINE bool short_curve_a64(int n, const PerspSpan& p, int width, int64_t& w64, ShortHead& h) {
   static_assert(kShortMax == 64, "the cmp immediate below is kShortMax - 17");
-  uint64_t bits;
-  uint32_t so, t;
+  uint64_t bits, t;
+  uint32_t so;
   bool r;
+  // With the sample block's head (short_head_asm's lines; its n - 17 the test's): ready
+  // when short_samples1 starts. Other spans ignore them.
+  register float64x2_t r0 __asm__("v0"), r1 __asm__("v1");
+  register double r31 __asm__("v31");
+  // BEGIN short_curve_a64 (its order: bench/mca_a53_pair/README.md, "the single entry's head")
   __asm__(
       "ldr %x[b], %[dzi]\n\t"
-      "ldrb %w[so], %[som]\n\t"
       "sub %w[t], %w[n], #17\n\t"
+      "ldrb %w[so], %[som]\n\t"
+      "cmp %w[t], #47\n\t"
       "sxtw %x[w64], %w[w]\n\t"
       "lsl %x[b], %x[b], #1\n\t"
-      "cmp %w[t], #47\n\t"
+      "ldr d0, [%[p], #48]\n\t"
       "ccmp %w[so], #0, #4, ls\n\t"
-      "ccmp %x[b], #0, #4, ne"
-      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [t] "=&r"(t), [w64] "=&r"(w64)
-      : [n] "r"(n), [w] "r"(width), [dzi] "m"(p.dzi), [som] "m"(p.second_order));
+      "fmov d1, #16.0\n\t"
+      "ccmp %x[b], #0, #4, ne\n\t"
+      "ldr d31, [%[p], #8]"
+      : "=@ccne"(r), [b] "=&r"(bits), [so] "=&r"(so), [t] "=&r"(t), [w64] "=&r"(w64), "=w"(r0), "=w"(r1), "=w"(r31)
+      : [n] "r"(n), [w] "r"(width), [dzi] "m"(p.dzi), [som] "m"(p.second_order), [p] "r"(&p), "m"(p));
+  // END short_curve_a64
+  h = ShortHead{r0, r1, r31, t};
   return r;
 }
 // lin_pairs_a64's items: 16 < n <= kShortMax, linear (second_order off or dzi 0), without
@@ -744,8 +754,9 @@ SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width,
   // aarch64 (the single-span entry only): a short second-order span, the three fields tested
   // without branches between (one qemu block, dzi on its integer bits), before the others.
   int64_t w64;  // width, sign-extended in the test's block
-  if (short_curve_a64(n, p, width, w64)) {
-    return persp_short_curve(dest, n, texels, w64, p, p.dzi);
+  ShortHead h;  // the sample block's head, from the test's block too
+  if (short_curve_a64(n, p, width, w64, h)) {
+    return persp_short_curve(dest, n, texels, w64, p, h);
   }
 #endif
   const bool is_short = n > 16 && n <= kShortMax;

@@ -493,8 +493,11 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     ASSERT_EQ(last_a, na - 16 * (runs_a - 1));
     ShortSamples sa, sbb;
     double zha, zhb;  // the single block's zc / 2: dzi * 0.5's bits
-    sb::simd::short_samples1(a, na, a.dzi, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23, zha);
-    sb::simd::short_samples1(b, nb, b.dzi, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23, zhb);
+    sb::simd::ShortHead ha, hb;  // the single block's head (the single entry's test block does the same)
+    sb::simd::short_head_asm(a, na, ha);
+    sb::simd::short_samples1(a, na, ha, sa.S01, sa.S23, sa.S44, sa.zs01, sa.zs23, sa.c01, sa.c23, zha);
+    sb::simd::short_head_asm(b, nb, hb);
+    sb::simd::short_samples1(b, nb, hb, sbb.S01, sbb.S23, sbb.S44, sbb.zs01, sbb.zs23, sbb.c01, sbb.c23, zhb);
     const double wha = a.dzi * 0.5, whb = b.dzi * 0.5;
     ASSERT_EQ(std::memcmp(&zha, &wha, 8), 0);
     ASSERT_EQ(std::memcmp(&zhb, &whb, 8), 0);
