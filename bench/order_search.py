@@ -159,7 +159,7 @@ def parse_v7(l):
     toks = [t for t in re.findall(r"[a-z]+\d*(?:\[\d\])?", rest) if v7_regs(t)]
     allr = [v7_regs(t) for t in toks]
     memm = re.search(r"\[([^\]]*)\]", rest)
-    post = "!" in rest
+    post = "!" in rest or (memm is not None and "," in rest[memm.end():])  # [rN]! or post-index [rN], #k
     inside = set().union(*[v7_regs(t) for t in re.findall(r"[a-z]+\d*", memm.group(1))]) if memm else set()
     base = op.split(".")[0]
     is_store = base in ("str", "strd", "strb", "vst1", "vst2", "vst3", "vst4", "vstr", "strh")

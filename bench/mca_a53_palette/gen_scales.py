@@ -153,6 +153,25 @@ def gen_v7(scale):
     return out
 
 
+# Scale 1 on ARMv7: 8 pixels an iteration, the indices as two core loads (the rows have no
+# alignment), 8 extracts (the index words reused for pixels 3 and 7), 8 palette loads into core
+# registers, 4 strd (dst is word-aligned: uint32_t). r0 dst, r9 indices, r10 their end, r8 the
+# palette; scratch r1 .. r6, ip, lr.
+def gen_v7_scale1():
+    out = ["ldr r4, [r9, #4] @m=src", "ldr r3, [r9], #8 @m=src"]
+    regs = ["r5", "r6", "r1", "r3", "r2", "ip", "lr", "r4"]
+    ex = []
+    for p in range(8):
+        w, i, d = ("r3" if p < 4 else "r4"), p % 4, regs[p]
+        ex.append(f"uxtb {d}, {w}" if i == 0 else f"lsr {d}, {w}, #24" if i == 3 else f"ubfx {d}, {w}, #{8 * i}, #8")
+    out += [e for k, e in enumerate(ex) if k not in (3, 7)] + [ex[3], ex[7]]
+    out += [f"ldr {r}, [r8, {r}, lsl #2] @m=pal" for r in regs]
+    out += [f"strd {regs[2 * k]}, {regs[2 * k + 1]}, [r0, #{8 * k}] @m=dst" for k in range(4)]
+    out += ["add r0, r0, #32", "cmp r9, r10", "bne 1b"]
+    return out
+
+
 if __name__ == "__main__" and "--v7" in sys.argv:
+    open("v7scale1_in.s", "w").write("\n".join(gen_v7_scale1()) + "\n")
     for s in (2, 3, 4):
         open(f"v7scale{s}_in.s", "w").write("\n".join(gen_v7(s)) + "\n")
