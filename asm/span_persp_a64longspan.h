@@ -272,9 +272,16 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
                          pack_steps(lv.dd, lu.dd));
         return;
       }
-      // Otherwise run r with the steps in its stage slots, one a group.
-      Run16<true> run(s0.u, s0.v, su, sv);
-      run.draw(dest, texels, w, step);
+      // Otherwise (last = 1 .. 15) the steps first, then run r and the last run as one asm
+      // block: runs_k3 (asm/span_persp_a64mid.h; its d is the span's pixel 32 before run r:
+      // it writes d[32 .. 47 + last] only), run r from the loop's packed c0, dp, ddp (as
+      // short_pass takes it above), the last run packed as Run16 packs it.
+      step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
+      step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
+      step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
+      runs_k3(dest - 32, texels, uint64_t(width), last, st.c0, dp, uint64_t(ddp),
+              uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
+      return;
     }
     dest += 16;
     draw_last<true>(dest, last, texels, w, uint32_t(t1.u), uint32_t(t1.v), uint32_t(lu.d), uint32_t(lv.d),
