@@ -100,6 +100,114 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
         "v22", "v23", "v24", "v25", "cc");
 }
 
+// The left <= 32 tail's last-run steps (last < 16) as one asm block with fixed scratch
+// registers (x3 - x5, x9 - x17, x19, v16 - v23), in an order from bench/order_search.py
+// (bench/mca_a53_persp/tail1_steps.s, written in by tail1_inline.py there): the step groups 0 ..
+// 6 of persp_long_a64_inl's tail (du, dv the last run's deltas, y = kRecipSteps[s], sf =
+// double(s), s = max(steps, 1), z1, z2 its two depths, zh = zc / 2) then last_steps_ddi's
+// operations (asm/span_persp_arm.h; s, T = steps (steps - 1) / 2, s - 1 and the steps > 1 mask
+// computed here from steps); outputs the last run's steps lu = {l_u, dd_u}, lv = {l_v, dd_v}.
+SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double sf, double z1, double z2, double zh,
+                           int32_t& l_u, int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
+  // du, dv in registers the code after the asm (runs_k3) does not write: where qemu cuts the
+  // two into one block, llvm-mca times it as a loop, and an input written later in the block
+  // is a false loop-carried dependence (the Cortex-A57 model then runs the block as one
+  // chain: persp192 A72 5.670 with GCC's choice, 5.625 with these).
+  register int32_t r_du __asm__("x27") = du;
+  register int32_t r_dv __asm__("x28") = dv;
+  __asm__(
+      // BEGIN tail1_steps
+      "cmp %w[st], #1\n\t"
+      "scvtf d16, %w[du]\n\t"
+      "scvtf d17, %w[dv]\n\t"
+      "mov w13, #0xc9ff\n\t"
+      "sub w11, %w[st], #1\n\t"
+      "csinc w9, %w[st], wzr, gt\n\t"
+      "fadd d20, %d[z1], %d[z2]\n\t"
+      "fmul d18, d16, %d[y]\n\t"
+      "mul w11, w11, %w[st]\n\t"
+      "fmul d19, d17, %d[y]\n\t"
+      "fmul d20, %d[zh], d20\n\t"
+      "fmov d23, #-2.0\n\t"
+      "fmsub d21, d18, %d[sf], d16\n\t"
+      "fmsub d22, d19, %d[sf], d17\n\t"
+      "fmul d20, d20, d23\n\t"
+      "csetm w10, gt\n\t"
+      "sub w12, w9, #1\n\t"
+      "fmadd d18, d21, %d[y], d18\n\t"
+      "fmadd d19, d22, %d[y], d19\n\t"
+      "fmul d21, d18, d20\n\t"
+      "fcvtzs %w[lu], d18\n\t"
+      "fmul d22, d19, d20\n\t"
+      "fcvtzs %w[ddu], d21\n\t"
+      "fcvtzs %w[lv], d19\n\t"
+      "fcvtzs %w[ddv], d22\n\t"
+      "mov w14, #0x93ff\n\t"
+      "movk w13, #0x3b9a, lsl #16\n\t"
+      "add w15, %w[ddu], w13\n\t"
+      "movk w14, #0x7735, lsl #16\n\t"
+      "lsr w11, w11, #1\n\t"
+      "cmp w15, w14\n\t"
+      "asr w3, %w[du], #31\n\t"
+      "add w16, %w[ddv], w13\n\t"
+      "csel %w[ddu], %w[ddu], wzr, lo\n\t"
+      "cmp w16, w14\n\t"
+      "and %w[ddu], %w[ddu], w10\n\t"
+      "eor w17, %w[lu], w3\n\t"
+      "asr w5, %w[ddu], #31\n\t"
+      "asr w4, %w[dv], #31\n\t"
+      "sub w17, w17, w3\n\t"
+      "csel %w[ddv], %w[ddv], wzr, lo\n\t"
+      "eor w14, %w[dv], w4\n\t"
+      "eor w13, %w[du], w3\n\t"
+      "and %w[ddv], %w[ddv], w10\n\t"
+      "eor w15, %w[ddu], w5\n\t"
+      "asr w10, %w[ddv], #31\n\t"
+      "eor w16, %w[ddv], w10\n\t"
+      "sub w15, w15, w5\n\t"
+      "sub w16, w16, w10\n\t"
+      "eor w10, %w[ddv], w4\n\t"
+      "eor w5, %w[ddu], w3\n\t"
+      "sub w10, w10, w4\n\t"
+      "eor w19, %w[lv], w4\n\t"
+      "sub w13, w13, w3\n\t"
+      "sub w19, w19, w4\n\t"
+      "sub w5, w5, w3\n\t"
+      "umsubl x15, w15, w11, x13\n\t"
+      "sub w14, w14, w4\n\t"
+      "msub w13, w9, w17, w13\n\t"
+      "mul w10, w12, w10\n\t"
+      "umsubl x16, w16, w11, x14\n\t"
+      "cmp w9, w13, lsl #1\n\t"
+      "msub w14, w9, w19, w14\n\t"
+      "sub w19, w19, w10, asr #1\n\t"
+      "mul w5, w12, w5\n\t"
+      "cset w13, hi\n\t"
+      "cmp w9, w14, lsl #1\n\t"
+      "sub w17, w17, w5, asr #1\n\t"
+      "and w13, w13, w5\n\t"
+      "sub w17, w17, w13\n\t"
+      "cset w14, hi\n\t"
+      "eor w17, w17, w3\n\t"
+      "and w14, w14, w10\n\t"
+      "cmp x15, #0\n\t"
+      "sub w19, w19, w14\n\t"
+      "eor w19, w19, w4\n\t"
+      "csel %w[ddu], wzr, %w[ddu], lt\n\t"
+      "sub w17, w17, w3\n\t"
+      "csel %w[lu], %w[lu], w17, lt\n\t"
+      "cmp x16, #0\n\t"
+      "sub w19, w19, w4\n\t"
+      "csel %w[lv], %w[lv], w19, lt\n\t"
+      "csel %w[ddv], wzr, %w[ddv], lt"
+      // END tail1_steps
+      : [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
+      : [du] "r"(r_du), [dv] "r"(r_dv), [st] "r"(steps), [y] "w"(y), [sf] "w"(sf), [z1] "w"(z1), [z2] "w"(z2),
+        [zh] "w"(zh)
+      : "x3", "x4", "x5", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x19", "v16", "v17",
+        "v18", "v19", "v20", "v21", "v22", "v23", "cc");
+}
+
 // aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
 // samples, steps and runs with its passes as one asm block (asm/span_persp_a64long.h: the
 // first samples in 2-lane vectors, each lane persp_fast's scalar operation, the same bits:
@@ -272,9 +380,15 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
                          pack_steps(lv.dd, lu.dd));
         return;
       }
-      // Otherwise run r with the steps in its stage slots, one a group.
-      Run16<true> run(s0.u, s0.v, su, sv);
-      run.draw(dest, texels, w, step);
+      // Otherwise (last = 1 .. 15) the steps first, then run r and the last run as one asm
+      // block: runs_k3 (asm/span_persp_a64mid.h; its d is the span's pixel 32 before run r:
+      // it writes d[32 .. 47 + last] only), run r from the loop's packed c0, dp, ddp (as
+      // short_pass takes it above), the last run packed as Run16 packs it.
+      tail1_steps(du, dv, steps, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, lnu, lnv, ddu, ddv);
+      lu = RunSteps{lnu, ddu}, lv = RunSteps{lnv, ddv};
+      runs_k3(dest - 32, texels, uint64_t(width), last, st.c0, dp, uint64_t(ddp),
+              uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
+      return;
     }
     dest += 16;
     draw_last<true>(dest, last, texels, w, uint32_t(t1.u), uint32_t(t1.v), uint32_t(lu.d), uint32_t(lv.d),
