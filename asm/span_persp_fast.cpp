@@ -213,6 +213,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if constexpr (kFixed16) {
       // double(s1.u - s0.u) as double(s1.u) - double(s0.u) (both in [0, 2^31): exact, the
       // same bits), converted from the clamped VFP registers (no trip through the core).
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kLong) {  // the low lanes' int32 difference converted (exact: the same value)
+        fu = v7_cvt_lo(v7_sub_lo(pu1, pu0)), fv = v7_cvt_lo(v7_sub_lo(pv1, pv0));
+      } else
+#endif
       fu = ufixed16_f64(pu1) - ufixed16_f64(pu0), fv = ufixed16_f64(pv1) - ufixed16_f64(pv0);
     } else {
       fu = double(du), fv = double(dv);
