@@ -164,6 +164,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       s0 = sample(P, z0), s1 = sample(P + double(16), z1);
     }
   };
+#if defined(SB_V7_NEON_STEPS)
+  // persp_long_run_v7's instance: (urow + ux pos) of samples 2 and 3 (tu2 .. tv3 below),
+  // computed before their divides (the in-order FP pipe has free slots there).
+  double etu2 = 0.0, etv2 = 0.0, etu3 = 0.0, etv3 = 0.0;
+#endif
   if (n > 32) {  // ARMv7: the four clamps branch-free, the four divides back to back
     pos2 = P + double(32);
     pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
@@ -175,6 +180,12 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       double p2 = pos2, p3 = pos3;
       pin7(p2), pin7(p3);
       const double zi2 = max_or_lo_sel(zrow + zix * p2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * p3, kMinZi);
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kLong) {
+        etu2 = urow + ux * p2, etv2 = vrow + vx * p2, etu3 = urow + ux * p3, etv3 = vrow + vx * p3;
+        pin7(etu2), pin7(etv2), pin7(etu3), pin7(etv3);
+      }
+#endif
       z2 = recip7(zi2), z3 = recip7(zi3);
     } else {
       const double zi2 = max_or_lo_sel(zrow + zix * pos2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * pos3, kMinZi);
@@ -199,7 +210,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
   if constexpr (kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+#if defined(SB_V7_NEON_STEPS)
+  if constexpr (kLong) etu2 = urow + ux * pos2, etv2 = vrow + vx * pos2, etu3 = urow + ux * pos3, etv3 = vrow + vx * pos3;
+#endif
   }
+#if defined(SB_V7_NEON_STEPS)
+  // persp_long_run_v7's instance: samples 2, 3 converted (below).
+  double eq2u = 0.0, eq2v = 0.0, eq3u = 0.0, eq3v = 0.0;
+#endif
 #if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__)
   RunSteps su, sv;
   if constexpr (kCurve) {
@@ -223,9 +241,30 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       fu = double(du), fv = double(dv);
     }
     pin7(fu), pin7(fv);
+#if defined(SB_V7_NEON_STEPS)
+    // persp_long_run_v7's instance: samples 2 and 3 converted (cq2u .. cq3v, tu2 .. tv3
+    // below) step by step between these steps' dependent operations (the in-order FP pipe
+    // waits on each of them otherwise); tu2 .. tv3 computed before the divides.
+    if constexpr (kLong) {
+      eq2u = etu2 * z2, eq2v = etv2 * z2, eq3u = etu3 * z3, eq3v = etv3 * z3;
+      pin7(eq2u), pin7(eq2v), pin7(eq3u), pin7(eq3v);
+    }
+#endif
     fu = fu * c0, fv = fv * c0;
     pin7(fu), pin7(fv);
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kLong) {
+      eq2u = cvt_ufixed16(eq2u), eq2v = cvt_ufixed16(eq2v), eq3u = cvt_ufixed16(eq3u), eq3v = cvt_ufixed16(eq3v);
+      pin7(eq2u), pin7(eq2v), pin7(eq3u), pin7(eq3v);
+    }
+#endif
     steps16_dd_uv_ordered(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kLong) {
+      eq2u = min_ufixed16(eq2u, kUmax), eq2v = min_ufixed16(eq2v, kVmax);
+      eq3u = min_ufixed16(eq3u, kUmax), eq3v = min_ufixed16(eq3v, kVmax);
+    }
+#endif
   } else {
     su = steps16<kCurve>(s0.u, s1.u, 0.0), sv = steps16<kCurve>(s0.v, s1.v, 0.0);
   }
@@ -248,7 +287,12 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // (delta / 16 * curve, or the * -2) overflows in both forms at the same rounding point.
   const double zck = zc * -0.0625;
   // (urow + ux * pos) of samples 2 and 3: the first half of sample(), one pass ahead.
+#if defined(SB_V7_NEON_STEPS)
+  double tu2 = etu2, tv2 = etv2, tu3 = etu3, tv3 = etv3;
+  if constexpr (!kLong) tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+#else
   double tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+#endif
   // The runs' register state set up in the group before them (the second run's only on
   // 64-bit targets: armhf runs out of registers).
 #if defined(SB_SPAN_PACKED)
@@ -262,10 +306,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
   // converted in its second run; so the first run starts its steps' chains at once.
   double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
-  if constexpr (kCurve && kLong) {
-    cq2u = min_ufixed16(cvt_ufixed16(tu2 * z2), kUmax), cq2v = min_ufixed16(cvt_ufixed16(tv2 * z2), kVmax);
-    cq3u = min_ufixed16(cvt_ufixed16(tu3 * z3), kUmax), cq3v = min_ufixed16(cvt_ufixed16(tv3 * z3), kVmax);
-  }
+  if constexpr (kCurve && kLong) cq2u = eq2u, cq2v = eq2v, cq3u = eq3u, cq3v = eq3v;  // converted above
 #endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
