@@ -540,49 +540,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
   // last run that is sample r + 1 itself, which the walker does not recompute).
 #if defined(__arm__) && !defined(__aarch64__)
-  {
-    // ARMv7: the last sample, and (second order) its steps' quotients, computed beside run r
-    // (stage slots), so that the modelled Cortex-A9's in-order FP pipe stalls on them less;
-    // the same operations as the code below (other targets).
-    const int last = left - 16, steps = last - 1;
-    RunSteps lu, lv;
-    Sample s2 = s1;
-    Run16<kCurve> run(s0.u, s0.v, su, sv);
-    int32_t du = 0, dv = 0, iu = 0, iv = 0, lu0 = 0, lv0 = 0;
-    double qu = 0.0, qv = 0.0, curve = 0.0;
-    run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
-      constexpr int G = decltype(g)::value;
-      if constexpr (G == 0) {
-        // Field by field (a select of the structs made GCC keep s1 in memory, stored in
-        // every pass).
-        const Sample t = sample2();
-        const bool has2 = steps > 0;
-        s2.u = has2 ? t.u : s1.u, s2.v = has2 ? t.v : s1.v, s2.z = has2 ? t.z : s1.z;
-      } else if constexpr (G == 1) {
-        du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
-        qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
-        pin7(qu), pin7(qv);
-        if constexpr (kCurve) curve = zc * 0.5 * (s1.z + s2.z), pin7(curve);
-      } else if constexpr (G == 7 && kCurve) {
-        iu = last_ddi(qu, curve), iv = last_ddi(qv, curve);
-        lu0 = int32_t(qu), lv0 = int32_t(qv);
-        pin7(iu), pin7(iv), pin7(lu0), pin7(lv0);
-      } else if constexpr (G == 9 && kCurve) {
-        last_steps_i(steps, du, dv, lu0, lv0, iu, iv, &lu, &lv);
-      } else if constexpr (G == 9) {
-        // Linear: run_steps' delta / steps truncated is trunc(qu) (see last_steps_q); a
-        // one-pixel last run (steps 0) has s2 = s1, delta 0: steps 0, as run_steps gives.
-        lu = RunSteps{int32_t(qu), 0}, lv = RunSteps{int32_t(qv), 0};
-      }
-    });
-    dest += 16;
-    if (last == 16) {
-      draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
-    } else {
-      draw_last<kCurve, kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
-                                uint32_t(lu.dd), uint32_t(lv.dd));
-    }
-  }
+#include "asm/span_persp_fast_v7last.inc"  // run r and the last run (ARMv7)
 #else
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
