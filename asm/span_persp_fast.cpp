@@ -966,6 +966,7 @@ __attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it
                                                              const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
+    if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)
     persp_fast<true, true>(st[0]->dest, st[0]->n, texels, width, st[0]->span);
     __asm__("" : "+m"(st));
     ++st[0];
