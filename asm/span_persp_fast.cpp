@@ -70,7 +70,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // branch-free (one block per pass).
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double umaxd = double(p.umax), vmaxd = double(p.vmax);
-  const double zc = p.second_order ? zix : 0.0;
+  double zc = p.second_order ? zix : 0.0;  // (persp_long_run_v7's instance: pinned below)
   const uint32_t w = uint32_t(width);
   const double kUmax = bound16(p.umax), kVmax = bound16(p.vmax);
   auto sample = [&](double px, double z) {
@@ -177,6 +177,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       // The divides in this order (volatile asm), samples 2 and 3's depths computed after
       // the first two divides are issued (pinned positions): those start earlier.
       z0 = recip7(zi0), z1 = recip7(zi1);
+#if defined(SB_V7_NEON_STEPS)
+      // persp_long_run_v7's instance: zc's products (zc / 2, zck) after the first divides
+      // (the compiler computed and stored them first, delaying the divides).
+      if constexpr (kLong) pin7(zc);
+#endif
       double p2 = pos2, p3 = pos3;
       pin7(p2), pin7(p3);
       const double zi2 = max_or_lo_sel(zrow + zix * p2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * p3, kMinZi);
