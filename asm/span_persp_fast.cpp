@@ -152,9 +152,17 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       const double tu0 = urow + ux * P, tv0 = vrow + vx * P, tu1 = urow + ux * P1, tv1 = vrow + vx * P1;
       pu0 = tu0 * z0, pv0 = tv0 * z0;
       pin7(pu0), pin7(pv0);
-      pu1 = tu1 * z1, pv1 = tv1 * z1, c0p = (zc * -0.0625) * (z0 + z1);
+      pu1 = tu1 * z1, pv1 = tv1 * z1;
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (!kLong) c0p = (zc * -0.0625) * (z0 + z1);
+#else
+      c0p = (zc * -0.0625) * (z0 + z1);
+#endif
       pin7(pu1), pin7(pv1);
       pu0 = cvt_ufixed16(pu0), pv0 = cvt_ufixed16(pv0), pu1 = cvt_ufixed16(pu1), pv1 = cvt_ufixed16(pv1);
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kLong) c0p = (zc * -0.0625) * (z0 + z1);  // after (the pipe waited on it)
+#endif
       pu0 = min_ufixed16(pu0, kUmax), pv0 = min_ufixed16(pv0, kVmax);
       pu1 = min_ufixed16(pu1, kUmax), pv1 = min_ufixed16(pv1, kVmax);
       pin7(pu0), pin7(pv0), pin7(pu1), pin7(pv1);
