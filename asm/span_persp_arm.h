@@ -342,10 +342,8 @@ SB_INLINE void last_steps_q(int steps, int32_t du, int32_t dv, double qu, double
 // iff |i| < 1e9 (trunc keeps |ddf| < 1e9 below 1e9 and 1e9 and more at 1e9 or more, or
 // saturated), i = 0 for NaN, and dd = 0 gives last_dd's linear result as a rejection does
 // (T 0 <= pd accepts, m = 0, d0 = Q). (AsmSpanPersp.LastRunStepsMatchTheWalker checks it.)
-SB_INLINE int32_t last_ddi(double q, double curve) {
-  const int32_t i = cvt_sat(-2.0 * (q * curve));
-  return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0;
-}
+SB_INLINE int32_t last_ddi_tail(int32_t i) { return (uint32_t(i) + 999999999u < 1999999999u) ? i : 0; }
+SB_INLINE int32_t last_ddi(double q, double curve) { return last_ddi_tail(cvt_sat(-2.0 * (q * curve))); }
 SB_INLINE void last_steps_i(int steps, int32_t du, int32_t dv, int32_t lu, int32_t lv, int32_t iu, int32_t iv,
                             RunSteps* su, RunSteps* sv) {
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;

@@ -70,7 +70,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // branch-free (one block per pass).
   const double zrow = p.zi0, zix = p.dzi, urow = p.uz0, ux = p.duz, vrow = p.vz0, vx = p.dvz;
   const double umaxd = double(p.umax), vmaxd = double(p.vmax);
-  const double zc = p.second_order ? zix : 0.0;
+  double zc = p.second_order ? zix : 0.0;  // (persp_long_run_v7's instance: pinned below)
   const uint32_t w = uint32_t(width);
   const double kUmax = bound16(p.umax), kVmax = bound16(p.vmax);
   auto sample = [&](double px, double z) {
@@ -152,9 +152,17 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       const double tu0 = urow + ux * P, tv0 = vrow + vx * P, tu1 = urow + ux * P1, tv1 = vrow + vx * P1;
       pu0 = tu0 * z0, pv0 = tv0 * z0;
       pin7(pu0), pin7(pv0);
-      pu1 = tu1 * z1, pv1 = tv1 * z1, c0p = (zc * -0.0625) * (z0 + z1);
+      pu1 = tu1 * z1, pv1 = tv1 * z1;
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (!kLong) c0p = (zc * -0.0625) * (z0 + z1);
+#else
+      c0p = (zc * -0.0625) * (z0 + z1);
+#endif
       pin7(pu1), pin7(pv1);
       pu0 = cvt_ufixed16(pu0), pv0 = cvt_ufixed16(pv0), pu1 = cvt_ufixed16(pu1), pv1 = cvt_ufixed16(pv1);
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kLong) c0p = (zc * -0.0625) * (z0 + z1);  // after (the pipe waited on it)
+#endif
       pu0 = min_ufixed16(pu0, kUmax), pv0 = min_ufixed16(pv0, kVmax);
       pu1 = min_ufixed16(pu1, kUmax), pv1 = min_ufixed16(pv1, kVmax);
       pin7(pu0), pin7(pv0), pin7(pu1), pin7(pv1);
@@ -164,6 +172,11 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       s0 = sample(P, z0), s1 = sample(P + double(16), z1);
     }
   };
+#if defined(SB_V7_NEON_STEPS)
+  // persp_long_run_v7's instance: (urow + ux pos) of samples 2 and 3 (tu2 .. tv3 below),
+  // computed before their divides (the in-order FP pipe has free slots there).
+  double etu2 = 0.0, etv2 = 0.0, etu3 = 0.0, etv3 = 0.0;
+#endif
   if (n > 32) {  // ARMv7: the four clamps branch-free, the four divides back to back
     pos2 = P + double(32);
     pos3 = (P + double(16)) + double(n - 17 < 32 ? n - 17 : 32);
@@ -172,9 +185,20 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
       // The divides in this order (volatile asm), samples 2 and 3's depths computed after
       // the first two divides are issued (pinned positions): those start earlier.
       z0 = recip7(zi0), z1 = recip7(zi1);
+#if defined(SB_V7_NEON_STEPS)
+      // persp_long_run_v7's instance: zc's products (zc / 2, zck) after the first divides
+      // (the compiler computed and stored them first, delaying the divides).
+      if constexpr (kLong) pin7(zc);
+#endif
       double p2 = pos2, p3 = pos3;
       pin7(p2), pin7(p3);
       const double zi2 = max_or_lo_sel(zrow + zix * p2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * p3, kMinZi);
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kLong) {
+        etu2 = urow + ux * p2, etv2 = vrow + vx * p2, etu3 = urow + ux * p3, etv3 = vrow + vx * p3;
+        pin7(etu2), pin7(etv2), pin7(etu3), pin7(etv3);
+      }
+#endif
       z2 = recip7(zi2), z3 = recip7(zi3);
     } else {
       const double zi2 = max_or_lo_sel(zrow + zix * pos2, kMinZi), zi3 = max_or_lo_sel(zrow + zix * pos3, kMinZi);
@@ -199,7 +223,14 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     recip2(zrow + zix * pos2, zrow + zix * pos2, &z2, &z3);
   }
   if constexpr (kDivFirst) s0 = sample(P, z0), s1 = sample(P + double(16), z1);
+#if defined(SB_V7_NEON_STEPS)
+  if constexpr (kLong) etu2 = urow + ux * pos2, etv2 = vrow + vx * pos2, etu3 = urow + ux * pos3, etv3 = vrow + vx * pos3;
+#endif
   }
+#if defined(SB_V7_NEON_STEPS)
+  // persp_long_run_v7's instance: samples 2, 3 converted (below).
+  double eq2u = 0.0, eq2v = 0.0, eq3u = 0.0, eq3v = 0.0;
+#endif
 #if defined(__arm__) && !defined(__aarch64__) && defined(__GNUC__)
   RunSteps su, sv;
   if constexpr (kCurve) {
@@ -213,14 +244,40 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     if constexpr (kFixed16) {
       // double(s1.u - s0.u) as double(s1.u) - double(s0.u) (both in [0, 2^31): exact, the
       // same bits), converted from the clamped VFP registers (no trip through the core).
+#if defined(SB_V7_NEON_STEPS)
+      if constexpr (kLong) {  // the low lanes' int32 difference converted (exact: the same value)
+        fu = v7_cvt_lo(v7_sub_lo(pu1, pu0)), fv = v7_cvt_lo(v7_sub_lo(pv1, pv0));
+      } else
+#endif
       fu = ufixed16_f64(pu1) - ufixed16_f64(pu0), fv = ufixed16_f64(pv1) - ufixed16_f64(pv0);
     } else {
       fu = double(du), fv = double(dv);
     }
     pin7(fu), pin7(fv);
+#if defined(SB_V7_NEON_STEPS)
+    // persp_long_run_v7's instance: samples 2 and 3 converted (cq2u .. cq3v, tu2 .. tv3
+    // below) step by step between these steps' dependent operations (the in-order FP pipe
+    // waits on each of them otherwise); tu2 .. tv3 computed before the divides.
+    if constexpr (kLong) {
+      eq2u = etu2 * z2, eq2v = etv2 * z2, eq3u = etu3 * z3, eq3v = etv3 * z3;
+      pin7(eq2u), pin7(eq2v), pin7(eq3u), pin7(eq3v);
+    }
+#endif
     fu = fu * c0, fv = fv * c0;
     pin7(fu), pin7(fv);
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kLong) {
+      eq2u = cvt_ufixed16(eq2u), eq2v = cvt_ufixed16(eq2v), eq3u = cvt_ufixed16(eq3u), eq3v = cvt_ufixed16(eq3v);
+      pin7(eq2u), pin7(eq2v), pin7(eq3u), pin7(eq3v);
+    }
+#endif
     steps16_dd_uv_ordered(du, cvt_sat(fu), dv, cvt_sat(fv), &su, &sv);
+#if defined(SB_V7_NEON_STEPS)
+    if constexpr (kLong) {
+      eq2u = min_ufixed16(eq2u, kUmax), eq2v = min_ufixed16(eq2v, kVmax);
+      eq3u = min_ufixed16(eq3u, kUmax), eq3v = min_ufixed16(eq3v, kVmax);
+    }
+#endif
   } else {
     su = steps16<kCurve>(s0.u, s1.u, 0.0), sv = steps16<kCurve>(s0.v, s1.v, 0.0);
   }
@@ -243,7 +300,12 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // (delta / 16 * curve, or the * -2) overflows in both forms at the same rounding point.
   const double zck = zc * -0.0625;
   // (urow + ux * pos) of samples 2 and 3: the first half of sample(), one pass ahead.
+#if defined(SB_V7_NEON_STEPS)
+  double tu2 = etu2, tv2 = etv2, tu3 = etu3, tv3 = etv3;
+  if constexpr (!kLong) tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+#else
   double tu2 = urow + ux * pos2, tv2 = vrow + vx * pos2, tu3 = urow + ux * pos3, tv3 = vrow + vx * pos3;
+#endif
   // The runs' register state set up in the group before them (the second run's only on
   // 64-bit targets: armhf runs out of registers).
 #if defined(SB_SPAN_PACKED)
@@ -257,10 +319,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
   // converted in its second run; so the first run starts its steps' chains at once.
   double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
-  if constexpr (kCurve && kLong) {
-    cq2u = min_ufixed16(cvt_ufixed16(tu2 * z2), kUmax), cq2v = min_ufixed16(cvt_ufixed16(tv2 * z2), kVmax);
-    cq3u = min_ufixed16(cvt_ufixed16(tu3 * z3), kUmax), cq3v = min_ufixed16(cvt_ufixed16(tv3 * z3), kVmax);
-  }
+  if constexpr (kCurve && kLong) cq2u = eq2u, cq2v = eq2v, cq3u = eq3u, cq3v = eq3v;  // converted above
 #endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -494,49 +553,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // which ends at the span's last pixel, sample r + 2 (pos2 = P_r + left - 1; for a one-pixel
   // last run that is sample r + 1 itself, which the walker does not recompute).
 #if defined(__arm__) && !defined(__aarch64__)
-  {
-    // ARMv7: the last sample, and (second order) its steps' quotients, computed beside run r
-    // (stage slots), so that the modelled Cortex-A9's in-order FP pipe stalls on them less;
-    // the same operations as the code below (other targets).
-    const int last = left - 16, steps = last - 1;
-    RunSteps lu, lv;
-    Sample s2 = s1;
-    Run16<kCurve> run(s0.u, s0.v, su, sv);
-    int32_t du = 0, dv = 0, iu = 0, iv = 0, lu0 = 0, lv0 = 0;
-    double qu = 0.0, qv = 0.0, curve = 0.0;
-    run.draw(dest, texels, w, [&](auto g) SB_LAMBDA_INLINE {
-      constexpr int G = decltype(g)::value;
-      if constexpr (G == 0) {
-        // Field by field (a select of the structs made GCC keep s1 in memory, stored in
-        // every pass).
-        const Sample t = sample2();
-        const bool has2 = steps > 0;
-        s2.u = has2 ? t.u : s1.u, s2.v = has2 ? t.v : s1.v, s2.z = has2 ? t.z : s1.z;
-      } else if constexpr (G == 1) {
-        du = s2.u - s1.u, dv = s2.v - s1.v;  // 0 <= u, v < 2^31: no overflow
-        qu = last_quotient(steps, du), qv = last_quotient(steps, dv);
-        pin7(qu), pin7(qv);
-        if constexpr (kCurve) curve = zc * 0.5 * (s1.z + s2.z), pin7(curve);
-      } else if constexpr (G == 7 && kCurve) {
-        iu = last_ddi(qu, curve), iv = last_ddi(qv, curve);
-        lu0 = int32_t(qu), lv0 = int32_t(qv);
-        pin7(iu), pin7(iv), pin7(lu0), pin7(lv0);
-      } else if constexpr (G == 9 && kCurve) {
-        last_steps_i(steps, du, dv, lu0, lv0, iu, iv, &lu, &lv);
-      } else if constexpr (G == 9) {
-        // Linear: run_steps' delta / steps truncated is trunc(qu) (see last_steps_q); a
-        // one-pixel last run (steps 0) has s2 = s1, delta 0: steps 0, as run_steps gives.
-        lu = RunSteps{int32_t(qu), 0}, lv = RunSteps{int32_t(qv), 0};
-      }
-    });
-    dest += 16;
-    if (last == 16) {
-      draw16<kCurve>(dest, texels, w, s1.u, s1.v, lu, lv);
-    } else {
-      draw_last<kCurve, kCurve>(dest, last, texels, w, uint32_t(s1.u), uint32_t(s1.v), uint32_t(lu.d), uint32_t(lv.d),
-                                uint32_t(lu.dd), uint32_t(lv.dd));
-    }
-  }
+#include "asm/span_persp_fast_v7last.inc"  // run r and the last run (ARMv7)
 #else
   draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
   dest += 16;
@@ -973,6 +990,7 @@ __attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it
                                                              const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
+    if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)
     persp_fast<true, true>(st[0]->dest, st[0]->n, texels, width, st[0]->span);
     __asm__("" : "+m"(st));
     ++st[0];
