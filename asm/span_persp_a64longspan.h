@@ -19,7 +19,7 @@ namespace {
 
 // The left > 32 tail's steps (last < 16) as one asm block with fixed scratch registers (x9 -
 // x17, v16 - v25), in an order from bench/order_search.py (bench/mca_a53_persp/tail2_steps.s,
-// written in by tail2_inline.py there): run r + 1's steps packed (b_d, b_dd as pack_steps: ddf =
+// written in by tail_inline.py (tail2_steps) there): run r + 1's steps packed (b_d, b_dd as pack_steps: ddf =
 // double(d1u) cc, dd = fcvtzs(ddf), then steps16_dd in the long loop's 12-op form) beside the
 // last run's step groups 0 .. 6 of persp_long_a64_inl's tail (the same operations: du, dv the
 // last run's deltas, y = kRecipSteps[s], sf = double(s), z1, z2 its two depths, zh = zc / 2;
@@ -102,7 +102,7 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
 
 // The left <= 32 tail's last-run steps (last < 16) as one asm block with fixed scratch
 // registers (x3 - x5, x9 - x17, x19, v16 - v23), in an order from bench/order_search.py
-// (bench/mca_a53_persp/tail1_steps.s, written in by tail1_inline.py there): the step groups 0 ..
+// (bench/mca_a53_persp/tail1_steps.s, written in by tail_inline.py (tail1_steps) there): the step groups 0 ..
 // 6 of persp_long_a64_inl's tail (du, dv the last run's deltas, y = kRecipSteps[s], sf =
 // double(s), s = max(steps, 1), z1, z2 its two depths, zh = zc / 2) then last_steps_ddi's
 // operations (asm/span_persp_arm.h; s, T = steps (steps - 1) / 2, s - 1 and the steps > 1 mask

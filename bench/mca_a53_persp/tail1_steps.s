@@ -1,6 +1,6 @@
 // tail1_steps.s: the left <= 32 tail's steps block (asm/span_persp_a64longspan.h, tail1_steps),
 // order from bench/order_search.py (standalone, A53 98 -> 78 cycles as a loop, A57 30.7).
-// Written into the header by tail1_inline.py here. Registers: operands w0 du, w1 dv, w2 steps,
+// Written into the header by tail_inline.py (tail1_steps) here. Registers: operands w0 du, w1 dv, w2 steps,
 // d1 y, d2 sf, d3 z1, d4 z2, d5 zh (inputs); w6 lnu, w7 lnv, w8 ddu, w18 ddv (outputs);
 // x3 - x5, x9 - x17, x19 and v16 - v23 fixed scratch (clobbers).
 cmp w2, #1

@@ -1,6 +1,6 @@
 // tail2_steps.s: the left > 32 tail's steps block (asm/span_persp_a64longspan.h, tail2_steps),
 // order from bench/order_search.py (standalone, A53 64 cycles as a loop, A57 25.5). Written
-// into the header by tail2_inline.py here. Registers: operands w0 du, w1 dv, w2 d1u, w3 d1v
+// into the header by tail_inline.py (tail2_steps) here. Registers: operands w0 du, w1 dv, w2 d1u, w3 d1v
 // (inputs); d0 cc, d1 y, d2 sf, d3 z1, d4 z2, d5 zh (inputs); x4 b_d, x5 b_dd, w6 lnu, w7 lnv,
 // w8 ddu, w18 ddv (outputs); x9 - x17 and v16 - v25 fixed scratch (clobbers).
 sxtw x11, w2
