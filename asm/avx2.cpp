@@ -311,24 +311,18 @@ void expand_palette_avx2(const uint8_t* src, ptrdiff_t src_stride, int width, in
       for (; x < width; ++x) d[x] = palette[s[x]];
       continue;
     }
-    // Every output row stored from the registers (no copy of a written row).
-    if (scale == 2) {
-      for (; x + 8 <= width; x += 8) {
-        const __m256i c = gather8(x);
-        const __m256i lo = _mm256_unpacklo_epi32(c, c), hi = _mm256_unpackhi_epi32(c, c);  // 0 0 1 1 | 4 4 5 5 ...
-        const __m256i a = _mm256_permute2x128_si256(lo, hi, 0x20), b = _mm256_permute2x128_si256(lo, hi, 0x31);
-        for (int j = 0; j < 2; ++j) {
-          uint32_t* p = d + j * dst_stride + 2 * x;
-          _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), a);
-          _mm256_storeu_si256(reinterpret_cast<__m256i*>(p + 8), b);
-        }
+    // Scale 2: both output rows stored from the registers (no copy of a written row).
+    for (; x + 8 <= width; x += 8) {
+      const __m256i c = gather8(x);
+      const __m256i lo = _mm256_unpacklo_epi32(c, c), hi = _mm256_unpackhi_epi32(c, c);  // 0 0 1 1 | 4 4 5 5 ...
+      const __m256i a = _mm256_permute2x128_si256(lo, hi, 0x20), b = _mm256_permute2x128_si256(lo, hi, 0x31);
+      for (int j = 0; j < 2; ++j) {
+        uint32_t* p = d + j * dst_stride + 2 * x;
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(p), a);
+        _mm256_storeu_si256(reinterpret_cast<__m256i*>(p + 8), b);
       }
     }
-    for (; x < width; ++x) {
-      const uint32_t c = palette[s[x]];
-      for (int j = 0; j < scale; ++j)
-        for (int i = 0; i < scale; ++i) d[j * dst_stride + x * scale + i] = c;
-    }
+    for (; x < width; ++x) d[2 * x] = d[2 * x + 1] = d[dst_stride + 2 * x] = d[dst_stride + 2 * x + 1] = palette[s[x]];
   }
 }
 
