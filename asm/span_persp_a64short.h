@@ -70,7 +70,8 @@ constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // neighbouring samples' z), c01, c23 (the full runs' curve factors) and zh = zc * 0.5 (zc the
 // span's dzi). width: an int's value (int64_t: the single-span entry sign-extends it in its
 // test's block, so the steps block takes it without a sxtw of its own).
-template <bool kCurve>
+// kLikely4 (persp_short_curve<true>, the single-span entry): runs == 4 as the likely branch.
+template <bool kCurve, bool kLikely4 = false>
 SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texels, int64_t width, double zh,
                           int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t zs01, float64x2_t zs23,
                           float64x2_t c01, float64x2_t c23) {
@@ -262,7 +263,7 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
     }
   };
   // Four runs first: of the short spans, those hold the most pixels (a branch less for them).
-  if (runs == 4) {
+  if (kLikely4 ? __builtin_expect(runs == 4, 1) : runs == 4) {
     rest(std::integral_constant<int, 3>{});
   } else {
     // S01, S23 kept in v5, v19 (where the pair block leaves span a's and steps_k3v_pass takes
@@ -516,6 +517,16 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
 }
 // persp_short_inl<true>'s span (second order, zc = dzi) with its sample block's head h done
 // (short_head_asm, or the single-span entry's test block).
+// kSingle (the single-span entry; the batch loop's lone spans keep their code): the four-run
+// path laid out as the likely one (the compiler then ends it in its own copy of the epilogue,
+// in the last chunk's qemu block, not behind a branch to a shared one), and no value lives
+// from before the sample block into the rest in x1 .. x17 or x19 .. x25 (the registers the
+// steps block writes; an empty asm clobbers them after the sample block). Without the
+// latter the compiler kept kMinZi's address, which it also takes as the base of the rest's
+// table addresses, in one of them: the steps block's prefix then reads a register the block
+// itself overwrites, and timed as a loop (the A57 model) each run waits on the last one's
+// write (A72 +0.18 c/px when the width's sxtw left short_curve_a64's asm).
+template <bool kSingle = false>
 SB_INLINE void persp_short_curve(uint8_t* dest, int n, const uint8_t* texels, int64_t width, const PerspSpan& p,
                                  const ShortHead& h) {
   const int runs = (n + 15) >> 4, last = n - 16 * (runs - 1);
@@ -523,7 +534,10 @@ SB_INLINE void persp_short_curve(uint8_t* dest, int n, const uint8_t* texels, in
   float64x2_t zs01, zs23, c01, c23;
   double zh;  // zc / 2, from the sample block's spare slots
   short_samples1(p, n, h, S01, S23, S44, zs01, zs23, c01, c23, zh);
-  short_rest<true>(dest, runs, last, texels, width, zh, S01, S23, S44, zs01, zs23, c01, c23);
+  if constexpr (kSingle)
+    __asm__ volatile("" ::: "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14",
+                     "x15", "x16", "x17", "x19", "x20", "x21", "x22", "x23", "x24", "x25");
+  short_rest<true, kSingle>(dest, runs, last, texels, width, zh, S01, S23, S44, zs01, zs23, c01, c23);
 }
 template <bool kCurve>
 SB_INLINE void persp_short_inl(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {

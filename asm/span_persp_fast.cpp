@@ -685,7 +685,7 @@ SB_INLINE void persp_one(uint8_t* dest, int n, const uint8_t* texels, int width,
   int64_t w64;  // width, sign-extended in the test's block
   ShortHead h;  // the sample block's head, from the test's block too
   if (short_curve_a64(n, p, width, w64, h)) {
-    return persp_short_curve(dest, n, texels, w64, p, h);
+    return persp_short_curve<true>(dest, n, texels, w64, p, h);
   }
 #endif
   const bool is_short = n > 16 && n <= kShortMax;
