@@ -763,6 +763,11 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
         int runs, last;  // span a's, from the block
         float64x2_t zh2;  // [a's dzi, b's dzi] * 0.5 (short_rest's zh), from the block
         short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last, zh2);
+        // The pair after this one, kept as its own value (the loop's latch then loads it and
+        // again, no add and store of it there).
+        const PerspItem* nx = it + 2;
+        __asm__("" : "+r"(nx));
+        it = nx - 2;
         // Span a's rest on the block's registers, then span b's on its stored samples.
         double zh = vgetq_lane_f64(zh2, 0);
 #pragma GCC unroll 1
@@ -771,6 +776,7 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
           const int nb = it[1 - j].n;  // span b's n (span b itself after it: never past the pair)
           q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zh = vgetq_lane_f64(zh2, 1);
         }
+        it = nx;
       } while (again);
       continue;
     }
