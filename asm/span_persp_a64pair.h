@@ -80,15 +80,17 @@ static_assert(sizeof(ShortOffsets) == 32 && kShortOffsets.at[64].o[0] == 32.0 &&
 // uqxtn2 into S01, S23, S44, umin with [umax, vmax]; zs01 = [z_0 + z_1, z_1 + z_2], zs23 =
 // [z_2 + z_3, z_3 + z_4] (the sums of the pair vectors, then trn1 / trn2 to each span), c =
 // zs (dzi * -1/16) by lane. Ordered for the in-order A53 (bench/mca_a53_pair: gen_pair.py,
-// vsched.py, order_search.py; its first 124 lines last searched as the qemu block that starts
-// at a page, loop_r1e_s2.s, lines 124 .. 159 (to b.ne 2f) loop_r0e_s.s, lines 167 .. 238 (from
-// 2:) with the compiler's 7 lines after them, loop_r2e_s.s); the accumulators are loaded (ldr d, ld1 lane), not copied.
-// With it (this pair's items: it[0] = a's, it[1] = b's) and end, next = the loop's next pair
-// test: it + 3 < end and it[2], it[3] both pairable_a64 (n 17 .. kShortMax, second_order,
-// dzi's bits other than the sign not all 0), without branches: x7 = it + 2, or it again when
-// fewer than two items follow (read again, never past end); the fields loaded at the
-// block's start (among its loads), tested after its last NEON instruction (core work between
-// NEON instructions waits for their writebacks on the A53).
+// vsched.py, order_search.py; lines 0 .. 159 (to b.ne 2f) last searched as the loop head's qemu
+// blocks cut them in the page-aligned spans_range, the compiler's 15 lines first,
+// loop_r1f_s.s; lines 167 .. 241 (from 2:) with the compiler's 6 lines after them,
+// loop_r2f_s.s); the accumulators are loaded (ldr d, ld1 lane), not copied.
+// With it (this pair's items: it[0] = a's, it[1] = b's) and end, next = the loop's next pair:
+// it + 2 if it + 3 < end and it[2], it[3] both pairable_a64 (n 17 .. kShortMax, second_order,
+// dzi's bits other than the sign not all 0), else null (the chain ends); without branches: x7
+// = it + 2, or it again when fewer than two items follow (read again, never past end); the
+// fields loaded at the block's start (among its loads), tested after its last NEON
+// instruction (core work between NEON instructions waits for their writebacks on the A53).
+// zh_mem: zh_ab stored (span b's zh, loaded at its set-up: no NEON lane move in the tail).
 // runs_a, last_a = span a's runs = (na + 15) >> 4 and last = na - 16 (runs - 1) (short_rest's),
 // among the block's first loads. zh_ab = [a's dzi, b's dzi] * 0.5 (short_rest's zh, the same
 // bits as a multiply after the block; v31: the dzi lanes as the block loads them, multiplied

@@ -725,6 +725,8 @@ const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, co
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
+// Page-aligned on aarch64 (as persp_long_a64): its pair loop's code then keeps its place
+// against qemu's 4 KiB page cuts (bench/count.sh times qemu's blocks) whatever precedes it.
 #if defined(__aarch64__) && defined(__GNUC__)
 __attribute__((noinline, aligned(4096)))
 #else
