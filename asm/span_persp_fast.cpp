@@ -725,8 +725,10 @@ const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, co
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
+// Page-aligned on aarch64 (as persp_long_a64): its pair loop's code then keeps its place
+// against qemu's 4 KiB page cuts (bench/count.sh times qemu's blocks) whatever precedes it.
 #if defined(__aarch64__) && defined(__GNUC__)
-__attribute__((noinline))
+__attribute__((noinline, aligned(4096)))
 #else
 SB_INLINE
 #endif
@@ -737,6 +739,7 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
   // paid once for both), then each its rest (short_rest, one copy in the loop); other spans
   // one by one.
   ShortSamples s[2];
+  float64x2_t zhm;  // zh_ab as short_samples2 stores it: span b's zh loaded at its set-up
   // short_samples2 uses every vector register: d8 .. d15 are saved once here, at entry
   // (without this the compiler saved and restored d12 .. d15 around each pair).
   __asm__ volatile("" ::: "v8", "v9", "v10", "v11", "v12", "v13", "v14", "v15");
@@ -757,21 +760,23 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       // A chain of pairs: the next pair's test (it[2], it[3] both pairable_a64, it + 3 < end)
       // in this pair's samples block (short_samples2: the fields loaded at its start, tested
       // after its last NEON work), so the loop goes from pair to pair on one flag.
-      uint32_t again;
-      do {
+      const PerspItem* nx;  // the next pair (it + 2) while the chain goes on, else null
+      for (;;) {
         ShortSamples q;
         int runs, last;  // span a's, from the block
         float64x2_t zh2;  // [a's dzi, b's dzi] * 0.5 (short_rest's zh), from the block
-        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, again, runs, last, zh2);
+        short_samples2(it[0].span, it[0].n, it[1].span, it[1].n, q, s[1], it, end, nx, runs, last, zh2, zhm);
         // Span a's rest on the block's registers, then span b's on its stored samples.
         double zh = vgetq_lane_f64(zh2, 0);
 #pragma GCC unroll 1
         for (int j = 0; j < 2; ++j, ++it) {
           short_rest<true>(it->dest, runs, last, texels, width, zh, q.S01, q.S23, q.S44, q.zs01, q.zs23, q.c01, q.c23);
           const int nb = it[1 - j].n;  // span b's n (span b itself after it: never past the pair)
-          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zh = vgetq_lane_f64(zh2, 1);
+          q = s[1], runs = (nb + 15) >> 4, last = nb - 16 * (runs - 1), zh = vgetq_lane_f64(zhm, 1);
         }
-      } while (again);
+        if (!nx) break;  // the latch: one load and a branch (it == nx here: the block's pointer)
+        it = nx;
+      }
       continue;
     }
     persp_one_c(it->dest, it->n, texels, width, it->span, sa, ca);

@@ -480,15 +480,17 @@ TEST(AsmSpanPerspBatch, PairedSampleBlockMatchesTwoSingleBlocks) {
     const int na = 17 + int(rng() % 48), nb = 17 + int(rng() % 48);
     alignas(16) ShortSamples pair[2];
     std::memset(pair, 0x5a, sizeof pair);
-    uint32_t next = 7;
+    const sb::simd::PerspItem* next = two;
     int runs_a = -1, last_a = -1;
     float64x2_t zh;
-    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a, zh);
+    float64x2_t zhm;
+    sb::simd::short_samples2(a, na, b, nb, pair[0], pair[1], two, two + 2, next, runs_a, last_a, zh, zhm);
+    ASSERT_EQ(std::memcmp(&zhm, &zh, 16), 0);  // the stored copy (span b's zh in the batch loop)
     const double zpa = vgetq_lane_f64(zh, 0), zpb = vgetq_lane_f64(zh, 1);
     const double wa = a.dzi * 0.5, wb = b.dzi * 0.5;  // the zh lanes: short_rest's dzi * 0.5, bit for bit
     ASSERT_EQ(std::memcmp(&zpa, &wa, 8), 0);
     ASSERT_EQ(std::memcmp(&zpb, &wb, 8), 0);
-    ASSERT_EQ(next, 0u);  // no items after the pair
+    ASSERT_EQ(next, nullptr);  // no items after the pair: the chain ends
     ASSERT_EQ(runs_a, (na + 15) >> 4);
     ASSERT_EQ(last_a, na - 16 * (runs_a - 1));
     ShortSamples sa, sbb;
