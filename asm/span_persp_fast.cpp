@@ -318,8 +318,13 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // ARMv7 second order: samples r + 2 and r + 3 enter each pass converted and clamped
   // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
   // converted in its second run; so the first run starts its steps' chains at once.
-  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
-  if constexpr (kCurve && kLong) cq2u = eq2u, cq2v = eq2v, cq3u = eq3u, cq3v = eq3v;  // converted above
+  // cd1u, cd1v: v7_sub_lo(cq2, cq1), cq1 being sample r + 1 (its delta for run r + 1's steps),
+  // each pass's computed by the pass before (so sample r + 1 itself is not carried).
+  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cd1u = 0.0, cd1v = 0.0;
+  if constexpr (kCurve && kLong) {
+    cq2u = eq2u, cq2v = eq2v, cq3u = eq3u, cq3v = eq3v;  // converted above
+    cd1u = v7_sub_lo(cq2u, pu1), cd1v = v7_sub_lo(cq2v, pv1);
+  }
 #endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -464,7 +469,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kV7N) cq1u = cq3u, cq1v = cq3v, cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
+    if constexpr (kV7N) cd1u = ncd1u, cd1v = ncd1v, cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
 #endif
 #if !defined(__x86_64__)
   };
@@ -514,7 +519,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     RunSteps u1{}, v1{};
 #if defined(SB_V7_NEON_STEPS) && defined(SB_V7_MID)
     if constexpr (kCurve && kLong) {  // run r in one asm statement, the ddf in its VFP slots
-      v7_tail_run(dest, texels, w, run_regs(s0.u, s0.v, su, sv), cq1u, cq1v, cq2u, cq2v, s1.z, z2, zck, &iu, &iv);
+      v7_tail_run(dest, texels, w, run_regs(s0.u, s0.v, su, sv), cd1u, cd1v, s1.z, z2, zck, &iu, &iv);
       s2 = sample2();
       steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
       next_run(s2, u1, v1);
