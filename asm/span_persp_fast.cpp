@@ -882,7 +882,9 @@ __attribute__((noinline)) void persp_one_rest_v7(uint8_t* dest, int n, const uin
 // drawn here, the others by persp_one_rest_v7 (a tail call), so this function saves only what
 // persp_mid_v7 uses (r4 .. r11: its asm keeps to d0 .. d7, d16 .. d31 between statements).
 #if defined(SB_V7_LONG_RUN)
-__attribute__((aligned(4096)))  // as the batch entry (see there)
+// As the batch entry (see there); scheduled over superblocks after RA as persp_long_run_v7
+// (A9 model persp64single 7.43 -> 7.41; in the batch entry it cost the linear spans).
+__attribute__((aligned(4096), optimize("sched2-use-superblocks")))
 #endif
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& p) {
