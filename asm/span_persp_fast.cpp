@@ -496,7 +496,10 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos2 = pos3;
     t2 = t3;
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kCurve && kLong) cq2u = cq3u, cq2v = cq3v;
+    if constexpr (kCurve && kLong) {
+      cd1u = v7_sub_lo(cq3u, cq2u), cd1v = v7_sub_lo(cq3v, cq2v);  // samples r + 3 - r + 2
+      cq2u = cq3u, cq2v = cq3v;
+    }
 #endif
   };
 #if defined(__arm__) && !defined(__aarch64__)
