@@ -909,9 +909,10 @@ namespace {
 // in this function's loop (its own frame and register allocation, one call a run of them);
 // returns the first item that is not one (or end). Scheduled after register allocation over
 // superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
-// the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46).
-__attribute__((noinline, optimize("sched2-use-superblocks"))) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
-                                                             const uint8_t* texels, int width) {
+// the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
+// scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
+__attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
+persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
     if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)
