@@ -318,8 +318,13 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   // ARMv7 second order: samples r + 2 and r + 3 enter each pass converted and clamped
   // (sample()'s operations: cvt_ufixed16, min_ufixed16 of (urow + ux pos) z), the next pass's
   // converted in its second run; so the first run starts its steps' chains at once.
-  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cq1u = pu1, cq1v = pv1;  // cq1: sample r + 1
-  if constexpr (kCurve && kLong) cq2u = eq2u, cq2v = eq2v, cq3u = eq3u, cq3v = eq3v;  // converted above
+  // cd1u, cd1v: v7_sub_lo(cq2, cq1), cq1 being sample r + 1 (its delta for run r + 1's steps),
+  // each pass's computed by the pass before (so sample r + 1 itself is not carried).
+  double cq2u = 0.0, cq2v = 0.0, cq3u = 0.0, cq3v = 0.0, cd1u = 0.0, cd1v = 0.0;
+  if constexpr (kCurve && kLong) {
+    cq2u = eq2u, cq2v = eq2v, cq3u = eq3u, cq3v = eq3v;  // converted above
+    cd1u = v7_sub_lo(cq2u, pu1), cd1v = v7_sub_lo(cq2v, pv1);
+  }
 #endif
   Sample t2{}, t3{};
 #if defined(__aarch64__) && defined(__GNUC__)
@@ -464,7 +469,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos3 = pos5;
     tu2 = tu4, tv2 = tv4, tu3 = tu5, tv3 = tv5;
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kV7N) cq1u = cq3u, cq1v = cq3v, cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
+    if constexpr (kV7N) cd1u = ncd1u, cd1v = ncd1v, cq2u = nq4u, cq2v = nq4v, cq3u = nq5u, cq3v = nq5v;
 #endif
 #if !defined(__x86_64__)
   };
@@ -491,7 +496,10 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     pos2 = pos3;
     t2 = t3;
 #if defined(SB_V7_NEON_STEPS)
-    if constexpr (kCurve && kLong) cq2u = cq3u, cq2v = cq3v;
+    if constexpr (kCurve && kLong) {
+      cd1u = v7_sub_lo(cq3u, cq2u), cd1v = v7_sub_lo(cq3v, cq2v);  // samples r + 3 - r + 2
+      cq2u = cq3u, cq2v = cq3v;
+    }
 #endif
   };
 #if defined(__arm__) && !defined(__aarch64__)
@@ -514,7 +522,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     RunSteps u1{}, v1{};
 #if defined(SB_V7_NEON_STEPS) && defined(SB_V7_MID)
     if constexpr (kCurve && kLong) {  // run r in one asm statement, the ddf in its VFP slots
-      v7_tail_run(dest, texels, w, run_regs(s0.u, s0.v, su, sv), cq1u, cq1v, cq2u, cq2v, s1.z, z2, zck, &iu, &iv);
+      v7_tail_run(dest, texels, w, run_regs(s0.u, s0.v, su, sv), cd1u, cd1v, s1.z, z2, zck, &iu, &iv);
       s2 = sample2();
       steps16_dd_uv(s2.u - s1.u, iu, s2.v - s1.v, iv, &u1, &v1);
       next_run(s2, u1, v1);
@@ -882,7 +890,9 @@ __attribute__((noinline)) void persp_one_rest_v7(uint8_t* dest, int n, const uin
 // drawn here, the others by persp_one_rest_v7 (a tail call), so this function saves only what
 // persp_mid_v7 uses (r4 .. r11: its asm keeps to d0 .. d7, d16 .. d31 between statements).
 #if defined(SB_V7_LONG_RUN)
-__attribute__((aligned(4096)))  // as the batch entry (see there)
+// As the batch entry (see there); scheduled over superblocks after RA as persp_long_run_v7
+// (A9 model persp64single 7.43 -> 7.41; in the batch entry it cost the linear spans).
+__attribute__((aligned(4096), optimize("sched2-use-superblocks")))
 #endif
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int height,
                              const PerspSpan& p) {
@@ -902,9 +912,12 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 namespace {
 // Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
 // in this function's loop (its own frame and register allocation, one call a run of them);
-// returns the first item that is not one (or end).
-__attribute__((noinline)) const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end,
-                                                             const uint8_t* texels, int width) {
+// returns the first item that is not one (or end). Scheduled after register allocation over
+// superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
+// the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
+// scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
+__attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
+persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
     if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)

@@ -106,24 +106,23 @@ SB_INLINE void v7_steps_out(const V7Steps& s, RunSteps* su, RunSteps* sv) {
 #if defined(SB_V7_MID)
 // The long tail's extra run (persp_long_run_v7's, left 33 .. 48): run r's pixels as
 // draw16_v7 draws them (one asm statement: the run's values stay in registers), with run
-// r + 1's ddf in its VFP slots: delta = lo(cq2) - lo(cq1) per component (vsub.i32 on the
-// clamped samples r + 2 and r + 1: exact), c1 = zck (z1 + z2), ddf = double(delta) c1,
+// r + 1's ddf in its VFP slots: delta = lo(cq2) - lo(cq1) per component (dA, dB: vsub.i32
+// on the clamped samples r + 2 and r + 1, exact, computed by the caller), c1 = zck (z1 + z2), ddf = double(delta) c1,
 // dd = cvt_sat(ddf) into the low single of ia / ib (the pass's stage_a operations, in its
 // order: the same bits).
-SB_INLINE void v7_tail_run(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRegs rr, double cq1u, double cq1v,
-                           double cq2u, double cq2v, double z1, double z2, double zck, int32_t* iu, int32_t* iv) {
+SB_INLINE void v7_tail_run(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRegs rr, double dA, double dB,
+                           double z1, double z2, double zck, int32_t* iu, int32_t* iv) {
   uint32_t u = rr.u, v = rr.v, du = rr.du, dv = rr.dv, a, b;
   const uint32_t ddu = rr.ddu, ddv = rr.ddv;
-  double dA, dB, fu, fv, c, ia, ib;
-  __asm__ volatile(SB_V7_RUN("vsub.i32 %P[dA], %P[q2u], %P[q1u]\n\tvsub.i32 %P[dB], %P[q2v], %P[q1v]\n\t"
-                             "vadd.f64 %P[c], %P[z1], %P[z2]\n\t",
+  double fu, fv, c, ia, ib;
+  __asm__ volatile(SB_V7_RUN("vadd.f64 %P[c], %P[z1], %P[z2]\n\t",
                              "vcvt.f64.s32 %P[fu], %[dA]\n\tvcvt.f64.s32 %P[fv], %[dB]\n\t"
                              "vmul.f64 %P[c], %P[zck], %P[c]\n\t",
                              "vmul.f64 %P[fu], %P[fu], %P[c]\n\t", "vmul.f64 %P[fv], %P[fv], %P[c]\n\t",
                              "vcvt.s32.f64 %[ia], %P[fu]\n\t", "vcvt.s32.f64 %[ib], %P[fv]\n\t", "", "")
-                   : SB_V7_RUN_OPERANDS(dest), [dA] "=&t"(dA), [dB] "=&t"(dB), [fu] "=&w"(fu), [fv] "=&w"(fv),
+                   : SB_V7_RUN_OPERANDS(dest), [fu] "=&w"(fu), [fv] "=&w"(fv),
                      [c] "=&w"(c), [ia] "=&t"(ia), [ib] "=&t"(ib)
-                   : SB_V7_RUN_INPUTS(dest), [q1u] "w"(cq1u), [q1v] "w"(cq1v), [q2u] "w"(cq2u), [q2v] "w"(cq2v),
+                   : SB_V7_RUN_INPUTS(dest), [dA] "t"(dA), [dB] "t"(dB),
                      [z1] "w"(z1), [z2] "w"(z2), [zck] "w"(zck)
                    : "memory");
   *iu = fixed16_bits_v(ia), *iv = fixed16_bits_v(ib);
