@@ -11,6 +11,7 @@
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
 #include "asm/span_persp_a64long.h"
+#include "asm/span_persp_a64longlast.h"
 #if defined(__aarch64__) && defined(__GNUC__)
 #include <arm_neon.h>
 
@@ -309,9 +310,9 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     using std::integral_constant;
     if constexpr (kTwo) {
       // Runs r, r + 1, then the last run. Run r + 1's steps (steps16<true>(s1, sB, c1)'s
-      // result, sB = t1) and the last run's step groups, then (last < 16) runs r and r + 1 as
-      // one short_pass and the last run by draw_last below, or (last == 16) run r with the step
-      // groups in its stage slots, then run r + 1 and the last run as one short_pass.
+      // result, sB = t1) and the last run's step groups, then (last < 16) runs r, r + 1 and the
+      // last run as one asm block (pass_last), or (last == 16) run r with the step groups in its
+      // stage slots, then run r + 1 and the last run as one short_pass.
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
       double f1u = 0, f1v = 0;
@@ -345,16 +346,18 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       };
       if (last != 16) {
         // Run r + 1's steps and the last run's step groups side by side (two independent
-        // chains, tail2_steps), last_steps_ddi, then runs r and r + 1 as one short_pass, then the
-        // last run (draw_last below).
+        // chains, tail2_steps), last_steps_ddi, then runs r, r + 1 and the last run as one asm
+        // block (pass_last: short_pass's two runs, then runs_k3's chunks of the last run).
         tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, b_d,
                     b_dd, lnu, lnv, ddu, ddv);
         step(integral_constant<int, 9>{});
         // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
-        // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves).
-        short_pass<true>(dest, texels, uint64_t(width), st.c0, dp, uint64_t(ddp),
-                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd);
-        dest += 16;
+        // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves), run r + 1 from
+        // s1 and tail2_steps' b_d, b_dd, the last run from t1 (= sB: st.nB) and lu, lv.
+        pass_last(dest, texels, uint64_t(width), last, st.c0, dp, uint64_t(ddp),
+                  uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd,
+                  uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), lu.d, lv.d, lu.dd, lv.dd);
+        return;
       } else {
         // last == 16: run r + 1's steps in run r's stage slots 0 .. 4, one dependent step a
         // group, and the last run's step groups 0 .. 5 in slots 4 .. 9.
@@ -390,9 +393,6 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
               uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
       return;
     }
-    dest += 16;
-    draw_last<true>(dest, last, texels, w, uint32_t(t1.u), uint32_t(t1.v), uint32_t(lu.d), uint32_t(lv.d),
-                    uint32_t(lu.dd), uint32_t(lv.dd));
   };
   if (left > 32) {
     tail(std::true_type{}, sB, sC);
