@@ -11,6 +11,7 @@
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
 #include "asm/span_persp_a64long.h"
+#include "asm/span_persp_a64longlast.h"
 #if defined(__aarch64__) && defined(__GNUC__)
 #include <arm_neon.h>
 
@@ -30,65 +31,65 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
   __asm__(
       // BEGIN tail2_steps
       "sxtw x11, %w[d1u]\n\t"
-      "sxtw x12, %w[d1v]\n\t"
       "cmp x11, #0\n\t"
-      "fadd d20, %d[z1], %d[z2]\n\t"
+      "sxtw x12, %w[d1v]\n\t"
+      "scvtf d24, %w[d1u]\n\t"
       "scvtf d16, %w[du]\n\t"
       "scvtf d17, %w[dv]\n\t"
-      "scvtf d24, %w[d1u]\n\t"
       "cneg x15, x11, lt\n\t"
       "cmp x12, #0\n\t"
       "scvtf d25, %w[d1v]\n\t"
-      "fmul d18, d16, %d[y]\n\t"
-      "fmul d19, d17, %d[y]\n\t"
       "fmul d24, d24, %d[cc]\n\t"
+      "fmul d18, d16, %d[y]\n\t"
+      "fadd d20, %d[z1], %d[z2]\n\t"
       "fmov d23, #-2.0\n\t"
+      "fmul d19, d17, %d[y]\n\t"
       "cneg x16, x12, lt\n\t"
       "fmul d25, d25, %d[cc]\n\t"
-      "fmul d20, %d[zh], d20\n\t"
       "fcvtzs w9, d24\n\t"
-      "fmsub d22, d19, %d[sf], d17\n\t"
       "fmsub d21, d18, %d[sf], d16\n\t"
-      "fmul d20, d20, d23\n\t"
+      "fmsub d22, d19, %d[sf], d17\n\t"
+      "fmul d20, %d[zh], d20\n\t"
       "fcvtzs w10, d25\n\t"
       "sbfiz x13, x9, #7, #32\n\t"
       "sub x13, x13, w9, sxtw #3\n\t"
       "add x17, x13, x15\n\t"
       "sbfiz x14, x10, #7, #32\n\t"
-      "cmp x17, x15, lsl #1\n\t"
       "sub x14, x14, w10, sxtw #3\n\t"
-      "fmadd d18, d21, %d[y], d18\n\t"
+      "cmp x17, x15, lsl #1\n\t"
       "fmadd d19, d22, %d[y], d19\n\t"
-      "add %[bdd], x14, x16\n\t"
+      "fmadd d18, d21, %d[y], d18\n\t"
+      "fmul d20, d20, d23\n\t"
       "csel x13, x13, xzr, ls\n\t"
+      "add %[bdd], x14, x16\n\t"
       "csel w9, w9, wzr, ls\n\t"
       "cmp %[bdd], x16, lsl #1\n\t"
       "sub x11, x11, x13\n\t"
-      "csel x14, x14, xzr, ls\n\t"
       "mov w13, #0xc9ff\n\t"
-      "sub x12, x12, x14\n\t"
-      "csel w10, w10, wzr, ls\n\t"
       "asr x17, x11, #63\n\t"
+      "csel x14, x14, xzr, ls\n\t"
+      "csel w10, w10, wzr, ls\n\t"
+      "sub x12, x12, x14\n\t"
       "asr %[bdd], x12, #63\n\t"
       "fmul d22, d19, d20\n\t"
       "fcvtzs %w[lu], d18\n\t"
-      "fcvtzs %w[lv], d19\n\t"
       "fmul d21, d18, d20\n\t"
+      "fcvtzs %w[lv], d19\n\t"
       "add x12, x12, %[bdd], lsr #60\n\t"
+      "movk w13, #0x3b9a, lsl #16\n\t"
+      "asr x12, x12, #4\n\t"
       "add x11, x11, x17, lsr #60\n\t"
       "lsl x14, x10, #32\n\t"
-      "movk w13, #0x3b9a, lsl #16\n\t"
-      "asr x11, x11, #4\n\t"
-      "add %[bdd], x14, w9, sxtw\n\t"
-      "mov w14, #0x93ff\n\t"
       "fcvtzs %w[ddu], d21\n\t"
       "fcvtzs %w[ddv], d22\n\t"
-      "asr x12, x12, #4\n\t"
+      "add %[bdd], x14, w9, sxtw\n\t"
+      "mov w14, #0x93ff\n\t"
+      "asr x11, x11, #4\n\t"
       "movk w14, #0x7735, lsl #16\n\t"
       "add %[bd], x11, x12, lsl #32\n\t"
       "add w11, %w[ddu], w13\n\t"
-      "cmp w11, w14\n\t"
       "add w12, %w[ddv], w13\n\t"
+      "cmp w11, w14\n\t"
       "csel %w[ddu], %w[ddu], wzr, lo\n\t"
       "cmp w12, w14\n\t"
       "csel %w[ddv], %w[ddv], wzr, lo"
@@ -120,86 +121,86 @@ SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double s
       "cmp %w[st], #1\n\t"
       "scvtf d16, %w[du]\n\t"
       "scvtf d17, %w[dv]\n\t"
-      "mov w13, #0xc9ff\n\t"
+      "csetm w10, gt\n\t"
       "sub w11, %w[st], #1\n\t"
-      "csinc w9, %w[st], wzr, gt\n\t"
       "fadd d20, %d[z1], %d[z2]\n\t"
       "fmul d18, d16, %d[y]\n\t"
-      "mul w11, w11, %w[st]\n\t"
       "fmul d19, d17, %d[y]\n\t"
-      "fmul d20, %d[zh], d20\n\t"
+      "mov w13, #0xc9ff\n\t"
       "fmov d23, #-2.0\n\t"
+      "fmul d20, %d[zh], d20\n\t"
       "fmsub d21, d18, %d[sf], d16\n\t"
       "fmsub d22, d19, %d[sf], d17\n\t"
       "fmul d20, d20, d23\n\t"
-      "csetm w10, gt\n\t"
-      "sub w12, w9, #1\n\t"
+      "movk w13, #0x3b9a, lsl #16\n\t"
       "fmadd d18, d21, %d[y], d18\n\t"
       "fmadd d19, d22, %d[y], d19\n\t"
+      "csinc w9, %w[st], wzr, gt\n\t"
       "fmul d21, d18, d20\n\t"
-      "fcvtzs %w[lu], d18\n\t"
-      "fmul d22, d19, d20\n\t"
-      "fcvtzs %w[ddu], d21\n\t"
       "fcvtzs %w[lv], d19\n\t"
+      "fmul d22, d19, d20\n\t"
+      "mul w11, w11, %w[st]\n\t"
+      "fcvtzs %w[lu], d18\n\t"
+      "sub w12, w9, #1\n\t"
+      "fcvtzs %w[ddu], d21\n\t"
       "fcvtzs %w[ddv], d22\n\t"
       "mov w14, #0x93ff\n\t"
-      "movk w13, #0x3b9a, lsl #16\n\t"
-      "add w15, %w[ddu], w13\n\t"
-      "movk w14, #0x7735, lsl #16\n\t"
+      "asr w4, %w[dv], #31\n\t"
       "lsr w11, w11, #1\n\t"
+      "movk w14, #0x7735, lsl #16\n\t"
+      "add w15, %w[ddu], w13\n\t"
+      "add w16, %w[ddv], w13\n\t"
       "cmp w15, w14\n\t"
       "asr w3, %w[du], #31\n\t"
-      "add w16, %w[ddv], w13\n\t"
+      "eor w13, %w[du], w3\n\t"
+      "eor w17, %w[lu], w3\n\t"
       "csel %w[ddu], %w[ddu], wzr, lo\n\t"
       "cmp w16, w14\n\t"
+      "eor w14, %w[dv], w4\n\t"
       "and %w[ddu], %w[ddu], w10\n\t"
-      "eor w17, %w[lu], w3\n\t"
+      "eor w19, %w[lv], w4\n\t"
       "asr w5, %w[ddu], #31\n\t"
-      "asr w4, %w[dv], #31\n\t"
       "sub w17, w17, w3\n\t"
       "csel %w[ddv], %w[ddv], wzr, lo\n\t"
-      "eor w14, %w[dv], w4\n\t"
-      "eor w13, %w[du], w3\n\t"
-      "and %w[ddv], %w[ddv], w10\n\t"
       "eor w15, %w[ddu], w5\n\t"
+      "sub w15, w15, w5\n\t"
+      "and %w[ddv], %w[ddv], w10\n\t"
       "asr w10, %w[ddv], #31\n\t"
       "eor w16, %w[ddv], w10\n\t"
-      "sub w15, w15, w5\n\t"
-      "sub w16, w16, w10\n\t"
-      "eor w10, %w[ddv], w4\n\t"
-      "eor w5, %w[ddu], w3\n\t"
-      "sub w10, w10, w4\n\t"
-      "eor w19, %w[lv], w4\n\t"
       "sub w13, w13, w3\n\t"
-      "sub w19, w19, w4\n\t"
-      "sub w5, w5, w3\n\t"
+      "sub w16, w16, w10\n\t"
+      "eor w5, %w[ddu], w3\n\t"
       "umsubl x15, w15, w11, x13\n\t"
       "sub w14, w14, w4\n\t"
       "msub w13, w9, w17, w13\n\t"
-      "mul w10, w12, w10\n\t"
+      "sub w19, w19, w4\n\t"
+      "eor w10, %w[ddv], w4\n\t"
+      "sub w5, w5, w3\n\t"
       "umsubl x16, w16, w11, x14\n\t"
       "cmp w9, w13, lsl #1\n\t"
       "msub w14, w9, w19, w14\n\t"
-      "sub w19, w19, w10, asr #1\n\t"
       "mul w5, w12, w5\n\t"
+      "sub w10, w10, w4\n\t"
       "cset w13, hi\n\t"
       "cmp w9, w14, lsl #1\n\t"
       "sub w17, w17, w5, asr #1\n\t"
       "and w13, w13, w5\n\t"
       "sub w17, w17, w13\n\t"
+      "mul w10, w12, w10\n\t"
       "cset w14, hi\n\t"
-      "eor w17, w17, w3\n\t"
-      "and w14, w14, w10\n\t"
       "cmp x15, #0\n\t"
-      "sub w19, w19, w14\n\t"
-      "eor w19, w19, w4\n\t"
+      "eor w17, w17, w3\n\t"
+      "sub w19, w19, w10, asr #1\n\t"
+      "and w14, w14, w10\n\t"
       "csel %w[ddu], wzr, %w[ddu], lt\n\t"
       "sub w17, w17, w3\n\t"
       "csel %w[lu], %w[lu], w17, lt\n\t"
       "cmp x16, #0\n\t"
+      "sub w19, w19, w14\n\t"
+      "eor w19, w19, w4\n\t"
+      "csel %w[ddv], wzr, %w[ddv], lt\n\t"
       "sub w19, w19, w4\n\t"
-      "csel %w[lv], %w[lv], w19, lt\n\t"
-      "csel %w[ddv], wzr, %w[ddv], lt"
+      "csel %w[lv], %w[lv], w19, lt"
       // END tail1_steps
       : [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
       : [du] "r"(r_du), [dv] "r"(r_dv), [st] "r"(steps), [y] "w"(y), [sf] "w"(sf), [z1] "w"(z1), [z2] "w"(z2),
@@ -309,9 +310,9 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
     using std::integral_constant;
     if constexpr (kTwo) {
       // Runs r, r + 1, then the last run. Run r + 1's steps (steps16<true>(s1, sB, c1)'s
-      // result, sB = t1) and the last run's step groups, then (last < 16) runs r and r + 1 as
-      // one short_pass and the last run by draw_last below, or (last == 16) run r with the step
-      // groups in its stage slots, then run r + 1 and the last run as one short_pass.
+      // result, sB = t1) and the last run's step groups, then (last < 16) runs r, r + 1 and the
+      // last run as one asm block (pass_last), or (last == 16) run r with the step groups in its
+      // stage slots, then run r + 1 and the last run as one short_pass.
       RunSteps u1, v1;
       int32_t d1u = 0, d1v = 0, i1u = 0, i1v = 0;
       double f1u = 0, f1v = 0;
@@ -345,16 +346,18 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       };
       if (last != 16) {
         // Run r + 1's steps and the last run's step groups side by side (two independent
-        // chains, tail2_steps), last_steps_ddi, then runs r and r + 1 as one short_pass, then the
-        // last run (draw_last below).
+        // chains, tail2_steps), last_steps_ddi, then runs r, r + 1 and the last run as one asm
+        // block (pass_last: short_pass's two runs, then runs_k3's chunks of the last run).
         tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, b_d,
                     b_dd, lnu, lnv, ddu, ddv);
         step(integral_constant<int, 9>{});
         // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
-        // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves).
-        short_pass<true>(dest, texels, uint64_t(width), st.c0, dp, uint64_t(ddp),
-                         uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd);
-        dest += 16;
+        // dp and pack_steps(sv.dd, su.dd) == ddp, su and sv being their halves), run r + 1 from
+        // s1 and tail2_steps' b_d, b_dd, the last run from t1 (= sB: st.nB) and lu, lv.
+        pass_last(dest, texels, uint64_t(width), last, st.c0, dp, uint64_t(ddp),
+                  uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), b_d, b_dd,
+                  uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), lu.d, lv.d, lu.dd, lv.dd);
+        return;
       } else {
         // last == 16: run r + 1's steps in run r's stage slots 0 .. 4, one dependent step a
         // group, and the last run's step groups 0 .. 5 in slots 4 .. 9.
@@ -390,9 +393,6 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
               uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
       return;
     }
-    dest += 16;
-    draw_last<true>(dest, last, texels, w, uint32_t(t1.u), uint32_t(t1.v), uint32_t(lu.d), uint32_t(lv.d),
-                    uint32_t(lu.dd), uint32_t(lv.dd));
   };
   if (left > 32) {
     tail(std::true_type{}, sB, sC);

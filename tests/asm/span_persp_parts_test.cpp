@@ -24,6 +24,7 @@
 // ARMv7 and x86-64: last_ddi, last_steps_i (the ARMv7 tails' parts; portable C++); aarch64:
 // div_steps and short_steps_k3v (asm/span_persp_a64short.h, a64mid.h, included by it).
 #include "asm/span_persp_arm.h"
+#include "asm/span_persp_a64longlast.h"  // pass_last (aarch64)
 #include "asm/surface_span.h"
 
 namespace {
@@ -515,6 +516,59 @@ TEST(AsmSpanPersp, ShortLinearSetupMatchesTheWalkersParts) {
   EXPECT_EQ(wrong, 0);
   std::printf("[ asm      ] span_persp: %ld short linear setups, %ld wrong\n", checked, wrong);
 }
+#endif
+
+#if defined(__aarch64__)
+// asm/span_persp_a64longlast.h's pass_last (the long tail's runs r, r + 1 and its partial last
+// run in one block) against its parts: short_pass<true> for the two runs, draw_last<true> for
+// the last run, on every last = 1 .. 15, random starts and steps (second steps of both signs,
+// 0, and the largest that keep a run inside the texture); bytes past d[31 + last] untouched.
+TEST(AsmSpanPersp, PassLastMatchesItsParts) {
+  std::mt19937 rng(41);
+  const int tw = 256, th = 256;
+  std::vector<uint8_t> tex(size_t(tw) * th);
+  for (auto& b : tex) b = uint8_t(rng());
+  auto packed = [](int32_t lo, int32_t hi) { return (uint64_t(uint32_t(hi)) << 32) + uint64_t(int64_t(lo)); };
+  // a start in the texture's middle half, a step of at most 3 texels a pixel and a second
+  // step of at most 2^13 / 65536 texel: every position of a 16-pixel run stays inside.
+  auto coord = [&]() { return int32_t((64u << 16) + rng() % (128u << 16)); };
+  auto step = [&]() { return int32_t(rng() % (6u << 16)) - int32_t(3u << 16); };
+  auto step2 = [&](int k) {
+    switch (k % 4) {
+      case 0: return int32_t(0);
+      case 1: return int32_t(8191);
+      case 2: return int32_t(-8191);
+      default: return int32_t(rng() % 16383) - 8191;
+    }
+  };
+  long checked = 0, wrong = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int last = 1 + trial % 15;
+    int32_t u[3], v[3], du[3], dv[3], ddu[3], ddv[3];
+    for (int r = 0; r < 3; ++r) {
+      u[r] = coord(), v[r] = coord(), du[r] = step(), dv[r] = step();
+      ddu[r] = step2(trial + r), ddv[r] = step2(trial / 4 + r);
+    }
+    uint8_t want[64], got[64];
+    for (int i = 0; i < 64; ++i) want[i] = got[i] = uint8_t(i * 37 + trial);
+    const uint64_t w = uint64_t(tw);
+    sb::simd::short_pass<true>(want, tex.data(), w, packed(u[0], v[0]), packed(du[0], dv[0]), packed(ddu[0], ddv[0]),
+                               packed(u[1], v[1]), packed(du[1], dv[1]), packed(ddu[1], ddv[1]));
+    sb::simd::draw_last<true>(want + 32, last, tex.data(), uint32_t(tw), uint32_t(u[2]), uint32_t(v[2]),
+                              uint32_t(du[2]), uint32_t(dv[2]), uint32_t(ddu[2]), uint32_t(ddv[2]));
+    sb::simd::pass_last(got, tex.data(), w, last, packed(u[0], v[0]), packed(du[0], dv[0]), packed(ddu[0], ddv[0]),
+                        packed(u[1], v[1]), packed(du[1], dv[1]), packed(ddu[1], ddv[1]), packed(u[2], v[2]), du[2],
+                        dv[2], ddu[2], ddv[2]);
+    const bool bad = std::memcmp(want, got, sizeof want) != 0;
+    if (bad && wrong < 5) ADD_FAILURE() << "last " << last << " trial " << trial;
+    wrong += bad;
+    ++checked;
+  }
+  EXPECT_EQ(wrong, 0);
+  std::printf("[ asm      ] span_persp: %ld pass_last blocks, %ld wrong\n", checked, wrong);
+}
+#else
+TEST(AsmSpanPersp, PassLastMatchesItsParts) { GTEST_SKIP() << "aarch64 only"; }
 #endif
 
 }  // namespace
