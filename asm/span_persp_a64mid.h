@@ -23,9 +23,6 @@ namespace {
 // |ddf| < 1e9 iff |dd| < 1e9 (dd = trunc(ddf), saturated to int32; 1e9 is an integer); +-inf
 // gives |dd| >= 2^31 - 1; NaN gives dd = 0, accepted here where facgt rejected it, with the
 // same results (d = lin - 0, dd & accept = 0).
-alignas(16) constexpr uint64_t kMidConsts[8] = {
-    0x0000007800000078, 0x0000007800000078, 0x0200000002000000, 0x0200000002000000,
-    0x4338000000000000, 0x4338000000000000, 0xffffffffffffffff, 0x3b9aca003b9aca00};
 static_assert(1000000000 == 0x3b9aca00);
 static_assert(__builtin_bit_cast(uint64_t, 6755399441055744.0) == 0x4338000000000000);
 // Per last-run step count s (1 .. 15; index 0 as 1), the constants of the D23 vector [du_2,
@@ -34,21 +31,35 @@ static_assert(__builtin_bit_cast(uint64_t, 6755399441055744.0) == 0x433800000000
 // 2^31 > |delta|, so the clamped test T |dd| <= |delta| is the exact one), h = (s + 1) / 2
 // (2 r < s iff r < h), then [RN(1/s), s] (div_steps) and [k, 0] with k = -2 for s > 1 and 0
 // else (ddf = q (curve k): the last run's dd is 0 when steps <= 1, as last_steps_ddi's mask).
+// Padded to 128 bytes: steps_k3v_pass addresses row s as kp + 128 s (one add from kMidTable's
+// base, no multiply).
 struct alignas(16) MidSteps {
   uint32_t s[4], sm1[4], t[4], c[4], h[4];
   double y[2], k[2];
+  uint32_t pad[4];
 };
-static_assert(sizeof(MidSteps) == 112 && offsetof(MidSteps, s) == 0 && offsetof(MidSteps, t) == 32 &&
+static_assert(sizeof(MidSteps) == 128 && offsetof(MidSteps, s) == 0 && offsetof(MidSteps, t) == 32 &&
               offsetof(MidSteps, h) == 64 && offsetof(MidSteps, y) == 80 && offsetof(MidSteps, k) == 96);
 constexpr MidSteps mid_steps(uint32_t s) {
   const uint32_t t = s * (s - 1) / 2, c = t ? 0xffffffffu / t : 0xffffffffu;
   return MidSteps{{16, 16, s, s}, {15, 15, s - 1, s - 1}, {120, 120, t, t}, {35791394, 35791394, c, c},
                   {8, 8, (s + 1) / 2, (s + 1) / 2}, {kRecipSteps[s], double(s)}, {s > 1 ? -2.0 : 0.0, 0.0}};
 }
-constexpr MidSteps kMidSteps[16] = {mid_steps(1),  mid_steps(1),  mid_steps(2),  mid_steps(3),
-                                    mid_steps(4),  mid_steps(5),  mid_steps(6),  mid_steps(7),
-                                    mid_steps(8),  mid_steps(9),  mid_steps(10), mid_steps(11),
-                                    mid_steps(12), mid_steps(13), mid_steps(14), mid_steps(15)};
+// The constants then the MidSteps rows in one table: steps_k3v_pass takes one base register
+// (kp) for both, row s at kp + 64 + 128 s.
+struct alignas(64) MidTable {
+  uint64_t c[8];
+  MidSteps steps[16];
+};
+static_assert(offsetof(MidTable, steps) == 64 && sizeof(MidSteps) == 128);
+constexpr MidTable kMidTable = {
+    {0x0000007800000078, 0x0000007800000078, 0x0200000002000000, 0x0200000002000000, 0x4338000000000000,
+     0x4338000000000000, 0xffffffffffffffff, 0x3b9aca003b9aca00},
+    {mid_steps(1), mid_steps(1), mid_steps(2), mid_steps(3), mid_steps(4), mid_steps(5), mid_steps(6), mid_steps(7),
+     mid_steps(8), mid_steps(9), mid_steps(10), mid_steps(11), mid_steps(12), mid_steps(13), mid_steps(14),
+     mid_steps(15)}};
+constexpr const uint64_t (&kMidConsts)[8] = kMidTable.c;
+constexpr const MidSteps (&kMidSteps)[16] = kMidTable.steps;
 // A pass's arguments (short_pass's run a and run b). short_steps_k3v: the first pass's (runs
 // 0 and 1), the steps unpacked ([du, dv] as v 2^32 + u, each 32-bit); the second pass's
 // stored: st = {c_uv, luv, c_d, ld, c_dd, ldd} (run 2's start, run 3's start, then their
@@ -225,25 +236,29 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
   register float64x2_t rc23 __asm__("v16") = c23;
   register float64x2_t rzs __asm__("v1") = zs23;
   register double rzc __asm__("v31") = zh;  // zc / 2
+  // s in, the row's address kp + 128 s out (the block's first line); the block reads row s at
+  // [y, #64 + offset] (MidTable: the rows after the 64 bytes of constants).
+  uint64_t ys = uint32_t(s);
   __asm__ volatile(
 // BEGIN steps_k3v_pass
+      "add %[y], %[kp], %[y], lsl #7\n\t"
       "ext v7.16b, v19.16b, v7.16b, #8\n\t"
       "ext v0.16b, v5.16b, v19.16b, #8\n\t"
       "ldp q6, q17, [%[kp], #32]\n\t"
       "sub v7.4s, v7.4s, v19.4s\n\t"
       "sub v0.4s, v0.4s, v5.4s\n\t"
-      "ldp q23, q24, [%[y], #64]\n\t"
-      "ldp q21, q22, [%[y], #32]\n\t"
+      "ldp q23, q24, [%[y], #128]\n\t"
+      "ldp q21, q22, [%[y], #96]\n\t"
       "saddw2 v29.2d, v6.2d, v7.4s\n\t"
       "saddw v26.2d, v6.2d, v0.2s\n\t"
       "saddw v28.2d, v6.2d, v7.2s\n\t"
-      "ldp q18, q20, [%[y]]\n\t"
+      "ldp q18, q20, [%[y], #64]\n\t"
       "saddw2 v27.2d, v6.2d, v0.4s\n\t"
       "fsub v29.2d, v29.2d, v6.2d\n\t"
       "fmul d31, d31, v1.d[1]\n\t"
       "fsub v26.2d, v26.2d, v6.2d\n\t"
       "fsub v28.2d, v28.2d, v6.2d\n\t"
-      "ldr q25, [%[y], #96]\n\t"
+      "ldr q25, [%[y], #160]\n\t"
       "fsub v27.2d, v27.2d, v6.2d\n\t"
       "fmul v30.2d, v29.2d, v24.d[0]\n\t"
       "str q19, [%[st]]\n\t"
@@ -541,7 +556,7 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "add x25, x13, w25, sxtw\n\t"
       "str w15, [%[d], #24]\n\t"
       "orr x22, x7, x8, lsl #8\n\t"
-      "ldr w1, [%[y], #8]\n\t"
+      "ldr w1, [%[y], #72]\n\t"
       "orr x21, x5, x6, lsl #8\n\t"
       "ldr x10, [%[st], #32]\n\t"
       "orr x15, x21, x22, lsl #16\n\t"
@@ -555,8 +570,8 @@ SB_INLINE MidFirst steps_k3v_pass(uint8_t* __restrict dest, const uint8_t* __res
       "add x10, x11, w10, sxtw"
 // END steps_k3v_pass
       : "=&r"(ra_uv), "=&r"(ra_d), "=&r"(ra_dd), "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rS44), "+&w"(rc01),
-        "+&w"(rc23), "+&w"(rzs), "+&w"(rzc), "=@cceq"(full)
-      : "w"(rS01), "w"(rS23), [kp] "r"(kMidConsts), [y] "r"(&kMidSteps[s]), [st] "r"(st), [d] "r"(dest),
+        "+&w"(rc23), "+&w"(rzs), "+&w"(rzc), "=@cceq"(full), [y] "+&r"(ys)
+      : "w"(rS01), "w"(rS23), [kp] "r"(kMidTable.c), [st] "r"(st), [d] "r"(dest),
         [tx] "r"(texels), [w] "r"(width)
       : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x11", "x12", "x14", "x15", "x16", "x17", "x19",
         "x20", "x21", "x22", "v0", "v2", "v4", "v6", "v9", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26",
