@@ -1,6 +1,6 @@
 // The long pass's set-up (gen_long_pass.py header --setup puts it before the loop): x1 = the
 // span's PerspSpan (fields at the offsets the header static_asserts), w2 = n, x0 = d; input
-// kMin v21; writes kZix v16, kUVx v17, kMax4 v22, kZck v23 (dup zck, zck = zix * -1/16),
+// kMin v21 loaded here (kLongMin, its address in x30); writes kZix v16, kUVx v17, kMax4 v22, kZck v23 (dup zck, zck = zix * -1/16),
 // k16 v18, k32 v19, kOne v20, the loop's state: samples 0 .. 3 (n0 = c0 x13, nA x25, nB x26,
 // nC x27), run 0's chains (c1 x14, e0 x17, e1 x19, dd4 x20), pp v24, z23 v26, cc v27, zsn
 // v29, and the stack slots [sp] kZrow, [sp, #16] kUVrow, [sp, #32] lim = d + 32 full,
@@ -16,6 +16,7 @@ ldr d3, [x1, #16]
 fmov v18.2d, #16.0
 fmov d23, x6
 add x5, x1, #56
+adrp x30, kLongMin
 sub w7, w2, #81
 lsr w7, w7, #5
 ld1 {v17.d}[1], [x4]
@@ -27,6 +28,7 @@ ld1r {v22.2d}, [x5]
 str q3, [sp, #16]
 mov w11, #32
 ld1r {v1.2d}, [x1]
+ldr q21, [x30, :lo12:kLongMin]
 ldr q4, [sp, #16]
 dup v16.2d, v16.d[0]
 mov v0.d[1], v5.d[0]
