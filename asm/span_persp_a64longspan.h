@@ -220,7 +220,6 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   // The first samples and run 0's steps are the asm's set-up (asm/span_persp_a64long.h), from
   // p and n; the passes leave n - 32 (k + 1) = 17 .. 48 pixels (k full passes, see there).
   LongPass st;
-  st.kMin = vdupq_n_f64(kMinZi);
   st.d = reinterpret_cast<uint64_t>(dest), st.tx = reinterpret_cast<uint64_t>(texels), st.w = uint64_t(width);
   long_passes2(st, p, n);
   // texels and w for the tail from the asm's registers (in-out operands, unchanged), not

@@ -515,7 +515,7 @@ SETUP = "--setup" in sys.argv
 S_OUT_X = ["c0", "c1", "dd4", "nA", "nB", "nC"]
 S_OUT_V = ["z23", "zsn", "cc"]  # cc: run r + 1's ddf factor for the tail (cc[0])
 S_IN_X = ["tx", "w"]
-S_IN_V = ["kMin"]
+S_IN_V = []  # kMin: the set-up loads it (kLongMin, an "S" operand: no load in the head)
 # PerspSpan's fields the set-up loads (offsets as long_setup.s takes them)
 S_P = [("zi0", 0), ("dzi", 8), ("uz0", 16), ("duz", 24), ("vz0", 32), ("dvz", 40), ("px0", 48), ("umax", 56), ("vmax", 60)]
 
@@ -529,8 +529,8 @@ HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-orde
 // edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
 //
 // Contract (long_passes2(st, p, n); LongPass's inputs read on entry, its outputs written on
-// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length),
-// kMin = [kMinZi, kMinZi]; with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
+// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length);
+// kMin = [kMinZi, kMinZi] (kLongMin); with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
 // uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 81) / 32 + 1 the number of full
 // passes (left >= 81: both sample offsets 32; the loop runs while d < lim), offl =
 // [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in
@@ -571,8 +571,11 @@ namespace {
 
 struct LongPass {
   uint64_t d, tx, w, c0, c1, dd4, nA, nB, nC;
-  float64x2_t kMin, z23, zsn, cc;
+  float64x2_t z23, zsn, cc;
 };
+// The set-up's kMin, loaded inside the asm (adrp / ldr from this symbol, an "S" operand): the
+// compiler's head before the asm no longer loads it (its adrp -> ldr delayed the set-up's loads).
+alignas(16) constexpr double kLongMin[2] = {kMinZi, kMinZi};
 // PerspSpan's fields as the set-up loads them.
 %(asserts)s
 
@@ -606,6 +609,7 @@ def emit_header3(ins, outh, setup):
     slots = {"[sp]": "%[s0]", "[sp, #16]": "%[s16]", "[sp, #32]": "%[s32]", "[sp, #48]": "%[s48]"}
     for k, v in slots.items():
         allx = [l.replace(k, v) for l in allx]
+    allx = [l.replace("kLongMin", "%[kmin]") for l in allx]  # the set-up's kMin load (an "S" operand)
     assert not any("sp" in re.sub(r"%\[s\d+\]", "", l) for l in allx)
     used = set()
     for l in allx:
@@ -646,7 +650,7 @@ def emit_header3(ins, outh, setup):
     outs = (['"+r"(r_d)', '"+r"(r_p)', '"+r"(r_n)'] + [f'"=r"(r_{n})' for n in S_OUT_X] +
             [f'"=w"(r_{n})' for n in S_OUT_V] + [f'"+r"(r_{n})' for n in S_IN_X] +
             ['[s0] "=m"(s0)', '[s16] "=m"(s16)', '[s32] "=m"(s32)', '[s48] "=m"(s48)'])
-    insl = [f'"w"(r_{n})' for n in S_IN_V]
+    insl = [f'"w"(r_{n})' for n in S_IN_V] + ['[kmin] "S"(kLongMin)']
     back = "\n".join(f"  st.{n} = r_{n};" for n in ["d"] + S_OUT_X + S_OUT_V + S_IN_X)
     text = HEADER3 % dict(blk=blk, asserts=asserts, fill=fill, decls="\n".join(decls), body="\n".join(out),
                           outs=", ".join(outs), ins=", ".join(insl), back=back,
