@@ -356,10 +356,12 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
   // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
   // (the full runs' curve factors), also in the block (the conversions' latency gaps).
   // zck = zc * -1/16 (the full runs' curve factors) in v6 once o_2 is read. zc (dzi) in, zc *
-  // 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block). Only
-  // caller-saved vector registers (no d8 .. d15 saves in the single entry): kMinZi in v5 until
-  // the Newton steps take it, the range test's maximum and the clamp in v4 once o_0, o_1 are
-  // read, the B and C reciprocals in v21, v23 (free once their [u, v] rows are multiplied in).
+  // 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block). Caller-saved
+  // vector registers but v9 (its callers save d9 already: steps_k3v_pass uses it, spans_range
+  // saves d8 .. d15): kMinZi in v5 until the Newton steps take it, the range test's maximum in
+  // v4 once o_0, o_1 are read, the B and C reciprocals in v21, v23 (free once their [u, v] rows
+  // are multiplied in), the clamp [umax, vmax] in v9 (ldr, dup before the fallback branch: the
+  // tail after it, which waits on its results, holds two instructions fewer).
   // Its order: bench/order_search.py on the block as qemu cuts it after the single entry's
   // test (bench/mca_a53_pair/README.md, "the single entry's head").
   register double rzh __asm__("v31") = h.zc;
@@ -375,6 +377,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
   __asm__ volatile(
       "adrp %[t1], %[tbl]\n\t"
       "add %[t0], %[p], #16\n\t"
+      "ldr d9, [%[p], #56]\n\t"
       "add %[t1], %[t1], %[idx], lsl #5\n\t"
       "fadd d2, d0, d1\n\t"
       "ld1r {v26.2d}, [%[p]]\n\t"
@@ -472,12 +475,12 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fmla v21.2d, v21.2d, v16.2d\n\t"
       "fmadd d23, d23, d17, d23\n\t"
       "fmla v2.2d, v2.2d, v5.2d\n\t"
+      "dup v9.2d, v9.d[0]\n\t"
       "tbz %[t1], #6, 2f\n\t"
       "fdiv v2.2d, v1.2d, v26.2d\n\t"
       "fdiv v21.2d, v1.2d, v27.2d\n\t"
       "fdiv d23, d1, d28\n\t"
       "2:\n\t"
-      "add %[t0], %[p], #56\n\t"
       "fmul v18.2d, v18.2d, v2.d[0]\n\t"
       "ext v1.16b, v21.16b, v23.16b, #8\n\t"
       "fmul v22.2d, v22.2d, v21.d[0]\n\t"
@@ -491,7 +494,6 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fcvtzu v20.2d, v20.2d, #16\n\t"
       "fcvtzu v24.2d, v24.2d, #16\n\t"
       "uqxtn v5.2s, v18.2d\n\t"
-      "ld1r {v4.2d}, [%[t0]]\n\t"
       "uqxtn v19.2s, v22.2d\n\t"
       "uqxtn v7.2s, v29.2d\n\t"
       "fadd v0.2d, v2.2d, v0.2d\n\t"
@@ -500,15 +502,15 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "uqxtn2 v19.4s, v24.2d\n\t"
       "uqxtn2 v7.4s, v29.2d\n\t"
       "fmul v3.2d, v0.2d, v6.d[0]\n\t"
-      "umin v5.4s, v5.4s, v4.4s\n\t"
+      "umin v5.4s, v5.4s, v9.4s\n\t"
       "fmul v16.2d, v1.2d, v6.d[0]\n\t"
-      "umin v19.4s, v19.4s, v4.4s\n\t"
-      "umin v7.4s, v7.4s, v4.4s"
+      "umin v19.4s, v19.4s, v9.4s\n\t"
+      "umin v7.4s, v7.4s, v9.4s"
       : "+&w"(rzs01), "+&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44),
         [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7),
         [zh] "+&w"(rzh)
       : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [idx] "r"(h.idx), [tbl] "S"(&kShortOffs), "m"(p), "m"(kMinZi)
-      : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
+      : "cc", "v2", "v4", "v6", "v9", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
         "v29", "v30");
   // END short_samples1
   zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
