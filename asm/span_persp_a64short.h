@@ -66,7 +66,8 @@ constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // The rest of persp_short_inl after its sample block (shared with the paired sample block of
 // asm/span_persp_a64pair.h): the steps and the runs of a span of n = 17 .. kShortMax pixels
 // (runs = (n + 15) / 16 runs, the last one of last = n - 16 (runs - 1) pixels: computed by the
-// caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23 (sums of
+// caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 ([u_4, v_4] in its low half: only that half
+// is read), zs01, zs23 (sums of
 // neighbouring samples' z), c01, c23 (the full runs' curve factors) and zh = zc * 0.5 (zc the
 // span's dzi). width: an int's value (int64_t: the single-span entry sign-extends it in its
 // test's block, so the steps block takes it without a sxtw of its own).
@@ -284,8 +285,9 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
   }
 }
 // A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
-// u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below); ShortSamples holds
-// them (asm/span_persp_a64pair.h's paired block stores them so); zh = zc * 0.5 (short_rest's).
+// u_1, v_1], S23, S44 = [u_4, v_4, 0, 0] (short_rest reads its low half only), zs01, zs23, c01,
+// c23 (see below); ShortSamples holds them (asm/span_persp_a64pair.h's paired block stores them
+// so, S44 there sample 4 twice); zh = zc * 0.5 (short_rest's).
 struct alignas(16) ShortSamples {
   int32x4_t S01, S23, S44;
   float64x2_t zs01, zs23, c01, c23;
@@ -344,7 +346,8 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
   // range and all-ones test in their latency gaps; the divides only on the branch), then
   // the samples: to_fixed as fcvtzu #16 of (uv z), uqxtn, umin with [umax, vmax] (the
   // clamp at 0 folded into the unsigned conversion; AsmSpanPersp.UnsignedFixedPoint...).
-  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
+  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23; S44 = [u_4, v_4, 0, 0] (its users
+  // read the low half only: one uqxtn2 fewer in the tail than sample 4 twice). Ordered
   // for the in-order A53 (a consumer after its producer's latency; its model also completes
   // in order, so each latency gap holds work of the same or shorter latency); the
   // accumulators are loaded (ld1r, ld2), not copied, and pA is merged with trn1 (A72:
@@ -482,8 +485,8 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fdiv d23, d1, d28\n\t"
       "2:\n\t"
       "fmul v18.2d, v18.2d, v2.d[0]\n\t"
-      "ext v1.16b, v21.16b, v23.16b, #8\n\t"
       "fmul v22.2d, v22.2d, v21.d[0]\n\t"
+      "ext v1.16b, v21.16b, v23.16b, #8\n\t"
       "fmul v29.2d, v29.2d, v23.d[0]\n\t"
       "fmul v20.2d, v20.2d, v2.d[1]\n\t"
       "fmul v24.2d, v24.2d, v21.d[1]\n\t"
@@ -492,20 +495,19 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fcvtzu v22.2d, v22.2d, #16\n\t"
       "fcvtzu v29.2d, v29.2d, #16\n\t"
       "fcvtzu v20.2d, v20.2d, #16\n\t"
-      "fcvtzu v24.2d, v24.2d, #16\n\t"
       "uqxtn v5.2s, v18.2d\n\t"
+      "fcvtzu v24.2d, v24.2d, #16\n\t"
       "uqxtn v19.2s, v22.2d\n\t"
-      "uqxtn v7.2s, v29.2d\n\t"
       "fadd v0.2d, v2.2d, v0.2d\n\t"
-      "uqxtn2 v5.4s, v20.2d\n\t"
+      "uqxtn v7.2s, v29.2d\n\t"
       "fadd v1.2d, v21.2d, v1.2d\n\t"
+      "uqxtn2 v5.4s, v20.2d\n\t"
       "uqxtn2 v19.4s, v24.2d\n\t"
-      "uqxtn2 v7.4s, v29.2d\n\t"
+      "umin v7.2s, v7.2s, v9.2s\n\t"
       "fmul v3.2d, v0.2d, v6.d[0]\n\t"
       "umin v5.4s, v5.4s, v9.4s\n\t"
       "fmul v16.2d, v1.2d, v6.d[0]\n\t"
-      "umin v19.4s, v19.4s, v9.4s\n\t"
-      "umin v7.4s, v7.4s, v9.4s"
+      "umin v19.4s, v19.4s, v9.4s"
       : "+&w"(rzs01), "+&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44),
         [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7),
         [zh] "+&w"(rzh)
