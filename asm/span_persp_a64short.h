@@ -66,7 +66,8 @@ constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // The rest of persp_short_inl after its sample block (shared with the paired sample block of
 // asm/span_persp_a64pair.h): the steps and the runs of a span of n = 17 .. kShortMax pixels
 // (runs = (n + 15) / 16 runs, the last one of last = n - 16 (runs - 1) pixels: computed by the
-// caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23 (sums of
+// caller before the sample block, whose NEON results would delay that core work) from its samples S01 = [u_0, v_0, u_1, v_1], S23, S44 ([u_4, v_4] in its low half: only that half
+// is read), zs01, zs23 (sums of
 // neighbouring samples' z), c01, c23 (the full runs' curve factors) and zh = zc * 0.5 (zc the
 // span's dzi). width: an int's value (int64_t: the single-span entry sign-extends it in its
 // test's block, so the steps block takes it without a sxtw of its own).
@@ -284,8 +285,9 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
   }
 }
 // A short span's samples (persp_short_inl<true>'s sample block), zc its dzi: S01 = [u_0, v_0,
-// u_1, v_1], S23, S44 (sample 4 twice), zs01, zs23, c01, c23 (see below); ShortSamples holds
-// them (asm/span_persp_a64pair.h's paired block stores them so); zh = zc * 0.5 (short_rest's).
+// u_1, v_1], S23, S44 = [u_4, v_4, 0, 0] (short_rest reads its low half only), zs01, zs23, c01,
+// c23 (see below); ShortSamples holds them (asm/span_persp_a64pair.h's paired block stores them
+// so, S44 there sample 4 twice); zh = zc * 0.5 (short_rest's).
 struct alignas(16) ShortSamples {
   int32x4_t S01, S23, S44;
   float64x2_t zs01, zs23, c01, c23;
@@ -344,7 +346,8 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
   // range and all-ones test in their latency gaps; the divides only on the branch), then
   // the samples: to_fixed as fcvtzu #16 of (uv z), uqxtn, umin with [umax, vmax] (the
   // clamp at 0 folded into the unsigned conversion; AsmSpanPersp.UnsignedFixedPoint...).
-  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4 twice). Ordered
+  // Two samples per vector: S01 = [u_0, v_0, u_1, v_1], S23; S44 = [u_4, v_4, 0, 0] (its users
+  // read the low half only: one uqxtn2 fewer in the tail than sample 4 twice). Ordered
   // for the in-order A53 (a consumer after its producer's latency; its model also completes
   // in order, so each latency gap holds work of the same or shorter latency); the
   // accumulators are loaded (ld1r, ld2), not copied, and pA is merged with trn1 (A72:
@@ -356,10 +359,12 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
   // [z_2 + z_3, z_3 + z_4] (the last run's z_k + z_{k+1}) and c01 = zs01 zck, c23 = zs23 zck
   // (the full runs' curve factors), also in the block (the conversions' latency gaps).
   // zck = zc * -1/16 (the full runs' curve factors) in v6 once o_2 is read. zc (dzi) in, zc *
-  // 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block). Only
-  // caller-saved vector registers (no d8 .. d15 saves in the single entry): kMinZi in v5 until
-  // the Newton steps take it, the range test's maximum and the clamp in v4 once o_0, o_1 are
-  // read, the B and C reciprocals in v21, v23 (free once their [u, v] rows are multiplied in).
+  // 0.5 out, in v31 (where steps_k3v_pass takes it: no copy before that block). Caller-saved
+  // vector registers but v9 (its callers save d9 already: steps_k3v_pass uses it, spans_range
+  // saves d8 .. d15): kMinZi in v5 until the Newton steps take it, the range test's maximum in
+  // v4 once o_0, o_1 are read, the B and C reciprocals in v21, v23 (free once their [u, v] rows
+  // are multiplied in), the clamp [umax, vmax] in v9 (ldr, dup before the fallback branch: the
+  // tail after it, which waits on its results, holds two instructions fewer).
   // Its order: bench/order_search.py on the block as qemu cuts it after the single entry's
   // test (bench/mca_a53_pair/README.md, "the single entry's head").
   register double rzh __asm__("v31") = h.zc;
@@ -402,13 +407,13 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "frecpe v2.2d, v26.2d\n\t"
       "fmaxnm v27.2d, v27.2d, v5.2d\n\t"
       "fmov d18, #0.5\n\t"
+      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
       "fmov %[t1], d26\n\t"
       "fmaxnm d28, d28, d5\n\t"
       "mov %[t2], v26.d[1]\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
       "frecpe v21.2d, v27.2d\n\t"
       "fmax v4.2d, v26.2d, v27.2d\n\t"
-      "ld2 {v24.2d, v25.2d}, [%[t0]]\n\t"
       "fmul d6, %d[zh], d6\n\t"
       "fmov %[t7], d27\n\t"
       "fmul %d[zh], %d[zh], d18\n\t"
@@ -420,11 +425,12 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "frecps v16.2d, v27.2d, v21.2d\n\t"
       "fmaxp d4, v4.2d\n\t"
       "frecps d17, d28, d23\n\t"
+      "ldr d9, [%[p], #56]\n\t"
       "add %[t1], %[t1], #1\n\t"
       "add %[t0], %[t0], #1\n\t"
-      "lsl %[t1], %[t1], #12\n\t"
       "lsl %[t0], %[t0], #12\n\t"
       "add %[t6], %[t6], #1\n\t"
+      "lsl %[t1], %[t1], #12\n\t"
       "fmul v21.2d, v21.2d, v16.2d\n\t"
       "fmul d23, d23, d17\n\t"
       "frecps v5.2d, v26.2d, v2.2d\n\t"
@@ -437,12 +443,11 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "frecps v16.2d, v27.2d, v21.2d\n\t"
       "frecps d17, d28, d23\n\t"
       "clz %[t7], %[t7]\n\t"
-      "clz %[t0], %[t0]\n\t"
       "lsl %[t2], %[t2], #12\n\t"
       "fmul v2.2d, v2.2d, v5.2d\n\t"
       "mov v5.16b, v1.16b\n\t"
-      "fmul v21.2d, v21.2d, v16.2d\n\t"
       "fmul d23, d23, d17\n\t"
+      "fmul v21.2d, v21.2d, v16.2d\n\t"
       "mov v16.16b, v1.16b\n\t"
       "clz %[t6], %[t6]\n\t"
       "clz %[t2], %[t2]\n\t"
@@ -452,6 +457,7 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fmls v5.2d, v26.2d, v2.2d\n\t"
       "fmsub d17, d28, d23, d1\n\t"
       "fmls v16.2d, v27.2d, v21.2d\n\t"
+      "clz %[t0], %[t0]\n\t"
       "orr %[t1], %[t1], %[t7]\n\t"
       "lsr %[t5], %[t5], #52\n\t"
       "fmla v2.2d, v2.2d, v5.2d\n\t"
@@ -472,15 +478,15 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fmla v21.2d, v21.2d, v16.2d\n\t"
       "fmadd d23, d23, d17, d23\n\t"
       "fmla v2.2d, v2.2d, v5.2d\n\t"
+      "dup v9.2d, v9.d[0]\n\t"
       "tbz %[t1], #6, 2f\n\t"
       "fdiv v2.2d, v1.2d, v26.2d\n\t"
       "fdiv v21.2d, v1.2d, v27.2d\n\t"
       "fdiv d23, d1, d28\n\t"
       "2:\n\t"
-      "add %[t0], %[p], #56\n\t"
       "fmul v18.2d, v18.2d, v2.d[0]\n\t"
-      "ext v1.16b, v21.16b, v23.16b, #8\n\t"
       "fmul v22.2d, v22.2d, v21.d[0]\n\t"
+      "ext v1.16b, v21.16b, v23.16b, #8\n\t"
       "fmul v29.2d, v29.2d, v23.d[0]\n\t"
       "fmul v20.2d, v20.2d, v2.d[1]\n\t"
       "fmul v24.2d, v24.2d, v21.d[1]\n\t"
@@ -489,26 +495,24 @@ SB_INLINE void short_samples1(const PerspSpan& p, int n, const ShortHead& h, int
       "fcvtzu v22.2d, v22.2d, #16\n\t"
       "fcvtzu v29.2d, v29.2d, #16\n\t"
       "fcvtzu v20.2d, v20.2d, #16\n\t"
-      "fcvtzu v24.2d, v24.2d, #16\n\t"
       "uqxtn v5.2s, v18.2d\n\t"
-      "ld1r {v4.2d}, [%[t0]]\n\t"
+      "fcvtzu v24.2d, v24.2d, #16\n\t"
       "uqxtn v19.2s, v22.2d\n\t"
-      "uqxtn v7.2s, v29.2d\n\t"
       "fadd v0.2d, v2.2d, v0.2d\n\t"
-      "uqxtn2 v5.4s, v20.2d\n\t"
+      "uqxtn v7.2s, v29.2d\n\t"
       "fadd v1.2d, v21.2d, v1.2d\n\t"
+      "uqxtn2 v5.4s, v20.2d\n\t"
       "uqxtn2 v19.4s, v24.2d\n\t"
-      "uqxtn2 v7.4s, v29.2d\n\t"
+      "umin v7.2s, v7.2s, v9.2s\n\t"
       "fmul v3.2d, v0.2d, v6.d[0]\n\t"
-      "umin v5.4s, v5.4s, v4.4s\n\t"
+      "umin v5.4s, v5.4s, v9.4s\n\t"
       "fmul v16.2d, v1.2d, v6.d[0]\n\t"
-      "umin v19.4s, v19.4s, v4.4s\n\t"
-      "umin v7.4s, v7.4s, v4.4s"
+      "umin v19.4s, v19.4s, v9.4s"
       : "+&w"(rzs01), "+&w"(rzs23), "=&w"(rc01), "=&w"(rc23), "=&w"(rS01), "=&w"(rS23), "=&w"(rS44),
         [t0] "=&r"(t0), [t1] "=&r"(t1), [t2] "=&r"(t2), [t5] "=&r"(t5), [t6] "=&r"(t6), [t7] "=&r"(t7),
         [zh] "+&w"(rzh)
       : [p] "r"(&p), [n] "r"(n), [km] "r"(&kMinZi), [idx] "r"(h.idx), [tbl] "S"(&kShortOffs), "m"(p), "m"(kMinZi)
-      : "cc", "v2", "v4", "v6", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
+      : "cc", "v2", "v4", "v6", "v9", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28",
         "v29", "v30");
   // END short_samples1
   zs01 = rzs01, zs23 = rzs23, c01 = rc01, c23 = rc23;
