@@ -100,7 +100,7 @@ const Kernels* find_variant(const char* name) {
 const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "palette2", "palette3", "palette4", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
-                              "persp192", "persp192lin"};
+                              "persp192", "persp192lin", "persp32"};
 
 // The span lengths of a persp case, left to right along one 1920-pixel row. Mixed lengths, so
 // the spans end in different last runs as the engine's do: a span of 16 k pixels (or a long
@@ -109,6 +109,8 @@ const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "bloc
 //              passes 17 .. 48, ten different values)
 //   persp64*:  30 four-run spans of 50 .. 64 pixels, each length twice (mean 57, 1710
 //              pixels; last runs of 2 .. 16 pixels), neighbours of different lengths
+//   persp32:   32 spans of 17 .. 48 pixels, each length once (mean 32.5, 1040 pixels; two and
+//              three runs, last runs of 1 .. 16 pixels), neighbours of different lengths
 //   persp1920*: one span of 1920
 std::vector<int> persp_lengths(const char* c) {
   // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
@@ -118,6 +120,11 @@ std::vector<int> persp_lengths(const char* c) {
     std::vector<int> l;
     for (int i = 0; i < 15; ++i) l.push_back(i % 2 ? 50 + i / 2 : 64 - i / 2);  // 64 50 63 51 .. 57
     for (int i = 0; i < 15; ++i) l.push_back(l[14 - i]);                         // and back again
+    return l;
+  }
+  if (std::strcmp(c, "persp32") == 0) {
+    std::vector<int> l;
+    for (int i = 0; i < 32; ++i) l.push_back(i % 2 ? 17 + i / 2 : 48 - i / 2);  // 48 17 47 18 .. 33 32
     return l;
   }
   return {kSpan};

@@ -53,7 +53,8 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "persp64lin": "surface_span_persp (spans of 50-64 px, linear steps)",
           "persp64single": "surface_span_persp (spans of 50-64 px, one call each)",
           "persp192": "surface_span_persp (spans of 179-205 px, mean 192)",
-          "persp192lin": "surface_span_persp (spans of 179-205 px, linear steps)"}
+          "persp192lin": "surface_span_persp (spans of 179-205 px, linear steps)",
+          "persp32": "surface_span_persp (spans of 17-48 px, mean 32.5)"}
 UNIT = {"palette": "src px", "palette2": "out px", "palette3": "out px", "palette4": "out px"}
 
 
@@ -439,11 +440,11 @@ def main():
           "choice on aarch64), *avx2* gathers, *avx2s* AVX2 lanes with scalar loads (the tuned choice with "
           "AVX2). No Pentium figure: Quake had no single-pass lit span drawer.",
           "- **surface_span_persp rows**: drawn as the engine draws a surface's spans, one surface_spans_persp "
-          "call (a batch) per repetition: 1 item of 1920 px, 10 of 179-205 px (mean 192) or 30 of 50-64 px (mean 57), mixed lengths so the spans end in different last runs as the engine's do; *one call each* is 30 "
+          "call (a batch) per repetition: 1 item of 1920 px, 10 of 179-205 px (mean 192), 30 of 50-64 px (mean 57) or 32 of 17-48 px (mean 32.5), mixed lengths so the spans end in different last runs as the engine's do; *one call each* is 30 "
           "surface_span_persp calls per repetition (the per-span entry). The mean-192 rows stand for the engine's "
           "mix: in LibreQuake flythroughs (320x240 .. 640x480) second-order spans of more than 80 px draw 34-57% "
           "of the pixels (mean 143-205 px), linear ones (dzi 0: floors, ceilings) 28-30%, spans of 49-64 px "
-          "in pairs 3-6%.", ""]
+          "in pairs 3-6%. The 17-48 px row (persp32) came last (2026-11-28): no work has gone into those spans yet.", ""]
     header = "| kernel | target | variant | instr/unit | " + " | ".join(
         ["cyc znver3", "cyc skylake", "cyc cortex-a53", "cyc cortex-a72*", "cyc cortex-a9"]) + " | cover | x scalar (cyc) | Pentium Quake ÷ this (worst core) |"
     md += [header, "|" + "---|" * (header.count("|") - 1)]
