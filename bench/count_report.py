@@ -444,7 +444,7 @@ def main():
           "surface_span_persp calls per repetition (the per-span entry). The mean-192 rows stand for the engine's "
           "mix: in LibreQuake flythroughs (320x240 .. 640x480) second-order spans of more than 80 px draw 34-57% "
           "of the pixels (mean 143-205 px), linear ones (dzi 0: floors, ceilings) 28-30%, spans of 49-64 px "
-          "in pairs 3-6%. The 17-48 px row (persp32) came last (2026-11-28): no work has gone into those spans yet.", ""]
+          "in pairs 3-6%. The 17-48 px row (persp32) came last (2026-11-28): no tuning has targeted those spans by their own row yet (they share short_rest with the 50-64 px path).", ""]
     header = "| kernel | target | variant | instr/unit | " + " | ".join(
         ["cyc znver3", "cyc skylake", "cyc cortex-a53", "cyc cortex-a72*", "cyc cortex-a9"]) + " | cover | x scalar (cyc) | Pentium Quake ÷ this (worst core) |"
     md += [header, "|" + "---|" * (header.count("|") - 1)]
