@@ -146,11 +146,13 @@ bool env_forces_scalar() {
 }
 
 std::atomic<bool> g_forced{env_forces_scalar()};
+std::atomic<const Kernels*> g_override{nullptr};
 
 }  // namespace
 }  // namespace detail
 
 const Kernels& active() {
+  if (const Kernels* k = detail::g_override.load(std::memory_order_relaxed)) return *k;
   return detail::g_forced.load(std::memory_order_relaxed) ? detail::kScalar : detail::choice().tuned;
 }
 
@@ -158,6 +160,7 @@ const Kernels& scalar_kernels() { return detail::kScalar; }
 
 void force_scalar(bool on) { detail::g_forced.store(on, std::memory_order_relaxed); }
 bool scalar_forced() { return detail::g_forced.load(std::memory_order_relaxed); }
+void override_active(const Kernels* k) { detail::g_override.store(k, std::memory_order_relaxed); }
 
 int variant_count() {
   int n = 2;  // scalar, tuned

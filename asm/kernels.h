@@ -59,6 +59,11 @@ const Kernels& scalar_kernels();
 void force_scalar(bool on);
 bool scalar_forced();
 
+// Benchmarks only: make active() return *k until called again with nullptr (then the tuned
+// or forced-scalar choice as before). bench/span_hist.cpp installs a table whose
+// surface_spans_persp records every span it is given, then draws it with the tuned one.
+void override_active(const Kernels* k);
+
 // Every variant table compiled into this build, scalar first, then the tuned mix
 // ("tuned", always supported), for tests and benchmarks. supported = the CPU can run it.
 struct Variant {

@@ -38,6 +38,10 @@
 //                pixels average 150-200 pixels in LibreQuake flythroughs at 320x240-640x480,
 //                about half of all pixels drawn)
 //   persp192lin  persp192 with linear steps
+//   persp32      32 spans of 17-48 pixels (mean 32.5) in one call, second-order steps
+//   persp16      32 spans of 1-16 pixels (mean 8.5) in one call, second-order steps: one run
+//                each (bench/span_hist.cpp: 880-960 such spans a frame at 320x240, 6-9% of
+//                the pixels)
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
@@ -100,7 +104,7 @@ const Kernels* find_variant(const char* name) {
 const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "palette2", "palette3", "palette4", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
-                              "persp192", "persp192lin", "persp32"};
+                              "persp192", "persp192lin", "persp32", "persp16"};
 
 // The span lengths of a persp case, left to right along one 1920-pixel row. Mixed lengths, so
 // the spans end in different last runs as the engine's do: a span of 16 k pixels (or a long
@@ -111,6 +115,8 @@ const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "bloc
 //              pixels; last runs of 2 .. 16 pixels), neighbours of different lengths
 //   persp32:   32 spans of 17 .. 48 pixels, each length once (mean 32.5, 1040 pixels; two and
 //              three runs, last runs of 1 .. 16 pixels), neighbours of different lengths
+//   persp16:   32 spans of 1 .. 16 pixels, each length twice (mean 8.5, 272 pixels: one run),
+//              neighbours of different lengths (16 1 15 2 .. 9 8, then back again)
 //   persp1920*: one span of 1920
 std::vector<int> persp_lengths(const char* c) {
   // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
@@ -125,6 +131,12 @@ std::vector<int> persp_lengths(const char* c) {
   if (std::strcmp(c, "persp32") == 0) {
     std::vector<int> l;
     for (int i = 0; i < 32; ++i) l.push_back(i % 2 ? 17 + i / 2 : 48 - i / 2);  // 48 17 47 18 .. 33 32
+    return l;
+  }
+  if (std::strcmp(c, "persp16") == 0) {
+    std::vector<int> l;
+    for (int i = 0; i < 16; ++i) l.push_back(i % 2 ? 1 + i / 2 : 16 - i / 2);  // 16 1 15 2 .. 9 8
+    for (int i = 0; i < 16; ++i) l.push_back(l[15 - i]);                        // and back again
     return l;
   }
   return {kSpan};
