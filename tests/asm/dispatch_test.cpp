@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <string>
 
+#include "asm/kernels.h"
 #include "asm/variants.h"
 
 namespace {
@@ -66,3 +67,20 @@ TEST(AsmDispatch, LongLinesAreReadInPieces) {
 }
 
 }  // namespace
+
+// override_active (benchmarks: bench/span_hist.cpp) makes active() the given table, over a
+// forced scalar choice too, and nullptr gives back the choice as it was.
+TEST(AsmDispatch, OverrideReplacesTheActiveTableUntilCleared) {
+  const sb::simd::Kernels* before = &sb::simd::active();
+  sb::simd::Kernels mine = *before;
+  mine.name = "mine";
+  sb::simd::override_active(&mine);
+  EXPECT_EQ(&sb::simd::active(), &mine);
+  const bool forced = sb::simd::scalar_forced();
+  sb::simd::force_scalar(!forced);
+  EXPECT_EQ(&sb::simd::active(), &mine);
+  sb::simd::force_scalar(forced);
+  sb::simd::override_active(nullptr);
+  EXPECT_EQ(&sb::simd::active(), before);
+  EXPECT_STRNE(sb::simd::active().name, "mine");
+}
