@@ -196,7 +196,9 @@ SB_INLINE void persp_few_k2(uint8_t* dest, int last, const uint8_t* texels, int6
   last_chunks(dest - 16, texels, uint64_t(width), last, second.b_uv, second.b_d, second.b_dd);
 }
 // steps_k3v_pass for a two-run span (17 .. 32 pixels): its inputs S01, S23' = S01, S44' = S23
-// ([S_2, ..]), c01, c23' = c01, zs23' = zs01 = [.., z_1 + z_2], s = last - 1, zh: the first
+// ([S_2, ..]; read in v5 and v19, where short_rest keeps S01 and S23: the block's lines renamed
+// by bench/mca_a53_few/rename_k1.py), c01, c23' = c01, zs23' = zs01 = [.., z_1 + z_2], s =
+// last - 1, zh: the first
 // pass's run a is run 0 (D01's lanes 0, 1: S_1 - S_0, c01[0]), drawn at dest[0 .. 15]; its run
 // 3 is S_2 - S_1 from S_1 (D23's lanes 2, 3; z_1 + z_2), this span's last run, returned packed
 // in x23 (start), x24, x25 (steps: Run16's packing); full iff last == 16. The block is
@@ -209,9 +211,8 @@ SB_INLINE void steps_k1v_pass(uint8_t* __restrict dest, const uint8_t* __restric
                               uint64_t& l_uv, uint64_t& l_d, uint64_t& l_dd, bool& full) {
   uint64_t st[6];
   register uint64_t rb_uv __asm__("x23"), rb_d __asm__("x24"), rb_dd __asm__("x25");
-  register int32x4_t rS44 __asm__("v7") = S23;
   register int32x4_t rS01 __asm__("v5") = S01;
-  register int32x4_t rS23 __asm__("v19") = S01;
+  register int32x4_t rS23 __asm__("v19") = S23;
   register float64x2_t rc01 __asm__("v3") = c01;
   register float64x2_t rc23 __asm__("v16") = c01;
   register float64x2_t rzs __asm__("v1") = zs01;
@@ -219,13 +220,13 @@ SB_INLINE void steps_k1v_pass(uint8_t* __restrict dest, const uint8_t* __restric
   uint64_t ys = uint32_t(s);
   __asm__ volatile(
 // BEGIN steps_k1v_pass
-      "ext v7.16b, v19.16b, v7.16b, #8\n\t"
+      "ext v7.16b, v5.16b, v19.16b, #8\n\t"
       "fmov x13, d5\n\t"
-      "ext v0.16b, v5.16b, v19.16b, #8\n\t"
+      "ext v0.16b, v5.16b, v5.16b, #8\n\t"
       "ldp q6, q17, [%[kp], #32]\n\t"
-      "str q19, [%[st]]\n\t"
+      "str q5, [%[st]]\n\t"
       "add %[y], %[kp], %[y], lsl #7\n\t"
-      "sub v7.4s, v7.4s, v19.4s\n\t"
+      "sub v7.4s, v7.4s, v5.4s\n\t"
       "sub v0.4s, v0.4s, v5.4s\n\t"
       "ldp q23, q24, [%[y], #128]\n\t"
       "ldp q21, q22, [%[y], #96]\n\t"
@@ -423,10 +424,10 @@ SB_INLINE void steps_k1v_pass(uint8_t* __restrict dest, const uint8_t* __restric
       "ldr x23, [%[st], #8]\n\t"
       "cmp w1, #0xf"
 // END steps_k1v_pass
-      : "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rS44), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rzc),
-        "+&w"(rS23), "=@cceq"(full), [y] "+&r"(ys)
-      : "w"(rS01), [kp] "r"(kMidTable.c), [st] "r"(st), [d] "r"(dest), [tx] "r"(texels), [w] "r"(width)
-      : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x19", "x20", "x21", "x22", "v0", "v2", "v4", "v6", "v9", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
+      : "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rzc),
+        "=@cceq"(full), [y] "+&r"(ys)
+      : "w"(rS01), "w"(rS23), [kp] "r"(kMidTable.c), [st] "r"(st), [d] "r"(dest), [tx] "r"(texels), [w] "r"(width)
+      : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x19", "x20", "x21", "x22", "v0", "v2", "v4", "v6", "v7", "v9", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
   l_uv = rb_uv, l_d = rb_d, l_dd = rb_dd;
 }
 // Two runs (17 .. 32 pixels; last = n - 16 = 1 .. 16 pixels in run 1): steps_k1v_pass (run 0
