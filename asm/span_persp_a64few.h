@@ -522,8 +522,9 @@ SB_INLINE void persp_few_k2(uint8_t* dest, int last, const uint8_t* texels, int6
   last_chunks(dest - 16, texels, uint64_t(width), last, luv, ld, ldd);
 }
 // steps_k3v_pass for a two-run span (17 .. 32 pixels): its inputs S01, S23' = S01, S44' = S23
-// ([S_2, ..]; read in v5 and v19, where short_rest keeps S01 and S23: the block's lines renamed
-// by bench/mca_a53_few/rename_k1.py), c01, c23' = c01, zs23' = zs01 = [.., z_1 + z_2], s =
+// ([S_2, ..]), c01, c23' = c01 (S01 and S23' read from v5, S44' from v19, c23' from v3, where
+// short_rest keeps S01, S23 and c01: the block's lines renamed by
+// bench/mca_a53_few/rename_k1.py), zs23' = zs01 = [.., z_1 + z_2], s =
 // last - 1, zh: the first
 // pass's run a is run 0 (D01's lanes 0, 1: S_1 - S_0, c01[0]), drawn at dest[0 .. 15]; its run
 // 3 is S_2 - S_1 from S_1 (D23's lanes 2, 3; z_1 + z_2), this span's last run, returned packed
@@ -540,7 +541,7 @@ SB_INLINE void steps_k1v_pass(uint8_t* __restrict dest, const uint8_t* __restric
   register int32x4_t rS01 __asm__("v5") = S01;
   register int32x4_t rS23 __asm__("v19") = S23;
   register float64x2_t rc01 __asm__("v3") = c01;
-  register float64x2_t rc23 __asm__("v16") = c01;
+  register float64x2_t rc23 __asm__("v16");  // scratch (c23' = c01 read from v3)
   register float64x2_t rzs __asm__("v1") = zs01;
   register double rzc __asm__("v31") = zh;
   uint64_t ys = uint32_t(s);
@@ -569,7 +570,7 @@ SB_INLINE void steps_k1v_pass(uint8_t* __restrict dest, const uint8_t* __restric
       "ldp q18, q20, [%[y], #64]\n\t"
       "fmul v26.2d, v26.2d, v3.d[0]\n\t"
       "fmov x13, d5\n\t"
-      "fmul v28.2d, v28.2d, v16.d[0]\n\t"
+      "fmul v28.2d, v28.2d, v3.d[0]\n\t"
       "fmul v27.2d, v27.2d, v3.d[1]\n\t"
       "fmls v29.2d, v30.2d, v24.d[1]\n\t"
       "fcvtzs v26.2d, v26.2d\n\t"
@@ -750,10 +751,12 @@ SB_INLINE void steps_k1v_pass(uint8_t* __restrict dest, const uint8_t* __restric
       "add x25, x13, w25, sxtw\n\t"
       "cmp w1, #0xf"
 // END steps_k1v_pass
-      : "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rc01), "+&w"(rc23), "+&w"(rzs), "+&w"(rzc),
+      : "=&r"(rb_uv), "=&r"(rb_d), "=&r"(rb_dd), "+&w"(rc01), "=&w"(rc23), "+&w"(rzs), "+&w"(rzc),
         "=@cceq"(full), [y] "+&r"(ys)
       : "w"(rS01), "w"(rS23), [kp] "r"(kMidTable.c), [st] "r"(st), [d] "r"(dest), [tx] "r"(texels), [w] "r"(width)
-      : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x19", "x20", "x21", "x22", "v0", "v2", "v4", "v6", "v7", "v9", "v17", "v18", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
+      : "memory", "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x13", "x14", "x15",
+        "x16", "x17", "x19", "x20", "x21", "x22", "v0", "v2", "v4", "v6", "v7", "v9", "v17", "v18", "v20", "v21",
+        "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30");
   l_uv = rb_uv, l_d = rb_d, l_dd = rb_dd;
 }
 // Two runs (17 .. 32 pixels; last = n - 16 = 1 .. 16 pixels in run 1): steps_k1v_pass (run 0
