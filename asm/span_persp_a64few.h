@@ -153,10 +153,10 @@ SB_INLINE void last_chunks(uint8_t* __restrict d, const uint8_t* __restrict tx, 
       : "x1", "x2", "x3", "x4", "x5", "x6", "x7", "x8", "x11", "x12", "x14", "x15", "x16", "x17", "x19", "x20", "x21",
         "x22", "memory");
 }
-// steps_k3v_pass for a three-run span (33 .. 48 pixels): its block with four lines changed
+// steps_k3v_pass for a three-run span (33 .. 48 pixels): its block with five lines changed
 // (bench/mca_a53_few/edit_k2.py) so that it takes this span's inputs where short_rest keeps
 // them (S01 = [S_0, S_1] in v5, S23 = [S_2, S_3] in v19, zs23 = [z_2 + z_3, ..] in v1; c01 in
-// v3; no vector copied before the block): D01 = [S_1, S_2] - S01 as the four-run block's (its
+// v3, also read as the undrawn run 2's factor; no vector copied before the block): D01 = [S_1, S_2] - S01 as the four-run block's (its
 // first pass draws runs 0 and 1 at dest[0 .. 31]), D23 = S23 - [S_3, S_2], whose lanes 2, 3
 // (the four-run block's last run) are S_3 - S_2, this span's last run (z_2 + z_3, s = last - 1:
 // the same lanes, the same bits; lanes 0, 1 a run 2 nothing reads); the last run's start S_2
@@ -171,7 +171,7 @@ SB_INLINE void steps_k2v_pass(uint8_t* __restrict dest, const uint8_t* __restric
   register int32x4_t rS01 __asm__("v5") = S01;
   register int32x4_t rS23 __asm__("v19") = S23;
   register float64x2_t rc01 __asm__("v3") = c01;
-  register float64x2_t rc23 __asm__("v16");  // the undrawn run 2's factor: any value
+  register float64x2_t rc23 __asm__("v16");  // scratch (the undrawn run 2's factor read from v3)
   register float64x2_t rzs __asm__("v1") = zs23;
   register double rzc __asm__("v31") = zh;
   uint64_t ys = uint32_t(s);
@@ -200,7 +200,7 @@ SB_INLINE void steps_k2v_pass(uint8_t* __restrict dest, const uint8_t* __restric
       "ldr q25, [%[y], #160]\n\t"
       "fmul v26.2d, v26.2d, v3.d[0]\n\t"
       "fmul v27.2d, v27.2d, v3.d[1]\n\t"
-      "fmul v28.2d, v28.2d, v16.d[0]\n\t"
+      "fmul v28.2d, v28.2d, v3.d[0]\n\t"
       "fmul d31, d31, v25.d[0]\n\t"
       "fmls v29.2d, v30.2d, v24.d[1]\n\t"
       "fcvtzs v26.2d, v26.2d\n\t"

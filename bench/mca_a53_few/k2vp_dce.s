@@ -21,7 +21,7 @@ fmul v30.2d, v29.2d, v24.d[0]
 ldr q25, [x30, #160]
 fmul v26.2d, v26.2d, v3.d[0]
 fmul v27.2d, v27.2d, v3.d[1]
-fmul v28.2d, v28.2d, v16.d[0]
+fmul v28.2d, v28.2d, v3.d[0]
 fmul d31, d31, v25.d[0]
 fmls v29.2d, v30.2d, v24.d[1]
 fcvtzs v26.2d, v26.2d
