@@ -6,8 +6,8 @@
 #   dce.py IN.s OUT.s [LIVE_OUT_REG ..]
 # Branches: forward ones to numeric labels (tbz w0, #3, 1f: runs_k3's chunks), the registers
 # live at the label joined to those of the fall-through.
-# Used on short_steps_k3v (asm/span_persp_a64mid.h) with the two-run span's inputs to get the
-# block of steps_k1v (asm/span_persp_a64few.h): only st's stores are its results there.
+# Used on steps_k3v_pass and runs_k3 (asm/span_persp_a64mid.h) less some of their stores, for
+# steps_k1v_pass, steps_k2v_pass and last_chunks (asm/span_persp_a64few.h; README.md here).
 import os, sys
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 from order_search import parse, reg  # noqa: E402
