@@ -70,7 +70,7 @@ struct MidFirst {
 };
 // Four runs, second order, from the samples S01 = [u_0, v_0, u_1, v_1], S23, S44 (sample 4
 // twice), the full runs' curve factors c01, c23, zs23 = [z_2 + z_3, z_3 + z_4], s = max(1,
-// last - 1) (the last run's steps), zc (the span's dzi). Runs 0, 1 (D01): delta, ddf, dd
+// last - 1) (the last run's steps), zh = zc / 2 (zc the span's dzi). Runs 0, 1 (D01): delta, ddf, dd
 // and steps16_dd's 32-bit form, as the two- and three-run steps block of
 // asm/span_persp_a64short.h computes them. The last run: last_steps' vector part (div_steps'
 // quotient q, lin = trunc(q), ddf = q (curve k), curve = (zc / 2)(z_3 + z_4); q (curve k)
@@ -88,14 +88,14 @@ struct MidFirst {
 // bench/mca_a53_p64; its registers from alloc.py on steps_k3v.vs).
 // AsmSpanPersp.ShortStepsK3vMatchTheirParts checks it against steps16_dd and last_steps.
 SB_INLINE MidFirst short_steps_k3v(int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t c01, float64x2_t c23,
-                                   float64x2_t zs23, int s, double zc, uint64_t (&st)[6]) {
+                                   float64x2_t zs23, int s, double zh, uint64_t (&st)[6]) {
   register int32x4_t rS44 __asm__("v7") = S44;
   register int32x4_t rS01 __asm__("v5") = S01;
   register int32x4_t rS23 __asm__("v19") = S23;
   register float64x2_t rc01 __asm__("v3") = c01;
   register float64x2_t rc23 __asm__("v16") = c23;
   register float64x2_t rzs __asm__("v1") = zs23;
-  register double rzc __asm__("v31") = zc * 0.5;
+  register double rzc __asm__("v31") = zh;  // zc / 2
   uint64_t ra_uv, ra_d, ra_dd, rb_uv, rb_d, rb_dd;
   __asm__(
 // BEGIN short_steps_k3v

@@ -16,6 +16,7 @@
 #include "asm/span_persp_a64lin2.h"
 #endif
 #include "asm/span_persp_a64mid.h"
+#include "asm/span_persp_a64few.h"
 
 namespace sb::simd {
 namespace {
@@ -85,6 +86,14 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
     constexpr int k = decltype(kc)::value;
     if constexpr (kCurve && k == 3) {  // four runs: asm/span_persp_a64mid.h
       persp_mid_k3(dest, last, texels, width, S01, S23, S44, c01, c23, zs23, zh);
+      return;
+    }
+    if constexpr (kCurve && k == 2) {  // three runs: asm/span_persp_a64few.h
+      persp_few_k2(dest, last, texels, width, S01, S23, c01, zs23, zh);
+      return;
+    }
+    if constexpr (kCurve && k == 1) {  // two runs: asm/span_persp_a64few.h
+      persp_few_k1(dest, last, texels, width, S01, S23, c01, zs01, zh);
       return;
     }
     // Full runs 0, 1, 2: deltas D01 = [du_0, dv_0, du_1, dv_1], D23 = [du_2, dv_2, du_3, dv_3]

@@ -191,6 +191,62 @@ TEST(AsmSpanPerspBatch, EveryPartialLastRunLengthMatchesOnEveryPath) {
   std::printf("[ asm      ] span_persp batch: %ld spans of every last-run length, every variant identical\n", spans);
 }
 
+// Second-order spans of two and three runs (17 .. 48 pixels) in pairs: aarch64 draws them from
+// the four-run steps block with moved samples (asm/span_persp_a64few.h: steps_k3v_pass for
+// three runs, steps_k1v_pass for two, the partial last run by last_chunks). Every length as
+// span a and as span b against every other (so every run count and last-run length on both
+// sides of the pair), on ordinary, steep (dzi 40 times), clamping (u past the surface's right
+// edge and v below 0 along the span) and extreme gradients (the curve near its largest, huge
+// u, v steps); then chains of such pairs (the pair loop's next-pair test) of random lengths.
+// Each span between guard bytes: the bytes after each span stay untouched.
+TEST(AsmSpanPerspBatch, TwoAndThreeRunPairsMatchOnEveryLengthPair) {
+  std::mt19937 rng(3248);
+  const int sw = 53, sh = 29;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  auto curve_span = [&](int kind) {
+    PerspSpan p = pick_span(rng, sw, sh);
+    p.second_order = true;
+    const double depth = 0.002 + 0.05 * double(rng() % 1000) / 1000.0;
+    switch (kind) {
+      case 0: break;
+      case 1: p.dzi *= 40.0; break;  // steep
+      case 2:                        // clamped: u runs past umax, v below 0
+        p.duz = std::fabs(p.duz) * 50.0 + double(sw) * depth;
+        p.dvz = -std::fabs(p.dvz) * 50.0 - double(sh) * depth;
+        break;
+      default:  // extreme: 1/z from near 0 to depth across the span, huge steps
+        p.zi0 = depth * 1e-3;
+        p.dzi = (rng() % 2 ? 1.0 : -1.0) * depth / 48.0;
+        if (p.dzi < 0) p.zi0 = depth;
+        p.duz = double(int32_t(rng())) * depth * 1e-2;
+        p.dvz = double(int32_t(rng())) * depth * 1e-2;
+        break;
+    }
+    if (p.dzi == 0.0 || !std::isfinite(p.dzi)) p.dzi = depth * 1e-4;
+    return p;
+  };
+  long spans = 0;
+  for (int na = 17; na <= 48; ++na) {
+    for (int nb = 17; nb <= 48; ++nb) {
+      for (int kind = 0; kind < 4; ++kind) {
+        const PerspSpan a = curve_span(kind), b = curve_span(int(rng() % 4));
+        ASSERT_TRUE(batch_matches({PerspItem{nullptr, na, a}, PerspItem{nullptr, nb, b}}, surf.data(), sw, sh))
+            << " na " << na << " nb " << nb << " kind " << kind;
+        spans += 2;
+      }
+    }
+  }
+  for (int trial = 0; trial < 1000; ++trial) {
+    std::vector<PerspItem> items;
+    const int count = 2 + int(rng() % 9);
+    for (int i = 0; i < count; ++i) items.push_back(PerspItem{nullptr, 17 + int(rng() % 32), curve_span(int(rng() % 4))});
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " chain trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld two- and three-run spans in pairs, every variant identical\n", spans);
+}
+
 // Pairs of short second-order spans side by side (the aarch64 paired samples): both spans of
 // each pair 17 .. 64 pixels, one of them at a depth needing the divide fallback, or
 // non-finite, or both ordinary; odd counts leave one span unpaired.

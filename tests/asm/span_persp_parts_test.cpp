@@ -410,7 +410,7 @@ TEST(AsmSpanPersp, ShortStepsK3vMatchTheirParts) {
     uint64_t st[6];
     const sb::simd::MidFirst f =
         sb::simd::short_steps_k3v(vld1q_s32(s01), vld1q_s32(s23), vld1q_s32(s44), vld1q_f64(c01), vld1q_f64(c23),
-                                  vld1q_f64(zs23), s, zc, st);
+                                  vld1q_f64(zs23), s, zc * 0.5, st);
     auto uv = [&](int j) { return (uint64_t(uint32_t(v[j])) << 32) + uint32_t(u[j]); };
     wrong += f.a_uv != uv(0) || f.b_uv != uv(1) || st[0] != uv(2) || st[1] != uv(3);
     // Full runs 0, 1, 2.
