@@ -225,7 +225,8 @@ void tiny_one_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const 
 // (tiny_samples, computed on the current pair's items again when there is none: no read past
 // end) in the same block as this pair's steps (tiny_steps), so the in-order A53 runs the two
 // latency chains side by side; the divide fallback's test after this pair is drawn.
-const PerspItem* tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
+__attribute__((aligned(4096))) const PerspItem* tiny_curve_run_a64(const PerspItem* it, const PerspItem* end,
+                                                                  const uint8_t* texels, int width) {
   const uint32_t w = uint32_t(width);
   const PerspItem* a = it;
   const PerspItem* b = it + 1 != end && tiny_curve_a64(it[1]) ? it + 1 : it;
