@@ -48,23 +48,27 @@ static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && 
               "tiny_pair's loads: [zi0, dzi], [uz0, duz], [vz0, dvz], [px0, umax | vmax] as 16-byte pairs");
 
 // Per span length n (1 .. 16): the second sample's offset n - 1, the step count's reciprocal
-// y = RN(1 / s) and s = max(n - 1, 1) (div_steps), and [s, T] as 32-bit integers (last_dd:
-// T = steps (steps - 1) / 2).
+// y = RN(1 / s) and s = max(n - 1, 1) (div_steps); s, T = steps (steps - 1) / 2 and
+// K = ceil(2^31 / T) (0 for T = 0) as 32-bit integers, each twice (the u and v lanes).
+// K: T min(|dd|, K) <= pd in 32 bits is last_dd's T |dd| <= pd (pd = |delta| < 2^31): equal
+// for |dd| <= K, and for |dd| > K both reject (T K >= 2^31 > pd); T K < 2^31 + T: no wrap.
 struct alignas(16) TinyRow {
   double off, y;
   double s;
-  uint32_t si, t;
+  uint32_t s2[2];
+  uint32_t t2[2], k2[2];
 };
 struct TinyTable {
   TinyRow at[17];
   constexpr TinyTable() : at{} {
     for (int n = 1; n <= 16; ++n) {
       const int steps = n - 1, s = steps > 1 ? steps : 1;
-      at[n] = TinyRow{double(steps), kRecipSteps[s], double(s), uint32_t(s), uint32_t(steps * (steps - 1) / 2)};
+      const uint32_t t = uint32_t(steps * (steps - 1) / 2), k = t ? uint32_t(((1ull << 31) + t - 1) / t) : 0u;
+      at[n] = TinyRow{double(steps), kRecipSteps[s], double(s), {uint32_t(s), uint32_t(s)}, {t, t}, {k, k}};
     }
   }
 };
-static_assert(sizeof(TinyRow) == 32);
+static_assert(sizeof(TinyRow) == 48 && offsetof(TinyRow, t2) == 32);
 constexpr TinyTable kTiny;
 
 // One run of n = 1 .. 16 pixels from the packed position x (v 2^32 + u), steps d, dd (Run16's
@@ -87,13 +91,18 @@ SB_INLINE void draw_tiny(uint8_t* __restrict dest, int n, const uint8_t* __restr
 }
 
 // What tiny_samples gives for spans a (lane 0) and b (lane 1): the clamped samples as packed
-// positions s0 = [u_a, v_a, u_b, v_b] at pixel 0, s1 the same at pixel n - 1; curve =
-// (dzi 0.5) (z_0 + z_1) per span; the table rows' [y_a, y_b], [s_a, s_b] and [s_a, T_a, s_b,
-// T_b]; fb: some lane of the reciprocals needs the divide (tiny_samples_div then).
+// positions s0 = [u_a, v_a, u_b, v_b] at pixel 0, s1 the same at pixel n - 1; c2 = -2 curve
+// per span (below); the table rows' [y_a, y_b], [s_a, s_b], and sv, tv, kv = [x_a, x_a, x_b,
+// x_b] of s, T, K; fb: all ones in some word iff some reciprocal needs the divide
+// (tiny_samples_div then).
+// c2 = RN(-dzi (z_0 + z_1)) = -2 RN((dzi 0.5) (z_0 + z_1)) = -2 curve: scaling by powers of two
+// is exact and commutes with rounding; where it does not (dzi 0.5 subnormal, or the product
+// overflowing in one form only) |ddf| < 1 or >= 1e9 (or NaN) in both forms, so dd is 0 and
+// the steps linear either way. ddf = RN(q c2) = RN(-2 RN(q curve)) = last_steps' ddf.
 struct TinySamples {
-  uint32x4_t s0, s1, st;
-  float64x2_t curve, Y, S;
-  uint64x2_t fb;
+  uint32x4_t s0, s1, sv, tv, kv;
+  float64x2_t c2, Y, S;
+  uint32x4_t fb;
 };
 // kDiv: the reciprocals by fdiv (the fallback; the same bits as the Newton steps where those
 // are exact).
@@ -107,6 +116,8 @@ SB_INLINE TinySamples tiny_samples(const PerspSpan& a, int na, const PerspSpan& 
   const TinyRow& rb = kTiny.at[nb];
   const float64x2_t ta = vld1q_f64(&ra.off), tb = vld1q_f64(&rb.off);
   const float64x2_t sa = vld1q_f64(&ra.s), sb = vld1q_f64(&rb.s);
+  const uint64x2_t ka = vld1q_u64(reinterpret_cast<const uint64_t*>(ra.t2));
+  const uint64x2_t kb = vld1q_u64(reinterpret_cast<const uint64_t*>(rb.t2));
   const float64x2_t zr = vzip1q_f64(a0, b0), zx = vzip2q_f64(a0, b0);
   const float64x2_t ur = vzip1q_f64(a1, b1), ux = vzip2q_f64(a1, b1);
   const float64x2_t vr = vzip1q_f64(a2, b2), vx = vzip2q_f64(a2, b2);
@@ -115,7 +126,8 @@ SB_INLINE TinySamples tiny_samples(const PerspSpan& a, int na, const PerspSpan& 
   TinySamples r;
   const float64x2_t off = vzip1q_f64(ta, tb);
   r.Y = vzip2q_f64(ta, tb), r.S = vzip1q_f64(sa, sb);
-  r.st = vreinterpretq_u32_f64(vzip2q_f64(sa, sb));  // [s_a, T_a, s_b, T_b]
+  r.sv = vreinterpretq_u32_f64(vzip2q_f64(sa, sb));
+  r.tv = vreinterpretq_u32_u64(vzip1q_u64(ka, kb)), r.kv = vreinterpretq_u32_u64(vzip2q_u64(ka, kb));
   const float64x2_t P1 = vaddq_f64(P, off);
   const float64x2_t kmin = vdupq_n_f64(span_walk::kMinZi), one = vdupq_n_f64(1.0);
   const float64x2_t zb0 = vmaxnmq_f64(vfmaq_f64(zr, zx, P), kmin);
@@ -123,7 +135,7 @@ SB_INLINE TinySamples tiny_samples(const PerspSpan& a, int na, const PerspSpan& 
   float64x2_t z0, z1;
   if constexpr (kDiv) {
     z0 = vdivq_f64(one, zb0), z1 = vdivq_f64(one, zb1);
-    r.fb = vdupq_n_u64(0);
+    r.fb = vdupq_n_u32(0);
   } else {
     // 1 / b (asm/span_persp_a64short.h's steps and proof).
     float64x2_t y0 = vrecpeq_f64(zb0), y1 = vrecpeq_f64(zb1);
@@ -131,12 +143,13 @@ SB_INLINE TinySamples tiny_samples(const PerspSpan& a, int na, const PerspSpan& 
     y0 = vmulq_f64(y0, vrecpsq_f64(zb0, y0)), y1 = vmulq_f64(y1, vrecpsq_f64(zb1, y1));
     y0 = vfmaq_f64(y0, y0, vfmsq_f64(one, zb0, y0)), y1 = vfmaq_f64(y1, y1, vfmsq_f64(one, zb1, y1));
     z0 = vfmaq_f64(y0, y0, vfmsq_f64(one, zb0, y0)), z1 = vfmaq_f64(y1, y1, vfmsq_f64(one, zb1, y1));
-    // The fallback: some b with a significand of all ones, or b >= 2^1000 (+inf too).
-    const uint64x2_t i0 = vreinterpretq_u64_f64(zb0), i1 = vreinterpretq_u64_f64(zb1);
+    // The fallback: some b with a significand of all ones (b's bits OR 0xfff0000000000000 all
+    // ones: both words, uminp), or b >= 2^1000 (+inf too; b > 0: the bits order as the
+    // values, fmax of the two).
     const uint64x2_t mask = vdupq_n_u64(0xfff0000000000000), big = vdupq_n_u64(0x7e70000000000000);
-    const uint64x2_t ones = vdupq_n_u64(~uint64_t(0));
-    r.fb = vorrq_u64(vorrq_u64(vceqq_u64(vorrq_u64(i0, mask), ones), vceqq_u64(vorrq_u64(i1, mask), ones)),
-                     vorrq_u64(vcgeq_u64(i0, big), vcgeq_u64(i1, big)));
+    const uint32x4_t w = vpminq_u32(vreinterpretq_u32_u64(vorrq_u64(vreinterpretq_u64_f64(zb0), mask)),
+                                    vreinterpretq_u32_u64(vorrq_u64(vreinterpretq_u64_f64(zb1), mask)));
+    r.fb = vorrq_u32(w, vreinterpretq_u32_u64(vcgeq_u64(vreinterpretq_u64_f64(vmaxq_f64(zb0, zb1)), big)));
   }
   // The samples: [u_a, u_b] and [v_a, v_b] at P (z0) and P1 (z1), converted and clamped, then
   // zipped to the packed positions [u_a, v_a, u_b, v_b] of sample 0 (s0) and sample 1 (s1).
@@ -145,7 +158,7 @@ SB_INLINE TinySamples tiny_samples(const PerspSpan& a, int na, const PerspSpan& 
   const uint32x4_t U = vqmovn_high_u64(u0, vcvtq_n_u64_f64(vmulq_f64(vfmaq_f64(ur, ux, P1), z1), 16));
   const uint32x4_t V = vqmovn_high_u64(v0, vcvtq_n_u64_f64(vmulq_f64(vfmaq_f64(vr, vx, P1), z1), 16));
   r.s0 = vminq_u32(vzip1q_u32(U, V), M), r.s1 = vminq_u32(vzip2q_u32(U, V), M);
-  r.curve = vmulq_f64(vmulq_n_f64(zx, 0.5), vaddq_f64(z0, z1));
+  r.c2 = vmulq_f64(vnegq_f64(zx), vaddq_f64(z0, z1));
   return r;
 }
 // The divide fallback's samples (out of line: almost never taken).
@@ -159,34 +172,35 @@ struct TinyOut {
   uint64x2_t pos, d, dd;
 };
 SB_INLINE TinyOut tiny_steps(const TinySamples& r) {
-  const uint32x4_t s0 = r.s0, s1 = r.s1, st = r.st;
-  const float64x2_t Y = r.Y, S = r.S, curve = r.curve;
-  // The steps (last_steps): deltas [du_a, dv_a, du_b, dv_b] (0 <= u, v < 2^31: no overflow).
+  const uint32x4_t s0 = r.s0, s1 = r.s1, sv = r.sv, tv = r.tv, kv = r.kv;
+  const float64x2_t Y = r.Y, S = r.S, c2 = r.c2;
+  // The steps (last_steps): deltas [du_a, dv_a, du_b, dv_b] (0 <= u, v < 2^31: no overflow),
+  // as doubles without scvtf: the int64 2^52 + 2^51 + x (saddw) is that double's bits, minus
+  // 2^52 + 2^51 exactly x (asm/span_persp_a64short.h's kBiasBits).
   const int32x4_t D = vreinterpretq_s32_u32(vsubq_u32(s1, s0));
-  const float64x2_t Da = vcvtq_f64_s64(vmovl_s32(vget_low_s32(D))), Db = vcvtq_f64_s64(vmovl_high_s32(D));
+  const int64x2_t bias = vdupq_n_s64(int64_t(kBiasBits));
+  const float64x2_t biasd = vreinterpretq_f64_s64(bias);
+  const float64x2_t Da = vsubq_f64(vreinterpretq_f64_s64(vaddw_s32(bias, vget_low_s32(D))), biasd);
+  const float64x2_t Db = vsubq_f64(vreinterpretq_f64_s64(vaddw_high_s32(bias, D)), biasd);
   // div_steps per span (its y and s in lane 0 / 1).
   float64x2_t qa = vmulq_laneq_f64(Da, Y, 0), qb = vmulq_laneq_f64(Db, Y, 1);
   qa = vfmaq_laneq_f64(qa, vfmsq_laneq_f64(Da, qa, S, 0), Y, 0);
   qb = vfmaq_laneq_f64(qb, vfmsq_laneq_f64(Db, qb, S, 1), Y, 1);
-  const float64x2_t fa = vmulq_n_f64(vmulq_laneq_f64(qa, curve, 0), -2.0);
-  const float64x2_t fb = vmulq_n_f64(vmulq_laneq_f64(qb, curve, 1), -2.0);
-  const float64x2_t k1e9 = vdupq_n_f64(1e9);
-  const int64x2_t da = vandq_s64(vcvtq_s64_f64(fa), vreinterpretq_s64_u64(vcaltq_f64(fa, k1e9)));
-  const int64x2_t db = vandq_s64(vcvtq_s64_f64(fb), vreinterpretq_s64_u64(vcaltq_f64(fb, k1e9)));
+  const float64x2_t fa = vmulq_laneq_f64(qa, c2, 0), fb = vmulq_laneq_f64(qb, c2, 1);  // ddf
   const int32x4_t L = vmovn_high_s64(vmovn_s64(vcvtq_s64_f64(qa)), vcvtq_s64_f64(qb));  // trunc(q)
-  const int32x4_t DD = vmovn_high_s64(vmovn_s64(da), db);
+  // dd = trunc(ddf) saturated to int32 (NaN 0): |ddf| < 1e9 iff |dd| <= 999999999.
+  const int32x4_t DD = vqmovn_high_s64(vqmovn_s64(vcvtq_s64_f64(fa)), vcvtq_s64_f64(fb));
   // last_dd for the four lanes (asm/span_persp_arm.h): sg, pd = |delta|, pdd = dd mirrored,
-  // accept iff T |dd| <= pd (64-bit products), Q = |lin|, r = pd - s Q, m = (s - 1) pdd,
+  // accept iff |dd| <= 999999999 (else last_steps' dd is 0: accepted, d = lin, as here) and
+  // T |dd| <= pd (T min(|dd|, K) <= pd: TinyRow), Q = |lin|, r = pd - s Q, m = (s - 1) pdd,
   // d0' = Q - (m >> 1) - (m & 1 & (2 r < s)); d = accept ? mirror(d0') : lin, dd & accept.
-  const uint32x4_t sv = vtrn1q_u32(st, st), tv = vtrn2q_u32(st, st);  // [s_a, s_a, s_b, s_b], T
   const int32x4_t sg = vshrq_n_s32(D, 31);
   const uint32x4_t usg = vreinterpretq_u32_s32(sg);
   const uint32x4_t pd = vreinterpretq_u32_s32(vabsq_s32(D));
   const uint32x4_t pdd = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(DD), usg), usg);
   const uint32x4_t add = vreinterpretq_u32_s32(vabsq_s32(DD));
-  const uint64x2_t plo = vmull_u32(vget_low_u32(add), vget_low_u32(tv)), phi = vmull_high_u32(add, tv);
-  const uint32x4_t accept = vuzp1q_u32(vreinterpretq_u32_u64(vcleq_u64(plo, vmovl_u32(vget_low_u32(pd)))),
-                                       vreinterpretq_u32_u64(vcleq_u64(phi, vmovl_high_u32(pd))));
+  const uint32x4_t accept = vbicq_u32(vcleq_u32(vmulq_u32(vminq_u32(add, kv), tv), pd),
+                                      vcgtq_u32(add, vdupq_n_u32(999999999)));
   const uint32x4_t Q = vsubq_u32(veorq_u32(vreinterpretq_u32_s32(L), usg), usg);
   const uint32x4_t rr = vmlsq_u32(pd, sv, Q);
   const uint32x4_t m = vmulq_u32(vsubq_u32(sv, vdupq_n_u32(1)), pdd);
@@ -206,7 +220,7 @@ SB_INLINE TinyOut tiny_steps(const TinySamples& r) {
   return TinyOut{vreinterpretq_u64_u32(s0), pack(dres), pack(ddres)};
 }
 SB_INLINE bool tiny_fallback(const TinySamples& r) {
-  return __builtin_expect(vmaxvq_u32(vreinterpretq_u32_u64(r.fb)) != 0, 0);
+  return __builtin_expect(vmaxvq_u32(r.fb) == ~0u, 0);
 }
 
 }  // namespace
