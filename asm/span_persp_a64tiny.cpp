@@ -257,8 +257,8 @@ __attribute__((aligned(4096))) const PerspItem* tiny_curve_run_a64(const PerspIt
     const bool two = inb & tiny_curve_a64(*(inb ? xb : a));
     xa = more ? xa : a;
     xb = two ? xb : xa;
-    TinySamples nxt = tiny_samples<false>(xa->span, xa->n, xb->span, xb->n);
     const TinyOut o = tiny_steps(cur);
+    TinySamples nxt = tiny_samples<false>(xa->span, xa->n, xb->span, xb->n);
     if (tiny_fallback(nxt)) nxt = tiny_samples_div(xa->span, xa->n, xb->span, xb->n);
     draw_tiny(a->dest, a->n, texels, w, vgetq_lane_u64(o.pos, 0), vgetq_lane_u64(o.d, 0), vgetq_lane_u64(o.dd, 0));
     if (b != a) {
