@@ -623,7 +623,9 @@ void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels
 // Out of line (spans_range's code and page cuts stay as they were).
 __attribute__((noinline)) void tiny_then_batch(const PerspItem* it, const PerspItem* end, const uint8_t* texels,
                                                int width) {
-  return batch_from(tiny_curve_run_a64(it, end, texels, width), end, texels, width);
+  it = tiny_curve_run_a64(it, end, texels, width);
+  if (it == end) return;  // (spans_range's register saves for no item)
+  return batch_from(it, end, texels, width);
 }
 #include "asm/span_persp_fast_a64tests.inc"  // the item tests (see there)
 // persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
