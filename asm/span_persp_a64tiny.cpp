@@ -1,7 +1,8 @@
-// asm/span_persp_a64tiny.cpp: aarch64 only (empty elsewhere): the batch entry's second-order spans of 1 .. 16
-// pixels (one run; second_order with dzi != 0), two neighbouring ones at a time
-// (tiny_curve_run_a64, asm/span_persp_a64tiny.h, called from spans_range in
-// asm/span_persp_fast.cpp). Its own translation unit: in span_persp_fast.cpp this code changed
+// asm/span_persp_a64tiny.cpp: aarch64 only (empty elsewhere): second-order spans of 1 .. 16
+// pixels (one run; second_order with dzi != 0), two neighbouring ones of a batch at a time
+// (tiny_curve_run_a64, asm/span_persp_a64tiny.h: batch_from's runs of them in
+// asm/span_persp_fast.cpp; tiny_one_a64: persp_fast<true>'s lone ones). Notes and figures:
+// bench/mca_a53_tiny/README.md. Its own translation unit: in span_persp_fast.cpp this code changed
 // GCC's inlining budget for the other functions there (the single entry shrank by 1.3 KiB,
 // spans_range grew by 2.4 KiB: A53 persp64single 9.49 -> 9.54, persp32 18.31 -> 18.37).
 //
@@ -21,9 +22,10 @@
 //   [u, v] = fix((uvrow + uvx pos) z): fcvtzu #16 (trunc(q 2^16), negatives and NaN 0,
 //   saturating), uqxtn, umin with [umax, vmax] (to_fixed's bits: see short_samples2);
 //   the run's steps as last_steps (asm/span_persp_arm.h): q = delta / steps by div_steps'
-//   three operations (correctly rounded, no divide), curve = (dzi 0.5) (z_0 + z_1),
-//   ddf = (q curve) -2, lin = trunc(q), dd = trunc(ddf) where |ddf| < 1e9 else 0, then
-//   last_dd's integer test and d0 for the four lanes [u_a, v_a, u_b, v_b] at once;
+//   three operations (correctly rounded, no divide), ddf = q (-dzi (z_0 + z_1)) (= (q curve)
+//   -2 with curve = (dzi 0.5) (z_0 + z_1): TinySamples), lin = trunc(q), dd = trunc(ddf) where
+//   |ddf| < 1e9 else 0, then last_dd's integer test and d0 for the four lanes [u_a, v_a,
+//   u_b, v_b] at once;
 //   steps < 2 (n = 1, 2): T = 0 and S = 1 make d = lin; dd is then never used (a run of one
 //   or two pixels adds no second difference), so no mask for it.
 // Then each span drawn from its packed position and steps (draw_tiny: draw_last's chunks by
@@ -45,7 +47,7 @@ namespace {
 static_assert(offsetof(PerspSpan, zi0) == 0 && offsetof(PerspSpan, dzi) == 8 && offsetof(PerspSpan, uz0) == 16 &&
                   offsetof(PerspSpan, duz) == 24 && offsetof(PerspSpan, vz0) == 32 && offsetof(PerspSpan, dvz) == 40 &&
                   offsetof(PerspSpan, px0) == 48 && offsetof(PerspSpan, umax) == 56 && offsetof(PerspSpan, vmax) == 60,
-              "tiny_pair's loads: [zi0, dzi], [uz0, duz], [vz0, dvz], [px0, umax | vmax] as 16-byte pairs");
+              "tiny_samples' loads: [zi0, dzi], [uz0, duz], [vz0, dvz], [px0, umax | vmax] as 16-byte pairs");
 
 // Per span length n (1 .. 16): the second sample's offset n - 1, the step count's reciprocal
 // y = RN(1 / s) and s = max(n - 1, 1) (div_steps); s, T = steps (steps - 1) / 2 and
