@@ -10,6 +10,7 @@
 #include "asm/span_persp_a64long.h"
 #include "asm/span_persp_a64longspan.h"
 #include "asm/span_persp_a64pair.h"
+#include "asm/span_persp_a64tiny.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/span_persp_v7pass.h"
 #include "asm/surface_span.h"
@@ -606,12 +607,26 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #undef SB_PERSP_FAST_BODY
 #undef SB_CURVE_NOT_V7N
 #if defined(__aarch64__) && defined(__GNUC__)
+// Second-order spans of 1 .. 16 pixels: tiny_one_a64 (asm/span_persp_a64tiny.cpp), reached
+// with a sibling call before this function saves any register (spans_range's and the single
+// entry's such spans; the batch's runs of them go there from batch_from, two at a time).
 template <bool kCurve>
 void persp_fast(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+  if constexpr (kCurve) {
+    if (uint32_t(n) - 1u < 16u) return tiny_one_a64(dest, n, texels, width, p);
+  }
   persp_fast_inl<kCurve>(dest, n, texels, width, p);
 }
 void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+// A run of second-order spans of 1 .. 16 pixels at it (tiny_curve_a64), then the items left.
+// Out of line (spans_range's code and page cuts stay as they were).
+__attribute__((noinline)) void tiny_then_batch(const PerspItem* it, const PerspItem* end, const uint8_t* texels,
+                                               int width) {
+  it = tiny_curve_run_a64(it, end, texels, width);
+  if (it == end) return;  // (spans_range's register saves for no item)
+  return batch_from(it, end, texels, width);
+}
 #include "asm/span_persp_fast_a64tests.inc"  // the item tests (see there)
 // persp_long_a64_inl for one span, then the rest of its batch, items [next, end) (none for
 // the single-span entry: next == end), through batch_from. Reached from batch_from and left
@@ -720,6 +735,7 @@ void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels
     return persp_lin_a64(it->dest, it->n, texels, width, it->span, it + 1, end);
   }
   if (end - it >= 2 && lin_short_a64(it[0]) && lin_short_a64(it[1])) return lin_pairs_a64(it, end, texels, width);
+  if (it != end && tiny_curve_a64(*it)) return tiny_then_batch(it, end, texels, width);
   return spans_range(it, end, texels, width);
 }
 #endif

@@ -494,6 +494,89 @@ TEST(AsmSpanPerspBatch, MatchesOnRealFaces) {
   std::printf("[ asm      ] span_persp batch: %ld rows of real faces, every variant identical\n", spans);
 }
 
+// Second-order spans of 1 .. 16 pixels side by side (aarch64: tiny_curve_run,
+// asm/span_persp_a64tiny.h, two at a time in 2-lane vectors, a lone one paired with itself):
+// every length 1 .. 16 as span a and as span b of a pair, each pair alone, after a linear or
+// long span, and followed by a third such span (odd counts: the lone one); the spans'
+// gradients pick_span's (edge depths, the reciprocal's divide fallback in either span,
+// non-finite values, steep), second order with dzi != 0.
+TEST(AsmSpanPerspBatch, TinySecondOrderPairsMatchForEveryLengthPair) {
+  std::mt19937 rng(1616);
+  const int sw = 53, sh = 31;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 29 + 3);
+  auto tiny = [&](int n) {
+    PerspSpan p = pick_span(rng, sw, sh);
+    p.second_order = true;
+    if (p.dzi == 0.0) p.dzi = rng() % 2 ? 1e-7 : -3e-6;
+    return PerspItem{nullptr, n, p};
+  };
+  long spans = 0;
+  for (int na = 1; na <= 16; ++na) {
+    for (int nb = 1; nb <= 16; ++nb) {
+      for (int k = 0; k < 12; ++k) {
+        std::vector<PerspItem> items;
+        if (k % 4 == 1) {  // after another kind of span
+          PerspItem x = tiny(k % 8 == 1 ? 40 : 5);
+          x.span.second_order = k % 8 == 1;
+          items.push_back(x);
+        }
+        items.push_back(tiny(na));
+        items.push_back(tiny(nb));
+        if (k % 3 == 2) items.push_back(tiny(1 + int(rng() % 16)));  // a lone third one
+        if (k % 6 == 5) items.push_back(tiny(17 + int(rng() % 100)));
+        ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " na " << na << " nb " << nb << " k " << k;
+        spans += long(items.size());
+      }
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans around pairs of 1 .. 16 px, every variant identical\n", spans);
+}
+
+// Runs of 1 .. 16 pixel spans of one plane's rows (the engine's surface edges) broken by
+// spans of other kinds (linear, dzi +-0 or NaN, n 0 or 17 or long), u and v clamped at either
+// end of the surface (the plane's texture coordinates past it), extreme dzi and depths.
+TEST(AsmSpanPerspBatch, RunsOfTinySecondOrderSpansMatch) {
+  std::mt19937 rng(8128);
+  long spans = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int sw = 1 + int(rng() % 90), sh = 1 + int(rng() % 70);
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    PerspSpan plane = pick_span(rng, sw, sh);
+    plane.second_order = true;
+    if (plane.dzi == 0.0) plane.dzi = 2e-6;
+    switch (trial % 6) {
+      case 0: plane.uz0 *= 40.0, plane.vz0 = -plane.vz0 * 30.0; break;  // clamped: u at umax, v at 0
+      case 1: plane.duz *= 1e4, plane.dvz *= -1e4; break;              // u, v crossing both clamps
+      case 2: plane.dzi *= 300.0; break;                                // steep (zi clamped along it)
+      default: break;
+    }
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 24);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = plane;
+      const double dy = double(rng() % 40);
+      p.zi0 += dy * 1e-5, p.uz0 += dy * 0.5, p.vz0 -= dy * 0.7;
+      p.px0 = double(rng() % 640) + 0.5;
+      int n = 1 + int(rng() % 16);
+      switch (rng() % 12) {
+        case 0: p.second_order = false; break;
+        case 1: p.dzi = rng() % 2 ? 0.0 : -0.0; break;
+        case 2: p.dzi = std::numeric_limits<double>::quiet_NaN(); break;  // dzi != 0: the tiny path
+        case 3: n = rng() % 2 ? 0 : 17; break;
+        case 4: n = pick_length(rng); break;
+        case 5: p = pick_span(rng, sw, sh), p.second_order = true; break;
+        default: break;
+      }
+      items.push_back(PerspItem{nullptr, n, p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of 1 .. 16 px, every variant identical\n", spans);
+}
+
 #if defined(__aarch64__) && defined(__GNUC__)
 // The paired sample block (short_samples2) against two runs of the single one
 // (short_samples1), every output bit for bit (unused samples' lanes too): both spans 17 .. 64
