@@ -12,6 +12,7 @@
 #include "asm/span_persp_a64pair.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/span_persp_v7pass.h"
+#include "asm/span_persp_x86short.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -827,6 +828,20 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       persp_fast<true>(it->dest, n, texels, width, p);
     }
     ++it;
+  }
+#elif defined(__x86_64__) && defined(__GNUC__) && defined(__SSE2__)
+  // x86-64: persp_one's dispatch, with the second-order spans of 1 .. kX86ShortMax pixels
+  // drawn here (persp_short_x86, asm/span_persp_x86short.h), not by a call.
+  for (; it != end; ++it) {
+    const PerspSpan& p = it->span;
+    const int n = it->n;
+    if (!p.second_order || p.dzi == 0.0) {
+      persp_fast<false>(it->dest, n, texels, width, p);
+    } else if (uint32_t(n - 1) < uint32_t(kX86ShortMax)) {
+      persp_short_x86(it->dest, n, texels, uint32_t(width), p);
+    } else {
+      persp_fast<true>(it->dest, n, texels, width, p);
+    }
   }
 #else
   for (; it != end; ++it) persp_one(it->dest, it->n, texels, width, it->span);

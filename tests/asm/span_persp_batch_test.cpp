@@ -309,6 +309,53 @@ TEST(AsmSpanPerspBatch, ChainsOfLinearPairsMatchWithEdgeDepths) {
   std::printf("[ asm      ] span_persp batch: %ld spans in chains of linear pairs, every variant identical\n", spans);
 }
 
+// Short second-order spans in runs (x86-64: second order with dzi != 0 and 1 .. 48 pixels
+// drawn inline in the batch loop, asm/span_persp_x86short.h; one, two and three runs, last
+// runs of 1 .. 16 pixels): every n 1 .. 48 in runs of 1 .. 11 such spans, mixed with longer,
+// linear, dzi +-0 and empty items, with extreme gradients (steep or tiny dzi: second-order
+// steps rejected or 0; huge u, v: the clamps at max; negative: at 0; non-finite and the divide
+// fallback from pick_span), each span between guard bytes (the bytes after it untouched).
+TEST(AsmSpanPerspBatch, RunsOfShortSecondOrderSpansMatch) {
+  std::mt19937 rng(4816);
+  long spans = 0;
+  for (int trial = 0; trial < 2400; ++trial) {
+    const int sw = 1 + int(rng() % 90), sh = 1 + int(rng() % 70);
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 11);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = pick_span(rng, sw, sh);
+      int n = 1 + (trial * 11 + i) % 48;  // every length, in every position of a run
+      if (rng() % 6 == 0) {  // another kind between the short ones
+        switch (rng() % 5) {
+          case 0: n = 49 + int(rng() % 200); break;
+          case 1: p.second_order = false; break;
+          case 2: p.dzi = rng() % 2 ? 0.0 : -0.0; break;
+          case 3: n = 0; break;
+          default: n = pick_length(rng); break;
+        }
+      } else {
+        p.second_order = true;
+        if (p.dzi == 0.0) p.dzi = rng() % 2 ? 1e-7 : -1e-7;
+        switch (rng() % 8) {
+          case 0: p.dzi *= 1e4; break;                    // steep: large dd, often rejected
+          case 1: p.dzi = std::ldexp(1.0, -1000); break;  // tiny: curve underflows to 0 or near
+          case 2: p.uz0 *= 1e3, p.duz *= 1e3; break;      // u past umax (clamped)
+          case 3: p.vz0 = -std::fabs(p.vz0) * 4.0; break;  // v below 0 (clamped)
+          case 4: p.duz = -p.duz * 300.0, p.dvz = p.dvz * 300.0; break;  // across the clamps
+          default: break;
+        }
+      }
+      items.push_back(PerspItem{nullptr, n, p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of short second-order ones, every variant identical\n",
+              spans);
+}
+
 // Runs of long spans (aarch64: a long first item of the items left is reached and left with
 // tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
 // order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
