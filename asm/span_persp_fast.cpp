@@ -974,8 +974,8 @@ namespace {
 // .text the compiler emitted it first, and persp_fast's blocks moved: skylake persp64single
 // 6.76 -> 6.93, persp1920 4.13 -> 4.27). Not page-aligned: the page end that then falls in
 // it measured better (skylake persp32 6.90 aligned 7.27).
-__attribute__((noinline, section(".text.sb_x86short"))) const PerspItem* short_run_x86(const PerspItem* it, const PerspItem* end,
-                                                         const uint8_t* texels, uint32_t w) {
+__attribute__((noinline, section(".text.sb_x86short"))) const PerspItem* short_run_x86(
+    const PerspItem* it, const PerspItem* end, const uint8_t* texels, uint32_t w) {
   do {
     persp_short_x86(it->dest, it->n, texels, w, it->span);
     ++it;

@@ -1,10 +1,10 @@
-// asm/span_persp_x86short.h: x86-64 only, the batch loop's short second-order spans
-// (asm/span_persp.h: second_order with dzi != 0, 1 .. kX86ShortMax pixels), drawn inline in
-// surface_spans_persp_fast's loop (spans_range): no call per span, so none of persp_fast's
-// prologue and epilogue (six pushes, a 0x128-byte frame: llvm-mca times the epilogue alone
-// at 37 cycles on Skylake), and none of run_steps_uv's out-of-line jump table. Internal:
-// included by asm/span_persp_fast.cpp only, after asm/span_persp_arm.h (its last_steps_q and
-// asm/span_persp_run.h's runs).
+// asm/span_persp_x86short.h: x86-64 only, the batch entry's short second-order spans
+// (asm/span_persp.h: second_order with dzi != 0, 1 .. kX86ShortMax pixels), drawn by
+// persp_short_x86 inlined into short_run_x86 (asm/span_persp_fast.cpp: one call a run of such
+// items, not one per span), so none of persp_fast's prologue and epilogue per span (six
+// pushes, a 0x128-byte frame: llvm-mca times that epilogue alone at 37 cycles on Skylake)
+// and none of run_steps_uv's out-of-line jump table. Internal: included by
+// asm/span_persp_fast.cpp only (asm/span_persp_run.h's runs and steps16_dd).
 //
 // The walker's arithmetic (asm/span_walk.h), the same bits: the samples at pixel offsets
 // o_j = min(16 j, n - 1), their positions as the walker accumulates them (P_0 + o_1 for
@@ -13,14 +13,14 @@
 // samples two at a time in SSE2's two double lanes (mulpd, addpd, maxpd, divpd: each lane the
 // scalar operation's IEEE result), so one divide instruction gives two reciprocals. Full runs'
 // steps are steps16_sel's (delta / 16 * curve exact as delta * 0.0625), the last run's
-// last_steps_q's (the quotients delta / steps of u and v in one divpd).
+// last_steps_q's (asm/span_persp_arm.h; the quotients delta / steps of u and v in one divpd,
+// last_dd for both in SSE2 lanes).
 // A last run of one pixel draws its start only: the sample after it (computed at some
 // position, clamped like any other) is then never used.
 #pragma once
 #if defined(__x86_64__) && defined(__GNUC__) && defined(__SSE2__)
 #include <emmintrin.h>
 
-#include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
 
 namespace sb::simd {
@@ -129,89 +129,88 @@ SB_INLINE LastVec last_vec_x86(int steps, __m128i a, __m128i b, __m128d z, doubl
 struct StepsPacked {
   uint64_t d, dd;
 };
-SB_INLINE uint64_t pack_lanes02(__m128i x) {  // lanes 0, 2 as pack_steps(lane 2, lane 0)
-  const __m128i uv = _mm_shuffle_epi32(x, _MM_SHUFFLE(3, 3, 2, 0));  // [u, v, ..]
-  const __m128i su = _mm_slli_si128(_mm_srai_epi32(uv, 31), 4);       // [0, u < 0 ? -1 : 0, ..]
-  return uint64_t(_mm_cvtsi128_si64(_mm_add_epi32(uv, su)));
-}
 SB_INLINE StepsPacked last_int_x86(int steps, const LastVec& l) {
   const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
-  // In one asm statement: its inputs (the lanes [u, v, ..] of l) are read, never written,
-  // and every temporary is its own register, so llvm-mca (bench/count.sh), which times the
-  // block as a loop, sees no register carried from one iteration to the next (GCC's
-  // allocation reused the inputs' registers for the results: a false chain through the
-  // whole block, znver3 23 cycles for its 70 instructions). Per lane pair (u in lanes 0
+  // In one asm statement: its inputs are read, never written, its temporaries are xmm7 ..
+  // xmm15 (clobbered: no input there) and its outputs early-clobbered (steps passed too, so
+  // that they do not take its register either): llvm-mca (bench/count.sh), which times the
+  // block as a loop, then sees no register carried from one iteration to the next through
+  // the block (GCC's allocation had put the results in the inputs' registers: a false chain
+  // through the whole block, znver3 23 cycles for its 70 instructions). Per lane pair (u in lanes 0
   // and 1, v in 2 and 3 after pshufd 0x50), last_dd's operations as in the C++ above:
   //   sg = delta >> 31; pd = |delta|; pdd = dd mirrored by sg; add = |dd|
   //   reject = sign(pd - add T) (64-bit: pmuludq, psubq; pd zero-extended)
   //   Q = lin mirrored; r = pd - s Q; m = (s - 1) pdd; c = 2 r < s
   //   d0 = Q - (m >> 1) - (m & c & 1); d = reject ? lin : d0 mirrored; dd = reject ? 0 : dd
   // then lanes 0 and 2 packed (pack_steps: the v lane + the u lane's sign, above u).
+  static const __m128i kLow32 = {int64_t(0xffffffffull), int64_t(0xffffffffull)};  // lanes 0, 2
+  static const __m128i kOnes = {int64_t(0x100000001ull), int64_t(0x100000001ull)};
   uint64_t od, odd;
-  __m128i t0, t1, t2, t3, t4, t5, t6, t7;
   __asm__(
-      "pshufd $0x50, %[d], %[t0]\n\t"         // delta
-      "pshufd $0x50, %[dd], %[t1]\n\t"        // ddi
-      "pshufd $0x50, %[lin], %[t2]\n\t"       // lin
-      "movd %[T], %[t5]\n\t"
-      "movdqa %[t0], %[t3]\n\t"
-      "psrad $31, %[t3]\n\t"                  // sg
-      "movdqa %[t1], %[t4]\n\t"
-      "psrad $31, %[t4]\n\t"                  // sd
-      "pshufd $0, %[t5], %[t5]\n\t"           // T
-      "pxor %[t3], %[t0]\n\t"
-      "movdqa %[t1], %[t6]\n\t"
-      "pxor %[t4], %[t6]\n\t"
-      "psubd %[t3], %[t0]\n\t"                // pd
-      "psubd %[t4], %[t6]\n\t"                // add = |dd|
-      "movd %[s], %[t7]\n\t"
-      "pmuludq %[t5], %[t6]\n\t"              // add T (64-bit lanes)
-      "pshufd $0, %[t7], %[t7]\n\t"           // s
-      "movdqa %[t0], %[t4]\n\t"
-      "pand %[lo], %[t4]\n\t"                 // pd zero-extended
-      "movdqa %[t2], %[t5]\n\t"
-      "psubq %[t6], %[t4]\n\t"                // pd - add T
-      "pxor %[t3], %[t5]\n\t"
-      "psrad $31, %[t4]\n\t"
-      "psubd %[t3], %[t5]\n\t"                // Q
-      "pshufd $0xf5, %[t4], %[t4]\n\t"        // reject, both halves of each lane pair
-      "movdqa %[t5], %[t6]\n\t"
-      "pmuludq %[t7], %[t6]\n\t"              // s Q (low halves)
-      "psubd %[t6], %[t0]\n\t"                // r = pd - s Q
-      "movdqa %[t1], %[t6]\n\t"
-      "pxor %[t3], %[t6]\n\t"
-      "paddd %[t0], %[t0]\n\t"                // 2 r
-      "psubd %[t3], %[t6]\n\t"                // pdd
-      "pmuludq %[sm1], %[t6]\n\t"             // m = (s - 1) pdd (low halves)
-      "pcmpgtd %[t0], %[t7]\n\t"              // c = s > 2 r
-      "pand %[t6], %[t7]\n\t"
-      "psrad $1, %[t6]\n\t"
-      "pand %[one], %[t7]\n\t"                // m & c & 1
-      "psubd %[t6], %[t5]\n\t"
-      "psubd %[t7], %[t5]\n\t"                // d0
-      "movdqa %[t4], %[t6]\n\t"
-      "pxor %[t3], %[t5]\n\t"
-      "pand %[t4], %[t2]\n\t"                 // reject & lin
-      "psubd %[t3], %[t5]\n\t"                // d0 mirrored back
-      "pandn %[t1], %[t4]\n\t"                // dd = ~reject & ddi
-      "pandn %[t5], %[t6]\n\t"                // ~reject & d0
-      "pshufd $0xf8, %[t4], %[t4]\n\t"        // [ddu, ddv, ..]
-      "por %[t2], %[t6]\n\t"                  // d
-      "movdqa %[t4], %[t0]\n\t"
-      "pshufd $0xf8, %[t6], %[t6]\n\t"        // [du, dv, ..]
-      "psrad $31, %[t0]\n\t"
-      "movdqa %[t6], %[t7]\n\t"
-      "pslldq $4, %[t0]\n\t"
-      "psrad $31, %[t7]\n\t"
-      "paddd %[t4], %[t0]\n\t"
-      "pslldq $4, %[t7]\n\t"
-      "movq %[t0], %[odd]\n\t"
-      "paddd %[t6], %[t7]\n\t"
-      "movq %[t7], %[od]"
-      : [od] "=r"(od), [odd] "=r"(odd), [t0] "=&x"(t0), [t1] "=&x"(t1), [t2] "=&x"(t2), [t3] "=&x"(t3),
-        [t4] "=&x"(t4), [t5] "=&x"(t5), [t6] "=&x"(t6), [t7] "=&x"(t7)
-      : [d] "x"(l.d), [dd] "x"(l.dd), [lin] "x"(l.lin), [T] "r"(T), [s] "r"(s),
-        [sm1] "x"(_mm_set1_epi32(int32_t(s - 1))), [lo] "x"(_mm_set_epi32(0, -1, 0, -1)), [one] "x"(_mm_set1_epi32(1)));
+      "pshufd $0x50, %[d], %%xmm8\n\t"        // delta
+      "pshufd $0x50, %[dd], %%xmm9\n\t"       // ddi
+      "pshufd $0x50, %[lin], %%xmm10\n\t"     // lin
+      "movd %[T], %%xmm13\n\t"
+      "movdqa %%xmm8, %%xmm11\n\t"
+      "psrad $31, %%xmm11\n\t"                // sg
+      "movdqa %%xmm9, %%xmm12\n\t"
+      "psrad $31, %%xmm12\n\t"                // sd
+      "pshufd $0, %%xmm13, %%xmm13\n\t"       // T
+      "pxor %%xmm11, %%xmm8\n\t"
+      "movdqa %%xmm9, %%xmm14\n\t"
+      "pxor %%xmm12, %%xmm14\n\t"
+      "psubd %%xmm11, %%xmm8\n\t"             // pd
+      "psubd %%xmm12, %%xmm14\n\t"            // add = |dd|
+      "movd %[s], %%xmm15\n\t"
+      "pmuludq %%xmm13, %%xmm14\n\t"          // add T (64-bit lanes)
+      "pshufd $0, %%xmm15, %%xmm15\n\t"       // s
+      "movdqa %%xmm15, %%xmm7\n\t"
+      "psubd %[one], %%xmm7\n\t"              // s - 1
+      "movdqa %%xmm8, %%xmm12\n\t"
+      "pand %[lo], %%xmm12\n\t"               // pd zero-extended
+      "movdqa %%xmm10, %%xmm13\n\t"
+      "psubq %%xmm14, %%xmm12\n\t"            // pd - add T
+      "pxor %%xmm11, %%xmm13\n\t"
+      "psrad $31, %%xmm12\n\t"
+      "psubd %%xmm11, %%xmm13\n\t"            // Q
+      "pshufd $0xf5, %%xmm12, %%xmm12\n\t"    // reject, both halves of each lane pair
+      "movdqa %%xmm13, %%xmm14\n\t"
+      "pmuludq %%xmm15, %%xmm14\n\t"          // s Q (low halves)
+      "psubd %%xmm14, %%xmm8\n\t"             // r = pd - s Q
+      "movdqa %%xmm9, %%xmm14\n\t"
+      "pxor %%xmm11, %%xmm14\n\t"
+      "paddd %%xmm8, %%xmm8\n\t"              // 2 r
+      "psubd %%xmm11, %%xmm14\n\t"            // pdd
+      "pmuludq %%xmm7, %%xmm14\n\t"           // m = (s - 1) pdd (low halves)
+      "pcmpgtd %%xmm8, %%xmm15\n\t"           // c = s > 2 r
+      "pand %%xmm14, %%xmm15\n\t"
+      "psrad $1, %%xmm14\n\t"
+      "pand %[one], %%xmm15\n\t"              // m & c & 1
+      "psubd %%xmm14, %%xmm13\n\t"
+      "psubd %%xmm15, %%xmm13\n\t"            // d0
+      "movdqa %%xmm12, %%xmm14\n\t"
+      "pxor %%xmm11, %%xmm13\n\t"
+      "pand %%xmm12, %%xmm10\n\t"             // reject & lin
+      "psubd %%xmm11, %%xmm13\n\t"            // d0 mirrored back
+      "pandn %%xmm9, %%xmm12\n\t"             // dd = ~reject & ddi
+      "pandn %%xmm13, %%xmm14\n\t"            // ~reject & d0
+      "pshufd $0xf8, %%xmm12, %%xmm12\n\t"    // [ddu, ddv, ..]
+      "por %%xmm10, %%xmm14\n\t"              // d
+      "movdqa %%xmm12, %%xmm8\n\t"
+      "pshufd $0xf8, %%xmm14, %%xmm14\n\t"    // [du, dv, ..]
+      "psrad $31, %%xmm8\n\t"
+      "movdqa %%xmm14, %%xmm15\n\t"
+      "pslldq $4, %%xmm8\n\t"
+      "psrad $31, %%xmm15\n\t"
+      "paddd %%xmm12, %%xmm8\n\t"
+      "pslldq $4, %%xmm15\n\t"
+      "movq %%xmm8, %[odd]\n\t"
+      "paddd %%xmm14, %%xmm15\n\t"
+      "movq %%xmm15, %[od]"
+      : [od] "=&r"(od), [odd] "=&r"(odd)
+      : [d] "x"(l.d), [dd] "x"(l.dd), [lin] "x"(l.lin), [T] "r"(T), [s] "r"(s), [steps] "r"(steps),
+        [lo] "m"(kLow32), [one] "m"(kOnes)
+      : "xmm7", "xmm8", "xmm9", "xmm10", "xmm11", "xmm12", "xmm13", "xmm14", "xmm15");
   return StepsPacked{od, odd};
 }
 // draw_last<true> from packed values (tail_pos's): x = v 2^32 + u, d and dd as pack_steps.
@@ -229,20 +228,16 @@ SB_INLINE void draw_last_packed(uint8_t* __restrict dest, int n, const uint8_t* 
   if (n & 2) chunk(std::integral_constant<int, 2>{});
   if (n & 1) chunk(std::integral_constant<int, 1>{});
 }
-// Keeps x computed before this point (an empty asm that takes it in a register).
-SB_INLINE void pin_x86(__m128i& x) { __asm__ volatile("" : "+x"(x)); }
 // The last run's steps (last_int_x86) and pixels from l, the run of `last` = 1 .. 16 pixels
-// starting at start = [u, v, ..]. The integer steps inside each branch (pinned: the compiler
-// hoists common code above a branch otherwise): bench/count.sh times each block alone as a
-// loop, so the block holding the two divides' latency chain then ends after the quotients.
+// starting at start = [u, v, ..]. The integer steps inside each branch (each its own asm
+// statement, steps differing): bench/count.sh times each block alone as a loop, so the block
+// holding the two divides' latency chain then ends after the quotients.
 SB_INLINE void last_run_x86(uint8_t* dest, int last, const uint8_t* texels, uint32_t w, __m128i start, LastVec l) {
   const uint64_t x = uint64_t(_mm_cvtsi128_si64(start));  // v0 2^32 + u0 (both >= 0)
   if (last == 16) {
-    pin_x86(l.d), pin_x86(l.lin), pin_x86(l.dd);
     const StepsPacked st = last_int_x86(15, l);
     Run16<true>(x, st.d, st.dd, Run16<true>::Packed{}).draw(dest, texels, w);
   } else {
-    pin_x86(l.d), pin_x86(l.lin), pin_x86(l.dd);
     const StepsPacked st = last_int_x86(last - 1, l);
     draw_last_packed(dest, last, texels, w, TailPos{x, st.d, st.dd});
   }
