@@ -65,91 +65,72 @@ SB_INLINE void steps16_uv_x86(__m128i a, __m128i b, double curve, RunSteps* su, 
   *sv = steps16_dd(ilane<1>(d), ilane<1>(i));
 }
 
-// The last run's steps (steps = 0 .. 15 pixels from a = [ua, va, ..] to b): last_steps_q with
-// both quotients delta / max(steps, 1) in one divpd, both conversions in one cvttpd2dq, and
-// the range test -1e9 < ddf < 1e9 on the converted value (last_ddi's: |trunc(ddf)| < 1e9
-// iff |ddf| < 1e9; out of range and NaN convert to 0x80000000, rejected too), two lanes
-// compared at once. In two parts: the vector part (last_vec_x86: delta, trunc(q) and the
-// range-masked dd as int32 lanes [u, v, ..]) and last_dd's integer part (last_int_x86).
-struct LastVec {
-  __m128i d, lin, dd;
+// The last run's steps (steps = 0 .. 15 pixels from sample a = [ua, va, ..] to b = [ub, vb,
+// ..], their depths z = [za, zb]): last_steps_q's (asm/span_persp_arm.h), u and v in SSE2
+// lanes, returned packed as draw16 and draw_last take them (pack_steps: v 2^32 + u, u
+// sign-extended). One asm statement: its inputs are read, never written, its temporaries are
+// xmm7 .. xmm15 (clobbered: no input there) and its outputs early-clobbered (steps passed
+// too, so that they do not take its register either): llvm-mca (bench/count.sh), which times
+// each block as a loop, then sees no register carried through the block from one iteration
+// to the next (GCC's allocation had reused the inputs' registers for later values: a false
+// chain through the divide, znver3 23 cycles for 70 instructions). The operations, each the
+// C++'s:
+//   d = b - a; q = double(d) / double(s), s = max(steps, 1) (both quotients in one divpd);
+//   lin = trunc(q); curve = (zc * 0.5) * (za + zb) (the walker's zix * 0.5 * (z0 + z1));
+//   fi = trunc((q * curve) * -2.0); dd = fi where -1e9 < fi < 1e9 and steps > 1, else 0
+//   (last_ddi's range test on the converted value: |trunc(ddf)| < 1e9 iff |ddf| < 1e9; out
+//   of range and NaN convert to 0x80000000, rejected too);
+// then last_dd per lane pair (u in lanes 0 and 1, v in 2 and 3 after pshufd 0x50; pmuludq
+// uses lanes 0 and 2), its operations in the same order on the same 32-bit values:
+//   sg = delta >> 31; pd = |delta|; pdd = dd mirrored by sg; add = |dd|
+//   reject = sign(pd - add T) (64-bit: pmuludq, psubq, pd zero-extended; T |dd| < 2^37)
+//   Q = lin mirrored; r = pd - s Q; m = (s - 1) pdd; c = 2 r < s
+//   d0 = Q - (m >> 1) - (m & c & 1); d = reject ? lin : d0 mirrored; dd = reject ? 0 : dd
+// and lanes 0 and 2 packed (the v lane plus the u lane's sign, above u).
+struct StepsPacked {
+  uint64_t d, dd;
 };
-// From samples a = [ua, va, ..], b = [ub, vb, ..] and their depths z = [za, zb]. In one asm
-// statement, for the reason last_int_x86 gives (inputs read, never written; GCC's code
-// carried the curve's register through the divide from one llvm-mca iteration to the next).
-// The operations, each the C++'s: d = b - a; q = double(d) / double(s) (s = max(steps, 1));
-// lin = trunc(q); curve = (zc * 0.5) * (za + zb) (the walker's zix * 0.5 * (z0 + z1));
-// fi = trunc((q * curve) * -2.0); dd = fi where -1e9 < fi < 1e9 and steps > 1, else 0.
-SB_INLINE LastVec last_vec_x86(int steps, __m128i a, __m128i b, __m128d z, double zc) {
-  const double sd = double(steps > 1 ? steps : 1);
+SB_INLINE StepsPacked last_steps_x86(int steps, __m128i a, __m128i b, __m128d z, double zc) {
+  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
+  const double sd = double(int32_t(s));
   const int32_t two = (1 - steps) >> 31;  // steps > 1 as a mask (steps = 0 .. 15)
   static const double kHalf = 0.5;
   static const __m128d kMinus2 = {-2.0, -2.0};
   static const __m128i kLo = {int64_t(0xc4653601c4653601ull), int64_t(0xc4653601c4653601ull)};  // -999999999
   static const __m128i kHi = {int64_t(0x3b9aca003b9aca00ull), int64_t(0x3b9aca003b9aca00ull)};  // 1000000000
-  __m128i d, lin, dd, t1, t2;
-  __m128d q, t, c;
-  __asm__(
-      "movdqa %[b], %[d]\n\t"
-      "movapd %[sd], %[t]\n\t"
-      "psubd %[a], %[d]\n\t"                  // [du, dv, ..]
-      "unpcklpd %[t], %[t]\n\t"
-      "cvtdq2pd %[d], %[q]\n\t"
-      "movapd %[z], %[c]\n\t"
-      "divpd %[t], %[q]\n\t"                  // [du / s, dv / s]
-      "unpckhpd %[c], %[c]\n\t"
-      "movapd %[zc], %[t]\n\t"
-      "addsd %[z], %[c]\n\t"                  // zb + za
-      "mulsd %[half], %[t]\n\t"               // zc * 0.5
-      "mulsd %[c], %[t]\n\t"                  // curve
-      "movd %[two], %[t2]\n\t"
-      "unpcklpd %[t], %[t]\n\t"
-      "pshufd $0, %[t2], %[t2]\n\t"
-      "cvttpd2dq %[q], %[lin]\n\t"
-      "mulpd %[q], %[t]\n\t"                  // q * curve
-      "mulpd %[m2], %[t]\n\t"                 // * -2
-      "cvttpd2dq %[t], %[dd]\n\t"             // fi
-      "movdqa %[dd], %[t1]\n\t"
-      "pand %[t2], %[dd]\n\t"
-      "movdqa %[hi], %[t2]\n\t"
-      "pcmpgtd %[lo], %[t1]\n\t"              // fi > -1e9 (fi >= -999999999)
-      "pcmpgtd %[dd], %[t2]\n\t"              // 1e9 > fi
-      "pand %[t1], %[dd]\n\t"
-      "pand %[t2], %[dd]"
-      : [d] "=&x"(d), [lin] "=&x"(lin), [dd] "=&x"(dd), [t1] "=&x"(t1), [t2] "=&x"(t2), [q] "=&x"(q), [t] "=&x"(t),
-        [c] "=&x"(c)
-      : [a] "x"(a), [b] "x"(b), [z] "x"(z), [zc] "x"(zc), [sd] "x"(sd), [two] "r"(two), [half] "m"(kHalf),
-        [m2] "m"(kMinus2), [lo] "m"(kLo), [hi] "m"(kHi));
-  return LastVec{d, lin, dd};
-}
-// last_dd for u and v in SSE2 lanes (lanes 0 and 2 of [u, u, v, v], pmuludq's), its
-// operations in the same order on the same 32-bit values; T |dd| <= pd on the 64-bit
-// product (pmuludq, psubq: T |dd| < 2^37) by the sign of pd - T |dd|. Returns the steps
-// packed as draw16 and draw_last take them (pack_steps: v 2^32 + u, u sign-extended).
-struct StepsPacked {
-  uint64_t d, dd;
-};
-SB_INLINE StepsPacked last_int_x86(int steps, const LastVec& l) {
-  const uint32_t s = uint32_t(steps > 1 ? steps : 1), T = uint32_t(steps * (steps - 1)) >> 1;
-  // In one asm statement: its inputs are read, never written, its temporaries are xmm7 ..
-  // xmm15 (clobbered: no input there) and its outputs early-clobbered (steps passed too, so
-  // that they do not take its register either): llvm-mca (bench/count.sh), which times the
-  // block as a loop, then sees no register carried from one iteration to the next through
-  // the block (GCC's allocation had put the results in the inputs' registers: a false chain
-  // through the whole block, znver3 23 cycles for its 70 instructions). Per lane pair (u in lanes 0
-  // and 1, v in 2 and 3 after pshufd 0x50), last_dd's operations as in the C++ above:
-  //   sg = delta >> 31; pd = |delta|; pdd = dd mirrored by sg; add = |dd|
-  //   reject = sign(pd - add T) (64-bit: pmuludq, psubq; pd zero-extended)
-  //   Q = lin mirrored; r = pd - s Q; m = (s - 1) pdd; c = 2 r < s
-  //   d0 = Q - (m >> 1) - (m & c & 1); d = reject ? lin : d0 mirrored; dd = reject ? 0 : dd
-  // then lanes 0 and 2 packed (pack_steps: the v lane + the u lane's sign, above u).
   static const __m128i kLow32 = {int64_t(0xffffffffull), int64_t(0xffffffffull)};  // lanes 0, 2
   static const __m128i kOnes = {int64_t(0x100000001ull), int64_t(0x100000001ull)};
   uint64_t od, odd;
   __asm__(
-      "pshufd $0x50, %[d], %%xmm8\n\t"        // delta
-      "pshufd $0x50, %[dd], %%xmm9\n\t"       // ddi
-      "pshufd $0x50, %[lin], %%xmm10\n\t"     // lin
+      "movdqa %[b], %%xmm8\n\t"
+      "movapd %[sd], %%xmm10\n\t"
+      "psubd %[a], %%xmm8\n\t"              // d = [du, dv, ..]
+      "unpcklpd %%xmm10, %%xmm10\n\t"
+      "cvtdq2pd %%xmm8, %%xmm9\n\t"
+      "movapd %[z], %%xmm11\n\t"
+      "divpd %%xmm10, %%xmm9\n\t"           // q = [du / s, dv / s]
+      "unpckhpd %%xmm11, %%xmm11\n\t"
+      "movapd %[zc], %%xmm10\n\t"
+      "addsd %[z], %%xmm11\n\t"             // zb + za
+      "mulsd %[half], %%xmm10\n\t"          // zc * 0.5
+      "mulsd %%xmm11, %%xmm10\n\t"          // curve
+      "movd %[two], %%xmm15\n\t"
+      "unpcklpd %%xmm10, %%xmm10\n\t"
+      "pshufd $0, %%xmm15, %%xmm15\n\t"
+      "cvttpd2dq %%xmm9, %%xmm12\n\t"       // lin = trunc(q)
+      "mulpd %%xmm9, %%xmm10\n\t"           // q * curve
+      "mulpd %[m2], %%xmm10\n\t"            // * -2
+      "cvttpd2dq %%xmm10, %%xmm13\n\t"      // fi
+      "movdqa %%xmm13, %%xmm14\n\t"
+      "pand %%xmm15, %%xmm13\n\t"
+      "movdqa %[hi], %%xmm15\n\t"
+      "pcmpgtd %[lo], %%xmm14\n\t"          // fi > -1e9 (fi >= -999999999)
+      "pcmpgtd %%xmm13, %%xmm15\n\t"        // 1e9 > fi
+      "pand %%xmm14, %%xmm13\n\t"
+      "pand %%xmm15, %%xmm13\n\t"           // dd
+      "pshufd $0x50, %%xmm8, %%xmm8\n\t"     // delta
+      "pshufd $0x50, %%xmm13, %%xmm9\n\t"    // ddi
+      "pshufd $0x50, %%xmm12, %%xmm10\n\t"   // lin
       "movd %[T], %%xmm13\n\t"
       "movdqa %%xmm8, %%xmm11\n\t"
       "psrad $31, %%xmm11\n\t"                // sg
@@ -167,7 +148,7 @@ SB_INLINE StepsPacked last_int_x86(int steps, const LastVec& l) {
       "movdqa %%xmm15, %%xmm7\n\t"
       "psubd %[one], %%xmm7\n\t"              // s - 1
       "movdqa %%xmm8, %%xmm12\n\t"
-      "pand %[lo], %%xmm12\n\t"               // pd zero-extended
+      "pand %[low32], %%xmm12\n\t"            // pd zero-extended
       "movdqa %%xmm10, %%xmm13\n\t"
       "psubq %%xmm14, %%xmm12\n\t"            // pd - add T
       "pxor %%xmm11, %%xmm13\n\t"
@@ -208,8 +189,9 @@ SB_INLINE StepsPacked last_int_x86(int steps, const LastVec& l) {
       "paddd %%xmm14, %%xmm15\n\t"
       "movq %%xmm15, %[od]"
       : [od] "=&r"(od), [odd] "=&r"(odd)
-      : [d] "x"(l.d), [dd] "x"(l.dd), [lin] "x"(l.lin), [T] "r"(T), [s] "r"(s), [steps] "r"(steps),
-        [lo] "m"(kLow32), [one] "m"(kOnes)
+      : [a] "x"(a), [b] "x"(b), [z] "x"(z), [zc] "x"(zc), [sd] "x"(sd), [two] "r"(two), [T] "r"(T), [s] "r"(s),
+        [steps] "r"(steps), [half] "m"(kHalf), [m2] "m"(kMinus2), [lo] "m"(kLo), [hi] "m"(kHi), [low32] "m"(kLow32),
+        [one] "m"(kOnes)
       : "xmm7", "xmm8", "xmm9", "xmm10", "xmm11", "xmm12", "xmm13", "xmm14", "xmm15");
   return StepsPacked{od, odd};
 }
@@ -228,17 +210,19 @@ SB_INLINE void draw_last_packed(uint8_t* __restrict dest, int n, const uint8_t* 
   if (n & 2) chunk(std::integral_constant<int, 2>{});
   if (n & 1) chunk(std::integral_constant<int, 1>{});
 }
-// The last run's steps (last_int_x86) and pixels from l, the run of `last` = 1 .. 16 pixels
-// starting at start = [u, v, ..]. The integer steps inside each branch (each its own asm
-// statement, steps differing): bench/count.sh times each block alone as a loop, so the block
-// holding the two divides' latency chain then ends after the quotients.
-SB_INLINE void last_run_x86(uint8_t* dest, int last, const uint8_t* texels, uint32_t w, __m128i start, LastVec l) {
-  const uint64_t x = uint64_t(_mm_cvtsi128_si64(start));  // v0 2^32 + u0 (both >= 0)
+// The last run of `last` = 1 .. 16 pixels from sample a = [u, v, ..] to b, their depths z:
+// its steps (last_steps_x86) and pixels. The steps inside each branch (an asm statement
+// each, steps differing): bench/count.sh times each block alone as a loop, so the samples'
+// block, which holds the first divide's latency chain, ends before the quotients' divide
+// (skylake persp32 6.93 -> 6.73, persp16 10.62 -> 10.59; znver3 4.77 -> 4.85, 7.93 -> 7.96).
+SB_INLINE void last_run_x86(uint8_t* dest, int last, const uint8_t* texels, uint32_t w, __m128i a, __m128i b,
+                            __m128d z, double zc) {
+  const uint64_t x = uint64_t(_mm_cvtsi128_si64(a));  // v0 2^32 + u0 (both >= 0)
   if (last == 16) {
-    const StepsPacked st = last_int_x86(15, l);
+    const StepsPacked st = last_steps_x86(15, a, b, z, zc);
     Run16<true>(x, st.d, st.dd, Run16<true>::Packed{}).draw(dest, texels, w);
   } else {
-    const StepsPacked st = last_int_x86(last - 1, l);
+    const StepsPacked st = last_steps_x86(last - 1, a, b, z, zc);
     draw_last_packed(dest, last, texels, w, TailPos{x, st.d, st.dd});
   }
 }
@@ -257,7 +241,7 @@ SB_INLINE void persp_short_x86(uint8_t* dest, int n, const uint8_t* texels, uint
     const double P = p.px0, zc = p.dzi;
     const __m128d umax = _mm_set1_pd(double(p.umax)), vmax = _mm_set1_pd(double(p.vmax));
     const Samples2 a = samples2_x86(p, _mm_set_pd(P + double(n - 1), P), umax, vmax);
-    last_run_x86(dest, n, texels, w, a.iuv, last_vec_x86(n - 1, a.iuv, _mm_srli_si128(a.iuv, 8), a.z, zc));
+    last_run_x86(dest, n, texels, w, a.iuv, _mm_srli_si128(a.iuv, 8), a.z, zc);
     return;
   }
   // Samples 0, 1 (pixels 0, 16) and 2, 3: pixels min(32, n - 1) from P_0, and (for n > 32)
@@ -289,7 +273,7 @@ SB_INLINE void persp_short_x86(uint8_t* dest, int n, const uint8_t* texels, uint
     la = s2, lb = s3;
     lz = b.z;
   }
-  last_run_x86(dest, last, texels, w, la, last_vec_x86(last - 1, la, lb, lz, zc));
+  last_run_x86(dest, last, texels, w, la, lb, lz, zc);
 }
 
 }  // namespace
