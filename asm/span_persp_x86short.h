@@ -77,9 +77,16 @@ SB_INLINE void steps16_uv_x86(__m128i a, __m128i b, double curve, RunSteps* su, 
 // C++'s:
 //   d = b - a; q = double(d) / double(s), s = max(steps, 1) (both quotients in one divpd);
 //   lin = trunc(q); curve = (zc * 0.5) * (za + zb) (the walker's zix * 0.5 * (z0 + z1));
-//   fi = trunc((q * curve) * -2.0); dd = fi where -1e9 < fi < 1e9 and steps > 1, else 0
+//   fi = trunc(q * (curve * -2.0)); dd = fi where -1e9 < fi < 1e9 and steps > 1, else 0
 //   (last_ddi's range test on the converted value: |trunc(ddf)| < 1e9 iff |ddf| < 1e9; out
-//   of range and NaN convert to 0x80000000, rejected too);
+//   of range and NaN convert to 0x80000000, rejected too). q * (curve * -2) for the walker's
+//   (q * curve) * -2, so that the multiply by -2 runs beside the divide: the same dd. Scaling
+//   by -2 is exact and commutes with rounding, so both are -2 RN(q curve) when q curve is
+//   normal and 2 q curve finite; |q curve| < 2^-1021 (subnormal, 0) truncates to 0 either
+//   way; an overflow in either form (curve * -2, q curve or its double) leaves |ddf| >= 1e9
+//   or inf in both (|q| >= 1 / 15 when q != 0), rejected; q = 0 with curve * -2 infinite
+//   gives NaN, rejected, where the walker's gives 0: dd 0 both; NaN or infinite curve: the
+//   same NaN or infinity in both;
 // then last_dd per lane pair (u in lanes 0 and 1, v in 2 and 3 after pshufd 0x50; pmuludq
 // uses lanes 0 and 2), its operations in the same order on the same 32-bit values:
 //   sg = delta >> 31; pd = |delta|; pdd = dd mirrored by sg; add = |dd|
@@ -117,9 +124,9 @@ SB_INLINE StepsPacked last_steps_x86(int steps, __m128i a, __m128i b, __m128d z,
       "movd %[two], %%xmm15\n\t"
       "unpcklpd %%xmm10, %%xmm10\n\t"
       "pshufd $0, %%xmm15, %%xmm15\n\t"
+      "mulpd %[m2], %%xmm10\n\t"            // curve * -2 (beside the divide)
       "cvttpd2dq %%xmm9, %%xmm12\n\t"       // lin = trunc(q)
-      "mulpd %%xmm9, %%xmm10\n\t"           // q * curve
-      "mulpd %[m2], %%xmm10\n\t"            // * -2
+      "mulpd %%xmm9, %%xmm10\n\t"           // q * (curve * -2)
       "cvttpd2dq %%xmm10, %%xmm13\n\t"      // fi
       "movdqa %%xmm13, %%xmm14\n\t"
       "pand %%xmm15, %%xmm13\n\t"
