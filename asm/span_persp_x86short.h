@@ -54,12 +54,13 @@ SB_INLINE int32_t ilane(__m128i x) {
   return _mm_cvtsi128_si32(_mm_shuffle_epi32(x, L));
 }
 
-// A full run's steps from a = [ua, va, ..] to b = [ub, vb, ..] (steps16_sel for u and v:
-// ddf = -2 (delta / 16 * curve); delta / 16 exact as delta * 0.0625).
-SB_INLINE void steps16_uv_x86(__m128i a, __m128i b, double curve, RunSteps* su, RunSteps* sv) {
+// A full run's steps from a = [ua, va, ..] to b = [ub, vb, ..] (steps16_sel for u and v),
+// ddf = -2 (delta / 16 * curve) as delta * ck with ck = (zc * -1/16) * (za + zb), the same
+// bits (persp_fast's loop computes it so; the argument is there, asm/span_persp_fast.cpp):
+// one multiply after the conversion.
+SB_INLINE void steps16_uv_x86(__m128i a, __m128i b, double ck, RunSteps* su, RunSteps* sv) {
   const __m128i d = _mm_sub_epi32(b, a);  // [du, dv, ..]: 0 <= u, v < 2^31, no overflow
-  const __m128d f =
-      _mm_mul_pd(_mm_mul_pd(_mm_mul_pd(_mm_cvtepi32_pd(d), _mm_set1_pd(0.0625)), _mm_set1_pd(curve)), _mm_set1_pd(-2.0));
+  const __m128d f = _mm_mul_pd(_mm_cvtepi32_pd(d), _mm_set1_pd(ck));
   const __m128i i = _mm_cvttpd_epi32(f);  // cvt_sat: 0x80000000 when out of range or NaN
   *su = steps16_dd(ilane<0>(d), ilane<0>(i));
   *sv = steps16_dd(ilane<1>(d), ilane<1>(i));
@@ -261,7 +262,7 @@ SB_INLINE void persp_short_x86(uint8_t* dest, int n, const uint8_t* texels, uint
   const int o2 = n - 1 < 32 ? n - 1 : 32;
   const Samples2 b = samples2_x86(p, _mm_set_pd(P1 + double(n - 17), P + double(o2)), umax, vmax);
   const __m128i s0 = a.iuv, s1 = _mm_srli_si128(a.iuv, 8), s2 = b.iuv, s3 = _mm_srli_si128(b.iuv, 8);
-  const double c0 = zc * 0.5 * (lane0(a.z) + lane1(a.z));
+  const double c0 = (zc * -0.0625) * (lane0(a.z) + lane1(a.z));
   RunSteps su0, sv0;
   steps16_uv_x86(s0, s1, c0, &su0, &sv0);
   draw16<true>(dest, texels, w, ilane<0>(s0), ilane<1>(s0), su0, sv0);
@@ -271,7 +272,7 @@ SB_INLINE void persp_short_x86(uint8_t* dest, int n, const uint8_t* texels, uint
   int last = n - 16;
   dest += 16;
   if (n > 32) {
-    const double c1 = zc * 0.5 * (lane1(a.z) + lane0(b.z));
+    const double c1 = (zc * -0.0625) * (lane1(a.z) + lane0(b.z));
     RunSteps su1, sv1;
     steps16_uv_x86(s1, s2, c1, &su1, &sv1);
     draw16<true>(dest, texels, w, ilane<0>(s1), ilane<1>(s1), su1, sv1);
