@@ -12,9 +12,9 @@
 // select form (max(q, 0) with NaN -> 0, then min(q, max), truncated: to_fixed_sel). The
 // samples two at a time in SSE2's two double lanes (mulpd, addpd, maxpd, divpd: each lane the
 // scalar operation's IEEE result), so one divide instruction gives two reciprocals. Full runs'
-// steps are steps16_sel's (delta / 16 * curve exact as delta * 0.0625), the last run's
-// last_steps_q's (asm/span_persp_arm.h; the quotients delta / steps of u and v in one divpd,
-// last_dd for both in SSE2 lanes).
+// steps are steps16_sel's (ddf in persp_fast's loop's form), the last run's last_steps_q's
+// (asm/span_persp_arm.h; the quotients delta / steps of u and v in one divpd, last_dd for
+// both in SSE2 lanes).
 // A last run of one pixel draws its start only: the sample after it (computed at some
 // position, clamped like any other) is then never used.
 #pragma once
