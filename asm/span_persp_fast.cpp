@@ -13,6 +13,7 @@
 #include "asm/span_persp_a64tiny.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/span_persp_v7pass.h"
+#include "asm/span_persp_x86short.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -757,6 +758,9 @@ const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, co
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
 // Page-aligned on aarch64 (as persp_long_a64): its pair loop's code then keeps its place
 // against qemu's 4 KiB page cuts (bench/count.sh times qemu's blocks) whatever precedes it.
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__SSE2__)
+const PerspItem* short_run_x86(const PerspItem* it, const PerspItem* end, const uint8_t* texels, uint32_t w);
+#endif
 #if defined(__aarch64__) && defined(__GNUC__)
 __attribute__((noinline, aligned(4096)))
 #else
@@ -840,6 +844,22 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       continue;
     } else {
       if (n > 48) __builtin_unreachable();
+      persp_fast<true>(it->dest, n, texels, width, p);
+    }
+    ++it;
+  }
+#elif defined(__x86_64__) && defined(__GNUC__) && defined(__SSE2__)
+  // x86-64: persp_one's dispatch, with the runs of second-order spans of 1 .. kX86ShortMax
+  // pixels drawn by short_run_x86 (one call a run of them; asm/span_persp_x86short.h).
+  while (it != end) {
+    const PerspSpan& p = it->span;
+    const int n = it->n;
+    if (!p.second_order || p.dzi == 0.0) {
+      persp_fast<false>(it->dest, n, texels, width, p);
+    } else if (uint32_t(n - 1) < uint32_t(kX86ShortMax)) {
+      it = short_run_x86(it, end, texels, uint32_t(width));
+      continue;
+    } else {
       persp_fast<true>(it->dest, n, texels, width, p);
     }
     ++it;
@@ -954,6 +974,30 @@ persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texe
     ++st[0];
   } while (st[0] != st[1] && long_v7(*st[0]));
   return st[0];
+}
+}  // namespace
+#endif
+
+#if defined(__x86_64__) && defined(__GNUC__) && defined(__SSE2__)
+namespace {
+// x86-64 batches: the items from it on (it is one) while they are second-order spans (dzi !=
+// 0) of 1 .. kX86ShortMax pixels, drawn by persp_short_x86 (asm/span_persp_x86short.h);
+// returns the first item that is not one (or end). Out of line, one call a run of them: its
+// registers are saved once a run, and the batch loop keeps its frame (inlined there, its
+// prologue and epilogue, timed once a batch, and the loop's spills moved the 30-span rows:
+// skylake persp64 6.82 -> 6.85). In its own section, which the linker places after this
+// object's .text: persp_fast's code keeps its place against qemu's 4 KiB page cuts (in
+// .text the compiler emitted it first, and persp_fast's blocks moved: skylake persp64single
+// 6.76 -> 6.93, persp1920 4.13 -> 4.27). Not page-aligned: the page end that then falls in
+// it measured better (skylake persp32 6.90 aligned 7.27).
+__attribute__((noinline, section(".text.sb_x86short"))) const PerspItem* short_run_x86(
+    const PerspItem* it, const PerspItem* end, const uint8_t* texels, uint32_t w) {
+  do {
+    persp_short_x86(it->dest, it->n, texels, w, it->span);
+    ++it;
+  } while (it != end && it->span.second_order && it->span.dzi != 0.0 &&
+           uint32_t(it->n - 1) < uint32_t(kX86ShortMax));
+  return it;
 }
 }  // namespace
 #endif

@@ -365,6 +365,110 @@ TEST(AsmSpanPerspBatch, ChainsOfLinearPairsMatchWithEdgeDepths) {
   std::printf("[ asm      ] span_persp batch: %ld spans in chains of linear pairs, every variant identical\n", spans);
 }
 
+// Short second-order spans in runs (x86-64: second order with dzi != 0 and 1 .. 48 pixels
+// drawn inline in the batch loop, asm/span_persp_x86short.h; one, two and three runs, last
+// runs of 1 .. 16 pixels): every n 1 .. 48 in runs of 1 .. 11 such spans, mixed with longer,
+// linear, dzi +-0 and empty items, with extreme gradients (steep or tiny dzi: second-order
+// steps rejected or 0; huge u, v: the clamps at max; negative: at 0; huge, tiny or non-finite
+// dzi, with u, v clamped (no change along the span) or not; non-finite values and the divide
+// fallback from pick_span), each span between guard bytes (the bytes after it untouched).
+TEST(AsmSpanPerspBatch, RunsOfShortSecondOrderSpansMatch) {
+  std::mt19937 rng(4816);
+  long spans = 0;
+  for (int trial = 0; trial < 2400; ++trial) {
+    const int sw = 1 + int(rng() % 90), sh = 1 + int(rng() % 70);
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 11);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = pick_span(rng, sw, sh);
+      int n = 1 + (trial * 11 + i) % 48;  // every length, in every position of a run
+      if (rng() % 6 == 0) {  // another kind between the short ones
+        switch (rng() % 5) {
+          case 0: n = 49 + int(rng() % 200); break;
+          case 1: p.second_order = false; break;
+          case 2: p.dzi = rng() % 2 ? 0.0 : -0.0; break;
+          case 3: n = 0; break;
+          default: n = pick_length(rng); break;
+        }
+      } else {
+        p.second_order = true;
+        if (p.dzi == 0.0) p.dzi = rng() % 2 ? 1e-7 : -1e-7;
+        switch (rng() % 9) {
+          case 0: p.dzi *= 1e4; break;                    // steep: large dd, often rejected
+          case 1: p.dzi = std::ldexp(1.0, -1000); break;  // tiny: curve underflows to 0 or near
+          case 2: p.uz0 *= 1e3, p.duz *= 1e3; break;      // u past umax (clamped)
+          case 3: p.vz0 = -std::fabs(p.vz0) * 4.0; break;  // v below 0 (clamped)
+          case 4: p.duz = -p.duz * 300.0, p.dvz = p.dvz * 300.0; break;  // across the clamps
+          case 5: {  // extreme or non-finite curve, with u, v clamped (delta 0) or not
+            const double odd[] = {std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity(),
+                                  std::numeric_limits<double>::quiet_NaN(), 1e300, -1e300, 0x1p1020, 1e-300,
+                                  0x1p-1030};
+            p.dzi = odd[rng() % 8];
+            if (rng() % 2) p.uz0 = p.vz0 = 1e30, p.duz = p.dvz = 0.0;
+            break;
+          }
+          default: break;
+        }
+      }
+      items.push_back(PerspItem{nullptr, n, p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of short second-order ones, every variant identical\n",
+              spans);
+}
+
+// Short second-order spans on surfaces up to the contract's widest (32767 texels), with
+// steep depths and u sweeping across the surface within a few pixels: the last run's
+// deltas reach 2^31 - 2^16 and second-order steps of 1e9 or more, where the walker's range
+// test -1e9 < ddf < 1e9 decides (a narrower surface rejects such steps by the monotone test
+// anyway); every length 1 .. 48 (last runs of 3 pixels: steps 2, the only ones where it
+// decides), each span between guard bytes.
+TEST(AsmSpanPerspBatch, ShortSecondOrderSpansOnWideSurfacesMatch) {
+  std::mt19937 rng(6502);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  long spans = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const int sw = 32767 - int(rng() % 2000), sh = 1 + int(rng() % 3);
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    std::vector<PerspItem> items;
+    const int count = 1 + int(rng() % 8);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p{};
+      p.zi0 = std::ldexp(1.0, -int(rng() % 20));
+      p.dzi = p.zi0 * r(rng) * (rng() % 2 ? 0.5 : 0.02);
+      if (p.dzi == 0.0) p.dzi = 1e-9;
+      p.uz0 = p.zi0 * sw * (0.5 + 0.5 * r(rng));
+      p.duz = p.zi0 * sw * r(rng) * (rng() % 2 ? 1.0 : 0.3);
+      p.vz0 = p.zi0 * sh * 0.5, p.dvz = p.dzi * sh * r(rng);
+      p.px0 = double(rng() % 64) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1), p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+      p.second_order = true;
+      int n = rng() % 3 ? 3 + 16 * int(rng() % 3) : 1 + int(rng() % 48);
+      if (rng() % 2) {
+        // The last run's 3 pixels at x = 0.5, 1.5, 2.5 (px0 = 0.5 - (n - 3)): 1/z from 1.75
+        // to 4.75 (dzi 1.5: curve about 0.59), u from about 760 to 32000 texels (ddf about
+        // -1.2e9) or from about 29000 to 3700 (ddf about +1e9), within the monotone test's
+        // reach (|dd| <= |delta|); scaled by up to 10% around the range test's bound.
+        n = 3 + 16 * int(rng() % 3);
+        const double k = 1.0 + 0.1 * r(rng), ku = sw / 32767.0 * (1.0 + 0.02 * r(rng));
+        p.zi0 = 1.0, p.dzi = 1.5 * k, p.px0 = 0.5 - double(n - 3);
+        p.uz0 = -36330.0 * ku, p.duz = 75332.0 * ku;
+        if (rng() % 2) p.uz0 = 60000.0 * ku, p.duz = -17000.0 * ku;
+        p.vz0 = 0.5, p.dvz = 0.0;
+      }
+      items.push_back(PerspItem{nullptr, n, p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += count;
+  }
+  std::printf("[ asm      ] span_persp batch: %ld short spans on wide surfaces, every variant identical\n", spans);
+}
+
 // Runs of long spans (aarch64: a long first item of the items left is reached and left with
 // tail branches, persp_long_a64 / persp_lin_a64 back to batch_from): batches of long second-
 // order and linear spans (65 .. 400 pixels, dzi == 0 among them) in every order, with
