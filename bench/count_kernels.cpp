@@ -42,6 +42,8 @@
 //   persp16      32 spans of 1-16 pixels (mean 8.5) in one call, second-order steps: one run
 //                each (bench/span_hist.cpp: 880-960 such spans a frame at 320x240, 6-9% of
 //                the pixels)
+//   persp72      16 spans of 65-80 pixels (mean 72.5) in one call, second-order steps: five runs
+//                (persp_fast<true> on aarch64; 5-7% of the pixels at 320x240)
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,
@@ -104,7 +106,7 @@ const Kernels* find_variant(const char* name) {
 const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "palette2", "palette3", "palette4", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
-                              "persp192", "persp192lin", "persp32", "persp16"};
+                              "persp192", "persp192lin", "persp32", "persp16", "persp72"};
 
 // The span lengths of a persp case, left to right along one 1920-pixel row. Mixed lengths, so
 // the spans end in different last runs as the engine's do: a span of 16 k pixels (or a long
@@ -117,6 +119,8 @@ const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "bloc
 //              three runs, last runs of 1 .. 16 pixels), neighbours of different lengths
 //   persp16:   32 spans of 1 .. 16 pixels, each length twice (mean 8.5, 272 pixels: one run),
 //              neighbours of different lengths (16 1 15 2 .. 9 8, then back again)
+//   persp72:   16 spans of 65 .. 80 pixels, each length once (80 65 79 66 .. 73 72; mean 72.5,
+//              1160 pixels: five runs, last runs of 1 .. 16 pixels)
 //   persp1920*: one span of 1920
 std::vector<int> persp_lengths(const char* c) {
   // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
@@ -131,6 +135,11 @@ std::vector<int> persp_lengths(const char* c) {
   if (std::strcmp(c, "persp32") == 0) {
     std::vector<int> l;
     for (int i = 0; i < 32; ++i) l.push_back(i % 2 ? 17 + i / 2 : 48 - i / 2);  // 48 17 47 18 .. 33 32
+    return l;
+  }
+  if (std::strcmp(c, "persp72") == 0) {
+    std::vector<int> l;
+    for (int i = 0; i < 16; ++i) l.push_back(i % 2 ? 65 + i / 2 : 80 - i / 2);  // 80 65 79 66 .. 73 72
     return l;
   }
   if (std::strcmp(c, "persp16") == 0) {

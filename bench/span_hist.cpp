@@ -54,7 +54,7 @@ const char* const kClassName[kClasses] = {
     "lin 1-16",         "lin 17-64 paired", "lin 17-64 alone", "lin 65+",   "curve 1-16 alone", "curve 1-16 in twos",
     "curve 17-48 paired", "curve 49-64 paired", "curve 17-64 alone", "curve 65-80", "curve 81+"};
 const char* const kClassRow[kClasses] = {"", "persp64lin", "", "persp192lin, persp1920lin", "persp16", "persp16",
-                                         "persp32", "persp64", "persp64single", "", "persp192, persp1920"};
+                                         "persp32", "persp64", "persp64single", "persp72", "persp192, persp1920"};
 
 struct Tally {
   double spans[kClasses] = {}, pixels[kClasses] = {};
