@@ -12,6 +12,7 @@
 #include "asm/span_persp_a64pair.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/span_persp_v7pass.h"
+#include "asm/span_persp_v7one.h"
 #include "asm/surface_span.h"
 
 namespace sb::simd {
@@ -824,6 +825,15 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       continue;
     } else {
       if (n > 48) __builtin_unreachable();
+#if defined(SB_V7_ONE)
+      // One run (1 .. 16 pixels; n <= 0 too, which it skips): persp_one_v7, with the one-run
+      // spans after it; persp_fast<true> then draws 17 .. 48 pixels only (its one-run branch
+      // and n <= 0 test fold away: the same tests on its path as before).
+      if (n <= 16) {
+        it = persp_one_v7(it, end, texels, width);
+        continue;
+      }
+#endif
       persp_fast<true>(it->dest, n, texels, width, p);
     }
     ++it;
@@ -928,6 +938,11 @@ namespace {
 // superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
 // the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
 // scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
+// With SB_V7_ONE page-aligned: GCC emits persp_one_v7 before it, and its code keeps its place
+// against qemu's 4 KiB page cuts (at a page start, as it was when it came first).
+#if defined(SB_V7_ONE)
+__attribute__((aligned(4096)))
+#endif
 __attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
 persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
@@ -939,6 +954,34 @@ persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texe
   } while (st[0] != st[1] && long_v7(*st[0]));
   return st[0];
 }
+}  // namespace
+#endif
+
+#if defined(SB_V7_ONE)
+namespace {
+// ARMv7: items from it on (it is one_v7's, or n <= 0), while they are one_v7's: drawn two at
+// a time (asm/span_persp_v7one.h; the last one alone, its set-up computed as a pair with
+// itself). Returns the first item that is not one (or end). Out of line, defined last: GCC
+// emits it after persp_long_run_v7, whose code (and qemu's 4 KiB page cuts in it) then stays
+// where it was, and its registers are its own (inlined into the batch loop it moved that
+// loop's allocation: A9 persp32 13.49 -> 13.67).
+__attribute__((noinline)) const PerspItem* persp_one_v7(const PerspItem* it, const PerspItem* end,
+                                                        const uint8_t* texels, int width) {
+  const uint32_t w = uint32_t(width);
+  if (it->n <= 0) return it + 1;  // nothing to draw (the batch loop sends n <= 0 here too)
+  for (;;) {
+    const bool pair = it + 1 != end && one_v7(it[1]);
+    const PerspItem& b = pair ? it[1] : it[0];
+    OneSetup sa, sb;
+    one_setup2_v7(it[0], b, &sa, &sb);
+    one_draw_v7(it[0].dest, it[0].n, texels, w, sa);
+    if (!pair) return it + 1;
+    one_draw_v7(b.dest, b.n, texels, w, sb);
+    it += 2;
+    if (it == end || !one_v7(*it)) return it;
+  }
+}
+
 }  // namespace
 #endif
 
