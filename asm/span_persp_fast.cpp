@@ -972,11 +972,11 @@ __attribute__((noinline)) const PerspItem* persp_one_v7(const PerspItem* it, con
   for (;;) {
     const bool pair = it + 1 != end && one_v7(it[1]);
     const PerspItem& b = pair ? it[1] : it[0];
-    OneSetup sa, sb;
-    one_setup2_v7(it[0], b, &sa, &sb);
-    one_draw_v7(it[0].dest, it[0].n, texels, w, sa);
+    OneSetup s[2];
+    one_setup2_v7(it[0], b, s);
+    one_draw_v7(it[0].dest, it[0].n, texels, w, s[0]);
     if (!pair) return it + 1;
-    one_draw_v7(b.dest, b.n, texels, w, sb);
+    one_draw_v7(b.dest, b.n, texels, w, s[1]);
     it += 2;
     if (it == end || !one_v7(*it)) return it;
   }

@@ -25,6 +25,7 @@
 //               last_steps_i's integer test. One pixel (n = 1): both samples are the same
 //               (delta 0), the steps are never read (draw_last draws the start only).
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "asm/span_persp_run.h"
@@ -32,6 +33,7 @@
 
 #if defined(SB_V7_NEON_STEPS)
 #define SB_V7_ONE 1
+#define SB_V7_ONE_CLOBBERS "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31"
 namespace sb::simd {
 namespace {
 
@@ -44,71 +46,223 @@ SB_INLINE bool one_v7(const PerspItem& x) {
   return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n - 1) < 16u;
 }
 
+// The pair set-up's results per span, as its asm stores them: u0, v0, the second-order steps
+// (ddu, ddv) and the steps (du, dv) of the run.
 struct OneSetup {
-  int32_t u, v;
-  RunSteps su, sv;
+  int32_t u, v, ddu, ddv, du, dv;
 };
+// Its constants: kMinZi, 1, 1/2, -2, [1e9, 1e9] (u32); and per n (1 .. 16) n - 1, s =
+// max(n - 1, 1), k = (s - 1) / 2 (doubles: exact) and [T, T], T = s (s - 1) / 2.
+struct alignas(16) OneConsts {
+  double c[4];
+  uint32_t big[2];
+};
+// In their own section: in .rodata they moved the batch loop's other tables against its section
+// anchor (GCC then addressed kMidN with another add: A9 persp64 7.24 -> 7.26).
+__attribute__((section(".rodata.sb_v7one"))) constexpr OneConsts kOneConsts = {{kMinZi, 1.0, 0.5, -2.0}, {1000000000u, 1000000000u}};
+struct alignas(32) OneRow {
+  double f, s, k;
+  uint32_t t[2];
+};
+__attribute__((section(".rodata.sb_v7one"))) constexpr auto kOneRows = [] {
+  struct Table {
+    OneRow row[17];
+  } t{};
+  for (int n = 1; n <= 16; ++n) {
+    const int s = n > 2 ? n - 1 : 1;
+    const uint32_t T = uint32_t(s * (s - 1) / 2);
+    t.row[n] = OneRow{double(n - 1), double(s), double(s - 1) / 2, {T, T}};
+  }
+  return t;
+}();
+static_assert(sizeof(OneRow) == 32 && offsetof(PerspItem, n) == 4 && offsetof(PerspItem, span) == 8 &&
+                  sizeof(PerspItem) == 80,
+              "the pair set-up's loads (row n at 32 n; the item's n and gradients)");
 
-// The set-ups of spans a and b (both one_v7's; b may be a itself), interleaved.
-SB_INLINE void one_setup2_v7(const PerspItem& A, const PerspItem& B, OneSetup* ra, OneSetup* rb) {
-  const PerspSpan& a = A.span;
-  const PerspSpan& b = B.span;
-  const int na = A.n, nb = B.n;
-  // Positions and depths.
-  const double Pa = a.px0, Pb = b.px0;
-  double fa = double(na - 1), fb = double(nb - 1);
-  const double pa1 = Pa + fa, pb1 = Pb + fb;
-  double zia0 = max_or_lo_sel(a.zi0 + a.dzi * Pa, kMinZi), zib0 = max_or_lo_sel(b.zi0 + b.dzi * Pb, kMinZi);
-  double zia1 = max_or_lo_sel(a.zi0 + a.dzi * pa1, kMinZi), zib1 = max_or_lo_sel(b.zi0 + b.dzi * pb1, kMinZi);
-  const double za0 = recip7(zia0), zb0 = recip7(zib0);
-  const double za1 = recip7(zia1), zb1 = recip7(zib1);
-  // Beside the divides: the numerators, the bounds, the divisors max(n - 1, 1), zix / 2.
-  double tua0 = a.uz0 + a.duz * Pa, tva0 = a.vz0 + a.dvz * Pa;
-  double tub0 = b.uz0 + b.duz * Pb, tvb0 = b.vz0 + b.dvz * Pb;
-  double tua1 = a.uz0 + a.duz * pa1, tva1 = a.vz0 + a.dvz * pa1;
-  double tub1 = b.uz0 + b.duz * pb1, tvb1 = b.vz0 + b.dvz * pb1;
-  pin7(tua0), pin7(tva0), pin7(tub0), pin7(tvb0), pin7(tua1), pin7(tva1), pin7(tub1), pin7(tvb1);
-  const double kUa = bound16(a.umax), kVa = bound16(a.vmax), kUb = bound16(b.umax), kVb = bound16(b.vmax);
-  double sa = double(na > 2 ? na - 1 : 1), sb = double(nb > 2 ? nb - 1 : 1);
-  double zha = a.dzi * 0.5, zhb = b.dzi * 0.5;
-  pin7(sa), pin7(sb), pin7(zha), pin7(zhb);
-  // The samples.
-  double qua0 = tua0 * za0, qva0 = tva0 * za0, qub0 = tub0 * zb0, qvb0 = tvb0 * zb0;
-  pin7(qua0), pin7(qva0), pin7(qub0), pin7(qvb0);
-  double qua1 = tua1 * za1, qva1 = tva1 * za1, qub1 = tub1 * zb1, qvb1 = tvb1 * zb1;
-  pin7(qua1), pin7(qva1), pin7(qub1), pin7(qvb1);
-  qua0 = cvt_ufixed16(qua0), qva0 = cvt_ufixed16(qva0), qub0 = cvt_ufixed16(qub0), qvb0 = cvt_ufixed16(qvb0);
-  qua1 = cvt_ufixed16(qua1), qva1 = cvt_ufixed16(qva1), qub1 = cvt_ufixed16(qub1), qvb1 = cvt_ufixed16(qvb1);
-  pin7(qua0), pin7(qva0), pin7(qub0), pin7(qvb0), pin7(qua1), pin7(qva1), pin7(qub1), pin7(qvb1);
-  qua0 = min_ufixed16(qua0, kUa), qva0 = min_ufixed16(qva0, kVa), qub0 = min_ufixed16(qub0, kUb);
-  qvb0 = min_ufixed16(qvb0, kVb);
-  qua1 = min_ufixed16(qua1, kUa), qva1 = min_ufixed16(qva1, kVa), qub1 = min_ufixed16(qub1, kUb);
-  qvb1 = min_ufixed16(qvb1, kVb);
-  pin7(qua0), pin7(qva0), pin7(qub0), pin7(qvb0), pin7(qua1), pin7(qva1), pin7(qub1), pin7(qvb1);
-  // The deltas (exact), the quotients.
-  const double dua = v7_cvt_lo(v7_sub_lo(qua1, qua0)), dva = v7_cvt_lo(v7_sub_lo(qva1, qva0));
-  const double dub = v7_cvt_lo(v7_sub_lo(qub1, qub0)), dvb = v7_cvt_lo(v7_sub_lo(qvb1, qvb0));
-  double qua = dua / sa, qva = dva / sa, qub = dub / sb, qvb = dvb / sb;
-  pin7(qua), pin7(qva), pin7(qub), pin7(qvb);
-  double ca = zha * (za0 + za1), cb = zhb * (zb0 + zb1);
-  pin7(ca), pin7(cb);
-  const int32_t ua0 = fixed16_bits_v(qua0), va0 = fixed16_bits_v(qva0), ub0 = fixed16_bits_v(qub0);
-  const int32_t vb0 = fixed16_bits_v(qvb0);
-  const int32_t ua1 = fixed16_bits_v(qua1), va1 = fixed16_bits_v(qva1), ub1 = fixed16_bits_v(qub1);
-  const int32_t vb1 = fixed16_bits_v(qvb1);
-  const int32_t lua = cvt_sat(qua), lva = cvt_sat(qva), lub = cvt_sat(qub), lvb = cvt_sat(qvb);
-  const int32_t iua = last_ddi(qua, ca), iva = last_ddi(qva, ca), iub = last_ddi(qub, cb), ivb = last_ddi(qvb, cb);
-  ra->u = ua0, ra->v = va0, rb->u = ub0, rb->v = vb0;
-  last_steps_i(na - 1, ua1 - ua0, va1 - va0, lua, lva, iua, iva, &ra->su, &ra->sv);
-  last_steps_i(nb - 1, ub1 - ub0, vb1 - vb0, lub, lvb, iub, ivb, &rb->su, &rb->sv);
+// The set-ups of spans A and B (both one_v7's; B may be A itself) in one asm statement
+// (bench/gen_v7one.py; see the header for the operations). Per span: the item's n picks
+// its row; its gradients loaded by vld1 (zi0, uz0, vz0 twice: the fused multiply-adds
+// accumulate in place); positions, depths (clamped, the two divides), the samples (vcvt.u32
+// #16, [u, v] paired by vsli, vmin.u32 with [umax, vmax]), delta = [du, dv] (vsub.i32), the
+// quotients q = double(delta) / s (two divides), ddf = -2 (q curve) to int32 (vcvt: trunc,
+// saturating), dd' = dd where |dd| < 1e9 and T |dd| <= |delta| (the walker's range and
+// acceptance tests: last_ddi, last_dd; the 64-bit product by vmull.u32, vqsub.u64), else 0,
+// and d = trunc(q - dd' k). d is last_dd's: accepted, its d0 = trunc(x), x = (delta - T dd) / s
+// = delta / s - dd k exactly; q = RN(delta / s) and q - dd' k (dd' k exact, < 2^35) rounded
+// once differ from x by under 2^-20, and x, a multiple of 1 / (2 s), is either an integer
+// (then delta / s is a multiple of 1/2, q and q - dd' k exact) or over 1/30 from one: the same
+// trunc. Rejected (dd' = 0): trunc(q), last_dd's linear. For n <= 2 (T = 0, k = 0) dd' may be
+// nonzero where the walker's is 0: the run draws at most two pixels and never reads it.
+SB_INLINE void one_setup2_v7(const PerspItem& A, const PerspItem& B, OneSetup* out) {
+  const PerspItem* ia = &A;
+  const PerspItem* ib = &B;
+  int32_t* oa = &out[0].u;
+  int32_t* ob = &out[1].u;
+  const OneConsts* kc = &kOneConsts;
+  const OneRow* kr = kOneRows.row;
+  uint32_t ra, rb;
+  __asm__ volatile(
+    // Generated by bench/gen_v7one.py (do not edit by hand).
+    "vld1.64 {d0, d1, d2, d3}, [%[kc]]!\n\t"
+    "vld1.64 {d4}, [%[kc]]\n\t"
+    "ldr %[ra], [%[ia], #4]\n\t"
+    "ldr %[rb], [%[ib], #4]\n\t"
+    "add %[ia], %[ia], #8\n\t"
+    "add %[ib], %[ib], #8\n\t"
+    "add %[ra], %[kr], %[ra], lsl #5\n\t"
+    "add %[rb], %[kr], %[rb], lsl #5\n\t"
+    "vld1.64 {d16}, [%[ia]]\n\t"
+    "vld1.64 {d17}, [%[ib]]\n\t"
+    "vld1.64 {d5, d6, d7, d8}, [%[ia]]!\n\t"
+    "vld1.64 {d9, d10, d11, d12}, [%[ib]]!\n\t"
+    "vld1.64 {d18}, [%[ia]]\n\t"
+    "vld1.64 {d19}, [%[ib]]\n\t"
+    "vld1.64 {d20, d21, d22, d23}, [%[ia]]\n\t"
+    "vld1.64 {d24, d25, d26, d27}, [%[ib]]\n\t"
+    "sub %[ia], %[ia], #16\n\t"
+    "sub %[ib], %[ib], #16\n\t"
+    "vld1.64 {d28}, [%[ia]]\n\t"
+    "vld1.64 {d29}, [%[ib]]\n\t"
+    "vld1.64 {d13, d14}, [%[ra]]!\n\t"
+    "vld1.64 {d30, d31}, [%[rb]]!\n\t"
+    "vadd.f64 d15, d22, d13\n\t"
+    "vadd.f64 d13, d26, d30\n\t"
+    "vfma.f64 d5, d6, d22\n\t"
+    "vfma.f64 d9, d10, d26\n\t"
+    "vfma.f64 d16, d6, d15\n\t"
+    "vfma.f64 d17, d10, d13\n\t"
+    "vcmpe.f64 d5, d0\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d5, d0\n\t"
+    "vcmpe.f64 d9, d0\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d9, d0\n\t"
+    "vcmpe.f64 d16, d0\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d16, d0\n\t"
+    "vcmpe.f64 d17, d0\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d17, d0\n\t"
+    "vdiv.f64 d5, d1, d5\n\t"
+    "vdiv.f64 d9, d1, d9\n\t"
+    "vdiv.f64 d16, d1, d16\n\t"
+    "vdiv.f64 d17, d1, d17\n\t"
+    "vfma.f64 d7, d8, d22\n\t"
+    "vfma.f64 d11, d12, d26\n\t"
+    "vfma.f64 d20, d21, d22\n\t"
+    "vfma.f64 d24, d25, d26\n\t"
+    "vfma.f64 d28, d8, d15\n\t"
+    "vfma.f64 d29, d12, d13\n\t"
+    "vfma.f64 d18, d21, d15\n\t"
+    "vfma.f64 d19, d25, d13\n\t"
+    "vmul.f64 d6, d6, d2\n\t"
+    "vmul.f64 d10, d10, d2\n\t"
+    "vmul.f64 d7, d7, d5\n\t"
+    "vmul.f64 d11, d11, d9\n\t"
+    "vmul.f64 d20, d20, d5\n\t"
+    "vmul.f64 d24, d24, d9\n\t"
+    "vmul.f64 d28, d28, d16\n\t"
+    "vmul.f64 d29, d29, d17\n\t"
+    "vmul.f64 d18, d18, d16\n\t"
+    "vmul.f64 d19, d19, d17\n\t"
+    "vadd.f64 d5, d5, d16\n\t"
+    "vadd.f64 d9, d9, d17\n\t"
+    "vmul.f64 d6, d6, d5\n\t"
+    "vmul.f64 d10, d10, d9\n\t"
+    "vcvt.u32.f64 d7, d7, #16\n\t"
+    "vcvt.u32.f64 d11, d11, #16\n\t"
+    "vcvt.u32.f64 d20, d20, #16\n\t"
+    "vcvt.u32.f64 d24, d24, #16\n\t"
+    "vcvt.u32.f64 d28, d28, #16\n\t"
+    "vcvt.u32.f64 d29, d29, #16\n\t"
+    "vcvt.u32.f64 d18, d18, #16\n\t"
+    "vcvt.u32.f64 d19, d19, #16\n\t"
+    "vsli.64 d7, d20, #32\n\t"
+    "vsli.64 d11, d24, #32\n\t"
+    "vsli.64 d28, d18, #32\n\t"
+    "vsli.64 d29, d19, #32\n\t"
+    "vmin.u32 d7, d7, d23\n\t"
+    "vmin.u32 d11, d11, d27\n\t"
+    "vmin.u32 d28, d28, d23\n\t"
+    "vmin.u32 d29, d29, d27\n\t"
+    "vsub.i32 d5, d28, d7\n\t"
+    "vst1.32 {d7}, [%[oa]]!\n\t"
+    "vsub.i32 d7, d29, d11\n\t"
+    "vst1.32 {d11}, [%[ob]]!\n\t"
+    "vcvt.f64.s32 d16, s10\n\t"
+    "vcvt.f64.s32 d17, s14\n\t"
+    "vcvt.f64.s32 d18, s11\n\t"
+    "vcvt.f64.s32 d19, s15\n\t"
+    "vdiv.f64 d16, d16, d14\n\t"
+    "vdiv.f64 d17, d17, d31\n\t"
+    "vdiv.f64 d18, d18, d14\n\t"
+    "vld1.64 {d8, d9}, [%[ra]]\n\t"
+    "vdiv.f64 d19, d19, d31\n\t"
+    "vld1.64 {d11, d12}, [%[rb]]\n\t"
+    "vabs.s32 d20, d5\n\t"
+    "vabs.s32 d21, d7\n\t"
+    "vmovl.u32 q11, d20\n\t"
+    "vmovl.u32 q12, d21\n\t"
+    "vmul.f64 d20, d16, d6\n\t"
+    "vmul.f64 d21, d17, d10\n\t"
+    "vmul.f64 d26, d18, d6\n\t"
+    "vmul.f64 d27, d19, d10\n\t"
+    "vmul.f64 d20, d20, d3\n\t"
+    "vmul.f64 d21, d21, d3\n\t"
+    "vmul.f64 d26, d26, d3\n\t"
+    "vmul.f64 d27, d27, d3\n\t"
+    "vcvt.s32.f64 s10, d20\n\t"
+    "vcvt.s32.f64 s12, d21\n\t"
+    "vcvt.s32.f64 s11, d26\n\t"
+    "vcvt.s32.f64 s13, d27\n\t"
+    "vabs.s32 d20, d5\n\t"
+    "vabs.s32 d21, d6\n\t"
+    "vcgt.u32 d26, d4, d20\n\t"
+    "vcgt.u32 d27, d4, d21\n\t"
+    "vmull.u32 q14, d20, d9\n\t"
+    "vmull.u32 q15, d21, d12\n\t"
+    "vqsub.u64 q14, q14, q11\n\t"
+    "vqsub.u64 q15, q15, q12\n\t"
+    "vqmovn.u64 d20, q14\n\t"
+    "vqmovn.u64 d21, q15\n\t"
+    "vtst.32 d20, d20, d20\n\t"
+    "vtst.32 d21, d21, d21\n\t"
+    "vbic d26, d26, d20\n\t"
+    "vbic d27, d27, d21\n\t"
+    "vand d5, d5, d26\n\t"
+    "vand d6, d6, d27\n\t"
+    "vst1.32 {d5}, [%[oa]]!\n\t"
+    "vcvt.f64.s32 d20, s10\n\t"
+    "vcvt.f64.s32 d21, s11\n\t"
+    "vst1.32 {d6}, [%[ob]]!\n\t"
+    "vcvt.f64.s32 d22, s12\n\t"
+    "vcvt.f64.s32 d23, s13\n\t"
+    "vfms.f64 d16, d20, d8\n\t"
+    "vfms.f64 d18, d21, d8\n\t"
+    "vfms.f64 d17, d22, d11\n\t"
+    "vfms.f64 d19, d23, d11\n\t"
+    "vcvt.s32.f64 s10, d16\n\t"
+    "vcvt.s32.f64 s12, d17\n\t"
+    "vcvt.s32.f64 s11, d18\n\t"
+    "vcvt.s32.f64 s13, d19\n\t"
+    "vst1.32 {d5}, [%[oa]]\n\t"
+    "vst1.32 {d6}, [%[ob]]"
+    // clobbers: "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31"
+      : [ia] "+r"(ia), [ib] "+r"(ib), [ra] "=&r"(ra), [rb] "=&r"(rb), [oa] "+r"(oa), [ob] "+r"(ob), [kc] "+r"(kc)
+      : [kr] "r"(kr)
+      : "memory", "cc", SB_V7_ONE_CLOBBERS);
 }
 
 SB_INLINE void one_draw_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const OneSetup& s) {
   if (n == 16) {
-    draw16<true>(dest, texels, w, s.u, s.v, s.su, s.sv);
+    draw16<true>(dest, texels, w, s.u, s.v, RunSteps{s.du, s.ddu}, RunSteps{s.dv, s.ddv});
   } else {
-    draw_last<true>(dest, n, texels, w, uint32_t(s.u), uint32_t(s.v), uint32_t(s.su.d), uint32_t(s.sv.d),
-                    uint32_t(s.su.dd), uint32_t(s.sv.dd));
+    draw_last<true>(dest, n, texels, w, uint32_t(s.u), uint32_t(s.v), uint32_t(s.du), uint32_t(s.dv),
+                    uint32_t(s.ddu), uint32_t(s.ddv));
   }
 }
 
