@@ -84,15 +84,21 @@ static_assert(sizeof(OneRow) == 32 && offsetof(PerspItem, n) == 4 && offsetof(Pe
 // its row; its gradients loaded by vld1 (zi0, uz0, vz0 twice: the fused multiply-adds
 // accumulate in place); positions, depths (clamped, the two divides), the samples (vcvt.u32
 // #16, [u, v] paired by vsli, vmin.u32 with [umax, vmax]), delta = [du, dv] (vsub.i32), the
-// quotients q = double(delta) / s (two divides), ddf = -2 (q curve) to int32 (vcvt: trunc,
-// saturating), dd' = dd where |dd| < 1e9 and T |dd| <= |delta| (the walker's range and
-// acceptance tests: last_ddi, last_dd; the 64-bit product by vmull.u32, vqsub.u64), else 0,
-// and d = trunc(q - dd' k). d is last_dd's: accepted, its d0 = trunc(x), x = (delta - T dd) / s
-// = delta / s - dd k exactly; q = RN(delta / s) and q - dd' k (dd' k exact, < 2^35) rounded
-// once differ from x by under 2^-20, and x, a multiple of 1 / (2 s), is either an integer
-// (then delta / s is a multiple of 1/2, q and q - dd' k exact) or over 1/30 from one: the same
-// trunc. Rejected (dd' = 0): trunc(q), last_dd's linear. For n <= 2 (T = 0, k = 0) dd' may be
-// nonzero where the walker's is 0: the run draws at most two pixels and never reads it.
+// quotients q = double(delta) / s (two divides), then:
+//   ddf   q c2 with c2 = -2 curve (exact), not -2 (q curve): the same int32 after vcvt (trunc,
+//         saturating, NaN -> 0). Scaling by -2 commutes with rounding except where a product
+//         is subnormal (then |ddf| < 1: 0 either way) or overflows (c2 infinite with
+//         curve finite: q = 0 gives NaN for 0, both 0; else |ddf| > 2^31 either way, both
+//         saturate and are rejected below).
+//   dd'   dd where |dd| < 1e9 and T |dd| <= |delta| (the walker's range and acceptance
+//         tests, last_ddi and last_dd's; the 64-bit product by vmull.u32, vqsub.u64), else 0.
+//   d     accepted: trunc(q - dd k), else trunc(q) (last_dd's linear). Accepted, last_dd's
+//         d0 is trunc(x), x = (delta - T dd) / s = delta / s - dd k exactly; q = RN(delta / s)
+//         and q - dd k (dd k exact, < 2^35) rounded once differ from x by under 2^-20, and
+//         x, a multiple of 1 / (2 s), is either an integer (then delta / s is a multiple of
+//         1/2: q and q - dd k exact) or over 1/30 from one: the same trunc.
+// For n <= 2 (T = 0, k = 0) dd' may be nonzero where the walker's is 0: the run draws at most
+// two pixels and never reads it. The results are stored by vst1 (OneSetup's order).
 SB_INLINE void one_setup2_v7(const PerspItem& A, const PerspItem& B, OneSetup* out) {
   const PerspItem* ia = &A;
   const PerspItem* ib = &B;
@@ -173,6 +179,8 @@ SB_INLINE void one_setup2_v7(const PerspItem& A, const PerspItem& B, OneSetup* o
     "vadd.f64 d9, d9, d17\n\t"
     "vmul.f64 d6, d6, d5\n\t"
     "vmul.f64 d10, d10, d9\n\t"
+    "vmul.f64 d6, d6, d3\n\t"
+    "vmul.f64 d10, d10, d3\n\t"
     "vcvt.u32.f64 d7, d7, #16\n\t"
     "vcvt.u32.f64 d11, d11, #16\n\t"
     "vcvt.u32.f64 d20, d20, #16\n\t"
@@ -211,46 +219,48 @@ SB_INLINE void one_setup2_v7(const PerspItem& A, const PerspItem& B, OneSetup* o
     "vmul.f64 d21, d17, d10\n\t"
     "vmul.f64 d26, d18, d6\n\t"
     "vmul.f64 d27, d19, d10\n\t"
-    "vmul.f64 d20, d20, d3\n\t"
-    "vmul.f64 d21, d21, d3\n\t"
-    "vmul.f64 d26, d26, d3\n\t"
-    "vmul.f64 d27, d27, d3\n\t"
-    "vcvt.s32.f64 s10, d20\n\t"
-    "vcvt.s32.f64 s12, d21\n\t"
-    "vcvt.s32.f64 s11, d26\n\t"
-    "vcvt.s32.f64 s13, d27\n\t"
-    "vabs.s32 d20, d5\n\t"
-    "vabs.s32 d21, d6\n\t"
-    "vcgt.u32 d26, d4, d20\n\t"
-    "vcgt.u32 d27, d4, d21\n\t"
-    "vmull.u32 q14, d20, d9\n\t"
-    "vmull.u32 q15, d21, d12\n\t"
-    "vqsub.u64 q14, q14, q11\n\t"
-    "vqsub.u64 q15, q15, q12\n\t"
-    "vqmovn.u64 d20, q14\n\t"
-    "vqmovn.u64 d21, q15\n\t"
-    "vtst.32 d20, d20, d20\n\t"
-    "vtst.32 d21, d21, d21\n\t"
-    "vbic d26, d26, d20\n\t"
-    "vbic d27, d27, d21\n\t"
-    "vand d5, d5, d26\n\t"
-    "vand d6, d6, d27\n\t"
-    "vst1.32 {d5}, [%[oa]]!\n\t"
-    "vcvt.f64.s32 d20, s10\n\t"
-    "vcvt.f64.s32 d21, s11\n\t"
-    "vst1.32 {d6}, [%[ob]]!\n\t"
-    "vcvt.f64.s32 d22, s12\n\t"
-    "vcvt.f64.s32 d23, s13\n\t"
-    "vfms.f64 d16, d20, d8\n\t"
-    "vfms.f64 d18, d21, d8\n\t"
-    "vfms.f64 d17, d22, d11\n\t"
-    "vfms.f64 d19, d23, d11\n\t"
     "vcvt.s32.f64 s10, d16\n\t"
     "vcvt.s32.f64 s12, d17\n\t"
     "vcvt.s32.f64 s11, d18\n\t"
     "vcvt.s32.f64 s13, d19\n\t"
-    "vst1.32 {d5}, [%[oa]]\n\t"
-    "vst1.32 {d6}, [%[ob]]"
+    "vcvt.s32.f64 s14, d20\n\t"
+    "vcvt.s32.f64 s20, d21\n\t"
+    "vcvt.s32.f64 s15, d26\n\t"
+    "vcvt.s32.f64 s21, d27\n\t"
+    "vcvt.f64.s32 d20, s14\n\t"
+    "vcvt.f64.s32 d21, s20\n\t"
+    "vcvt.f64.s32 d26, s15\n\t"
+    "vcvt.f64.s32 d27, s21\n\t"
+    "vabs.s32 d28, d7\n\t"
+    "vabs.s32 d29, d10\n\t"
+    "vfms.f64 d16, d20, d8\n\t"
+    "vfms.f64 d17, d21, d11\n\t"
+    "vfms.f64 d18, d26, d8\n\t"
+    "vfms.f64 d19, d27, d11\n\t"
+    "vmull.u32 q10, d28, d9\n\t"
+    "vmull.u32 q13, d29, d12\n\t"
+    "vcgt.u32 d30, d4, d28\n\t"
+    "vcgt.u32 d28, d4, d29\n\t"
+    "vqsub.u64 q10, q10, q11\n\t"
+    "vcvt.s32.f64 s16, d16\n\t"
+    "vqsub.u64 q13, q13, q12\n\t"
+    "vcvt.s32.f64 s18, d17\n\t"
+    "vcvt.s32.f64 s17, d18\n\t"
+    "vqmovn.u64 d16, q10\n\t"
+    "vcvt.s32.f64 s19, d19\n\t"
+    "vqmovn.u64 d17, q13\n\t"
+    "vtst.32 d16, d16, d16\n\t"
+    "vtst.32 d17, d17, d17\n\t"
+    "vbic d30, d30, d16\n\t"
+    "vbic d28, d28, d17\n\t"
+    "vand d7, d7, d30\n\t"
+    "vbsl d30, d8, d5\n\t"
+    "vand d10, d10, d28\n\t"
+    "vbsl d28, d9, d6\n\t"
+    "vst1.32 {d7}, [%[oa]]!\n\t"
+    "vst1.32 {d30}, [%[oa]]\n\t"
+    "vst1.32 {d10}, [%[ob]]!\n\t"
+    "vst1.32 {d28}, [%[ob]]"
     // clobbers: "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31"
       : [ia] "+r"(ia), [ib] "+r"(ib), [ra] "=&r"(ra), [rb] "=&r"(rb), [oa] "+r"(oa), [ob] "+r"(ob), [kc] "+r"(kc)
       : [kr] "r"(kr)

@@ -18,7 +18,7 @@ import re, sys
 LAT = {"vadd.f64": 4, "vfma.f64": 9, "vfms.f64": 9, "vmul.f64": 6, "vdiv.f64": 25, "vcmpe.f64": 1, "vmrs": 1,
        "vmovle.f64": 1, "vcvt.u32.f64": 4, "vcvt.f64.s32": 4, "vcvt.s32.f64": 4, "vsli.64": 3, "vmin.u32": 4,
        "vsub.i32": 3, "vabs.s32": 4, "vcgt.u32": 4, "vmull.u32": 7, "vmovl.u32": 4, "vqsub.u64": 4,
-       "vqmovn.u64": 4, "vtst.32": 4, "vbic": 3, "vand": 3, "vld1.64": 1, "vst1.32": 1, "ldr": 3, "add": 1,
+       "vqmovn.u64": 4, "vtst.32": 4, "vbic": 3, "vand": 3, "vbsl": 3, "vld1.64": 1, "vst1.32": 1, "ldr": 3, "add": 1,
        "sub": 1}
 FP_FREE = ("vld1.64", "vst1.32", "ldr", "add", "sub")
 
@@ -64,6 +64,7 @@ def span(x):
         ("vmul.f64 {V1}, {V1}, {Z1}", ["V1"], ["V1", "Z1"]),
         ("vadd.f64 {Z0}, {Z0}, {Z1}", ["Z0"], ["Z0", "Z1"]),
         ("vmul.f64 {ZX}, {ZX}, {Z0}", ["ZX"], ["ZX", "Z0"]),  # curve = (zix * 0.5) (z0 + z1)
+        ("vmul.f64 {ZX}, {ZX}, {M2}", ["ZX"], ["ZX", "M2"]),  # c2 = -2 curve (exact)
         ("vcvt.u32.f64 {U0}, {U0}, #16", ["U0"], ["U0"]),
         ("vcvt.u32.f64 {V0}, {V0}, #16", ["V0"], ["V0"]),
         ("vcvt.u32.f64 {U1}, {U1}, #16", ["U1"], ["U1"]),
@@ -82,36 +83,40 @@ def span(x):
         (f"vld1.64 {{{{{{KK}}, {{TT}}}}}}, [{R}]", ["KK", "TT"], [R, "M:tab"]),
         ("vabs.s32 {PD}, {D}", ["PD"], ["D"]),
         ("vmovl.u32 {QPD.q}, {PD}", ["QPD"], ["PD"]),
+        # ddf = q c2 (-2 (q curve): the same int32 after vcvt, see the header), dd = its trunc
+        # (saturating); lin = trunc(q).
         ("vmul.f64 {TU}, {FU}, {ZX}", ["TU"], ["FU", "ZX"]),
         ("vmul.f64 {TV}, {FV}, {ZX}", ["TV"], ["FV", "ZX"]),
-        ("vmul.f64 {TU}, {TU}, {M2}", ["TU"], ["TU", "M2"]),
-        ("vmul.f64 {TV}, {TV}, {M2}", ["TV"], ["TV", "M2"]),
+        ("vcvt.s32.f64 {L.s0}, {FU}", ["L"], ["FU"]),
+        ("vcvt.s32.f64 {L.s1}, {FV}", ["L"], ["FV", "L"]),
         ("vcvt.s32.f64 {DD.s0}, {TU}", ["DD"], ["TU"]),
         ("vcvt.s32.f64 {DD.s1}, {TV}", ["DD"], ["TV", "DD"]),
-        # dd' = dd if |dd| < 1e9 and T |dd| <= |delta| (64-bit), else 0 (last_ddi, last_dd's test).
+        # d = trunc(q - dd k) (k = (s - 1) / 2; dd k exact), used where dd is accepted; beside
+        # it the test: |dd| < 1e9 and T |dd| <= |delta| (64-bit), the walker's range and
+        # acceptance (last_ddi, last_dd); then dd' = accepted ? dd : 0, d = accepted ? d : lin.
+        ("vcvt.f64.s32 {GU}, {DD.s0}", ["GU"], ["DD"]),
+        ("vcvt.f64.s32 {GV}, {DD.s1}", ["GV"], ["DD"]),
         ("vabs.s32 {A}, {DD}", ["A"], ["DD"]),
-        ("vcgt.u32 {M}, {BIG}, {A}", ["M"], ["BIG", "A"]),
+        ("vfms.f64 {FU}, {GU}, {KK}", ["FU"], ["FU", "GU", "KK"]),
+        ("vfms.f64 {FV}, {GV}, {KK}", ["FV"], ["FV", "GV", "KK"]),
         ("vmull.u32 {QP.q}, {A}, {TT}", ["QP"], ["A", "TT"]),
+        ("vcgt.u32 {M}, {BIG}, {A}", ["M"], ["BIG", "A"]),
         ("vqsub.u64 {QP.q}, {QP.q}, {QPD.q}", ["QP"], ["QP", "QPD"]),
+        ("vcvt.s32.f64 {R.s0}, {FU}", ["R"], ["FU"]),
+        ("vcvt.s32.f64 {R.s1}, {FV}", ["R"], ["FV", "R"]),
         ("vqmovn.u64 {X}, {QP.q}", ["X"], ["QP"]),
         ("vtst.32 {X}, {X}, {X}", ["X"], ["X"]),
         ("vbic {M}, {M}, {X}", ["M"], ["M", "X"]),
         ("vand {DD}, {DD}, {M}", ["DD"], ["DD", "M"]),
+        ("vbsl {M}, {R}, {L}", ["M"], ["M", "R", "L"]),
         (f"vst1.32 {{{{{{DD}}}}}}, [{O}]!", ["M:out" + x, O], ["DD", O, "M:out" + x]),  # ddu, ddv
-        # d = trunc(q - dd' k), k = (s - 1) / 2 (dd' k exact; see the header).
-        ("vcvt.f64.s32 {GU}, {DD.s0}", ["GU"], ["DD"]),
-        ("vcvt.f64.s32 {GV}, {DD.s1}", ["GV"], ["DD"]),
-        ("vfms.f64 {FU}, {GU}, {KK}", ["FU"], ["FU", "GU", "KK"]),
-        ("vfms.f64 {FV}, {GV}, {KK}", ["FV"], ["FV", "GV", "KK"]),
-        ("vcvt.s32.f64 {R.s0}, {FU}", ["R"], ["FU"]),
-        ("vcvt.s32.f64 {R.s1}, {FV}", ["R"], ["FV", "R"]),
-        (f"vst1.32 {{{{{{R}}}}}}, [{O}]", ["M:out" + x], ["R", O, "M:out" + x]),  # du, dv
+        (f"vst1.32 {{{{{{M}}}}}}, [{O}]", ["M:out" + x], ["M", O, "M:out" + x]),  # du, dv
     ]
     return ops
 
 
 SHARED = ["KMIN", "ONE", "HALF", "M2", "BIG", "FLAGS", "APSR", "%[kr]", "M:tab"]
-LOW = {"D", "DD", "R"}  # s-register operands: d0 .. d15
+LOW = {"D", "DD", "R", "L"}  # s-register operands: d0 .. d15
 QREG = {"QP", "QPD"}
 
 
