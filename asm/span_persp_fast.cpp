@@ -826,9 +826,11 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     } else {
       if (n > 48) __builtin_unreachable();
 #if defined(SB_V7_ONE)
-      // One run (1 .. 16 pixels; n <= 0 too, which it skips): persp_one_v7, with the one-run
-      // spans after it; persp_fast<true> then draws 17 .. 48 pixels only (its one-run branch
-      // and n <= 0 test fold away: the same tests on its path as before).
+      // One run (1 .. 16 pixels; n <= 0 too, which it skips): persp_one_v7, with the 1 .. 48
+      // pixel spans after it; persp_fast<true> then draws 17 .. 48 pixels only (its one-run
+      // branch and n <= 0 test fold away: the same tests on its path as before). 17 .. 48
+      // pixel spans at the batch's start or after a one-run span go to persp_mid_run_v7
+      // (see there); here, after other spans, persp_fast<true> draws them.
       if (n <= 16) {
         it = persp_one_v7(it, end, texels, width);
         continue;
@@ -888,6 +890,12 @@ __attribute__((aligned(4096)))
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
 #if defined(__aarch64__) && defined(__GNUC__)
   batch_from(items, items + (count > 0 ? count : 0), texels, width);
+#elif defined(SB_V7_ONE)
+  // ARMv7: a first item of 1 .. 48 pixels (second order) to persp_short_v7 (with the ones
+  // after it), the rest to the batch loop.
+  const PerspItem* const end = items + (count > 0 ? count : 0);
+  if (items != end && short_v7(*items)) items = persp_short_v7(items, end, texels, width);
+  spans_range(items, end, texels, width);
 #else
   spans_range(items, items + (count > 0 ? count : 0), texels, width);
 #endif
@@ -938,7 +946,7 @@ namespace {
 // superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
 // the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
 // scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
-// With SB_V7_ONE page-aligned: GCC emits persp_one_v7 before it, and its code keeps its place
+// With SB_V7_ONE page-aligned: GCC emits persp_one_v7 and persp_mid_run_v7 before it, and its code keeps its place
 // against qemu's 4 KiB page cuts (at a page start, as it was when it came first).
 #if defined(SB_V7_ONE)
 __attribute__((aligned(4096)))
@@ -959,12 +967,16 @@ persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texe
 
 #if defined(SB_V7_ONE)
 namespace {
-// ARMv7: items from it on (it is one_v7's, or n <= 0), while they are one_v7's: drawn two at
-// a time (asm/span_persp_v7one.h; the last one alone, its set-up computed as a pair with
-// itself). Returns the first item that is not one (or end). Out of line, defined last: GCC
-// emits it after persp_long_run_v7, whose code (and qemu's 4 KiB page cuts in it) then stays
-// where it was, and its registers are its own (inlined into the batch loop it moved that
-// loop's allocation: A9 persp32 13.49 -> 13.67).
+// ARMv7: second-order items of 1 .. 48 pixels (short_v7's) from it on, while they follow each
+// other: one-run spans two at a time by persp_one_v7 (asm/span_persp_v7one.h; one alone when
+// the next item is not one), 17 .. 48 pixel spans one at a time by persp_mid_run_v7, each
+// going on to the other (a tail call) where the items change kind. Return the first item that
+// is not one (or end). Out of line, defined last: GCC emits them before persp_long_run_v7
+// (page-aligned), whose code then keeps its place, and their registers are their own. Reached
+// from the batch loop for a one-run item, which may have n <= 0 (skipped; the loop's code
+// stays as it was: routing its 17 .. 48 pixel items here too moved its linear spans' code,
+// A9 persp64lin 7.06 -> 7.24, persp192lin 5.40 -> 5.46), and from the batch entry for a
+// first item of 1 .. 48 pixels (persp_short_v7).
 __attribute__((noinline)) const PerspItem* persp_one_v7(const PerspItem* it, const PerspItem* end,
                                                         const uint8_t* texels, int width) {
   const uint32_t w = uint32_t(width);
@@ -975,13 +987,30 @@ __attribute__((noinline)) const PerspItem* persp_one_v7(const PerspItem* it, con
     OneSetup s[2];
     one_setup2_v7(it[0], b, s);
     one_draw_v7(it[0].dest, it[0].n, texels, w, s[0]);
-    if (!pair) return it + 1;
+    if (!pair) {
+      ++it;
+      break;
+    }
     one_draw_v7(b.dest, b.n, texels, w, s[1]);
     it += 2;
-    if (it == end || !one_v7(*it)) return it;
+    if (it == end || !one_v7(*it)) break;
   }
+  if (it != end && mid_v7(*it)) return persp_mid_run_v7(it, end, texels, width);
+  return it;
 }
-
+__attribute__((noinline)) const PerspItem* persp_mid_run_v7(const PerspItem* it, const PerspItem* end,
+                                                            const uint8_t* texels, int width) {
+  do {
+    mid_draw_v7(*it, texels, uint32_t(width));
+    ++it;
+  } while (it != end && mid_v7(*it));
+  if (it != end && one_v7(*it)) return persp_one_v7(it, end, texels, width);
+  return it;
+}
+__attribute__((noinline)) const PerspItem* persp_short_v7(const PerspItem* it, const PerspItem* end,
+                                                          const uint8_t* texels, int width) {
+  return it->n <= 16 ? persp_one_v7(it, end, texels, width) : persp_mid_run_v7(it, end, texels, width);
+}
 }  // namespace
 #endif
 

@@ -33,6 +33,7 @@
 
 #if defined(SB_V7_NEON_STEPS)
 #define SB_V7_ONE 1
+#define SB_V7_MID2_CLOBBERS "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31"
 #define SB_V7_ONE_CLOBBERS "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d15", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31"
 namespace sb::simd {
 namespace {
@@ -267,6 +268,256 @@ SB_INLINE void one_setup2_v7(const PerspItem& A, const PerspItem& B, OneSetup* o
       : "memory", "cc", SB_V7_ONE_CLOBBERS);
 }
 
+// Spans of 17 .. 48 pixels (second order, dzi != 0): two or three runs, set up by one asm
+// statement (mid_setup_v7, bench/gen_v7one.py's span_mid), then drawn. Samples 0 .. 3 at P,
+// P + 16, P + A2, (P + 16) + A3 (the walker's positions: A2 = n - 1, and sample 3 unused, for
+// n <= 32; A2 = 32, A3 = n - 17 for n > 32), each as the one-run path's; the full runs' steps
+// (samples 0 -> 1, 1 -> 2) as persp_fast's: ddf = double(delta) (zck (z_a + z_b)),
+// zck = zix * -1/16 (the walker's -2 (delta / 16 curve), same bits), dd = trunc (saturating),
+// steps16_dd in NEON lanes as asm/span_persp_v7pass.h computes it; the last run's (samples
+// 1 -> 2 for n <= 32, 2 -> 3 for n > 32: the row's mask selects z_a + z_b and delta by vbit) as
+// the one-run path's over its n - 17 or n - 33 steps. Stored in V7ShortSetup's order.
+SB_INLINE bool mid_v7(const PerspItem& x) {
+  uint32_t lo, hi;
+  __builtin_memcpy(&lo, &x.span.dzi, 4);
+  __builtin_memcpy(&hi, reinterpret_cast<const char*>(&x.span.dzi) + 4, 4);
+  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n - 17) < 32u;
+}
+struct V7ShortSetup {
+  int32_t s0[2], s1[2], s2[2];    // samples 0 .. 2: [u, v]
+  int32_t d0[2], dd0[2];          // run 0's steps [du, dv], [ddu, ddv]
+  int32_t d1[2], dd1[2];          // run 1's (full: used for n > 32)
+  int32_t ddl[2], dl[2];          // the last run's
+};
+struct alignas(16) V7ShortConsts {
+  double c[6];
+  uint32_t big[2], k120[2], k25[2];
+};
+__attribute__((section(".rodata.sb_v7one"))) constexpr V7ShortConsts kV7ShortConsts = {
+    {kMinZi, 1.0, 0.5, -2.0, 16.0, -0.0625}, {1000000000u, 1000000000u}, {120, 120}, {1u << 25, 1u << 25}};
+struct alignas(64) V7ShortRow {
+  double a2, a3, s, k;
+  uint32_t t[2], mask[2];
+};
+__attribute__((section(".rodata.sb_v7one"))) constexpr auto kV7ShortRows = [] {
+  struct Table {
+    V7ShortRow row[49];
+  } t{};
+  for (int n = 17; n <= 48; ++n) {
+    const bool three = n > 32;
+    const int steps = three ? n - 33 : n - 17, s = steps > 1 ? steps : 1;
+    const uint32_t T = uint32_t(s * (s - 1) / 2), m = three ? ~0u : 0u;
+    t.row[n] = V7ShortRow{three ? 32.0 : double(n - 1), three ? double(n - 17) : 0.0, double(s), double(s - 1) / 2,
+                      {T, T}, {m, m}};
+  }
+  return t;
+}();
+static_assert(sizeof(V7ShortRow) == 64 && sizeof(V7ShortSetup) == 72, "mid_setup_v7's row and stores");
+
+SB_INLINE void mid_setup_v7(const PerspItem& A, V7ShortSetup* out) {
+  const PerspItem* ia = &A;
+  int32_t* oa = out->s0;
+  const V7ShortConsts* kc = &kV7ShortConsts;
+  const V7ShortRow* kr = kV7ShortRows.row;
+  uint32_t ra;
+  __asm__ volatile(
+    // Generated (mid) by bench/gen_v7one.py (do not edit by hand).
+    "vld1.64 {d24, d25, d26, d27}, [%[kc]]!\n\t"
+    "vld1.64 {d28, d29, d30, d31}, [%[kc]]!\n\t"
+    "vld1.64 {d23}, [%[kc]]\n\t"
+    "ldr %[ra], [%[ia], #4]\n\t"
+    "add %[ia], %[ia], #8\n\t"
+    "add %[ra], %[kr], %[ra], lsl #6\n\t"
+    "vld1.64 {d0, d1}, [%[ra]]!\n\t"
+    "vld1.64 {d16}, [%[ia]]\n\t"
+    "vld1.64 {d17}, [%[ia]]\n\t"
+    "vld1.64 {d18}, [%[ia]]\n\t"
+    "vld1.64 {d2, d3, d4, d5}, [%[ia]]!\n\t"
+    "vld1.64 {d6, d7, d8, d9}, [%[ia]]\n\t"
+    "vadd.f64 d19, d8, d28\n\t"
+    "vadd.f64 d20, d8, d0\n\t"
+    "vfma.f64 d2, d3, d8\n\t"
+    "vadd.f64 d21, d19, d1\n\t"
+    "vfma.f64 d16, d3, d19\n\t"
+    "vfma.f64 d17, d3, d20\n\t"
+    "vfma.f64 d18, d3, d21\n\t"
+    "vcmpe.f64 d2, d24\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d2, d24\n\t"
+    "vcmpe.f64 d16, d24\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d16, d24\n\t"
+    "vcmpe.f64 d17, d24\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d17, d24\n\t"
+    "vcmpe.f64 d18, d24\n\t"
+    "vmrs APSR_nzcv, fpscr\n\t"
+    "it le\n\t"
+    "vmovle.f64 d18, d24\n\t"
+    "vdiv.f64 d2, d25, d2\n\t"
+    "vdiv.f64 d16, d25, d16\n\t"
+    "vdiv.f64 d17, d25, d17\n\t"
+    "vdiv.f64 d18, d25, d18\n\t"
+    "vld1.64 {d22}, [%[ia]]\n\t"
+    "vld1.64 {d0}, [%[ia]]\n\t"
+    "vld1.64 {d1}, [%[ia]]\n\t"
+    "sub %[ia], %[ia], #16\n\t"
+    "vld1.64 {d10}, [%[ia]]\n\t"
+    "vld1.64 {d11}, [%[ia]]\n\t"
+    "vld1.64 {d12}, [%[ia]]\n\t"
+    "vfma.f64 d4, d5, d8\n\t"
+    "vfma.f64 d6, d7, d8\n\t"
+    "vfma.f64 d10, d5, d19\n\t"
+    "vfma.f64 d22, d7, d19\n\t"
+    "vfma.f64 d11, d5, d20\n\t"
+    "vfma.f64 d0, d7, d20\n\t"
+    "vfma.f64 d12, d5, d21\n\t"
+    "vfma.f64 d1, d7, d21\n\t"
+    "vmul.f64 d19, d3, d26\n\t"
+    "vmul.f64 d3, d3, d29\n\t"
+    "vld1.64 {d7, d8}, [%[ra]]!\n\t"
+    "vld1.64 {d13, d14}, [%[ra]]\n\t"
+    "vmul.f64 d4, d4, d2\n\t"
+    "vmul.f64 d6, d6, d2\n\t"
+    "vmul.f64 d10, d10, d16\n\t"
+    "vmul.f64 d22, d22, d16\n\t"
+    "vmul.f64 d11, d11, d17\n\t"
+    "vmul.f64 d0, d0, d17\n\t"
+    "vmul.f64 d12, d12, d18\n\t"
+    "vmul.f64 d1, d1, d18\n\t"
+    "vadd.f64 d2, d2, d16\n\t"
+    "vadd.f64 d16, d16, d17\n\t"
+    "vadd.f64 d17, d17, d18\n\t"
+    "vmul.f64 d2, d3, d2\n\t"
+    "vmul.f64 d18, d3, d16\n\t"
+    "vbit d16, d17, d14\n\t"
+    "vmul.f64 d19, d19, d16\n\t"
+    "vmul.f64 d19, d19, d27\n\t"
+    "vcvt.u32.f64 d4, d4, #16\n\t"
+    "vcvt.u32.f64 d6, d6, #16\n\t"
+    "vcvt.u32.f64 d10, d10, #16\n\t"
+    "vcvt.u32.f64 d22, d22, #16\n\t"
+    "vcvt.u32.f64 d11, d11, #16\n\t"
+    "vcvt.u32.f64 d0, d0, #16\n\t"
+    "vcvt.u32.f64 d12, d12, #16\n\t"
+    "vcvt.u32.f64 d1, d1, #16\n\t"
+    "vsli.64 d4, d6, #32\n\t"
+    "vmin.u32 d4, d4, d9\n\t"
+    "vsli.64 d10, d22, #32\n\t"
+    "vmin.u32 d10, d10, d9\n\t"
+    "vsli.64 d11, d0, #32\n\t"
+    "vmin.u32 d11, d11, d9\n\t"
+    "vsli.64 d12, d1, #32\n\t"
+    "vmin.u32 d12, d12, d9\n\t"
+    "vsub.i32 d0, d10, d4\n\t"
+    "vst1.32 {d4}, [%[oa]]!\n\t"
+    "vsub.i32 d1, d11, d10\n\t"
+    "vst1.32 {d10}, [%[oa]]!\n\t"
+    "vsub.i32 d3, d11, d10\n\t"
+    "vsub.i32 d16, d12, d11\n\t"
+    "vst1.32 {d11}, [%[oa]]!\n\t"
+    "vbit d3, d16, d14\n\t"
+    "vcvt.f64.s32 d16, s6\n\t"
+    "vcvt.f64.s32 d17, s7\n\t"
+    "vdiv.f64 d16, d16, d7\n\t"
+    "vdiv.f64 d17, d17, d7\n\t"
+    "vcvt.f64.s32 d20, s0\n\t"
+    "vcvt.f64.s32 d21, s1\n\t"
+    "vmul.f64 d20, d20, d2\n\t"
+    "vmul.f64 d21, d21, d2\n\t"
+    "vcvt.s32.f64 s4, d20\n\t"
+    "vcvt.s32.f64 s5, d21\n\t"
+    "vabs.s32 d20, d0\n\t"
+    "vshr.s32 d21, d0, #31\n\t"
+    "vsra.u32 d0, d21, #28\n\t"
+    "vabs.s32 d21, d2\n\t"
+    "vmul.i32 d22, d2, d31\n\t"
+    "vmin.u32 d21, d21, d23\n\t"
+    "vmul.i32 d21, d21, d31\n\t"
+    "vcge.u32 d21, d20, d21\n\t"
+    "vand d2, d2, d21\n\t"
+    "vand d22, d22, d21\n\t"
+    "vhsub.s32 d0, d0, d22\n\t"
+    "vshr.s32 d0, d0, #3\n\t"
+    "vst1.32 {d0}, [%[oa]]!\n\t"
+    "vst1.32 {d2}, [%[oa]]!\n\t"
+    "vcvt.f64.s32 d20, s2\n\t"
+    "vcvt.f64.s32 d21, s3\n\t"
+    "vmul.f64 d20, d20, d18\n\t"
+    "vmul.f64 d21, d21, d18\n\t"
+    "vcvt.s32.f64 s0, d20\n\t"
+    "vcvt.s32.f64 s1, d21\n\t"
+    "vabs.s32 d18, d1\n\t"
+    "vshr.s32 d20, d1, #31\n\t"
+    "vsra.u32 d1, d20, #28\n\t"
+    "vabs.s32 d20, d0\n\t"
+    "vmul.i32 d21, d0, d31\n\t"
+    "vmin.u32 d20, d20, d23\n\t"
+    "vmul.i32 d20, d20, d31\n\t"
+    "vcge.u32 d20, d18, d20\n\t"
+    "vand d0, d0, d20\n\t"
+    "vand d21, d21, d20\n\t"
+    "vhsub.s32 d1, d1, d21\n\t"
+    "vshr.s32 d1, d1, #3\n\t"
+    "vst1.32 {d1}, [%[oa]]!\n\t"
+    "vst1.32 {d0}, [%[oa]]!\n\t"
+    "vmul.f64 d18, d16, d19\n\t"
+    "vmul.f64 d20, d17, d19\n\t"
+    "vcvt.s32.f64 s0, d16\n\t"
+    "vcvt.s32.f64 s1, d17\n\t"
+    "vcvt.s32.f64 s2, d18\n\t"
+    "vcvt.s32.f64 s3, d20\n\t"
+    "vcvt.f64.s32 d18, s2\n\t"
+    "vcvt.f64.s32 d19, s3\n\t"
+    "vabs.s32 d20, d1\n\t"
+    "vfms.f64 d16, d18, d8\n\t"
+    "vfms.f64 d17, d19, d8\n\t"
+    "vmull.u32 q9, d20, d13\n\t"
+    "vcgt.u32 d21, d30, d20\n\t"
+    "vabs.s32 d20, d3\n\t"
+    "vmovl.u32 q1, d20\n\t"
+    "vqsub.u64 q9, q9, q1\n\t"
+    "vcvt.s32.f64 s4, d16\n\t"
+    "vcvt.s32.f64 s5, d17\n\t"
+    "vqmovn.u64 d16, q9\n\t"
+    "vtst.32 d16, d16, d16\n\t"
+    "vbic d21, d21, d16\n\t"
+    "vand d1, d1, d21\n\t"
+    "vbsl d21, d2, d0\n\t"
+    "vst1.32 {d1}, [%[oa]]!\n\t"
+    "vst1.32 {d21}, [%[oa]]!"
+    // clobbers: "d0", "d1", "d2", "d3", "d4", "d5", "d6", "d7", "d8", "d9", "d10", "d11", "d12", "d13", "d14", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d24", "d25", "d26", "d27", "d28", "d29", "d30", "d31"
+      : [ia] "+r"(ia), [ra] "=&r"(ra), [oa] "+r"(oa), [kc] "+r"(kc)
+      : [kr] "r"(kr)
+      : "memory", "cc", SB_V7_MID2_CLOBBERS);
+}
+SB_INLINE void last_draw_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const int32_t* s,
+                            const int32_t* d, const int32_t* dd) {
+  if (n == 16) {
+    draw16<true>(dest, texels, w, s[0], s[1], RunSteps{d[0], dd[0]}, RunSteps{d[1], dd[1]});
+  } else {
+    draw_last<true>(dest, n, texels, w, uint32_t(s[0]), uint32_t(s[1]), uint32_t(d[0]), uint32_t(d[1]),
+                    uint32_t(dd[0]), uint32_t(dd[1]));
+  }
+}
+// One such item: set up, then its runs drawn.
+SB_INLINE void mid_draw_v7(const PerspItem& it, const uint8_t* texels, uint32_t w) {
+  V7ShortSetup s;
+  mid_setup_v7(it, &s);
+  uint8_t* const dest = it.dest;
+  const int n = it.n;
+  draw16<true>(dest, texels, w, s.s0[0], s.s0[1], RunSteps{s.d0[0], s.dd0[0]}, RunSteps{s.d0[1], s.dd0[1]});
+  if (n > 32) {
+    draw16<true>(dest + 16, texels, w, s.s1[0], s.s1[1], RunSteps{s.d1[0], s.dd1[0]}, RunSteps{s.d1[1], s.dd1[1]});
+    last_draw_v7(dest + 32, n - 32, texels, w, s.s2, s.dl, s.ddl);
+  } else {
+    last_draw_v7(dest + 16, n - 16, texels, w, s.s1, s.dl, s.ddl);
+  }
+}
+
 SB_INLINE void one_draw_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const OneSetup& s) {
   if (n == 16) {
     draw16<true>(dest, texels, w, s.u, s.v, RunSteps{s.du, s.ddu}, RunSteps{s.dv, s.ddv});
@@ -276,8 +527,17 @@ SB_INLINE void one_draw_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t
   }
 }
 
-// Items from it on (persp_one_v7, defined at the end of asm/span_persp_fast.cpp: see there).
+// A one-run or 17 .. 48 pixel second-order item (persp_short_run_v7's).
+SB_INLINE bool short_v7(const PerspItem& x) {
+  uint32_t lo, hi;
+  __builtin_memcpy(&lo, &x.span.dzi, 4);
+  __builtin_memcpy(&hi, reinterpret_cast<const char*>(&x.span.dzi) + 4, 4);
+  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n - 1) < 48u;
+}
+// Items from it on (defined at the end of asm/span_persp_fast.cpp: see there).
 const PerspItem* persp_one_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+const PerspItem* persp_mid_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+const PerspItem* persp_short_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 
 }  // namespace
 }  // namespace sb::simd

@@ -18,7 +18,8 @@ import re, sys
 LAT = {"vadd.f64": 4, "vfma.f64": 9, "vfms.f64": 9, "vmul.f64": 6, "vdiv.f64": 25, "vcmpe.f64": 1, "vmrs": 1,
        "vmovle.f64": 1, "vcvt.u32.f64": 4, "vcvt.f64.s32": 4, "vcvt.s32.f64": 4, "vsli.64": 3, "vmin.u32": 4,
        "vsub.i32": 3, "vabs.s32": 4, "vcgt.u32": 4, "vmull.u32": 7, "vmovl.u32": 4, "vqsub.u64": 4,
-       "vqmovn.u64": 4, "vtst.32": 4, "vbic": 3, "vand": 3, "vbsl": 3, "vld1.64": 1, "vst1.32": 1, "ldr": 3, "add": 1,
+       "vqmovn.u64": 4, "vtst.32": 4, "vbic": 3, "vand": 3, "vbsl": 3, "vbit": 3,
+       "vshr.s32": 3, "vsra.u32": 3, "vmul.i32": 5, "vcge.u32": 4, "vhsub.s32": 4, "vld1.64": 1, "vst1.32": 1, "ldr": 3, "add": 1,
        "sub": 1}
 FP_FREE = ("vld1.64", "vst1.32", "ldr", "add", "sub")
 
@@ -115,8 +116,131 @@ def span(x):
     return ops
 
 
-SHARED = ["KMIN", "ONE", "HALF", "M2", "BIG", "FLAGS", "APSR", "%[kr]", "M:tab"]
-LOW = {"D", "DD", "R", "L"}  # s-register operands: d0 .. d15
+
+def span_mid(x):
+    """Spans of 17 .. 48 pixels (two or three runs): samples 0 .. 3 at P, P + 16, P + A2,
+    (P + 16) + A3 (the walker's positions; for n <= 32 sample 3 is not used), the full runs'
+    steps (0 -> 1, 1 -> 2) as persp_fast's (ddf = double(delta) (zck (z_a + z_b)), steps16_dd
+    in NEON lanes as asm/span_persp_v7pass.h's), the last run's as the one-run path's, from
+    samples 2 -> 3 (n > 32) or 1 -> 2 (n <= 32: the row's mask picks them)."""
+    I, R, O = f"%[i{x}]", f"%[r{x}]", f"%[o{x}]"
+    ld = lambda regs, ptr, wb=False: (f"vld1.64 {{{{{', '.join('{' + r + '}' for r in regs)}}}}}, [{ptr}]" + ("!" if wb else ""),
+                                      regs + ([ptr] if wb else []), [ptr, "M:item" if ptr == I else "M:tab"])
+    st = lambda r: (f"vst1.32 {{{{{{{r}}}}}}}, [{O}]!", ["M:out" + x, O], [r, O, "M:out" + x])
+    ops = [
+        (f"ldr {R}, [{I}, #4]", [R], [I]),
+        (f"add {I}, {I}, #8", [I], [I]),
+        (f"add {R}, %[kr], {R}, lsl #6", [R], [R, "%[kr]"]),
+        ld(["A2", "A3"], R, True),
+        ld(["Z1"], I), ld(["Z2"], I), ld(["Z3"], I),
+        ld(["Z0", "ZX", "U0", "UX"], I, True),
+        ld(["V0", "VX", "P", "UV"], I),
+        ("vadd.f64 {P1}, {P}, {C16}", ["P1"], ["P", "C16"]),
+        ("vadd.f64 {P2}, {P}, {A2}", ["P2"], ["P", "A2"]),
+        ("vfma.f64 {Z0}, {ZX}, {P}", ["Z0"], ["Z0", "ZX", "P"]),
+        ("vadd.f64 {P3}, {P1}, {A3}", ["P3"], ["P1", "A3"]),
+        ("vfma.f64 {Z1}, {ZX}, {P1}", ["Z1"], ["Z1", "ZX", "P1"]),
+        ("vfma.f64 {Z2}, {ZX}, {P2}", ["Z2"], ["Z2", "ZX", "P2"]),
+        ("vfma.f64 {Z3}, {ZX}, {P3}", ["Z3"], ["Z3", "ZX", "P3"]),
+    ]
+    for z in ("Z0", "Z1", "Z2", "Z3"):
+        ops += [(f"vcmpe.f64 {{{z}}}, {{KMIN}}", ["FLAGS"], [z, "KMIN"]),
+                ("vmrs APSR_nzcv, fpscr", ["APSR"], ["FLAGS"]),
+                (f"vmovle.f64 {{{z}}}, {{KMIN}}", [z], [z, "KMIN", "APSR"])]
+    for z in ("Z0", "Z1", "Z2", "Z3"):
+        ops.append((f"vdiv.f64 {{{z}}}, {{ONE}}, {{{z}}}", [z], ["ONE", z]))
+    ops += [ld(["V1"], I), ld(["V2"], I), ld(["V3"], I),
+            (f"sub {I}, {I}, #16", [I], [I]),
+            ld(["U1"], I), ld(["U2"], I), ld(["U3"], I)]
+    for j, p in enumerate(("P", "P1", "P2", "P3")):
+        ops += [(f"vfma.f64 {{U{j}}}, {{UX}}, {{{p}}}", [f"U{j}"], [f"U{j}", "UX", p]),
+                (f"vfma.f64 {{V{j}}}, {{VX}}, {{{p}}}", [f"V{j}"], [f"V{j}", "VX", p])]
+    ops += [("vmul.f64 {ZH}, {ZX}, {HALF}", ["ZH"], ["ZX", "HALF"]),
+            ("vmul.f64 {ZX}, {ZX}, {MQ}", ["ZX"], ["ZX", "MQ"]),  # zck = zix * -1/16
+            ld(["SL", "KL"], R, True), ld(["TT", "MK"], R)]
+    for j in range(4):
+        ops += [(f"vmul.f64 {{U{j}}}, {{U{j}}}, {{Z{j}}}", [f"U{j}"], [f"U{j}", f"Z{j}"]),
+                (f"vmul.f64 {{V{j}}}, {{V{j}}}, {{Z{j}}}", [f"V{j}"], [f"V{j}", f"Z{j}"])]
+    ops += [("vadd.f64 {Z0}, {Z0}, {Z1}", ["Z0"], ["Z0", "Z1"]),  # z0 + z1
+            ("vadd.f64 {Z1}, {Z1}, {Z2}", ["Z1"], ["Z1", "Z2"]),  # z1 + z2
+            ("vadd.f64 {Z2}, {Z2}, {Z3}", ["Z2"], ["Z2", "Z3"]),  # z2 + z3
+            ("vmul.f64 {Z0}, {ZX}, {Z0}", ["Z0"], ["ZX", "Z0"]),  # c0 = zck (z0 + z1)
+            ("vmul.f64 {Z3}, {ZX}, {Z1}", ["Z3"], ["ZX", "Z1"]),  # c1 = zck (z1 + z2)
+            ("vbit {Z1}, {Z2}, {MK}", ["Z1"], ["Z1", "Z2", "MK"]),  # the last run's z_a + z_b
+            ("vmul.f64 {ZH}, {ZH}, {Z1}", ["ZH"], ["ZH", "Z1"]),  # curve = (zix / 2) (z_a + z_b)
+            ("vmul.f64 {ZH}, {ZH}, {M2}", ["ZH"], ["ZH", "M2"])]  # c2 = -2 curve
+    for j in range(4):
+        ops += [(f"vcvt.u32.f64 {{U{j}}}, {{U{j}}}, #16", [f"U{j}"], [f"U{j}"]),
+                (f"vcvt.u32.f64 {{V{j}}}, {{V{j}}}, #16", [f"V{j}"], [f"V{j}"])]
+    for j in range(4):
+        ops += [(f"vsli.64 {{U{j}}}, {{V{j}}}, #32", [f"U{j}"], [f"U{j}", f"V{j}"]),
+                (f"vmin.u32 {{U{j}}}, {{U{j}}}, {{UV}}", [f"U{j}"], [f"U{j}", "UV"])]
+    ops += [("vsub.i32 {D0}, {U1}, {U0}", ["D0"], ["U1", "U0"]),
+            st("U0"),
+            ("vsub.i32 {D1}, {U2}, {U1}", ["D1"], ["U2", "U1"]),
+            st("U1"),
+            ("vsub.i32 {DL}, {U2}, {U1}", ["DL"], ["U2", "U1"]),
+            ("vsub.i32 {D3}, {U3}, {U2}", ["D3"], ["U3", "U2"]),
+            st("U2"),
+            ("vbit {DL}, {D3}, {MK}", ["DL"], ["DL", "D3", "MK"]),  # the last run's delta
+            ("vcvt.f64.s32 {FU}, {DL.s0}", ["FU"], ["DL"]),
+            ("vcvt.f64.s32 {FV}, {DL.s1}", ["FV"], ["DL"]),
+            ("vdiv.f64 {FU}, {FU}, {SL}", ["FU"], ["FU", "SL"]),
+            ("vdiv.f64 {FV}, {FV}, {SL}", ["FV"], ["FV", "SL"])]
+    # The full runs' steps: ddf = double(delta) c, dd = trunc (saturating), then steps16_dd.
+    for j, (Dn, c) in enumerate((("D0", "Z0"), ("D1", "Z3"))):
+        E, H, DD, PD, T, A, X = (f"{n}{j}" for n in ("E", "H", "EE", "PD", "SG", "AA", "XX"))
+        ops += [(f"vcvt.f64.s32 {{{E}}}, {{{Dn}.s0}}", [E], [Dn]),
+                (f"vcvt.f64.s32 {{{H}}}, {{{Dn}.s1}}", [H], [Dn]),
+                (f"vmul.f64 {{{E}}}, {{{E}}}, {{{c}}}", [E], [E, c]),
+                (f"vmul.f64 {{{H}}}, {{{H}}}, {{{c}}}", [H], [H, c]),
+                (f"vcvt.s32.f64 {{{DD}.s0}}, {{{E}}}", [DD], [E]),
+                (f"vcvt.s32.f64 {{{DD}.s1}}, {{{H}}}", [DD], [H, DD]),
+                (f"vabs.s32 {{{PD}}}, {{{Dn}}}", [PD], [Dn]),
+                (f"vshr.s32 {{{T}}}, {{{Dn}}}, #31", [T], [Dn]),
+                (f"vsra.u32 {{{Dn}}}, {{{T}}}, #28", [Dn], [Dn, T]),  # delta + (delta < 0 ? 15 : 0)
+                (f"vabs.s32 {{{A}}}, {{{DD}}}", [A], [DD]),
+                (f"vmul.i32 {{{X}}}, {{{DD}}}, {{K120}}", [X], [DD, "K120"]),
+                (f"vmin.u32 {{{A}}}, {{{A}}}, {{K25}}", [A], [A, "K25"]),
+                (f"vmul.i32 {{{A}}}, {{{A}}}, {{K120}}", [A], [A, "K120"]),
+                (f"vcge.u32 {{{A}}}, {{{PD}}}, {{{A}}}", [A], [PD, A]),  # accepted: 120 min(|dd|, 2^25) <= pd
+                (f"vand {{{DD}}}, {{{DD}}}, {{{A}}}", [DD], [DD, A]),
+                (f"vand {{{X}}}, {{{X}}}, {{{A}}}", [X], [X, A]),
+                (f"vhsub.s32 {{{Dn}}}, {{{Dn}}}, {{{X}}}", [Dn], [Dn, X]),
+                (f"vshr.s32 {{{Dn}}}, {{{Dn}}}, #3", [Dn], [Dn]),
+                st(Dn), st(DD)]
+    # The last run: as span() (the one-run path) from its quotients.
+    ops += [
+        ("vmul.f64 {TU}, {FU}, {ZH}", ["TU"], ["FU", "ZH"]),
+        ("vmul.f64 {TV}, {FV}, {ZH}", ["TV"], ["FV", "ZH"]),
+        ("vcvt.s32.f64 {L.s0}, {FU}", ["L"], ["FU"]),
+        ("vcvt.s32.f64 {L.s1}, {FV}", ["L"], ["FV", "L"]),
+        ("vcvt.s32.f64 {DD.s0}, {TU}", ["DD"], ["TU"]),
+        ("vcvt.s32.f64 {DD.s1}, {TV}", ["DD"], ["TV", "DD"]),
+        ("vcvt.f64.s32 {GU}, {DD.s0}", ["GU"], ["DD"]),
+        ("vcvt.f64.s32 {GV}, {DD.s1}", ["GV"], ["DD"]),
+        ("vabs.s32 {A}, {DD}", ["A"], ["DD"]),
+        ("vfms.f64 {FU}, {GU}, {KL}", ["FU"], ["FU", "GU", "KL"]),
+        ("vfms.f64 {FV}, {GV}, {KL}", ["FV"], ["FV", "GV", "KL"]),
+        ("vmull.u32 {QP.q}, {A}, {TT}", ["QP"], ["A", "TT"]),
+        ("vcgt.u32 {M}, {BIG}, {A}", ["M"], ["BIG", "A"]),
+        ("vabs.s32 {PD}, {DL}", ["PD"], ["DL"]),
+        ("vmovl.u32 {QPD.q}, {PD}", ["QPD"], ["PD"]),
+        ("vqsub.u64 {QP.q}, {QP.q}, {QPD.q}", ["QP"], ["QP", "QPD"]),
+        ("vcvt.s32.f64 {R.s0}, {FU}", ["R"], ["FU"]),
+        ("vcvt.s32.f64 {R.s1}, {FV}", ["R"], ["FV", "R"]),
+        ("vqmovn.u64 {X}, {QP.q}", ["X"], ["QP"]),
+        ("vtst.32 {X}, {X}, {X}", ["X"], ["X"]),
+        ("vbic {M}, {M}, {X}", ["M"], ["M", "X"]),
+        ("vand {DD}, {DD}, {M}", ["DD"], ["DD", "M"]),
+        ("vbsl {M}, {R}, {L}", ["M"], ["M", "R", "L"]),
+        st("DD"), st("M"),
+    ]
+    return ops
+
+
+SHARED = ["KMIN", "ONE", "HALF", "M2", "C16", "MQ", "BIG", "K120", "K25", "FLAGS", "APSR", "%[kr]", "M:tab"]
+LOW = {"D", "DD", "R", "L", "DL", "D0", "D1", "EE0", "EE1"}  # s-register operands: d0 .. d15
 QREG = {"QP", "QPD"}
 
 
@@ -262,22 +386,19 @@ def render(ops, phys):
     return lines
 
 
-def main():
-    a, b = tag(span("a"), "a"), tag(span("b"), "b")
-    head = [("vld1.64 {{{KMIN}, {ONE}, {HALF}, {M2}}}, [%[kc]]!", [], ["%[kc]"], "-"),
-            ("vld1.64 {{{BIG}}}, [%[kc]]", [], ["%[kc]"], "-")]
-    ops = head + merge(a, b)
-    fixed = {"KMIN": 0, "ONE": 1, "HALF": 2, "M2": 3, "BIG": 4}
+def gen(progs, head, fixed, marker, macro, mca):
+    """One asm statement: the programs merged, registers allocated; written into
+    asm/span_persp_v7one.h between `marker` and its clobbers line, the clobbers as `macro`."""
+    ops = head + (merge(*progs) if len(progs) == 2 else progs[0])
     phys = allocate(ops, fixed)
     lines = render(ops, phys)
     used = sorted(set(int(m) for l in lines for m in re.findall(r"\bd(\d+)\b", l)) |
                   set(int(m) // 2 for l in lines for m in re.findall(r"\bs(\d+)\b", l)) |
                   set(2 * int(m) + j for l in lines for m in re.findall(r"\bq(\d+)\b", l) for j in (0, 1)))
-    if "--mca" in sys.argv:
-        f = sys.argv[sys.argv.index("--mca") + 1]
+    if mca:
         core = {"%[ia]": "r0", "%[ib]": "r1", "%[ra]": "r2", "%[rb]": "r3", "%[oa]": "r4", "%[ob]": "r5",
                 "%[kc]": "r6", "%[kr]": "r7"}
-        with open(f, "w") as fh:
+        with open(mca, "w") as fh:
             for l in lines:
                 for k, v in core.items():
                     l = l.replace(k, v)
@@ -291,18 +412,32 @@ def main():
         body.append(f'"{l}\\n\\t"')
     body[-1] = body[-1].replace("\\n\\t", "")
     clob = ", ".join(f'"d{r}"' for r in used)
-    text = ("    // Generated by bench/gen_v7one.py (do not edit by hand).\n"
+    text = (f"    {marker} (do not edit by hand).\n"
             + "".join(f"    {l}\n" for l in body)
             + f"    // clobbers: {clob}\n")
     path = "asm/span_persp_v7one.h"
     src = open(path).read()
-    s0 = src.index("    // Generated by bench/gen_v7one.py")
+    s0 = src.index(f"    {marker}")
     s1 = src.index("    // clobbers:", s0)
     s1 = src.index("\n", s1) + 1
     src = src[:s0] + text + src[s1:]
-    src = re.sub(r"#define SB_V7_ONE_CLOBBERS .*", f"#define SB_V7_ONE_CLOBBERS {clob}", src)
+    src = re.sub(rf"#define {macro} .*", f"#define {macro} {clob}", src)
     open(path, "w").write(src)
-    print(f"{len(lines)} instructions, d registers used: {used}", file=sys.stderr)
+    print(f"{marker}: {len(lines)} instructions, d registers used: {used}", file=sys.stderr)
+
+
+def main():
+    arg = lambda k: sys.argv[sys.argv.index(k) + 1] if k in sys.argv else None
+    head = [("vld1.64 {{{KMIN}, {ONE}, {HALF}, {M2}}}, [%[kc]]!", [], ["%[kc]"], "-"),
+            ("vld1.64 {{{BIG}}}, [%[kc]]", [], ["%[kc]"], "-")]
+    gen([tag(span("a"), "a"), tag(span("b"), "b")], head, {"KMIN": 0, "ONE": 1, "HALF": 2, "M2": 3, "BIG": 4},
+        "// Generated by bench/gen_v7one.py", "SB_V7_ONE_CLOBBERS", arg("--mca"))
+    head = [("vld1.64 {{{KMIN}, {ONE}, {HALF}, {M2}}}, [%[kc]]!", [], ["%[kc]"], "-"),
+            ("vld1.64 {{{C16}, {MQ}, {BIG}, {K120}}}, [%[kc]]!", [], ["%[kc]"], "-"),
+            ("vld1.64 {{{K25}}}, [%[kc]]", [], ["%[kc]"], "-")]
+    fixed = {"KMIN": 24, "ONE": 25, "HALF": 26, "M2": 27, "C16": 28, "MQ": 29, "BIG": 30, "K120": 31, "K25": 23}
+    mid = [tag(span_mid("a"), "a")] + ([tag(span_mid("b"), "b")] if "--mid-pair" in sys.argv else [])
+    gen(mid, head, fixed, "// Generated (mid) by bench/gen_v7one.py", "SB_V7_MID2_CLOBBERS", arg("--mca-mid"))
 
 
 if __name__ == "__main__":

@@ -265,12 +265,13 @@ TEST(AsmSpanPerspBatch, ChainsOfPairsMatchWhereTheyBreak) {
 }
 
 // Runs of one-run second-order spans (ARMv7: persp_one_v7 draws 1 .. 16 pixel spans with
-// dzi != 0 two at a time, the set-ups of a pair interleaved; the last of an odd run alone) and
-// of 17 .. 48 pixel ones, every length in every position of a pair: runs of 0 .. 9 spans of a
-// plane's rows or of pick_span's edge gradients (clamped u / v, steep, behind the eye,
-// non-finite or huge values, the divide fallback), ended by a span the one-run path does not
-// take (n 0, 17 .. 48, 49 .. 80, linear, dzi +-0) or by the batch's end; each span between
-// guard bytes.
+// dzi != 0 two at a time, the set-ups of a pair interleaved; the last of an odd run alone), of
+// 17 .. 48 pixel ones (persp_mid_run_v7: two or three runs, one asm set-up) and of both mixed
+// (the paths go from one to the other), every length in every position of a pair: runs of
+// 0 .. 9 spans of a plane's rows or of pick_span's edge gradients (clamped u / v, steep,
+// behind the eye, non-finite or huge values, the divide fallback), at the batch's start or
+// after another span, ended by a span neither path takes (n 0, 49 .. 80, linear, dzi +-0) or
+// one of the other kind, or by the batch's end; each span between guard bytes.
 TEST(AsmSpanPerspBatch, RunsOfOneRunSecondOrderSpansMatch) {
   std::mt19937 rng(5150);
   const int sw = 47, sh = 27;
@@ -278,7 +279,7 @@ TEST(AsmSpanPerspBatch, RunsOfOneRunSecondOrderSpansMatch) {
   for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 29 + (i >> 3));
   long spans = 0;
   for (int trial = 0; trial < 4000; ++trial) {
-    const bool short_run = trial % 4 != 3;  // 1 .. 16 pixels, else 17 .. 48
+    const int kind = trial % 4;  // 0, 1: 1 .. 16 pixels; 2: 17 .. 48; 3: either, item by item
     const PerspSpan plane = pick_span(rng, sw, sh);
     auto curve = [&](int i) {
       PerspSpan p = rng() % 3 ? plane : pick_span(rng, sw, sh);
@@ -288,7 +289,8 @@ TEST(AsmSpanPerspBatch, RunsOfOneRunSecondOrderSpansMatch) {
       if (p.dzi == 0.0) p.dzi = rng() % 2 ? 1e-7 : -3e-6;
       p.px0 = double(rng() % 600) + 0.5;
       // Every length at either place of a pair over the trials (i: the place in the run).
-      const int n = short_run ? 1 + int((trial / 4 + i * 7) % 16) : 17 + int(rng() % 32);
+      const bool one = kind < 2 || (kind == 3 && rng() % 2);
+      const int n = one ? 1 + int((trial / 4 + i * 7) % 16) : 17 + int(rng() % 32);
       return PerspItem{nullptr, n, p};
     };
     std::vector<PerspItem> items;
