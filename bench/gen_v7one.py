@@ -1,15 +1,24 @@
 #!/usr/bin/env python3
-# bench/gen_v7one.py: generates the ARMv7 pair set-up of one-run second-order spans (the asm
-# statement in asm/span_persp_v7one.h, between its "generated" markers): spans a and b, each
-# from its PerspItem to its u0, v0, steps and second-order steps stored to memory, all in
-# VFP / NEON registers. Each span's instruction list (SPAN below) is fixed; the two lists are
-# merged by a greedy in-order list scheduler with the Cortex-A9 model's latencies (the
-# instruction whose operands are ready first; ties to the span behind), then registers are
-# allocated (linear scan over the merged order: vld1 lists in consecutive registers, q
-# operands in aligned pairs, s-register operands in d0 .. d15).
+# bench/gen_v7one.py: generates the ARMv7 set-up asm statements of asm/span_persp_v7one.h (between
+# their "Generated" markers): the pair set-up of one-run second-order spans (spans a and b,
+# each from its PerspItem to its u0, v0, steps and second-order steps stored to memory) and the
+# set-up of one span of 17 .. 48 pixels (span_mid), all in VFP / NEON registers. Each span's
+# instruction list (span, span_mid below) is fixed; the lists are scheduled by a list scheduler
+# with the Cortex-A9 model's latencies (schedule: in-order issue simulated, two a cycle, one
+# FP-pipe op a cycle, the ready op with the longest latency path to the end first; loads no
+# earlier than SLACK cycles before their latest start, for register pressure), then registers
+# are allocated (linear scan over that order: vld1 lists in consecutive registers, q operands
+# in aligned pairs, s-register operands in d0 .. d15).
 #
-#   python3 bench/gen_v7one.py            rewrites the block in asm/span_persp_v7one.h
-#   python3 bench/gen_v7one.py --mca F.s  also writes the block as llvm-mca input (no IT)
+#   python3 bench/gen_v7one.py               rewrites both blocks in asm/span_persp_v7one.h
+#   options: --mca F.s / --mca-mid F.s       also write a block as llvm-mca input (no IT)
+#            --sched-one                     the one-run pair list-scheduled too (by default
+#                                            the in-order merge of the two lists: the same 176
+#                                            A9 cycles on its own; the merge's is measured)
+#            --slack N                       (default 10; 0 .. 50 measured 158 .. 162 cycles
+#                                            for span_mid alone)
+# Measured on their own (llvm-mca, cortex-a9): the pair 176 cycles, span_mid 158 (in program
+# order 239; two span_mid lists merged do not fit the 32 d registers).
 import re, sys
 
 # Per span, {X} a virtual register (d unless noted), {X.s0}/{X.s1} its singles, {X.q} a q
@@ -127,7 +136,12 @@ def span_mid(x):
     ld = lambda regs, ptr, wb=False: (f"vld1.64 {{{{{', '.join('{' + r + '}' for r in regs)}}}}}, [{ptr}]" + ("!" if wb else ""),
                                       regs + ([ptr] if wb else []), [ptr, "M:item" if ptr == I else "M:tab"])
     st = lambda r: (f"vst1.32 {{{{{{{r}}}}}}}, [{O}]!", ["M:out" + x, O], [r, O, "M:out" + x])
+    K = "%[kc]"
     ops = [
+        # the constants (V7ShortConsts' order), loaded as late as the scheduler may
+        (f"vld1.64 {{{{{{KMIN}}, {{ONE}}, {{C16}}}}}}, [{K}]!", ["KMIN", "ONE", "C16", K], [K, "M:tab"]),
+        (f"vld1.64 {{{{{{HALF}}, {{MQ}}, {{M2}}}}}}, [{K}]!", ["HALF", "MQ", "M2", K], [K, "M:tab"]),
+        (f"vld1.64 {{{{{{BIG}}, {{K120}}, {{K25}}}}}}, [{K}]", ["BIG", "K120", "K25"], [K, "M:tab"]),
         (f"ldr {R}, [{I}, #4]", [R], [I]),
         (f"add {I}, {I}, #8", [I], [I]),
         (f"add {R}, %[kr], {R}, lsl #6", [R], [R, "%[kr]"]),
@@ -244,11 +258,12 @@ LOW = {"D", "DD", "R", "L", "DL", "D0", "D1", "EE0", "EE1"}  # s-register operan
 QREG = {"QP", "QPD"}
 
 
-def tag(ops, x):
+def tag(ops, x, shared=None):
     """Virtual register names made per span (X -> X_a), core and memory names kept."""
+    shared = SHARED if shared is None else shared
     out = []
     for text, defs, uses in ops:
-        f = lambda r: r if (r in SHARED or r.startswith("%") or r.startswith("M:")) else f"{r}_{x}"
+        f = lambda r: r if (r in shared or r.startswith("%") or r.startswith("M:")) else f"{r}_{x}"
         t = re.sub(r"\{([A-Z0-9]+)((?:\.s0|\.s1|\.q)?)\}", lambda m: "{" + f(m.group(1)) + m.group(2) + "}", text)
         out.append((t, [f(r) for r in defs], [f(r) for r in uses], x))
     return out
@@ -256,6 +271,11 @@ def tag(ops, x):
 
 def opname(text):
     return text.split()[0]
+
+
+SLACK = 10  # --slack: see schedule
+SCHED = False  # schedule (True) or the in-order merge (main sets it per block)
+LAG = 0  # span b's first op waits until span a has issued LAG ops (register pressure)
 
 
 def merge(a, b):
@@ -274,6 +294,8 @@ def merge(a, b):
             text, defs, uses, x = lst[i]
             # the flags are shared: a span's vcmpe .. vmovle group may not interleave with the other's
             if ("FLAGS" in defs or "APSR" in defs or "APSR" in uses) and flags_owner not in (None, x):
+                continue
+            if which == "b" and ia < min(LAG, len(a)):
                 continue
             t = max([ready.get(u, 0) for u in uses] + [cyc])
             if opname(text) not in FP_FREE:
@@ -298,6 +320,72 @@ def merge(a, b):
         else:
             ib += 1
     return out
+
+
+def schedule(ops):
+    """List scheduling of a program (one span's or two spans' ops, in any valid order): the
+    dependences on names (read after write with the producer's latency; write after read and
+    write after write kept in order; memory and flags as names), then a cycle-by-cycle
+    simulation of in-order issue (two a cycle, one FP-pipe op a cycle) that starts, among the
+    ready ops, the one with the longest latency path to the end. Returns the ops in start order."""
+    n = len(ops)
+    preds = [[] for _ in range(n)]
+    last_def, readers = {}, {}
+    for i, (text, defs, uses, x) in enumerate(ops):
+        for u in uses:
+            if u in last_def:
+                j = last_def[u]
+                preds[i].append((j, LAT.get(opname(ops[j][0]), 4)))
+        for d in defs:
+            if d in last_def:
+                preds[i].append((last_def[d], 1))
+            for j in readers.get(d, []):
+                if j != i:
+                    preds[i].append((j, 0))
+        for u in uses:
+            readers.setdefault(u, []).append(i)
+        for d in defs:
+            last_def[d] = i
+            readers[d] = []
+    succs = [[] for _ in range(n)]
+    for i in range(n):
+        for j, l in preds[i]:
+            succs[j].append((i, l))
+    prio = [0] * n
+    for i in reversed(range(n)):
+        own = LAT.get(opname(ops[i][0]), 4)
+        prio[i] = max([own] + [l + prio[k] for k, l in succs[i]])
+    start = [None] * n
+    crit = max(prio)
+    order, cyc, fp_free, done = [], 0, 0, 0
+    while done < n:
+        issued = 0
+        while issued < 2:
+            best = None
+            for i in range(n):
+                if start[i] is not None:
+                    continue
+                if any(start[j] is None or start[j] + l > cyc for j, l in preds[i]):
+                    continue
+                fp = opname(ops[i][0]) not in FP_FREE
+                if fp and fp_free > cyc:
+                    continue
+                # loads as late as possible (less register pressure): not before their
+                # latest start less SLACK cycles
+                if opname(ops[i][0]) == "vld1.64" and cyc < crit - prio[i] - SLACK:
+                    continue
+                if best is None or prio[i] > prio[best]:
+                    best = i
+            if best is None:
+                break
+            start[best] = cyc
+            if opname(ops[best][0]) not in FP_FREE:
+                fp_free = cyc + (2 if opname(ops[best][0]) == "vmull.u32" else 1)
+            order.append(ops[best])
+            issued += 1
+            done += 1
+        cyc += 1
+    return order
 
 
 def allocate(ops, fixed):
@@ -354,12 +442,15 @@ def allocate(ops, fixed):
             busy[s] = v
             busy[s + 1] = v
             continue
-        rng = range(0, 16) if base(v) in LOW else list(range(16, 32)) + list(range(0, 16))
-        for s in rng:
-            if s not in busy:
-                break
-        else:
+        rng = list(range(0, 16)) if base(v) in LOW else list(range(16, 32)) + list(range(0, 16))
+        free = [r for r in rng if r not in busy]
+        if not free:
             raise SystemExit(f"no register for {v} at op {k}: {text}")
+        # prefer a register whose pair partner is busy (keeps whole q registers free)
+        hi = [r for r in free if r >= 16] if base(v) not in LOW else []
+        pool = hi or free
+        half = [r for r in pool if (r ^ 1) in busy]
+        s = (half or pool)[0]
         phys[v] = s
         busy[s] = v
     # release of q registers: busy entries for the pair's second half were keyed by v too
@@ -389,7 +480,10 @@ def render(ops, phys):
 def gen(progs, head, fixed, marker, macro, mca):
     """One asm statement: the programs merged, registers allocated; written into
     asm/span_persp_v7one.h between `marker` and its clobbers line, the clobbers as `macro`."""
-    ops = head + (merge(*progs) if len(progs) == 2 else progs[0])
+    if SCHED:
+        ops = head + schedule([o for p in progs for o in p])
+    else:
+        ops = head + (merge(*progs) if len(progs) == 2 else progs[0])
     phys = allocate(ops, fixed)
     lines = render(ops, phys)
     used = sorted(set(int(m) for l in lines for m in re.findall(r"\bd(\d+)\b", l)) |
@@ -427,17 +521,20 @@ def gen(progs, head, fixed, marker, macro, mca):
 
 
 def main():
+    global SCHED, SLACK
     arg = lambda k: sys.argv[sys.argv.index(k) + 1] if k in sys.argv else None
+    SLACK = int(arg("--slack") or 10)
+    # The one-run pair: the in-order merge of the two lists (schedule gives the same 176
+    # cycles on its own; the merge's order is the one measured and tested).
+    SCHED = "--sched-one" in sys.argv
     head = [("vld1.64 {{{KMIN}, {ONE}, {HALF}, {M2}}}, [%[kc]]!", [], ["%[kc]"], "-"),
             ("vld1.64 {{{BIG}}}, [%[kc]]", [], ["%[kc]"], "-")]
     gen([tag(span("a"), "a"), tag(span("b"), "b")], head, {"KMIN": 0, "ONE": 1, "HALF": 2, "M2": 3, "BIG": 4},
         "// Generated by bench/gen_v7one.py", "SB_V7_ONE_CLOBBERS", arg("--mca"))
-    head = [("vld1.64 {{{KMIN}, {ONE}, {HALF}, {M2}}}, [%[kc]]!", [], ["%[kc]"], "-"),
-            ("vld1.64 {{{C16}, {MQ}, {BIG}, {K120}}}, [%[kc]]!", [], ["%[kc]"], "-"),
-            ("vld1.64 {{{K25}}}, [%[kc]]", [], ["%[kc]"], "-")]
-    fixed = {"KMIN": 24, "ONE": 25, "HALF": 26, "M2": 27, "C16": 28, "MQ": 29, "BIG": 30, "K120": 31, "K25": 23}
-    mid = [tag(span_mid("a"), "a")] + ([tag(span_mid("b"), "b")] if "--mid-pair" in sys.argv else [])
-    gen(mid, head, fixed, "// Generated (mid) by bench/gen_v7one.py", "SB_V7_MID2_CLOBBERS", arg("--mca-mid"))
+    # 17 .. 48 pixels: one span, list-scheduled (in program order 239 cycles, scheduled 158).
+    SCHED = True
+    mid = [tag(span_mid("a"), "a", ["FLAGS", "APSR", "%[kr]", "M:tab"])]
+    gen(mid, [], {}, "// Generated (mid) by bench/gen_v7one.py", "SB_V7_MID2_CLOBBERS", arg("--mca-mid"))
 
 
 if __name__ == "__main__":
