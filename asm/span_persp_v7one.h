@@ -501,7 +501,7 @@ SB_INLINE void last_draw_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_
   if (n == 16) {
     draw16<true>(dest, texels, w, s[0], s[1], RunSteps{d[0], dd[0]}, RunSteps{d[1], dd[1]});
   } else {
-    draw_last<true>(dest, n, texels, w, uint32_t(s[0]), uint32_t(s[1]), uint32_t(d[0]), uint32_t(d[1]),
+    draw_last<true, true>(dest, n, texels, w, uint32_t(s[0]), uint32_t(s[1]), uint32_t(d[0]), uint32_t(d[1]),
                     uint32_t(dd[0]), uint32_t(dd[1]));
   }
 }
@@ -520,11 +520,13 @@ SB_INLINE void mid_draw_v7(const PerspItem& it, const uint8_t* texels, uint32_t 
   }
 }
 
+// The last runs' pixels 0 .. 7 as two chunks of 4 (draw_last's kHalves: the 8-chunk's
+// positions were spilled here too; A9 persp16 17.67 -> 16.98, persp32 9.71 -> 9.59).
 SB_INLINE void one_draw_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const OneSetup& s) {
   if (n == 16) {
     draw16<true>(dest, texels, w, s.u, s.v, RunSteps{s.du, s.ddu}, RunSteps{s.dv, s.ddv});
   } else {
-    draw_last<true>(dest, n, texels, w, uint32_t(s.u), uint32_t(s.v), uint32_t(s.du), uint32_t(s.dv),
+    draw_last<true, true>(dest, n, texels, w, uint32_t(s.u), uint32_t(s.v), uint32_t(s.du), uint32_t(s.dv),
                     uint32_t(s.ddu), uint32_t(s.ddv));
   }
 }
