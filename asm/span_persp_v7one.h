@@ -44,7 +44,7 @@ SB_INLINE bool one_v7(const PerspItem& x) {
   uint32_t lo, hi;
   __builtin_memcpy(&lo, &x.span.dzi, 4);
   __builtin_memcpy(&hi, reinterpret_cast<const char*>(&x.span.dzi) + 4, 4);
-  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n - 1) < 16u;
+  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n) - 1u < 16u;
 }
 
 // The pair set-up's results per span, as its asm stores them: u0, v0, the second-order steps
@@ -281,7 +281,7 @@ SB_INLINE bool mid_v7(const PerspItem& x) {
   uint32_t lo, hi;
   __builtin_memcpy(&lo, &x.span.dzi, 4);
   __builtin_memcpy(&hi, reinterpret_cast<const char*>(&x.span.dzi) + 4, 4);
-  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n - 17) < 32u;
+  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n) - 17u < 32u;
 }
 struct V7ShortSetup {
   int32_t s0[2], s1[2], s2[2];    // samples 0 .. 2: [u, v]
@@ -536,7 +536,7 @@ SB_INLINE bool short_v7(const PerspItem& x) {
   uint32_t lo, hi;
   __builtin_memcpy(&lo, &x.span.dzi, 4);
   __builtin_memcpy(&hi, reinterpret_cast<const char*>(&x.span.dzi) + 4, 4);
-  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n - 1) < 48u;
+  return x.span.second_order && (lo | (hi << 1)) != 0 && uint32_t(x.n) - 1u < 48u;
 }
 // Items from it on (defined at the end of asm/span_persp_fast.cpp: see there).
 const PerspItem* persp_one_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
