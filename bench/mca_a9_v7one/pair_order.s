@@ -1,7 +1,7 @@
 ldr r2, [r0, #4]
 ldr r3, [r1, #4]
-add r0, r0, #8
 add r1, r1, #8
+add r0, r0, #8
 vld1.64 {d18}, [r1]
 vld1.64 {d16}, [r0]
 add r2, r7, r2, lsl #5
@@ -11,9 +11,9 @@ vld1.64 {d13, d14}, [r2]!
 vld1.64 {d9, d10, d11, d12}, [r0]
 vfma.f64 d5, d6, d11
 add r3, r7, r3, lsl #5
+vadd.f64 d17, d11, d13
 vfma.f64 d7, d8, d11
 vld1.64 {d23, d24}, [r3]!
-vadd.f64 d17, d11, d13
 vld1.64 {d25, d26, d27, d28}, [r1]
 vadd.f64 d29, d27, d23
 vld1.64 {d0, d1, d2, d3}, [r6]!
@@ -22,10 +22,10 @@ vfma.f64 d16, d6, d17
 vfma.f64 d19, d20, d27
 vfma.f64 d25, d26, d27
 vfma.f64 d21, d22, d27
-vcmpe.f64 d5, d0
 vfma.f64 d18, d20, d29
 vld1.64 {d27}, [r1]
 vld1.64 {d4}, [r6]
+vcmpe.f64 d5, d0
 vmrs APSR_nzcv, fpscr
 sub r1, r1, #16
 vmov.f64 d5, d0 @flags
@@ -33,8 +33,8 @@ vdiv.f64 d5, d1, d5
 vcmpe.f64 d16, d0
 sub r0, r0, #16
 vmrs APSR_nzcv, fpscr
-vmov.f64 d16, d0 @flags
 vcmpe.f64 d19, d0
+vmov.f64 d16, d0 @flags
 vdiv.f64 d16, d1, d16
 vmrs APSR_nzcv, fpscr
 vcmpe.f64 d18, d0
@@ -45,12 +45,12 @@ vmrs APSR_nzcv, fpscr
 vld1.64 {d30}, [r0]
 vmov.f64 d18, d0 @flags
 vdiv.f64 d18, d1, d18
-vfma.f64 d23, d10, d17
 vfma.f64 d9, d10, d11
 vmul.f64 d6, d6, d2
 vfma.f64 d30, d8, d17
 vfma.f64 d27, d26, d29
 vfma.f64 d31, d22, d29
+vfma.f64 d23, d10, d17
 vmul.f64 d20, d20, d2
 vmul.f64 d9, d9, d5
 vmul.f64 d7, d7, d5
@@ -113,14 +113,14 @@ vcvt.s32.f64 s11, d21
 vcvt.s32.f64 s25, d28
 vcvt.f64.s32 d19, s22
 vabs.s32 d17, d11
-vcvt.f64.s32 d24, s24
 vabs.s32 d20, d12
+vcvt.f64.s32 d24, s24
 vmull.u32 q14, d17, d8
 vmull.u32 q15, d20, d10
 vcvt.s32.f64 s13, d16
 vfms.f64 d18, d19, d7
-vcvt.f64.s32 d19, s25
 vcvt.f64.s32 d8, s23
+vcvt.f64.s32 d19, s25
 vqsub.u64 q15, q15, q13
 vqsub.u64 q14, q14, q11
 vfms.f64 d25, d24, d9
@@ -133,9 +133,9 @@ vcgt.u32 d17, d4, d20
 vqmovn.u64 d19, q14
 vtst.32 d24, d24, d24
 vcvt.s32.f64 s20, d25
+vcvt.s32.f64 s21, d16
 vtst.32 d19, d19, d19
 vbic d17, d17, d24
-vcvt.s32.f64 s21, d16
 vcvt.s32.f64 s15, d21
 vbic d22, d22, d19
 vand d12, d12, d17
