@@ -20,7 +20,7 @@
 # The pair's order is then the one in bench/mca_a9_v7one/pair_order.s (bench/order_search.py's,
 # applied when it holds the generated lines; --no-order: without it; see the README there).
 # Measured on their own (llvm-mca, cortex-a9): the pair 176 cycles (merged) / 159 (scheduled) /
-# 149 (order_search), span_mid 158 / 153 (order_search, mid_order.s) (in program
+# 148 (order_search), span_mid 158 / 152 (order_search, mid_order.s) (in program
 # order 239; two span_mid lists merged do not fit the 32 d registers; a two-run variant for
 # n <= 32, 121 instructions and 142 cycles, moved persp32 only 9.59 -> 9.54: not kept).
 import os, re, sys
