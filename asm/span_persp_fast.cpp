@@ -965,53 +965,6 @@ persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texe
 }  // namespace
 #endif
 
-#if defined(SB_V7_ONE)
-namespace {
-// ARMv7: second-order items of 1 .. 48 pixels (short_v7's) from it on, while they follow each
-// other: one-run spans two at a time by persp_one_v7 (asm/span_persp_v7one.h; one alone when
-// the next item is not one), 17 .. 48 pixel spans one at a time by persp_mid_run_v7, each
-// going on to the other (a tail call) where the items change kind. Return the first item that
-// is not one (or end). Out of line, defined last: GCC emits them before persp_long_run_v7
-// (page-aligned), whose code then keeps its place, and their registers are their own. Reached
-// from the batch loop for a one-run item, which may have n <= 0 (skipped; the loop's code
-// stays as it was: routing its 17 .. 48 pixel items here too moved its linear spans' code,
-// A9 persp64lin 7.06 -> 7.24, persp192lin 5.40 -> 5.46), and from the batch entry for a
-// first item of 1 .. 48 pixels (persp_short_v7).
-__attribute__((noinline)) const PerspItem* persp_one_v7(const PerspItem* it, const PerspItem* end,
-                                                        const uint8_t* texels, int width) {
-  const uint32_t w = uint32_t(width);
-  if (it->n <= 0) return it + 1;  // nothing to draw (the batch loop sends n <= 0 here too)
-  for (;;) {
-    const bool pair = it + 1 != end && one_v7(it[1]);
-    const PerspItem& b = pair ? it[1] : it[0];
-    OneSetup s[2];
-    one_setup2_v7(it[0], b, s);
-    one_draw_v7(it[0].dest, it[0].n, texels, w, s[0]);
-    if (!pair) {
-      ++it;
-      break;
-    }
-    one_draw_v7(b.dest, b.n, texels, w, s[1]);
-    it += 2;
-    if (it == end || !one_v7(*it)) break;
-  }
-  if (it != end && mid_v7(*it)) return persp_mid_run_v7(it, end, texels, width);
-  return it;
-}
-__attribute__((noinline)) const PerspItem* persp_mid_run_v7(const PerspItem* it, const PerspItem* end,
-                                                            const uint8_t* texels, int width) {
-  do {
-    mid_draw_v7(*it, texels, uint32_t(width));
-    ++it;
-  } while (it != end && mid_v7(*it));
-  if (it != end && one_v7(*it)) return persp_one_v7(it, end, texels, width);
-  return it;
-}
-__attribute__((noinline)) const PerspItem* persp_short_v7(const PerspItem* it, const PerspItem* end,
-                                                          const uint8_t* texels, int width) {
-  return it->n <= 16 ? persp_one_v7(it, end, texels, width) : persp_mid_run_v7(it, end, texels, width);
-}
-}  // namespace
-#endif
+#include "asm/span_persp_fast_v7one.inc"  // ARMv7: persp_one_v7, persp_mid_run_v7 (see there)
 
 }  // namespace sb::simd
