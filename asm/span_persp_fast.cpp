@@ -13,6 +13,7 @@
 #include "asm/span_persp_a64tiny.h"
 #include "asm/span_persp_v7mid.h"
 #include "asm/span_persp_v7pass.h"
+#include "asm/span_persp_v7one.h"
 #include "asm/span_persp_x86short.h"
 #include "asm/surface_span.h"
 
@@ -844,6 +845,17 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
       continue;
     } else {
       if (n > 48) __builtin_unreachable();
+#if defined(SB_V7_ONE)
+      // One run (1 .. 16 pixels; n <= 0 too, which it skips): persp_one_v7, with the 1 .. 48
+      // pixel spans after it; persp_fast<true> then draws 17 .. 48 pixels only (its one-run
+      // branch and n <= 0 test fold away: the same tests on its path as before). 17 .. 48
+      // pixel spans at the batch's start or after a one-run span go to persp_mid_run_v7
+      // (see there); here, after other spans, persp_fast<true> draws them.
+      if (n <= 16) {
+        it = persp_one_v7(it, end, texels, width);
+        continue;
+      }
+#endif
       persp_fast<true>(it->dest, n, texels, width, p);
     }
     ++it;
@@ -914,6 +926,12 @@ __attribute__((aligned(4096)))
 void surface_spans_persp_fast(const PerspItem* items, int count, const uint8_t* texels, int width, int /*height*/) {
 #if defined(__aarch64__) && defined(__GNUC__)
   batch_from(items, items + (count > 0 ? count : 0), texels, width);
+#elif defined(SB_V7_ONE)
+  // ARMv7: a first item of 1 .. 48 pixels (second order) to persp_short_v7 (with the ones
+  // after it), the rest to the batch loop.
+  const PerspItem* const end = items + (count > 0 ? count : 0);
+  if (items != end && short_v7(*items)) items = persp_short_v7(items, end, texels, width);
+  spans_range(items, end, texels, width);
 #else
   spans_range(items, items + (count > 0 ? count : 0), texels, width);
 #endif
@@ -964,6 +982,11 @@ namespace {
 // superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
 // the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
 // scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
+// With SB_V7_ONE page-aligned: GCC emits persp_one_v7 and persp_mid_run_v7 before it, and its code keeps its place
+// against qemu's 4 KiB page cuts (at a page start, as it was when it came first).
+#if defined(SB_V7_ONE)
+__attribute__((aligned(4096)))
+#endif
 __attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
 persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
@@ -978,28 +1001,7 @@ persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texe
 }  // namespace
 #endif
 
-#if defined(__x86_64__) && defined(__GNUC__) && defined(__SSE2__)
-namespace {
-// x86-64 batches: the items from it on (it is one) while they are second-order spans (dzi !=
-// 0) of 1 .. kX86ShortMax pixels, drawn by persp_short_x86 (asm/span_persp_x86short.h);
-// returns the first item that is not one (or end). Out of line, one call a run of them: its
-// registers are saved once a run, and the batch loop keeps its frame (inlined there, its
-// prologue and epilogue, timed once a batch, and the loop's spills moved the 30-span rows:
-// skylake persp64 6.82 -> 6.85). In its own section, which the linker places after this
-// object's .text: persp_fast's code keeps its place against qemu's 4 KiB page cuts (in
-// .text the compiler emitted it first, and persp_fast's blocks moved: skylake persp64single
-// 6.76 -> 6.93, persp1920 4.13 -> 4.27). Not page-aligned: the page end that then falls in
-// it measured better (skylake persp32 6.90 aligned 7.27).
-__attribute__((noinline, section(".text.sb_x86short"))) const PerspItem* short_run_x86(
-    const PerspItem* it, const PerspItem* end, const uint8_t* texels, uint32_t w) {
-  do {
-    persp_short_x86(it->dest, it->n, texels, w, it->span);
-    ++it;
-  } while (it != end && it->span.second_order && it->span.dzi != 0.0 &&
-           uint32_t(it->n - 1) < uint32_t(kX86ShortMax));
-  return it;
-}
-}  // namespace
-#endif
+#include "asm/span_persp_fast_x86run.inc"  // x86-64: short_run_x86 (see there)
+#include "asm/span_persp_fast_v7one.inc"  // ARMv7: persp_one_v7, persp_mid_run_v7 (see there)
 
 }  // namespace sb::simd

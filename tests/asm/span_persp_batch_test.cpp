@@ -320,6 +320,58 @@ TEST(AsmSpanPerspBatch, ChainsOfPairsMatchWhereTheyBreak) {
   std::printf("[ asm      ] span_persp batch: %ld spans in chains of pairs, every variant identical\n", spans);
 }
 
+// Runs of one-run second-order spans (ARMv7: persp_one_v7 draws 1 .. 16 pixel spans with
+// dzi != 0 two at a time, the set-ups of a pair interleaved; the last of an odd run alone), of
+// 17 .. 48 pixel ones (persp_mid_run_v7: two or three runs, one asm set-up) and of both mixed
+// (the paths go from one to the other), every length in every position of a pair: runs of
+// 0 .. 9 spans of a plane's rows or of pick_span's edge gradients (clamped u / v, steep,
+// behind the eye, non-finite or huge values, the divide fallback), at the batch's start or
+// after another span, ended by a span neither path takes (n 0, 49 .. 80, linear, dzi +-0) or
+// one of the other kind, or by the batch's end; each span between guard bytes.
+TEST(AsmSpanPerspBatch, RunsOfOneRunSecondOrderSpansMatch) {
+  std::mt19937 rng(5150);
+  const int sw = 47, sh = 27;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 29 + (i >> 3));
+  long spans = 0;
+  for (int trial = 0; trial < 4000; ++trial) {
+    const int kind = trial % 4;  // 0, 1: 1 .. 16 pixels; 2: 17 .. 48; 3: either, item by item
+    const PerspSpan plane = pick_span(rng, sw, sh);
+    auto curve = [&](int i) {
+      PerspSpan p = rng() % 3 ? plane : pick_span(rng, sw, sh);
+      if (rng() % 2) p.zi0 += double(rng() % 50) * 1e-5, p.uz0 += double(rng() % 50) * 0.01;
+      if (rng() % 8 == 0) p.uz0 *= 3.0, p.vz0 *= -2.0;  // clamped at umax / 0
+      p.second_order = true;
+      if (p.dzi == 0.0) p.dzi = rng() % 2 ? 1e-7 : -3e-6;
+      p.px0 = double(rng() % 600) + 0.5;
+      // Every length at either place of a pair over the trials (i: the place in the run).
+      const bool one = kind < 2 || (kind == 3 && rng() % 2);
+      const int n = one ? 1 + int((trial / 4 + i * 7) % 16) : 17 + int(rng() % 32);
+      return PerspItem{nullptr, n, p};
+    };
+    std::vector<PerspItem> items;
+    const int runs = 1 + int(rng() % 3);
+    for (int r = 0; r < runs; ++r) {
+      const int len = int(rng() % 10);
+      for (int i = 0; i < len; ++i) items.push_back(curve(i));
+      if (r == runs - 1 && rng() % 2) break;  // the batch ends in the run
+      PerspItem x = curve(0);
+      switch (rng() % 6) {
+        case 0: x.n = 0; break;
+        case 1: x.n = 17 + int(rng() % 32); break;
+        case 2: x.n = 49 + int(rng() % 32); break;
+        case 3: x.span.second_order = false; break;
+        case 4: x.span.dzi = rng() % 2 ? 0.0 : -0.0; break;
+        default: break;
+      }
+      items.push_back(x);
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of one-run spans, every variant identical\n", spans);
+}
+
 // Chains of short linear spans (aarch64: two neighbouring ones, 17 .. 64 pixels, second_order
 // off or dzi +-0, at the start of the batch's items left (batch_from: the batch's start, or
 // after long spans) take their set-ups from one block, persp_short_lin2, and the pairs go on
