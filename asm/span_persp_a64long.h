@@ -8,12 +8,13 @@
 // edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
 //
 // Contract (long_passes2(st, p, n); LongPass's inputs read on entry, its outputs written on
-// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length);
+// exit): the span p of n > 64 pixels, inputs d (dest), tx, w (the texels and their row length);
 // kMin = [kMinZi, kMinZi] (kLongMin); with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
-// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 81) / 32 + 1 the number of full
-// passes (left >= 81: both sample offsets 32; the loop runs while d < lim), offl =
-// [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in
-// 49 .. 80), [umax, vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
+// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 49) / 32 the number of full
+// passes (left >= 81: both sample offsets 32; the loop runs while d < lim; k = 0 for n = 65 ..
+// 80: the set-up's branch enters the loop at the last pass), offl = [min(left' - 33, 32),
+// min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in 49 .. 80), [umax,
+// vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
 // The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
 // for samples 2, 3, depths 1 / max(zrow + zix pos, kMinZi) (fmla, fmaxnm, fdiv), each sample's
 // [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16, uqxtn, umin (to_fixed, see
@@ -86,14 +87,14 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
   __asm__ volatile(
       "add x4, x1, #40\n\t" "ldr d0, [x1, #48]\n\t" "mov x6, #0xbfb0000000000000\n\t" "ldr d17, [x1, #24]\n\t"
       "add x3, x1, #32\n\t" "add x5, x1, #56\n\t" "ldr d3, [x1, #16]\n\t" "fmov v18.2d, #16.0\n\t"
-      "fmov d23, x6\n\t" "ldr d16, [x1, #8]\n\t" "sub w7, w2, #81\n\t" "adrp x30, %[kmin]\n\t"
-      "lsr w7, w7, #5\n\t" "ld1 {v3.d}[1], [x3]\n\t" "mov w11, #32\n\t" "ld1 {v17.d}[1], [x4]\n\t"
+      "fmov d23, x6\n\t" "ldr d16, [x1, #8]\n\t" "sub w7, w2, #49\n\t" "adrp x30, %[kmin]\n\t"
+      "lsr w21, w7, #5\n\t" "ld1 {v3.d}[1], [x3]\n\t" "mov w11, #32\n\t" "ld1 {v17.d}[1], [x4]\n\t"
       "fadd d5, d0, d18\n\t" "fmul d23, d16, d23\n\t" "ld1r {v22.2d}, [x5]\n\t" "str q3, %[s16]\n\t"
-      "add x8, x0, x7, lsl #5\n\t" "ld1r {v1.2d}, [x1]\n\t" "ldr q4, %[s16]\n\t" "dup v16.2d, v16.d[0]\n\t"
+      "add x8, x0, x21, lsl #5\n\t" "ld1r {v1.2d}, [x1]\n\t" "ldr q4, %[s16]\n\t" "dup v16.2d, v16.d[0]\n\t"
       "mov v0.d[1], v5.d[0]\n\t" "fadd v19.2d, v18.2d, v18.2d\n\t" "ldr q21, [x30, :lo12:%[kmin]]\n\t" "str q1, %[s0]\n\t"
-      "ldr q6, %[s16]\n\t" "sub w9, w2, w7, lsl #5\n\t" "fmla v1.2d, v16.2d, v0.2d\n\t" "fmla v3.2d, v17.2d, v0.d[0]\n\t"
-      "fmov v20.2d, #1.0\n\t" "fadd v30.2d, v0.2d, v19.2d\n\t" "ldr q2, %[s0]\n\t" "sub w10, w9, #65\n\t"
-      "sub w9, w9, #81\n\t" "cmp w10, #32\n\t" "fmaxnm v1.2d, v1.2d, v21.2d\n\t" "ldr q25, %[s16]\n\t"
+      "ldr q6, %[s16]\n\t" "sub w9, w2, w21, lsl #5\n\t" "fmla v1.2d, v16.2d, v0.2d\n\t" "fmla v3.2d, v17.2d, v0.d[0]\n\t"
+      "fmov v20.2d, #1.0\n\t" "fadd v30.2d, v0.2d, v19.2d\n\t" "ldr q2, %[s0]\n\t" "sub w10, w9, #33\n\t"
+      "sub w9, w9, #49\n\t" "cmp w10, #32\n\t" "fmaxnm v1.2d, v1.2d, v21.2d\n\t" "ldr q25, %[s16]\n\t"
       "csel w10, w10, w11, lt\n\t" "fmla v2.2d, v16.2d, v30.2d\n\t" "fmla v4.2d, v17.2d, v0.d[1]\n\t" "fmla v6.2d, v17.2d, v30.d[0]\n\t"
       "fdiv v31.2d, v20.2d, v1.2d\n\t" "scvtf d7, w10\n\t" "fmaxnm v2.2d, v2.2d, v21.2d\n\t" "scvtf d27, w9\n\t"
       "fmla v25.2d, v17.2d, v30.d[1]\n\t" "fmul v4.2d, v4.2d, v31.d[1]\n\t" "fmul v3.2d, v3.2d, v31.d[0]\n\t" "fdiv v26.2d, v20.2d, v2.2d\n\t"
@@ -102,20 +103,20 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "uqxtn2 v3.4s, v4.2d\n\t" "fmul d1, d1, v23.d[0]\n\t" "fmul v25.2d, v25.2d, v26.d[1]\n\t" "fadd d24, d5, d18\n\t"
       "fcvtzu v6.2d, v6.2d, #16\n\t" "umin v3.4s, v3.4s, v22.4s\n\t" "fcvtzu v25.2d, v25.2d, #16\n\t" "fadd d28, d24, d18\n\t"
       "uqxtn v6.2s, v6.2d\n\t" "fadd v2.2d, v29.2d, v26.2d\n\t" "fmov x13, d3\n\t" "mov x25, v3.d[1]\n\t"
-      "lsr x3, x25, #32\n\t" "sub w2, w25, w13\n\t" "sub x3, x3, x13, lsr #32\n\t" "add x8, x8, #32\n\t"
-      "uqxtn2 v6.4s, v25.2d\n\t" "scvtf d4, w2\n\t" "scvtf d5, w3\n\t" "sxtw x2, w2\n\t"
-      "str q7, %[s48]\n\t" "fmul v27.2d, v2.2d, v23.d[0]\n\t" "fmul d4, d4, d1\n\t" "umin v6.4s, v6.4s, v22.4s\n\t"
-      "fmul d5, d5, d1\n\t" "cmp x2, #0\n\t" "str x8, %[s32]\n\t" "fcvtzs w4, d4\n\t"
-      "fcvtzs w5, d5\n\t" "mov v24.d[1], v28.d[0]\n\t" "cneg x7, x2, lt\n\t" "sbfiz x6, x4, #7, #32\n\t"
-      "sub x6, x6, w4, sxtw #3\n\t" "add x8, x6, x7\n\t" "cmp x8, x7, lsl #1\n\t" "mov x27, v6.d[1]\n\t"
-      "csel x6, x6, xzr, ls\n\t" "csel w9, w4, wzr, ls\n\t" "cmp x3, #0\n\t" "sub x6, x2, x6\n\t"
-      "asr x8, x6, #63\n\t" "sbfiz x10, x5, #7, #32\n\t" "cneg x11, x3, lt\n\t" "sub x10, x10, w5, sxtw #3\n\t"
-      "add x12, x10, x11\n\t" "cmp x12, x11, lsl #1\n\t" "fmov x26, d6\n\t" "csel x10, x10, xzr, ls\n\t"
-      "sub x10, x3, x10\n\t" "csel w15, w5, wzr, ls\n\t" "asr x12, x10, #63\n\t" "lsl x11, x15, #32\n\t"
-      "add x10, x10, x12, lsr #60\n\t" "add x6, x6, x8, lsr #60\n\t" "asr x10, x10, #4\n\t" "asr x6, x6, #4\n\t"
-      "add x11, x11, w9, sxtw\n\t" "add x10, x6, x10, lsl #32\n\t" "lsl x20, x11, #2\n\t" "add x14, x13, x10\n\t"
-      "add x17, x11, x10, lsl #1\n\t" "add x19, x17, x11, lsl #1\n\t" "b 1f\n\t" ".p2align 11\n\t"
-      "1:\n\t"
+      "lsr x3, x25, #32\n\t" "sub w2, w25, w13\n\t" "sub x3, x3, x13, lsr #32\n\t" "uqxtn2 v6.4s, v25.2d\n\t"
+      "scvtf d4, w2\n\t" "scvtf d5, w3\n\t" "sxtw x2, w2\n\t" "str q7, %[s48]\n\t"
+      "fmul v27.2d, v2.2d, v23.d[0]\n\t" "fmul d4, d4, d1\n\t" "umin v6.4s, v6.4s, v22.4s\n\t" "fmul d5, d5, d1\n\t"
+      "cmp x2, #0\n\t" "str x8, %[s32]\n\t" "fcvtzs w4, d4\n\t" "fcvtzs w5, d5\n\t"
+      "mov v24.d[1], v28.d[0]\n\t" "cneg x7, x2, lt\n\t" "sbfiz x6, x4, #7, #32\n\t" "sub x6, x6, w4, sxtw #3\n\t"
+      "add x8, x6, x7\n\t" "cmp x8, x7, lsl #1\n\t" "mov x27, v6.d[1]\n\t" "csel x6, x6, xzr, ls\n\t"
+      "csel w9, w4, wzr, ls\n\t" "cmp x3, #0\n\t" "sub x6, x2, x6\n\t" "asr x8, x6, #63\n\t"
+      "sbfiz x10, x5, #7, #32\n\t" "cneg x11, x3, lt\n\t" "sub x10, x10, w5, sxtw #3\n\t" "add x12, x10, x11\n\t"
+      "cmp x12, x11, lsl #1\n\t" "fmov x26, d6\n\t" "csel x10, x10, xzr, ls\n\t" "sub x10, x3, x10\n\t"
+      "csel w15, w5, wzr, ls\n\t" "asr x12, x10, #63\n\t" "lsl x11, x15, #32\n\t" "add x10, x10, x12, lsr #60\n\t"
+      "add x6, x6, x8, lsr #60\n\t" "asr x10, x10, #4\n\t" "asr x6, x6, #4\n\t" "add x11, x11, w9, sxtw\n\t"
+      "add x10, x6, x10, lsl #32\n\t" "lsl x20, x11, #2\n\t" "add x14, x13, x10\n\t" "add x17, x11, x10, lsl #1\n\t"
+      "add x19, x17, x11, lsl #1\n\t" "cbnz w21, 1f\n\t" "ldr q19, %[s48]\n\t" "b 1f\n\t"
+      ".p2align 11\n\t" "1:\n\t"
       "lsr w3, w14, #16\n\t" "lsr x1, x14, #48\n\t" "lsr w4, w13, #16\n\t" "lsr x2, x13, #48\n\t"
       "lsr x5, x27, #32\n\t" "madd w2, w2, w24, w4\n\t" "add x14, x14, x19\n\t" "madd w1, w1, w24, w3\n\t"
       "add x19, x19, x20\n\t" "add x13, x13, x17\n\t" "lsr x6, x14, #48\n\t" "lsr w8, w13, #16\n\t"

@@ -1,5 +1,5 @@
 // asm/span_persp_a64longspan.h: aarch64 only, persp_long_a64_inl: one second-order span of
-// more than 80 pixels (persp_fast's operations, the same bits), its set-up and passes as
+// more than 64 pixels (persp_fast's operations, the same bits), its set-up and passes as
 // long_passes2's asm (asm/span_persp_a64long.h), then the tail. Internal: included by
 // asm/span_persp_fast.cpp (anonymous namespace: internal linkage), which calls it from
 // persp_long_a64 (the batch's loop over consecutive long items).
@@ -209,7 +209,7 @@ SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double s
         "v18", "v19", "v20", "v21", "v22", "v23", "cc");
 }
 
-// aarch64, second-order spans of more than 80 pixels (two passes or more): persp_fast's
+// aarch64, second-order spans of more than 64 pixels (one pass for 65 .. 80, else two or more): persp_fast's
 // samples, steps and runs with its passes as one asm block (asm/span_persp_a64long.h: the
 // first samples in 2-lane vectors, each lane persp_fast's scalar operation, the same bits:
 // positions P_0, P_1 = P_0 + 16, sample j + 2 at P_j + 32; zrow + zix pos and uvrow + uvx pos
@@ -226,7 +226,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   // reloaded from the compiler's stack copies.
   texels = reinterpret_cast<const uint8_t*>(st.tx);
   const uint32_t w = uint32_t(st.w);
-  // left = n - 32 (k + 1), k = (n - 81) / 32 + 1: (n - 81) mod 32 + 17 (n > 80).
+  // left = n - 32 (k + 1), k = (n - 49) / 32 (n > 64; k = 0 for 65 .. 80): (n - 81) mod 32 + 17
+  // (the unsigned wrap of n - 81 < 0 keeps the residue: n = 65 .. 80 leave n - 32 = 33 .. 48).
   int left = int(uint32_t(n - 81) & 31u) + 17;
   Sample s0, s1;
   RunSteps su, sv;

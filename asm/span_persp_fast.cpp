@@ -691,7 +691,7 @@ SB_INLINE void persp_one_c(uint8_t* dest, int n, const uint8_t* texels, int widt
   if (n >= kMidMin && n <= kMidMax) return persp_mid_v7(dest, n, texels, width, p);  // ARMv7, four runs
 #endif
 #if defined(__aarch64__) && defined(__GNUC__)
-  if (n > 80) return persp_long_a64(dest, n, texels, width, p, nullptr, nullptr);
+  if (n > kShortMax) return persp_long_a64(dest, n, texels, width, p, nullptr, nullptr);  // n = 65 .. 80 too
 #endif
   persp_fast<true>(dest, n, texels, width, p);
 }

@@ -43,7 +43,7 @@
 //                each (bench/span_hist.cpp: 880-960 such spans a frame at 320x240, 6-9% of
 //                the pixels)
 //   persp72      16 spans of 65-80 pixels (mean 72.5) in one call, second-order steps: five runs
-//                (persp_fast<true> on aarch64; 5-7% of the pixels at 320x240)
+//                (persp_long_a64's one-pass shape on aarch64; 5-7% of the pixels at 320x240)
 //   (persp: the non-scalar tables all hold the portable "fast" version; listed once, under
 //   the first of them: sse2 on x86-64, neon on ARM)
 // Variants: every table asm/kernels.h lists for this build and CPU (scalar, sse2, avx2,

@@ -46,8 +46,8 @@ enum Class {
   kCurve32,     // curve, 17 .. 48, in a pair
   kCurve64,     // curve, 49 .. 64, in a pair
   kCurveSingle, // curve, 17 .. 64, alone (no short neighbour)
-  kCurve80,     // curve, 65 .. 80 (persp_fast<true>)
-  kCurveLong,   // curve, 81 and more (persp_long_a64)
+  kCurve80,     // curve, 65 .. 80 (persp_long_a64: one pass)
+  kCurveLong,   // curve, 81 and more (persp_long_a64: two passes or more)
   kClasses
 };
 const char* const kClassName[kClasses] = {

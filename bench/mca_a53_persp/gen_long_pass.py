@@ -529,12 +529,13 @@ HEADER3 = """// asm/span_persp_a64long.h: aarch64 only, persp_fast's second-orde
 // edit the asm by hand. Internal: included by asm/span_persp_fast.cpp after span_persp_run.h.
 //
 // Contract (long_passes2(st, p, n); LongPass's inputs read on entry, its outputs written on
-// exit): the span p of n > 80 pixels, inputs d (dest), tx, w (the texels and their row length);
+// exit): the span p of n > 64 pixels, inputs d (dest), tx, w (the texels and their row length);
 // kMin = [kMinZi, kMinZi] (kLongMin); with zrow = p.zi0, zix = p.dzi (= zc), [urow, vrow], [ux, vx] (p's
-// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 81) / 32 + 1 the number of full
-// passes (left >= 81: both sample offsets 32; the loop runs while d < lim), offl =
-// [min(left' - 33, 32), min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in
-// 49 .. 80), [umax, vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
+// uz0, vz0, duz, dvz), P = p.px0, lim = d + 32 k with k = (n - 49) / 32 the number of full
+// passes (left >= 81: both sample offsets 32; the loop runs while d < lim; k = 0 for n = 65 ..
+// 80: the set-up's branch enters the loop at the last pass), offl = [min(left' - 33, 32),
+// min(left' - 49, 32)] for the one pass after them (left' = n - 32 k in 49 .. 80), [umax,
+// vmax] p's clamps, zck = zc * -1/16 (as the set-up computes them).
 // The set-up: positions P_0 = P, P_1 = P + 16, P_j + 32
 // for samples 2, 3, depths 1 / max(zrow + zix pos, kMinZi) (fmla, fmaxnm, fdiv), each sample's
 // [u, v] = (uvrow + uvx pos) z converted by fcvtzu #16, uqxtn, umin (to_fixed, see
@@ -601,8 +602,10 @@ def emit_header3(ins, outh, setup):
     su = [l.strip() for l in open(setup) if l.strip() and not l.strip().startswith("//")]
     # The loop at a 2 KiB boundary (its 1320 bytes then never cross a 4 KiB page, where qemu
     # would cut its blocks for bench/count.sh wherever the code before it ends), entered by a
-    # branch over the padding (never run).
-    allx = su + ["b 1f", ".p2align 11", "1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b", "2:"]
+    # branch over the padding (never run). A span of one pass only (full = 0 in x21, n = 65 ..
+    # 80) falls through that branch (a cbnz, as the b it replaced one instruction for the
+    # others) to k32 = offl, the last pass's, and enters the loop from there.
+    allx = su + ["cbnz w21, 1f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1f", ".p2align 11", "1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b", "2:"]
     # The four stack slots (the searched code's [sp], [sp, #16], [sp, #32], [sp, #48]) as memory
     # operands in the caller's frame: no sp adjustment (the first load after the asm used to
     # wait for its add sp).

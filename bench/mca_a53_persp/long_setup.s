@@ -4,8 +4,10 @@
 // k16 v18, k32 v19, kOne v20, the loop's state: samples 0 .. 3 (n0 = c0 x13, nA x25, nB x26,
 // nC x27), run 0's chains (c1 x14, e0 x17, e1 x19, dd4 x20), pp v24, z23 v26, cc v27, zsn
 // v29, and the stack slots [sp] kZrow, [sp, #16] kUVrow, [sp, #32] lim = d + 32 full,
-// [sp, #48] offl = [min(lastl - 33, 32), lastl - 49] (full = (n - 81) / 32 + 1, lastl = n -
-// 32 full in 49 .. 80) (sp already lowered by 64). Reloads what it stored: order_search --mem.
+// [sp, #48] offl = [min(lastl - 33, 32), lastl - 49] (full = (n - 49) / 32, lastl = n -
+// 32 full in 49 .. 80; n > 64: full = 0 for n = 65 .. 80, one pass, the last) and x21 = full
+// (the header's entry branch: full = 0 enters the loop with k32 = offl already loaded) (sp
+// already lowered by 64). Reloads what it stored: order_search --mem.
 add x4, x1, #40
 ldr d0, [x1, #48]
 mov x6, #0xbfb0000000000000
@@ -16,9 +18,9 @@ ldr d3, [x1, #16]
 fmov v18.2d, #16.0
 fmov d23, x6
 ldr d16, [x1, #8]
-sub w7, w2, #81
+sub w7, w2, #49
 adrp x30, kLongMin
-lsr w7, w7, #5
+lsr w21, w7, #5
 ld1 {v3.d}[1], [x3]
 mov w11, #32
 ld1 {v17.d}[1], [x4]
@@ -26,7 +28,7 @@ fadd d5, d0, d18
 fmul d23, d16, d23
 ld1r {v22.2d}, [x5]
 str q3, [sp, #16]
-add x8, x0, x7, lsl #5
+add x8, x0, x21, lsl #5
 ld1r {v1.2d}, [x1]
 ldr q4, [sp, #16]
 dup v16.2d, v16.d[0]
@@ -35,14 +37,14 @@ fadd v19.2d, v18.2d, v18.2d
 ldr q21, [x30, :lo12:kLongMin]
 str q1, [sp]
 ldr q6, [sp, #16]
-sub w9, w2, w7, lsl #5
+sub w9, w2, w21, lsl #5
 fmla v1.2d, v16.2d, v0.2d
 fmla v3.2d, v17.2d, v0.d[0]
 fmov v20.2d, #1.0
 fadd v30.2d, v0.2d, v19.2d
 ldr q2, [sp]
-sub w10, w9, #65
-sub w9, w9, #81
+sub w10, w9, #33
+sub w9, w9, #49
 cmp w10, #32
 fmaxnm v1.2d, v1.2d, v21.2d
 ldr q25, [sp, #16]
@@ -81,7 +83,6 @@ mov x25, v3.d[1]
 lsr x3, x25, #32
 sub w2, w25, w13
 sub x3, x3, x13, lsr #32
-add x8, x8, #32
 uqxtn2 v6.4s, v25.2d
 scvtf d4, w2
 scvtf d5, w3

@@ -545,7 +545,7 @@ TEST(AsmSpanPerspBatch, RunsOfLongSpansMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of long ones, every variant identical\n", spans);
 }
 
-// Batches of long spans all of one kind (aarch64: consecutive second-order spans over 80 px
+// Batches of long spans all of one kind (aarch64: consecutive second-order spans over 64 px
 // drawn in persp_long_a64's loop, consecutive linear ones over 64 px in persp_lin_a64's, one
 // frame for the run), every length 65 .. 300 (each tail length after the passes), then a
 // span of another kind or length ending the run; the batch's items against the reference.
