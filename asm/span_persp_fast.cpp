@@ -753,6 +753,11 @@ SB_INLINE bool long_v7(const PerspItem& x) {
 // true> (defined at the end; GCC emits it before the entries, which are page-aligned so that
 // its size does not move their code against qemu's 4 KiB page cuts).
 const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
+// Five-run spans (second order, 65 .. 80 pixels), as persp_long_run_v7 but with that bound stated.
+SB_INLINE bool five_v7(const PerspItem& x) {
+  return x.span.second_order && !is_zero_v7(x.span.dzi) && uint32_t(x.n - 65) <= 15u;
+}
+const PerspItem* persp_five_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
@@ -965,7 +970,7 @@ namespace {
 // the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
 // scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
 __attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
-persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
+persp_long_body_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
     if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)
@@ -973,6 +978,30 @@ persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texe
     __asm__("" : "+m"(st));
     ++st[0];
   } while (st[0] != st[1] && long_v7(*st[0]));
+  return st[0];
+}
+// spans_range's call for long_v7's items: the five-run ones to persp_five_run_v7, the
+// others to persp_long_body_v7 (tail calls, no frame). In persp_five_run_v7's section: the
+// batch loop and persp_long_body_v7 keep their code and place (A9 persp16 moved 30.54 ->
+// 30.62 with the test in the batch loop, persp192 7.43 -> 7.49 in persp_long_body_v7).
+__attribute__((noinline, section(".text.sb_v7five"))) const PerspItem* persp_long_run_v7(
+    const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
+  if (uint32_t(it->n - 65) <= 15u) return persp_five_run_v7(it, end, texels, width);
+  return persp_long_body_v7(it, end, texels, width);
+}
+// five_v7's items from it on (it is one), while they follow each other: persp_fast<true,
+// true> with n in 65 .. 80 stated. In its own section (placed after this object's .text):
+// persp_long_run_v7 and the page-aligned entries keep their code where it was.
+__attribute__((noinline, aligned(4096), section(".text.sb_v7five"), optimize("no-sched-rank-heuristic")))
+const PerspItem* persp_five_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
+  const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
+  do {
+    const int n = st[0]->n;
+    if (uint32_t(n - 65) > 15u) __builtin_unreachable();  // five_v7's
+    persp_fast<true, true>(st[0]->dest, n, texels, width, st[0]->span);
+    __asm__("" : "+m"(st));
+    ++st[0];
+  } while (st[0] != st[1] && five_v7(*st[0]));
   return st[0];
 }
 }  // namespace
