@@ -989,17 +989,24 @@ __attribute__((noinline, section(".text.sb_v7five"))) const PerspItem* persp_lon
   if (uint32_t(it->n - 65) <= 15u) return persp_five_run_v7(it, end, texels, width);
   return persp_long_body_v7(it, end, texels, width);
 }
+// The high 32-bit lane of x in the low lane of a d0 .. d15 register (vrev64.32).
+SB_INLINE double v7_hi_lo(double x) {
+  double r;
+  __asm__("vrev64.32 %P0, %P1" : "=w"(r) : "w"(x));
+  return r;
+}
 // Run 3 of a five-run span (its registers from persp_mid_v7<false, true>) with, in its stage
 // slots, the last run's set-up (m = n - 64 = 1 .. 16 pixels from sample 4, X4 = ((P + 16) +
 // 16) + 32, to sample 5, X5 = (((P + 16) + 16) + 16) + (n - 49), the last pixel; the
-// walker's positions, accumulated as it does): the depths, sample() of both (sample 4
-// computed again), the quotients double(delta) / max(m - 1, 1), last_ddi, last_steps_i (the
-// operations of persp_fast's ARMv7 tail, asm/span_persp_fast_v7last.inc), the deltas
-// converted without leaving the NEON / VFP registers (8.96 -> 8.69 on the A9 model), the
-// slots as a sweep found them (multiplies in 2, conversions 3, quotients 4, ddf 7 and 8, the
-// integer steps 9: 8.66; later slots measured 8.83); then the last run.
+// walker's positions, accumulated as it does), the operations of persp_fast's ARMv7 tail
+// (asm/span_persp_fast_v7last.inc): both depths, sample() of sample 5 (sample 4's [u, v] is
+// the mid prologue's, s4: A9 model 8.66 -> 8.58 against computing it again), the quotients
+// double(delta) / max(m - 1, 1), last_ddi, last_steps_i. The deltas are converted without
+// leaving the NEON / VFP registers (8.96 -> 8.69); the slots as a sweep found them
+// (multiplies in 2, conversions 3, quotients 4, ddf 7 and 8, the integer steps 9: 8.66;
+// later slots 8.83). Then the last run.
 SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const PerspSpan& p,
-                            const RunRegs& r3) {
+                            const RunRegs& r3, double s4) {
   const int m = n - 64, steps = m - 1;
   const double kU = bound16(p.umax), kV = bound16(p.vmax);
   double X4 = 0.0, X5 = 0.0, z4 = 0.0, z5 = 0.0, qu = 0.0, qv = 0.0, curve = 0.0, mu = 0.0, mv = 0.0;
@@ -1015,21 +1022,21 @@ SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_
       X4 = P2 + double(32), X5 = (P2 + double(16)) + double(n - 49);
       z4 = recip7(max_or_lo_sel(p.zi0 + p.dzi * X4, kMinZi));
       z5 = recip7(max_or_lo_sel(p.zi0 + p.dzi * X5, kMinZi));
-      a4u = p.uz0 + p.duz * X4, a4v = p.vz0 + p.dvz * X4, a5u = p.uz0 + p.duz * X5, a5v = p.vz0 + p.dvz * X5;
-      pin7(a4u), pin7(a4v), pin7(a5u), pin7(a5v);
+      a5u = p.uz0 + p.duz * X5, a5v = p.vz0 + p.dvz * X5;
+      pin7(a5u), pin7(a5v);
       sd = double(int(uint32_t(steps > 1 ? steps : 1)));  // last_quotient's divisor
       pin7(sd);
     } else if constexpr (G == 2) {
-      a4u = a4u * z4, a4v = a4v * z4, a5u = a5u * z5, a5v = a5v * z5;
-      pin7(a4u), pin7(a4v), pin7(a5u), pin7(a5v);
+      a5u = a5u * z5, a5v = a5v * z5;
+      pin7(a5u), pin7(a5v);
       curve = p.dzi * 0.5 * (z4 + z5), pin7(curve);
     } else if constexpr (G == 3) {
-      a4u = min_ufixed16(cvt_ufixed16(a4u), kU), a4v = min_ufixed16(cvt_ufixed16(a4v), kV);
       a5u = min_ufixed16(cvt_ufixed16(a5u), kU), a5v = min_ufixed16(cvt_ufixed16(a5v), kV);
-      pin7(a4u), pin7(a4v), pin7(a5u), pin7(a5v);
+      pin7(a5u), pin7(a5v);
     } else if constexpr (G == 4) {
       // The deltas' int32 differences converted in the NEON / VFP registers (exact: the same
       // value as double(delta)); with one pixel (steps 0) the steps are never read.
+      a4u = s4, a4v = v7_hi_lo(s4);
       const double eu = v7_sub_lo(a5u, a4u), ev = v7_sub_lo(a5v, a4v);
       fu = v7_cvt_lo(eu), fv = v7_cvt_lo(ev);
       qu = fu / sd, qv = fv / sd;  // last_quotient
@@ -1057,7 +1064,7 @@ SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_
 // five_v7's items from it on (it is one), while they follow each other: runs 0 .. 2 by
 // persp_mid_v7<false, true> (the four-run path's asm with run 3 full: its steps over 16
 // pixels to sample 4), run 3 and the last run by five_tail_v7 (A9 model persp72 9.22 ->
-// 8.66; with persp_fast<true, true> and n's bound stated here instead, 9.09; with the last
+// 8.58; with persp_fast<true, true> and n's bound stated here instead, 9.09; with the last
 // run's set-up after run 3 instead of in its slots, 9.25). In its own section (placed after
 // this object's .text): persp_long_body_v7 and the page-aligned entries keep their code
 // where it was.
@@ -1066,10 +1073,11 @@ __attribute__((noinline, section(".text.sb_v7five"))) const PerspItem* persp_fiv
   const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
   do {
     RunRegs r3;
-    persp_mid_v7<false, true>(st[0]->dest, 64, texels, width, st[0]->span, &r3);
+    double s4;
+    persp_mid_v7<false, true>(st[0]->dest, 64, texels, width, st[0]->span, &r3, &s4);
     const int n = st[0]->n;
     if (uint32_t(n - 65) > 15u) __builtin_unreachable();  // five_v7's
-    five_tail_v7(st[0]->dest, n, texels, uint32_t(width), st[0]->span, r3);
+    five_tail_v7(st[0]->dest, n, texels, uint32_t(width), st[0]->span, r3, s4);
     __asm__("" : "+m"(st));
     ++st[0];
   } while (st[0] != st[1] && five_v7(*st[0]));

@@ -375,7 +375,7 @@ SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSt
 // draws it, with its own work beside: persp_five_run_v7).
 template <bool kOwnSave = false, bool kFour = false>
 SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p,
-                            RunRegs* run3 = nullptr) {
+                            RunRegs* run3 = nullptr, double* uv4out = nullptr) {
   const uint32_t w = uint32_t(width);
   const int steps = kFour ? 16 : n - 49;  // the last run's (1 .. 15; kFour: 16)
   if (kFour && n != 64) __builtin_unreachable();
@@ -388,6 +388,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   register double uv2 __asm__("d2") = r[2];
   register double uv3 __asm__("d3") = r[3];
   register double uv4 __asm__("d4") = r[4];
+  if constexpr (kFour) *uv4out = r[4];  // sample 4's [u, v] (the caller's last run starts there)
   register double curve __asm__("d5") = r[8];
   register double c1 __asm__("d28") = r[6];
   register double c2 __asm__("d29") = r[7];
