@@ -1002,9 +1002,9 @@ SB_INLINE double v7_hi_lo(double x) {
 // (asm/span_persp_fast_v7last.inc): both depths, sample() of sample 5 (sample 4's [u, v] is
 // the mid prologue's, s4: A9 model 8.66 -> 8.58 against computing it again), the quotients
 // double(delta) / max(m - 1, 1), last_ddi, last_steps_i. The deltas are converted without
-// leaving the NEON / VFP registers (8.96 -> 8.69); the slots as a sweep found them
-// (multiplies in 2, conversions 3, quotients 4, ddf 7 and 8, the integer steps 9: 8.66;
-// later slots 8.83). Then the last run.
+// leaving the NEON / VFP registers (8.96 -> 8.69); the slots as sweeps found them
+// (multiplies in 2, conversions 3, quotients 4, ddf 6, its conversion 8, the integer steps 9:
+// 8.55; ddf in 7: 8.58; everything a slot later: 8.66 .. 8.83). Then the last run.
 SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const PerspSpan& p,
                             const RunRegs& r3, double s4) {
   const int m = n - 64, steps = m - 1;
@@ -1043,7 +1043,7 @@ SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_
       pin7(qu), pin7(qv);
       u4 = fixed16_bits_v(a4u), v4 = fixed16_bits_v(a4v);
       du = fixed16_bits_v(eu), dv = fixed16_bits_v(ev);
-    } else if constexpr (G == 7) {
+    } else if constexpr (G == 6) {
       mu = -2.0 * (qu * curve), mv = -2.0 * (qv * curve);
       pin7(mu), pin7(mv);
     } else if constexpr (G == 8) {
@@ -1064,7 +1064,7 @@ SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_
 // five_v7's items from it on (it is one), while they follow each other: runs 0 .. 2 by
 // persp_mid_v7<false, true> (the four-run path's asm with run 3 full: its steps over 16
 // pixels to sample 4), run 3 and the last run by five_tail_v7 (A9 model persp72 9.22 ->
-// 8.58; with persp_fast<true, true> and n's bound stated here instead, 9.09; with the last
+// 8.55; with persp_fast<true, true> and n's bound stated here instead, 9.09; with the last
 // run's set-up after run 3 instead of in its slots, 9.25). In its own section (placed after
 // this object's .text): persp_long_body_v7 and the page-aligned entries keep their code
 // where it was.
