@@ -749,15 +749,12 @@ SB_INLINE bool long_v7(const PerspItem& x) {
   return x.span.second_order && !is_zero_v7(x.span.dzi) && x.n >= 49 &&
          uint32_t(x.n - kMidMin) > uint32_t(kMidMax - kMidMin);
 }
-// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true,
-// true> (defined at the end; GCC emits it before the entries, which are page-aligned so that
-// its size does not move their code against qemu's 4 KiB page cuts).
+// Such items from it on (it is one), while they follow each other: the five-run ones (65 ..
+// 80 px) by persp_five_run_v7, the others by persp_fast<true, true> in persp_long_body_v7
+// (defined at the end: asm/span_persp_fast_v7five.inc; GCC emits persp_long_body_v7 before
+// the entries, which are page-aligned so that its size does not move their code against
+// qemu's 4 KiB page cuts).
 const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
-// Five-run spans (second order, 65 .. 80 pixels): persp_five_run_v7's (see there).
-SB_INLINE bool five_v7(const PerspItem& x) {
-  return x.span.second_order && !is_zero_v7(x.span.dzi) && uint32_t(x.n - 65) <= 15u;
-}
-const PerspItem* persp_five_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
 // return to batch_from with a tail branch; elsewhere inlined into surface_spans_persp_fast.
@@ -963,126 +960,7 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 
 #if defined(SB_V7_LONG_RUN)
 namespace {
-// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
-// in this function's loop (its own frame and register allocation, one call a run of them);
-// returns the first item that is not one (or end). Scheduled after register allocation over
-// superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
-// the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
-// scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
-__attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
-persp_long_body_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
-  const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
-  do {
-    if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)
-    persp_fast<true, true>(st[0]->dest, st[0]->n, texels, width, st[0]->span);
-    __asm__("" : "+m"(st));
-    ++st[0];
-  } while (st[0] != st[1] && long_v7(*st[0]));
-  return st[0];
-}
-// spans_range's call for long_v7's items: the five-run ones to persp_five_run_v7, the
-// others to persp_long_body_v7 (tail calls, no frame). In persp_five_run_v7's section: the
-// batch loop and persp_long_body_v7 keep their code and place (A9 persp16 moved 30.54 ->
-// 30.62 with the test in the batch loop, persp192 7.43 -> 7.49 in persp_long_body_v7).
-__attribute__((noinline, section(".text.sb_v7five"))) const PerspItem* persp_long_run_v7(
-    const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
-  if (uint32_t(it->n - 65) <= 15u) return persp_five_run_v7(it, end, texels, width);
-  return persp_long_body_v7(it, end, texels, width);
-}
-// The high 32-bit lane of x in the low lane of a d0 .. d15 register (vrev64.32).
-SB_INLINE double v7_hi_lo(double x) {
-  double r;
-  __asm__("vrev64.32 %P0, %P1" : "=w"(r) : "w"(x));
-  return r;
-}
-// Run 3 of a five-run span (its registers from persp_mid_v7<false, true>) with, in its stage
-// slots, the last run's set-up (m = n - 64 = 1 .. 16 pixels from sample 4, X4 = ((P + 16) +
-// 16) + 32, to sample 5, X5 = (((P + 16) + 16) + 16) + (n - 49), the last pixel; the
-// walker's positions, accumulated as it does), the operations of persp_fast's ARMv7 tail
-// (asm/span_persp_fast_v7last.inc): both depths, sample() of sample 5 (sample 4's [u, v] is
-// the mid prologue's, s4: A9 model 8.66 -> 8.58 against computing it again), the quotients
-// double(delta) / max(m - 1, 1), last_ddi, last_steps_i. The deltas are converted without
-// leaving the NEON / VFP registers (8.96 -> 8.69); the slots as sweeps found them
-// (multiplies in 2, conversions 3, quotients 4, ddf 6, its conversion 8, the integer steps 9:
-// 8.55; ddf in 7: 8.58; everything a slot later: 8.66 .. 8.83). Then the last run.
-SB_INLINE void five_tail_v7(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const PerspSpan& p,
-                            const RunRegs& r3, double s4) {
-  const int m = n - 64, steps = m - 1;
-  const double kU = bound16(p.umax), kV = bound16(p.vmax);
-  double X4 = 0.0, X5 = 0.0, z4 = 0.0, z5 = 0.0, qu = 0.0, qv = 0.0, curve = 0.0, mu = 0.0, mv = 0.0;
-  double a4u = 0.0, a4v = 0.0, a5u = 0.0, a5v = 0.0, sd = 0.0, fu = 0.0, fv = 0.0;
-  int32_t du = 0, dv = 0, iu = 0, iv = 0, lu0 = 0, lv0 = 0, u4 = 0, v4 = 0;
-  RunSteps lu, lv;
-  Run16<true> run(int32_t(r3.u), int32_t(r3.v), RunSteps{int32_t(r3.du), int32_t(r3.ddu)},
-                  RunSteps{int32_t(r3.dv), int32_t(r3.ddv)});
-  run.draw(dest + 48, texels, w, [&](auto g) SB_LAMBDA_INLINE {
-    constexpr int G = decltype(g)::value;
-    if constexpr (G == 0) {
-      const double P2 = (p.px0 + double(16)) + double(16);
-      X4 = P2 + double(32), X5 = (P2 + double(16)) + double(n - 49);
-      z4 = recip7(max_or_lo_sel(p.zi0 + p.dzi * X4, kMinZi));
-      z5 = recip7(max_or_lo_sel(p.zi0 + p.dzi * X5, kMinZi));
-      a5u = p.uz0 + p.duz * X5, a5v = p.vz0 + p.dvz * X5;
-      pin7(a5u), pin7(a5v);
-      sd = double(int(uint32_t(steps > 1 ? steps : 1)));  // last_quotient's divisor
-      pin7(sd);
-    } else if constexpr (G == 2) {
-      a5u = a5u * z5, a5v = a5v * z5;
-      pin7(a5u), pin7(a5v);
-      curve = p.dzi * 0.5 * (z4 + z5), pin7(curve);
-    } else if constexpr (G == 3) {
-      a5u = min_ufixed16(cvt_ufixed16(a5u), kU), a5v = min_ufixed16(cvt_ufixed16(a5v), kV);
-      pin7(a5u), pin7(a5v);
-    } else if constexpr (G == 4) {
-      // The deltas' int32 differences converted in the NEON / VFP registers (exact: the same
-      // value as double(delta)); with one pixel (steps 0) the steps are never read.
-      a4u = s4, a4v = v7_hi_lo(s4);
-      const double eu = v7_sub_lo(a5u, a4u), ev = v7_sub_lo(a5v, a4v);
-      fu = v7_cvt_lo(eu), fv = v7_cvt_lo(ev);
-      qu = fu / sd, qv = fv / sd;  // last_quotient
-      pin7(qu), pin7(qv);
-      u4 = fixed16_bits_v(a4u), v4 = fixed16_bits_v(a4v);
-      du = fixed16_bits_v(eu), dv = fixed16_bits_v(ev);
-    } else if constexpr (G == 6) {
-      mu = -2.0 * (qu * curve), mv = -2.0 * (qv * curve);
-      pin7(mu), pin7(mv);
-    } else if constexpr (G == 8) {
-      iu = last_ddi_tail(cvt_sat(mu)), iv = last_ddi_tail(cvt_sat(mv));
-      lu0 = int32_t(qu), lv0 = int32_t(qv);
-      pin7(iu), pin7(iv), pin7(lu0), pin7(lv0);
-    } else if constexpr (G == 9) {
-      last_steps_i(steps, du, dv, lu0, lv0, iu, iv, &lu, &lv);
-    }
-  });
-  if (m == 16) {
-    draw16<true>(dest + 64, texels, w, u4, v4, lu, lv);
-  } else {
-    draw_last<true, true>(dest + 64, m, texels, w, uint32_t(u4), uint32_t(v4), uint32_t(lu.d), uint32_t(lv.d),
-                          uint32_t(lu.dd), uint32_t(lv.dd));
-  }
-}
-// five_v7's items from it on (it is one), while they follow each other: runs 0 .. 2 by
-// persp_mid_v7<false, true> (the four-run path's asm with run 3 full: its steps over 16
-// pixels to sample 4), run 3 and the last run by five_tail_v7 (A9 model persp72 9.22 ->
-// 8.55; with persp_fast<true, true> and n's bound stated here instead, 9.09; with the last
-// run's set-up after run 3 instead of in its slots, 9.25). In its own section (placed after
-// this object's .text): persp_long_body_v7 and the page-aligned entries keep their code
-// where it was.
-__attribute__((noinline, section(".text.sb_v7five"))) const PerspItem* persp_five_run_v7(
-    const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
-  const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
-  do {
-    RunRegs r3;
-    double s4;
-    persp_mid_v7<false, true>(st[0]->dest, 64, texels, width, st[0]->span, &r3, &s4);
-    const int n = st[0]->n;
-    if (uint32_t(n - 65) > 15u) __builtin_unreachable();  // five_v7's
-    five_tail_v7(st[0]->dest, n, texels, uint32_t(width), st[0]->span, r3, s4);
-    __asm__("" : "+m"(st));
-    ++st[0];
-  } while (st[0] != st[1] && five_v7(*st[0]));
-  return st[0];
-}
+#include "asm/span_persp_fast_v7five.inc"  // persp_long_body_v7, persp_long_run_v7, persp_five_run_v7
 }  // namespace
 #endif
 
