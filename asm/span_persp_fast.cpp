@@ -750,9 +750,11 @@ SB_INLINE bool long_v7(const PerspItem& x) {
   return x.span.second_order && !is_zero_v7(x.span.dzi) && x.n >= 49 &&
          uint32_t(x.n - kMidMin) > uint32_t(kMidMax - kMidMin);
 }
-// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true,
-// true> (defined at the end; GCC emits it before the entries, which are page-aligned so that
-// its size does not move their code against qemu's 4 KiB page cuts).
+// Such items from it on (it is one), while they follow each other: the five-run ones (65 ..
+// 80 px) by persp_five_run_v7, the others by persp_fast<true, true> in persp_long_body_v7
+// (defined at the end: asm/span_persp_fast_v7five.inc; GCC emits persp_long_body_v7 before
+// the entries, which are page-aligned so that its size does not move their code against
+// qemu's 4 KiB page cuts).
 const PerspItem* persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width);
 #endif
 // The batch loop over items [it, end) (batch_from). Out of line on aarch64: the long paths
@@ -976,28 +978,7 @@ void surface_span_persp_fast(uint8_t* dest, int n, const uint8_t* texels, int wi
 
 #if defined(SB_V7_LONG_RUN)
 namespace {
-// Such items from it on (it is one), while they follow each other: drawn by persp_fast<true>
-// in this function's loop (its own frame and register allocation, one call a run of them);
-// returns the first item that is not one (or end). Scheduled after register allocation over
-// superblocks (GCC's -fsched2-use-superblocks, this function only: the pass's blocks, split by
-// the depth clamps' branches, scheduled as one; A9 model persp192 7.52 -> 7.46), without the
-// scheduler's rank tie-break (-fno-sched-rank-heuristic: 7.45 -> 7.44).
-// With SB_V7_ONE page-aligned: GCC emits persp_one_v7 and persp_mid_run_v7 before it, and its code keeps its place
-// against qemu's 4 KiB page cuts (at a page start, as it was when it came first).
-#if defined(SB_V7_ONE)
-__attribute__((aligned(4096)))
-#endif
-__attribute__((noinline, optimize("sched2-use-superblocks", "no-sched-rank-heuristic"))) const PerspItem*
-persp_long_run_v7(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
-  const PerspItem* st[2] = {it, end};  // in memory across each span (no registers held)
-  do {
-    if (st[0]->n < 49) __builtin_unreachable();  // long_v7's (stated: the short paths fold away)
-    persp_fast<true, true>(st[0]->dest, st[0]->n, texels, width, st[0]->span);
-    __asm__("" : "+m"(st));
-    ++st[0];
-  } while (st[0] != st[1] && long_v7(*st[0]));
-  return st[0];
-}
+#include "asm/span_persp_fast_v7five.inc"  // persp_long_body_v7, persp_long_run_v7, persp_five_run_v7
 }  // namespace
 #endif
 

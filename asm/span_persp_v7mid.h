@@ -49,14 +49,19 @@ constexpr double kMidConsts[4] = {kMinZi, -0.0625, 0.5, 1.0};
 // Per span length n (kMidMin .. kMidMax), as the prologue loads them (three vld1.64 from the
 // row, + 16, + 32): 16, 32, L = n - 49 (the last run's divisor), n - 33 (the last sample's
 // offset from P + 32), then kMidConsts; exact doubles (no conversion in the prologue).
+// Row kMidFour (after them): L = 16, offset 32, the four runs of a longer span
+// (persp_mid_v7<.., true>: run 3 full, its steps over 16 pixels to sample 4 at
+// ((P + 16) + 16) + 32, the walker's run 4 start).
+constexpr int kMidFour = kMidMax - kMidMin + 1;
 struct MidNTable {
-  alignas(16) double row[kMidMax - kMidMin + 1][8];
+  alignas(16) double row[kMidFour + 1][8];
 };
 constexpr MidNTable kMidN = [] {
   MidNTable t{};
-  for (int n = kMidMin; n <= kMidMax; ++n) {
-    const double r[8] = {16.0, 32.0, double(n - 49), double(n - 33), kMidConsts[0], kMidConsts[1], kMidConsts[2],
-                         kMidConsts[3]};
+  for (int n = kMidMin; n <= kMidMax + 1; ++n) {
+    const bool four = n > kMidMax;
+    const double r[8] = {16.0, 32.0, four ? 16.0 : double(n - 49), four ? 32.0 : double(n - 33), kMidConsts[0],
+                         kMidConsts[1], kMidConsts[2], kMidConsts[3]};
     for (int i = 0; i < 8; ++i) t.row[n - kMidMin][i] = r[i];
   }
   return t;
@@ -64,14 +69,15 @@ constexpr MidNTable kMidN = [] {
 
 // The int32 a conversion (vcvt.s32.f64) left in a single register.
 SB_INLINE int32_t int_bits(float x) { return __builtin_bit_cast(int32_t, x); }
-// Per last-run step count s (1 .. 15): [s, s], [1e9, 1e9] (last_ddi's bound), [s - 1, s - 1],
-// [T, T] with T = s (s - 1) / 2, as the last run's NEON steps load them.
+// Per last-run step count s (1 .. 15, and 16: kMidFour's full run 3): [s, s], [1e9, 1e9]
+// (last_ddi's bound), [s - 1, s - 1], [T, T] with T = s (s - 1) / 2, as the last run's NEON
+// steps load them.
 constexpr auto kMidLast = [] {
   struct Table {
-    alignas(8) uint32_t row[16][8];
+    alignas(8) uint32_t row[17][8];
     constexpr const uint32_t* operator[](int s) const { return row[s]; }
   } t{};
-  for (uint32_t s = 1; s < 16; ++s) {
+  for (uint32_t s = 1; s <= 16; ++s) {
     const uint32_t r[8] = {s, s, 1000000000u, 1000000000u, s - 1, s - 1, s * (s - 1) / 2, s * (s - 1) / 2};
     for (int i = 0; i < 8; ++i) t.row[s][i] = r[i];
   }
@@ -330,14 +336,14 @@ SB_INLINE void draw16_v7(uint8_t* dest, const uint8_t* texels, uint32_t w, RunRe
 #define SB_V7_PRO_IN [nt] "r"(nt), "m"(p), "m"(kMidN)
 #define SB_V7_PRO_CLOB                                                                                     \
   "cc", "d6", "d7", "d16", "d17", "d18", "d19", "d20", "d21", "d22", "d23", "d26", "d27", "d30", "d31"
-template <bool kOwnSave>
+template <bool kOwnSave, bool kFour = false>
 SB_INLINE V4 mid_prologue(const PerspSpan& p, int n, double r[9], RunSteps* su, RunSteps* sv) {
   register double o0 __asm__("d0"), o1 __asm__("d1"), o2 __asm__("d2"), o3 __asm__("d3"), o4 __asm__("d4");
   register double o6 __asm__("d28"), o7 __asm__("d29"), o8 __asm__("d5");
   register V4 o9 __asm__("d24");
   uint32_t du, ddu, dv, ddv, t1, t2, t3;
   const double* pz = &p.zi0;
-  const double* nt = kMidN.row[n - kMidMin];
+  const double* nt = kMidN.row[kFour ? kMidFour : n - kMidMin];
   // d8 .. d11 (callee-saved) are scratch in the prologue: kOwnSave saves and restores them
   // inside the statement (vst1.64 / vld1.64: the single-span entry then saves none), else
   // they are clobbers (saved once by the batch function).
@@ -362,19 +368,27 @@ SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSt
 }
 
 // kOwnSave: the prologue saves the d8 .. d11 it uses (the single-span entry; see mid_prologue).
-template <bool kOwnSave = false>
-SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
+// kFour (n = 64 then): the first four runs of a longer span, run 3 full (kMidFour's row; its
+// steps over 16 pixels, the walker's for a full run: q = delta / 16 exactly as the walker's
+// quotient, curve = (zix / 2) (z_3 + z_4), then run_steps' test, which last_steps_i computes
+// for any step count); runs 0 .. 2 drawn, run 3's registers returned in *run3 (the caller
+// draws it, with its own work beside: persp_five_run_v7).
+template <bool kOwnSave = false, bool kFour = false>
+SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p,
+                            RunRegs* run3 = nullptr, double* uv4out = nullptr) {
   const uint32_t w = uint32_t(width);
-  const int steps = n - 49;  // the last run's (1 .. 15)
+  const int steps = kFour ? 16 : n - 49;  // the last run's (1 .. 15; kFour: 16)
+  if (kFour && n != 64) __builtin_unreachable();
   double r[9];
   RunSteps su, sv;
-  register V4 qd __asm__("d24") = mid_prologue<kOwnSave>(p, n, r, &su, &sv);
+  register V4 qd __asm__("d24") = mid_prologue<kOwnSave, kFour>(p, n, r, &su, &sv);
   // The quotients [qv, qu] (d24, d25: q12, which run 0 leaves alone) until run 1 reads them.
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
   register double uv2 __asm__("d2") = r[2];
   register double uv3 __asm__("d3") = r[3];
   register double uv4 __asm__("d4") = r[4];
+  if constexpr (kFour) *uv4out = r[4];  // sample 4's [u, v] (the caller's last run starts there)
   register double curve __asm__("d5") = r[8];
   register double c1 __asm__("d28") = r[6];
   register double c2 __asm__("d29") = r[7];
@@ -896,7 +910,9 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
   }
   // The last run (n - 48 pixels from sample 3 to sample 4).
   u0 = u1, v0 = v1;
-  if (n == 64) {
+  if constexpr (kFour) {
+    *run3 = run_regs(u0, v0, lu, lv);
+  } else if (n == 64) {
     draw16_v7(dest + 48, texels, w, run_regs(u0, v0, lu, lv));
   } else {
     draw_last<true, true>(dest + 48, n - 48, texels, w, uint32_t(u0), uint32_t(v0), uint32_t(lu.d), uint32_t(lv.d),

@@ -575,6 +575,76 @@ TEST(AsmSpanPerspBatch, RunsOfOneKindOfLongSpanMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of one long kind, every variant identical\n", spans);
 }
 
+// Five-run second-order spans (65 .. 80 pixels; ARMv7: persp_five_run_v7, reached from the
+// batch loop through persp_long_run_v7's test, drawing the consecutive ones in one call):
+// every length in batches of such spans (each length first, last and between others), the
+// runs broken by spans of other paths (49, 64, 81 and over, linear, dzi == 0) and restarted;
+// gradients over many magnitudes (depths near and below the 1/z clamp, u and v past both
+// clamps, curves whose steps are accepted or rejected by the monotone test, non-finite
+// values), and on a texture 32767 texels wide with extreme steps (deltas near +-2^31); the
+// guard bytes after every span untouched (batch_matches).
+TEST(AsmSpanPerspBatch, FiveRunSpansMatchOnEveryLength) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  const double odd[] = {0.0, -0.0, 1e-9, 1e-12, 1e-300, -1e300, 1e300, inf, -inf, nan};
+  std::mt19937 rng(6580);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  auto logu = [&](double lo, double hi) {  // +-10^[lo, hi], log-uniform
+    const double e = lo + (hi - lo) * double(rng() % 100000) / 100000.0;
+    return (rng() & 1 ? 1.0 : -1.0) * std::pow(10.0, e);
+  };
+  // kind 0: extreme gradients on a 300 x 200 surface; kind 1: extreme steps on 32767 x 3.
+  auto five_span = [&](int kind, int sw, int sh) {
+    PerspSpan p{};
+    if (kind == 0) {
+      p.zi0 = rng() % 8 ? std::ldexp(unit(rng) + 1.0, -int(rng() % 32)) : odd[rng() % 10];
+      p.dzi = rng() % 8 ? p.zi0 * std::ldexp(unit(rng), -int(rng() % 12)) : odd[rng() % 10];
+      p.uz0 = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 20) * p.zi0 * sw : odd[rng() % 10];
+      p.duz = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 26) * sw : odd[rng() % 10];
+      p.vz0 = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 20) * p.zi0 * sh : odd[rng() % 10];
+      p.dvz = rng() % 8 ? std::ldexp(unit(rng), int(rng() % 40) - 26) * sh : odd[rng() % 10];
+      p.px0 = double(rng() % 2000) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1 - (rng() % 3 == 0 ? rng() % 65536 : 0));
+      p.vmax = int32_t((uint32_t(sh) << 16) - 1 - (rng() % 3 == 0 ? rng() % 65536 : 0));
+    } else {
+      p.zi0 = std::fabs(logu(-4, 0));
+      p.dzi = logu(-7, -2);
+      p.uz0 = logu(2, 9) * p.zi0, p.duz = logu(0, 8) * std::fabs(p.dzi) * (rng() % 4 ? 1.0 : 1e3);
+      p.vz0 = std::fabs(logu(-2, 1)) * p.zi0, p.dvz = logu(-3, 1) * std::fabs(p.dzi);
+      p.px0 = double(rng() % 100) + (rng() & 1 ? 0.5 : 0.0);
+      p.umax = int32_t((uint32_t(sw) << 16) - 1);
+      p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+    }
+    p.second_order = true;
+    return p;
+  };
+  long spans = 0;
+  for (int kind = 0; kind < 2; ++kind) {
+    const int sw = kind == 0 ? 300 : 32767, sh = kind == 0 ? 200 : 3;
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    for (int trial = 0; trial < 1600; ++trial) {
+      std::vector<PerspItem> items;
+      const int n0 = 65 + trial % 16;  // this trial's length: first, then among others
+      const int count = 1 + int(rng() % 8);
+      for (int i = 0; i < count; ++i) {
+        int n = i == 0 || rng() % 2 ? n0 : 65 + int(rng() % 16);
+        PerspSpan p = five_span(kind, sw, sh);
+        if (i > 0 && rng() % 5 == 0) {  // a span of another path breaks the run
+          const int others[] = {49, 50, 64, 81, 96, 97, 200, 16, 33};
+          n = rng() % 2 ? others[rng() % 9] : n;
+          if (rng() % 3 == 0) p.second_order = false;
+          if (rng() % 3 == 0) p.dzi = 0.0;
+        }
+        items.push_back(PerspItem{nullptr, n, p});
+      }
+      if (rng() % 2) items.push_back(PerspItem{nullptr, n0, five_span(kind, sw, sh)});  // n0 last too
+      ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " kind " << kind << " trial " << trial;
+      spans += long(items.size());
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans in runs of five-run ones, every variant identical\n", spans);
+}
+
 // A long batch of long spans only (aarch64: each one reached and left by tail branches,
 // batch_from -> persp_long_a64 / persp_lin_a64 -> batch_from): 100000 items in one call
 // must not nest a frame per item (that would overflow the stack and crash here); the tuned
