@@ -848,17 +848,13 @@ void spans_range(const PerspItem* it, const PerspItem* end, const uint8_t* texel
     } else {
       if (n > 48) __builtin_unreachable();
 #if defined(SB_V7_ONE)
-      // One run (1 .. 16 pixels; n <= 0 too, which it skips): persp_one_v7, with the 1 .. 48
-      // pixel spans after it; persp_fast<true> then draws 17 .. 48 pixels only (its one-run
-      // branch and n <= 0 test fold away: the same tests on its path as before). 17 .. 48
-      // pixel spans at the batch's start or after a one-run span go to persp_mid_run_v7
-      // (see there); here, after other spans, persp_fast<true> draws them.
-      if (n <= 16) {
-        it = persp_one_v7(it, end, texels, width);
-        continue;
-      }
-#endif
+      // n <= 48 (n <= 0 too, which persp_one_v7 skips): persp_one_v7 (one run) or
+      // persp_mid_run_v7 (17 .. 48 pixels), each with the 1 .. 48 pixel spans after it.
+      it = n <= 16 ? persp_one_v7(it, end, texels, width) : persp_mid_run_v7(it, end, texels, width);
+      continue;
+#else
       persp_fast<true>(it->dest, n, texels, width, p);
+#endif
     }
     ++it;
   }

@@ -106,7 +106,7 @@ const Kernels* find_variant(const char* name) {
 const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "palette2", "palette3", "palette4", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
-                              "persp192", "persp192lin", "persp32", "persp16", "persp72"};
+                              "persp192", "persp192lin", "persp32", "persp16", "persp72", "persp32mix"};
 
 // The span lengths of a persp case, left to right along one 1920-pixel row. Mixed lengths, so
 // the spans end in different last runs as the engine's do: a span of 16 k pixels (or a long
@@ -121,8 +121,21 @@ const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "bloc
 //              neighbours of different lengths (16 1 15 2 .. 9 8, then back again)
 //   persp72:   16 spans of 65 .. 80 pixels, each length once (80 65 79 66 .. 73 72; mean 72.5,
 //              1160 pixels: five runs, last runs of 1 .. 16 pixels)
+//   persp32mix: 24 spans of a mixed surface's batch (818 pixels): two linear spans first
+//              (40, 56) and a 100-pixel second-order one, then second-order spans of 17 .. 48
+//              pixels interleaved with ones of 1 .. 16 and 49 .. 64 and one linear (36), as in
+//              frames (bench/span_hist.md): 17 .. 48 pixel spans both right after a one-run
+//              span and after linear, 49 .. 64 and long ones (the batch loop's mid-batch case)
 //   persp1920*: one span of 1920
+// persp32mix's lengths; a negative one is a linear span (second_order off) of that length.
+const int kMixLens[] = {-40, -56, 100, 32, 20, 45, 8, 60, 27, 38, 3, 17,
+                        48,  52,  24,  12, 41, 30, -36, 19, 44, 5, 35, 26};
 std::vector<int> persp_lengths(const char* c) {
+  if (std::strcmp(c, "persp32mix") == 0) {
+    std::vector<int> l;
+    for (int n : kMixLens) l.push_back(n < 0 ? -n : n);
+    return l;
+  }
   // persp192 and persp192lin exactly (persp1920 and persp1920lin share their first 8 characters)
   if (std::strcmp(c, "persp192") == 0 || std::strcmp(c, "persp192lin") == 0)
     return {179, 205, 182, 202, 185, 199, 188, 196, 191, 193};
@@ -277,8 +290,10 @@ uint32_t run_case(const char* c, const Kernels& k, long reps) {
     // One batch per repetition, filled once (the engine fills its items as it goes: a few
     // stores a span, not counted here).
     std::vector<sb::simd::PerspItem> items;
+    const bool mix = std::strcmp(c, "persp32mix") == 0;
     for (int x = 0, i = 0; i < int(lens.size()); x += lens[i++]) {
       p.px0 = x + 0.5;
+      p.second_order = !lin && !(mix && kMixLens[i] < 0);
       items.push_back(sb::simd::PerspItem{dest.data() + x, lens[i], p});
     }
     for (long r = 0; r < reps; ++r) k.surface_spans_persp(items.data(), int(items.size()), surf.data(), kSurf, kSurf);

@@ -56,7 +56,8 @@ KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 ca
           "persp192lin": "surface_span_persp (spans of 179-205 px, linear steps)",
           "persp32": "surface_span_persp (spans of 17-48 px, mean 32.5)",
           "persp16": "surface_span_persp (spans of 1-16 px, mean 8.5)",
-          "persp72": "surface_span_persp (spans of 65-80 px, mean 72.5)"}
+          "persp72": "surface_span_persp (spans of 65-80 px, mean 72.5)",
+          "persp32mix": "surface_span_persp (mixed batch: 17-48 px among linear, 1-16, 49-64, long)"}
 UNIT = {"palette": "src px", "palette2": "out px", "palette3": "out px", "palette4": "out px"}
 
 
@@ -454,7 +455,7 @@ def main():
           "AVX2). No Pentium figure: Quake had no single-pass lit span drawer.",
           "- **surface_span_persp rows**: drawn as the engine draws a surface's spans, one surface_spans_persp "
           "call (a batch) per repetition: 1 item of 1920 px, 10 of 179-205 px (mean 192), 30 of 50-64 px (mean 57) 32 of 17-48 px (mean 32.5), 32 of 1-16 px (mean 8.5) or 16 of 65-80 px (mean 72.5), mixed lengths so the spans end in different last runs as the engine's do; *one call each* is 30 "
-          "surface_span_persp calls per repetition (the per-span entry). Which rows matter for whole frames: bench/span_hist.md (starbow_span_hist). At 320x240 in the LibreQuake flythroughs second-order spans of more than 80 px draw 16-41% of the pixels, linear ones of more than 64 px 18-29%, second-order spans of 17-48 px in pairs 11-21% (persp32), and 880-960 second-order spans of 1-16 px a frame (mean 7 px) 7-9% (persp16); at 640x480 and up the long rows take over. llvm-mca gives a call 100 cycles; calls are timed as branches here (since 2026-11-28).", ""]
+          "surface_span_persp calls per repetition (the per-span entry). Which rows matter for whole frames: bench/span_hist.md (starbow_span_hist). At 320x240 in the LibreQuake flythroughs second-order spans of more than 80 px draw 16-41% of the pixels, linear ones of more than 64 px 18-29%, second-order spans of 17-48 px in pairs 11-21% (persp32), and 880-960 second-order spans of 1-16 px a frame (mean 7 px) 7-9% (persp16); at 640x480 and up the long rows take over. *mixed batch* (persp32mix): 24 items, 818 px, as a surface's batch: linear 40, 56, second-order 100, then second-order 17-48 px spans among 1-16, 49-64 px ones and a linear one (bench/count_kernels.cpp kMixLens), so 17-48 px spans come both after one-run spans and after linear, 49-64 and long ones. llvm-mca gives a call 100 cycles; calls are timed as branches here (since 2026-11-28).", ""]
     header = "| kernel | target | variant | instr/unit | " + " | ".join(
         ["cyc znver3", "cyc skylake", "cyc cortex-a53", "cyc cortex-a72*", "cyc cortex-a9"]) + " | cover | x scalar (cyc) | Pentium Quake ÷ this (worst core) |"
     md += [header, "|" + "---|" * (header.count("|") - 1)]

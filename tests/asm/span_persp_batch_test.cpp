@@ -372,6 +372,64 @@ TEST(AsmSpanPerspBatch, RunsOfOneRunSecondOrderSpansMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of one-run spans, every variant identical\n", spans);
 }
 
+// Second-order spans of 17 .. 48 pixels reached mid-batch (ARMv7: the batch loop sends them to
+// persp_mid_run_v7 after any other item, not only after one-run spans): every n 17 .. 48 right
+// after each kind of item the loop draws itself or hands to another path (linear 17 .. 64 and
+// long, dzi +-0, second order 49, 50 .. 64, 65 .. 80 and long, n 0), with pick_span's edge
+// gradients (clamped, divide fallback, non-finite), followed by nothing (the batch's end), a
+// one-run span, another 17 .. 48 pixel span or a linear one; every variant's bytes the
+// reference's, bytes after each span untouched (batch_matches' guards).
+TEST(AsmSpanPerspBatch, MidBatchSecondOrderSpansOf17To48Match) {
+  std::mt19937 rng(4848);
+  const int sw = 61, sh = 23;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 37 + (i >> 2));
+  auto curve = [&](int n) {
+    PerspSpan p = pick_span(rng, sw, sh);
+    p.second_order = true;
+    if (p.dzi == 0.0) p.dzi = rng() % 2 ? 2e-7 : -4e-6;
+    return PerspItem{nullptr, n, p};
+  };
+  long spans = 0;
+  for (int before = 0; before < 10; ++before) {
+    for (int n = 17; n <= 48; ++n) {
+      for (int k = 0; k < 12; ++k) {
+        std::vector<PerspItem> items;
+        if (k % 3 == 0) items.push_back(curve(1 + int(rng() % 16)));  // a one-run span first
+        PerspItem x = curve(0);
+        switch (before) {
+          case 0: x.span.second_order = false, x.n = 17 + int(rng() % 48); break;
+          case 1: x.span.second_order = false, x.n = 65 + int(rng() % 200); break;
+          case 2: x.span.dzi = rng() % 2 ? 0.0 : -0.0, x.n = 17 + int(rng() % 100); break;
+          case 3: x.n = 49; break;
+          case 4: x.n = 50 + int(rng() % 15); break;
+          case 5: x.n = 65 + int(rng() % 16); break;
+          case 6: x.n = 81 + int(rng() % 300); break;
+          case 7: x.n = 0; break;
+          case 8: x.span.second_order = false, x.n = 1 + int(rng() % 16); break;
+          default: x.n = 17 + int(rng() % 32); break;  // after a 17 .. 48 pixel span
+        }
+        items.push_back(x);
+        items.push_back(curve(n));
+        switch (k % 4) {
+          case 0: break;
+          case 1: items.push_back(curve(1 + int(rng() % 16))); break;
+          case 2: items.push_back(curve(17 + int(rng() % 32))); break;
+          default: {
+            PerspItem l = curve(17 + int(rng() % 48));
+            l.span.second_order = false;
+            items.push_back(l);
+            break;
+          }
+        }
+        ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " before " << before << " n " << n << " k " << k;
+        spans += long(items.size());
+      }
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans around mid-batch 17-48 px ones, every variant identical\n", spans);
+}
+
 // Chains of short linear spans (aarch64: two neighbouring ones, 17 .. 64 pixels, second_order
 // off or dzi +-0, at the start of the batch's items left (batch_from: the batch's start, or
 // after long spans) take their set-ups from one block, persp_short_lin2, and the pairs go on
