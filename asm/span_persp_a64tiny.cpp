@@ -225,6 +225,27 @@ SB_INLINE bool tiny_fallback(const TinySamples& r) {
   return __builtin_expect(vmaxvq_u32(r.fb) == ~0u, 0);
 }
 
+// The loop block's constants (asm/span_persp_a64tiny_pair.h loads them: no register held
+// across the loop for them): kBiasBits, kMinZi, the fallback's significand mask and 2^1000's
+// bits (as tiny_samples), 999999999 (last_dd's range).
+struct alignas(16) TinyConsts {
+  uint64_t bias[2];
+  double kmin[2];
+  uint64_t mask[2], big[2];
+  uint32_t c999[4];
+};
+constexpr TinyConsts kTinyConsts{{kBiasBits, kBiasBits},
+                                 {span_walk::kMinZi, span_walk::kMinZi},
+                                 {0xfff0000000000000, 0xfff0000000000000},
+                                 {0x7e70000000000000, 0x7e70000000000000},
+                                 {999999999, 999999999, 999999999, 999999999}};
+// tiny_pair_block's scalar outputs: this pair's packed positions and steps, the fallback flag.
+struct TinyPairOut {
+  uint64_t posa, posb, da, db, dda, ddb;
+  uint32_t fb;
+};
+#include "asm/span_persp_a64tiny_pair.h"
+
 }  // namespace
 
 void tiny_one_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
@@ -253,6 +274,10 @@ tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* tex
   const PerspItem* b = it + 1 != end && tiny_curve_a64(it[1]) ? it + 1 : it;
   TinySamples cur = tiny_samples<false>(a->span, a->n, b->span, b->n);
   if (tiny_fallback(cur)) cur = tiny_samples_div(a->span, a->n, b->span, b->n);
+  uint32x4_t s0 = cur.s0, s1 = cur.s1;
+  float64x2_t c2 = cur.c2;
+  const TinyRow* rca = &kTiny.at[a->n];
+  const TinyRow* rcb = &kTiny.at[b->n];
   for (;;) {
     // The next pair: xa = b + 1 if that is one (more), xb = xa + 1 if that is one too; the
     // tests without branches (an item past end is never read: a's fields are read instead).
@@ -264,16 +289,18 @@ tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* tex
     const bool two = inb & tiny_curve_a64(*(inb ? xb : a));
     xa = more ? xa : a;
     xb = two ? xb : xa;
-    const TinyOut o = tiny_steps(cur);
-    TinySamples nxt = tiny_samples<false>(xa->span, xa->n, xb->span, xb->n);
-    if (tiny_fallback(nxt)) nxt = tiny_samples_div(xa->span, xa->n, xb->span, xb->n);
-    draw_tiny(a->dest, a->n, texels, w, vgetq_lane_u64(o.pos, 0), vgetq_lane_u64(o.d, 0), vgetq_lane_u64(o.dd, 0));
-    if (b != a) {
-      draw_tiny(b->dest, b->n, texels, w, vgetq_lane_u64(o.pos, 1), vgetq_lane_u64(o.d, 1), vgetq_lane_u64(o.dd, 1));
+    const TinyRow* rna = &kTiny.at[xa->n];
+    const TinyRow* rnb = &kTiny.at[xb->n];
+    TinyPairOut o;
+    tiny_pair_block(s0, s1, c2, rca, rcb, &xa->span, &xb->span, rna, rnb, o);
+    if (__builtin_expect(o.fb == ~0u, 0)) {
+      const TinySamples r = tiny_samples_div(xa->span, xa->n, xb->span, xb->n);
+      s0 = r.s0, s1 = r.s1, c2 = r.c2;
     }
+    draw_tiny(a->dest, a->n, texels, w, o.posa, o.da, o.dda);
+    if (b != a) draw_tiny(b->dest, b->n, texels, w, o.posb, o.db, o.ddb);
     if (!more) return b + 1;
-    cur = nxt;
-    a = xa, b = xb;
+    a = xa, b = xb, rca = rna, rcb = rnb;
   }
 }
 
