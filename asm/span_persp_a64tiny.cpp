@@ -60,9 +60,26 @@ struct alignas(16) TinyRow {
   uint32_t s2[2];
   uint32_t t2[2], k2[2];
 };
+// The loop block's constants (asm/span_persp_a64tiny_pair.h loads them from kTiny.c, the
+// rows' base register: no vector register held across the loop for them): kBiasBits, kMinZi,
+// the fallback's significand mask and 2^1000's bits (as tiny_samples), 999999999 (last_dd's
+// range).
+struct alignas(16) TinyConsts {
+  uint64_t bias[2];
+  double kmin[2];
+  uint64_t mask[2], big[2];
+  uint32_t c999[4];
+};
 struct TinyTable {
   TinyRow at[17];
-  constexpr TinyTable() : at{} {
+  TinyConsts c;
+  constexpr TinyTable()
+      : at{},
+        c{{kBiasBits, kBiasBits},
+          {span_walk::kMinZi, span_walk::kMinZi},
+          {0xfff0000000000000, 0xfff0000000000000},
+          {0x7e70000000000000, 0x7e70000000000000},
+          {999999999, 999999999, 999999999, 999999999}} {
     for (int n = 1; n <= 16; ++n) {
       const int steps = n - 1, s = steps > 1 ? steps : 1;
       const uint32_t t = uint32_t(steps * (steps - 1) / 2), k = t ? uint32_t(((1ull << 31) + t - 1) / t) : 0u;
@@ -71,6 +88,8 @@ struct TinyTable {
   }
 };
 static_assert(sizeof(TinyRow) == 48 && offsetof(TinyRow, t2) == 32);
+static_assert(offsetof(TinyTable, c) == 816 && offsetof(PerspItem, span) == 16,
+              "asm/span_persp_a64tiny_pair.h's offsets: kTiny.c at 816, an item's span at 16");
 constexpr TinyTable kTiny;
 
 // One run of n = 1 .. 16 pixels from the packed position x (v 2^32 + u), steps d, dd (Run16's
@@ -225,20 +244,6 @@ SB_INLINE bool tiny_fallback(const TinySamples& r) {
   return __builtin_expect(vmaxvq_u32(r.fb) == ~0u, 0);
 }
 
-// The loop block's constants (asm/span_persp_a64tiny_pair.h loads them: no register held
-// across the loop for them): kBiasBits, kMinZi, the fallback's significand mask and 2^1000's
-// bits (as tiny_samples), 999999999 (last_dd's range).
-struct alignas(16) TinyConsts {
-  uint64_t bias[2];
-  double kmin[2];
-  uint64_t mask[2], big[2];
-  uint32_t c999[4];
-};
-constexpr TinyConsts kTinyConsts{{kBiasBits, kBiasBits},
-                                 {span_walk::kMinZi, span_walk::kMinZi},
-                                 {0xfff0000000000000, 0xfff0000000000000},
-                                 {0x7e70000000000000, 0x7e70000000000000},
-                                 {999999999, 999999999, 999999999, 999999999}};
 // tiny_pair_block's scalar outputs: this pair's packed positions and steps, the fallback flag.
 struct TinyPairOut {
   uint64_t posa, posb, da, db, dda, ddb;
@@ -292,7 +297,7 @@ tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* tex
     const TinyRow* rna = &kTiny.at[xa->n];
     const TinyRow* rnb = &kTiny.at[xb->n];
     TinyPairOut o;
-    tiny_pair_block(s0, s1, c2, rca, rcb, &xa->span, &xb->span, rna, rnb, o);
+    tiny_pair_block(s0, s1, c2, rca, rcb, xa, xb, rna, rnb, o);
     if (__builtin_expect(o.fb == ~0u, 0)) {
       const TinySamples r = tiny_samples_div(xa->span, xa->n, xb->span, xb->n);
       s0 = r.s0, s1 = r.s1, c2 = r.c2;
