@@ -19,7 +19,7 @@ import re, sys
 
 CONST = {}
 CARRY = {"s0": "v29", "s1": "v30", "c2": "v31"}
-GPR = {"pa": "x1", "pb": "x2", "rna": "x3", "rnb": "x4", "rca": "x5", "rcb": "x6",
+GPR = {"a": "x1", "b": "x2", "end": "x3", "xa": "x4", "xb": "x5",
        "kc": "x14", "posa": "x7", "posb": "x8", "da": "x9", "db": "x10", "dda": "x11", "ddb": "x12", "fb": "w13"}
 ACC = ("fmla", "fmls", "bit", "ssra", "uqxtn2", "sqxtn2", "mls")
 
@@ -29,11 +29,59 @@ P = []
 def I(s):
     P.append(s)
 
-# ---- this pair's steps (tiny_steps), cur = s0, s1, c2 + rows rca, rcb ----
-I("ldp q{YA}, q{SA}, [[rca]]")          # [off_a, y_a], [s_a, s2_a]
-I("ldp q{YB}, q{SB}, [[rcb]]")
-I("ldr q{KA}, [[rca], #32]")            # [t2_a, k2_a]
-I("ldr q{KB}, [[rcb], #32]")
+# ---- the rows of this pair (a, b) and the next pair's items (xa, xb) and rows ----
+# Core scratch: x15 .. x17, x19 .. x26 (SCRATCH). Rows by n - 1: kc + 48 (n - 1) (fields at +48).
+I("ldr w15, [[a], #8]")
+I("ldr w16, [[b], #8]")
+I("sub w15, w15, #1")
+I("sub w16, w16, #1")
+I("add x17, x15, x15, lsl #1")
+I("add x19, x16, x16, lsl #1")
+I("add x17, [kc], x17, lsl #4")   # rca - 48
+I("add x19, [kc], x19, lsl #4")   # rcb - 48
+# The next pair's samples are computed speculatively on ta = xa0 = b + 1 and tb = xb0 = b + 2
+# (a when past end: safe pointers) whatever the tests say, their rows by (n - 1) mod 16 (inside
+# kTiny for any n): the sample loads wait for no test. Unused when the tests say otherwise (the
+# loop ends, or a lone span: b = a, lane 1 never drawn); a needless divide fallback at worst.
+I("add x20, [b], #88")               # xa0
+I("add x25, [b], #176")              # xb0
+I("cmp x20, [end]")
+I("csel x21, x20, [a], ne")          # ta
+I("ccmp x25, [end], #4, ne")
+I("csel x24, x25, [a], ne")          # tb
+I("ldr w22, [x21, #8]")
+I("ldr w23, [x24, #8]")
+I("sub w22, w22, #1")
+I("sub w23, w23, #1")
+I("and w28, w22, #15")
+I("and w27, w23, #15")
+I("add x28, x28, x28, lsl #1")
+I("add x27, x27, x27, lsl #1")
+I("add x28, [kc], x28, lsl #4")      # ta's row - 48
+I("add x27, [kc], x27, lsl #4")      # tb's row - 48
+# more = xa0 != end and ta is a tiny item (tiny_curve_a64: n - 1 <= 15, second_order, dzi's
+# bits << 1 != 0); xa = more ? xa0 : a. two = more, xb0 != end and tb tiny; xb = two ? xb0 : xa.
+I("ldr x26, [x21, #24]")
+I("ldrb w15, [x21, #80]")
+I("tst x26, #0x7fffffffffffffff")
+I("ccmp w15, #0, #4, ne")
+I("ccmp w22, #15, #2, ne")
+I("ccmp x20, [end], #4, ls")
+I("csel [xa], x20, [a], ne")
+I("ldr x26, [x24, #24]")
+I("ldrb w16, [x24, #80]")
+I("tst x26, #0x7fffffffffffffff")
+I("ccmp w16, #0, #4, ne")
+I("ccmp w23, #15, #2, ne")
+I("ccmp x25, [end], #4, ls")
+I("ccmp [xa], [a], #4, ne")          # and more (xa != a)
+I("csel [xb], x25, [xa], ne")
+
+# ---- this pair's steps (tiny_steps), cur = s0, s1, c2 + rows x17, x19 ----
+I("ldp q{YA}, q{SA}, [x17, #48]")          # [off_a, y_a], [s_a, s2_a]
+I("ldp q{YB}, q{SB}, [x19, #48]")
+I("ldr q{KA}, [x17, #80]")            # [t2_a, k2_a]
+I("ldr q{KB}, [x19, #80]")
 I("ldp q{BIAS}, q{KMIN}, [[kc], #816]")  # kTiny.c (after its 17 rows)
 I("ldp q{MASK}, q{BIG}, [[kc], #848]")
 I("ldr q{C999}, [[kc], #880]")
@@ -98,12 +146,12 @@ for v, a, b in (("L", "da", "db"), ("DD", "dda", "ddb")):
     I("mov [%s], {pk%s}.d[1]" % (b, v))
 
 # ---- the next pair's samples (tiny_samples<false>): spans pa, pb, rows rna, rnb ----
-I("ldp q{A0}, q{A1}, [[pa], #16]")
-I("ldp q{B0}, q{B1}, [[pb], #16]")
-I("ldp q{A2}, q{A3}, [[pa], #48]")
-I("ldp q{B2}, q{B3}, [[pb], #48]")
-I("ldr d{OA}, [[rna]]")
-I("ldr d{OB}, [[rnb]]")
+I("ldp q{A0}, q{A1}, [x21, #16]")
+I("ldp q{B0}, q{B1}, [x24, #16]")
+I("ldp q{A2}, q{A3}, [x21, #48]")
+I("ldp q{B2}, q{B3}, [x24, #48]")
+I("ldr d{OA}, [x28, #48]")
+I("ldr d{OB}, [x27, #48]")
 I("zip1 {z0}.2d, {A0}.2d, {B0}.2d")
 I("zip1 {z1}.2d, {A0}.2d, {B0}.2d")
 I("zip2 {zx}.2d, {A0}.2d, {B0}.2d")
@@ -237,9 +285,10 @@ def embed(path, note):
     body = [l.split("//")[0].strip() for l in open(path) if l.strip() and not l.strip().endswith(":")]
     inv = {"x" + v[1:]: k for k, v in GPR.items()}
     vinv = {v: k for k, v in list(CONST.items()) + list(CARRY.items())}
-    res, used = [], set()
+    res, used, gused = [], set(), set()
     for l in body:
         used |= set(int(r) for r in re.findall(r"\b[vqds](\d+)\b", l))
+        gused |= set(int(r) for r in re.findall(r"\b[xw](\d+)\b", l) if "x" + r not in inv)
         l = re.sub(r"\b([xw])(\d+)\b", lambda m: ("%%%s[%s]" % (m.group(1), inv["x" + m.group(2)]))
                    if "x" + m.group(2) in inv else m.group(0), l)
         l = re.sub(r"\b([vqds])(\d+)\b", lambda m: ("%%%s[%s]" % ("" if m.group(1) == "v" else m.group(1),
@@ -247,7 +296,7 @@ def embed(path, note):
                    if "v" + m.group(2) in vinv else m.group(0), l)
         res.append('      "%s\\n"' % l)
     carry = set(int(v[1:]) for v in CARRY.values())
-    clob = ", ".join('"v%d"' % r for r in sorted(used - carry))
+    clob = ", ".join(['"x%d"' % r for r in sorted(gused)] + ['"v%d"' % r for r in sorted(used - carry)])
     print(HEADER % dict(note=note, body="\n".join(res), clob=clob))
 
 
@@ -259,20 +308,21 @@ HEADER = """// asm/span_persp_a64tiny_pair.h: generated by bench/mca_a53_tiny/ge
 // fixed by the generator (v0 .. v28 scratch; s0, s1, c2 in the registers GCC gives them).
 #pragma once
 
-// In: s0, s1, c2 (this pair's TinySamples fields), rca, rcb (its TinyRows); pa, pb, rna, rnb
-// (the next pair's spans and rows). Out: s0, s1, c2 of the next pair; this pair's packed
-// positions and steps (o.pos*, o.d*, o.dd*); o.fb all ones iff the next pair needs the divide
-// fallback (then s0, s1, c2 are to be replaced by tiny_samples_div's).
-SB_INLINE void tiny_pair_block(uint32x4_t& s0, uint32x4_t& s1, float64x2_t& c2, const TinyRow* rca, const TinyRow* rcb,
-                               const PerspItem* pa, const PerspItem* pb, const TinyRow* rna, const TinyRow* rnb,
-                               TinyPairOut& o) {
+// In: s0, s1, c2 (this pair's TinySamples fields), a, b (its items), end (the batch's end).
+// Out: xa, xb: the next pair (tiny_curve_run_a64's tests: xa = a when there is none, xb = xa
+// for a lone one); s0, s1, c2 of the next pair's samples (when there is one; computed
+// speculatively on b + 1, b + 2); this pair's packed positions and steps (o.pos*, o.d*,
+// o.dd*); o.fb all ones iff the samples need the divide fallback (then s0, s1, c2 are to be
+// replaced by tiny_samples_div's on xa, xb).
+SB_INLINE void tiny_pair_block(uint32x4_t& s0, uint32x4_t& s1, float64x2_t& c2, const PerspItem* a, const PerspItem* b,
+                               const PerspItem* end, const PerspItem*& xa, const PerspItem*& xb, TinyPairOut& o) {
   __asm__(
 %(body)s
-      : [s0] "+w"(s0), [s1] "+w"(s1), [c2] "+w"(c2), [posa] "=&r"(o.posa), [posb] "=&r"(o.posb), [da] "=&r"(o.da),
-        [db] "=&r"(o.db), [dda] "=&r"(o.dda), [ddb] "=&r"(o.ddb), [fb] "=&r"(o.fb)
-      : [pa] "r"(pa), [pb] "r"(pb), [rna] "r"(rna), [rnb] "r"(rnb), [rca] "r"(rca), [rcb] "r"(rcb),
-        [kc] "r"(&kTiny), "m"(*pa), "m"(*pb), "m"(kTiny)
-      : %(clob)s);
+      : [s0] "+w"(s0), [s1] "+w"(s1), [c2] "+w"(c2), [xa] "=&r"(xa), [xb] "=&r"(xb), [posa] "=&r"(o.posa),
+        [posb] "=&r"(o.posb), [da] "=&r"(o.da), [db] "=&r"(o.db), [dda] "=&r"(o.dda), [ddb] "=&r"(o.ddb),
+        [fb] "=&r"(o.fb)
+      : [a] "r"(a), [b] "r"(b), [end] "r"(end), [kc] "r"(&kTiny), "m"(kTiny)
+      : "cc", "memory", %(clob)s);
 }
 """
 
@@ -289,8 +339,8 @@ def vs():
         def nm(n, write):
             if n in CONST:
                 return "in_" + n
-            if n in CARRY:
-                return n
+            if n in CARRY:  # in_: alloc.py never frees its register (a carry is written before its last read)
+                return "in_" + n
             return "%s_%d" % (n, ver.get(n, 0))
         # reads first (old versions), then the writes' new versions
         parts = re.split(r"(\{\w+\})", s)
@@ -321,7 +371,7 @@ def vs():
 
 
 def pins():
-    return ",".join(["in_%s=%s" % (k, v) for k, v in CONST.items()] + ["%s=%s" % (k, v) for k, v in CARRY.items()])
+    return ",".join(["in_%s=%s" % (k, v) for k, v in CONST.items()] + ["in_%s=%s" % (k, v) for k, v in CARRY.items()])
 
 
 if __name__ == "__main__":

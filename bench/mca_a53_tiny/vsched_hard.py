@@ -136,6 +136,10 @@ def regs(l):
         return r, w, False
     if op in ("cmp", "cmn", "tst"):
         return set(names) | set(), {"flags"}, False
+    if op in ("ccmp", "ccmn"):
+        return set(names) | {"flags"}, {"flags"}, False
+    if op in ("csel", "cset", "csinc"):
+        return set(names[1:]) | {"flags"}, {names[0]}, False
     if op.startswith("b."):
         return {"flags"}, set(), False
     w = {names[0]}; r = set(names[1:])
