@@ -1,20 +1,21 @@
 #!/usr/bin/env python3
-# bench/mca_a53_tiny/gen_pair_asm.py: the tiny pair loop's vector block (asm/span_persp_a64tiny.cpp,
-# tiny_curve_run_a64) as one asm statement: this pair's steps (tiny_steps) and the next pair's
-# samples (tiny_samples<false>) in program order, registers allocated least-recently-freed first
-# (so bench/order_search.py can move lines far), written as plain aarch64 for the search.
+# bench/mca_a53_tiny/gen_pair_asm.py: the tiny pair loop's block (asm/span_persp_a64tiny.cpp,
+# tiny_curve_run_a64) as one asm statement: this pair's steps (tiny_steps), the next pair's
+# tests (tiny_curve_a64's, branchless) and its samples (tiny_samples<false>, speculative on
+# b + 1, b + 2), in program order.
 #
-#   gen_pair_asm.py OUT.s          the block in program order (order_search.py's input)
+#   gen_pair_asm.py OUT.s          the block in program order, registers allocated least
+#                                  recently freed first (v0 .. v28)
 #   gen_pair_asm.py --vs OUT.vs    the same with virtual registers (vsched_hard.py's input; then
 #                                  bench/mca_a53_p64/alloc.py OUT.vs A.s `gen_pair_asm.py --pins` 0,..,28)
 #   gen_pair_asm.py --embed IN.s NOTE > asm/span_persp_a64tiny_pair.h
 #                                  the (searched) block as the header's asm statement
+# How the committed order was made: bench/mca_a53_tiny/README.md (pair_asm_in.s -> pair_asm_s.s).
 #
-# Placeholders (operands of the asm statement): x1 pa, x2 pb (the next pair's PerspItems),
-# x3 rna, x4 rnb (their TinyRows), x5 rca, x6 rcb (this pair's TinyRows); out x7 .. x12
-# pos_a, pos_b, d_a, d_b, dd_a, dd_b, w13 fb (all ones iff the next pair needs the divide
-# fallback); v29 s0, v30 s1, v31 c2 (this pair's in, the next pair's out); v21 .. v27 constants.
-# v0 .. v20 scratch (clobbered).
+# Placeholders (operands of the asm statement): x1 a, x2 b (this pair's items), x3 end, x14
+# &kTiny; out x4 xa, x5 xb (the next pair), x7 .. x12 pos_a, pos_b, d_a, d_b, dd_a, dd_b, w13
+# fb (all ones iff the samples need the divide fallback); v29 s0, v30 s1, v31 c2 (this pair's
+# in, the next pair's out). Scratch (clobbered): v0 .. v28, x15 .. x17, x19 .. x28.
 import re, sys
 
 CONST = {}
