@@ -60,9 +60,26 @@ struct alignas(16) TinyRow {
   uint32_t s2[2];
   uint32_t t2[2], k2[2];
 };
+// The loop block's constants (asm/span_persp_a64tiny_pair.h loads them from kTiny.c, the
+// rows' base register: no vector register held across the loop for them): kBiasBits, kMinZi,
+// the fallback's significand mask and 2^1000's bits (as tiny_samples), 999999999 (last_dd's
+// range).
+struct alignas(16) TinyConsts {
+  uint64_t bias[2];
+  double kmin[2];
+  uint64_t mask[2], big[2];
+  uint32_t c999[4];
+};
 struct TinyTable {
   TinyRow at[17];
-  constexpr TinyTable() : at{} {
+  TinyConsts c;
+  constexpr TinyTable()
+      : at{},
+        c{{kBiasBits, kBiasBits},
+          {span_walk::kMinZi, span_walk::kMinZi},
+          {0xfff0000000000000, 0xfff0000000000000},
+          {0x7e70000000000000, 0x7e70000000000000},
+          {999999999, 999999999, 999999999, 999999999}} {
     for (int n = 1; n <= 16; ++n) {
       const int steps = n - 1, s = steps > 1 ? steps : 1;
       const uint32_t t = uint32_t(steps * (steps - 1) / 2), k = t ? uint32_t(((1ull << 31) + t - 1) / t) : 0u;
@@ -71,6 +88,10 @@ struct TinyTable {
   }
 };
 static_assert(sizeof(TinyRow) == 48 && offsetof(TinyRow, t2) == 32);
+static_assert(offsetof(TinyTable, c) == 816 && offsetof(PerspItem, span) == 16 && sizeof(PerspItem) == 88 &&
+                  offsetof(PerspItem, n) == 8 && offsetof(PerspItem, span.second_order) == 80,
+              "asm/span_persp_a64tiny_pair.h's offsets: kTiny.c at 816; an item's n at 8, span at 16, "
+              "second_order at 80, dzi at 24; items 88 bytes apart");
 constexpr TinyTable kTiny;
 
 // One run of n = 1 .. 16 pixels from the packed position x (v 2^32 + u), steps d, dd (Run16's
@@ -225,6 +246,13 @@ SB_INLINE bool tiny_fallback(const TinySamples& r) {
   return __builtin_expect(vmaxvq_u32(r.fb) == ~0u, 0);
 }
 
+// tiny_pair_block's scalar outputs: this pair's packed positions and steps, the fallback flag.
+struct TinyPairOut {
+  uint64_t posa, posb, da, db, dda, ddb;
+  uint32_t fb;
+};
+#include "asm/span_persp_a64tiny_pair.h"
+
 }  // namespace
 
 void tiny_one_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p) {
@@ -237,14 +265,15 @@ void tiny_one_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const 
 
 // Items from it on (it is one: tiny_curve_a64), while they are such items: two at a time
 // (it[0], it[1] both, it + 1 < end), a lone one as a pair with itself (drawn once); returns
-// the first item that is not one (or end). Software-pipelined: the next pair's samples
-// (tiny_samples, computed on the current pair's items again when there is none: no read past
-// end) in the same block as this pair's steps (tiny_steps), so the in-order A53 runs the two
-// latency chains side by side; the divide fallback's test after this pair is drawn.
+// the first item that is not one (or end). Software-pipelined: one asm block
+// (asm/span_persp_a64tiny_pair.h, bench/mca_a53_tiny/gen_pair_asm.py, order searched against
+// llvm-mca) computes this pair's steps, the next pair's tests (tiny_curve_a64's, without
+// branches) and the next pair's samples, these speculatively on b + 1, b + 2 (a past end),
+// so that the in-order A53 runs the latency chains side by side (A53 persp16 26.09 -> 22.39,
+// A72 12.70 -> 11.55: bench/mca_a53_tiny/README.md); the divide fallback's test after it.
 // Page-aligned (its code's place against qemu's 4 KiB page cuts does not move with the code
-// before it); scheduled after register allocation over superblocks, without the scheduler's
-// dependence-count and last-instruction tie-breaks (A53 persp16 26.83 -> 26.19, A72 13.32 ->
-// 12.78; superblocks alone 26.66 / 12.77).
+// before it); the attributes schedule the C++ around the block (t16a's figures with the
+// C++ block: A53 26.83 -> 26.19, A72 13.32 -> 12.78).
 __attribute__((aligned(4096), optimize("sched2-use-superblocks", "no-sched-dep-count-heuristic",
                                        "no-sched-last-insn-heuristic"))) const PerspItem*
 tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
@@ -253,26 +282,21 @@ tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* tex
   const PerspItem* b = it + 1 != end && tiny_curve_a64(it[1]) ? it + 1 : it;
   TinySamples cur = tiny_samples<false>(a->span, a->n, b->span, b->n);
   if (tiny_fallback(cur)) cur = tiny_samples_div(a->span, a->n, b->span, b->n);
+  uint32x4_t s0 = cur.s0, s1 = cur.s1;
+  float64x2_t c2 = cur.c2;
   for (;;) {
-    // The next pair: xa = b + 1 if that is one (more), xb = xa + 1 if that is one too; the
-    // tests without branches (an item past end is never read: a's fields are read instead).
-    const PerspItem* xa = b + 1;
-    const bool ina = xa != end;
-    const bool more = ina & tiny_curve_a64(*(ina ? xa : a));
-    const PerspItem* xb = xa + 1;
-    const bool inb = more & (xb != end);
-    const bool two = inb & tiny_curve_a64(*(inb ? xb : a));
-    xa = more ? xa : a;
-    xb = two ? xb : xa;
-    const TinyOut o = tiny_steps(cur);
-    TinySamples nxt = tiny_samples<false>(xa->span, xa->n, xb->span, xb->n);
-    if (tiny_fallback(nxt)) nxt = tiny_samples_div(xa->span, xa->n, xb->span, xb->n);
-    draw_tiny(a->dest, a->n, texels, w, vgetq_lane_u64(o.pos, 0), vgetq_lane_u64(o.d, 0), vgetq_lane_u64(o.dd, 0));
-    if (b != a) {
-      draw_tiny(b->dest, b->n, texels, w, vgetq_lane_u64(o.pos, 1), vgetq_lane_u64(o.d, 1), vgetq_lane_u64(o.dd, 1));
+    // The next pair's tests and samples and this pair's steps: asm/span_persp_a64tiny_pair.h.
+    const PerspItem* xa;
+    const PerspItem* xb;
+    TinyPairOut o;
+    tiny_pair_block(s0, s1, c2, a, b, end, xa, xb, o);
+    if (__builtin_expect(o.fb == ~0u, 0) && xa != a) {
+      const TinySamples r = tiny_samples_div(xa->span, xa->n, xb->span, xb->n);
+      s0 = r.s0, s1 = r.s1, c2 = r.c2;
     }
-    if (!more) return b + 1;
-    cur = nxt;
+    draw_tiny(a->dest, a->n, texels, w, o.posa, o.da, o.dda);
+    if (b != a) draw_tiny(b->dest, b->n, texels, w, o.posb, o.db, o.ddb);
+    if (xa == a) return b + 1;
     a = xa, b = xb;
   }
 }

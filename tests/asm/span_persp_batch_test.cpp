@@ -861,6 +861,59 @@ TEST(AsmSpanPerspBatch, RunsOfTinySecondOrderSpansMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of 1 .. 16 px, every variant identical\n", spans);
 }
 
+// The tiny pair block (aarch64: asm/span_persp_a64tiny_pair.h) loads the samples of the two
+// items after a pair speculatively, before its tests: runs of 1 .. 5 spans of 1 .. 16 pixels
+// followed by one or two items of every other kind, some with fields that would take the
+// divide fallback or give non-finite samples (2^1010, +-inf, NaN depths, n 0, 17 .. 80, linear,
+// dzi +-0), or by the batch's end; each run's last pair then samples those items (or a), and
+// their bytes must stay untouched / the scalar's.
+TEST(AsmSpanPerspBatch, TinyRunsBeforeItemsOfEveryKindMatch) {
+  std::mt19937 rng(4242);
+  const int sw = 41, sh = 23;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 7 + 1);
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  auto tiny = [&]() {
+    PerspSpan p = pick_span(rng, sw, sh);
+    p.second_order = true;
+    if (p.dzi == 0.0) p.dzi = 1e-6;
+    return PerspItem{nullptr, 1 + int(rng() % 16), p};
+  };
+  auto other = [&](int kind) {
+    PerspItem x = tiny();
+    switch (kind) {
+      case 0: x.n = 0; break;
+      case 1: x.n = 17 + int(rng() % 64); break;
+      case 2: x.span.second_order = false; break;
+      case 3: x.span.dzi = rng() % 2 ? 0.0 : -0.0; break;
+      case 4: x.n = 17 + int(rng() % 30), x.span.zi0 = std::ldexp(1.0, 1010); break;
+      case 5: x.span.second_order = false, x.span.zi0 = rng() % 2 ? inf : -inf; break;
+      case 6: x.n = 0, x.span.zi0 = nan, x.span.uz0 = nan, x.span.px0 = inf; break;
+      case 7: x.n = 17 + int(rng() % 8), x.span.zi0 = std::ldexp(2.0 - 0x1p-52, -7); break;  // all-ones significand
+      default: break;
+    }
+    return x;
+  };
+  long spans = 0;
+  for (int run = 1; run <= 5; ++run) {
+    for (int k1 = -1; k1 < 8; ++k1) {
+      for (int k2 = -1; k2 < 8; ++k2) {
+        for (int rep = 0; rep < 6; ++rep) {
+          std::vector<PerspItem> items;
+          for (int i = 0; i < run; ++i) items.push_back(tiny());
+          if (k1 >= 0) items.push_back(other(k1));
+          if (k1 >= 0 && k2 >= 0) items.push_back(rep % 2 ? other(k2) : tiny());
+          if (k1 >= 0 && k2 >= 0 && rep % 3 == 2) items.push_back(tiny());
+          ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " run " << run << " k1 " << k1 << " k2 " << k2;
+          spans += long(items.size());
+        }
+      }
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans, tiny runs before items of every kind, every variant identical\n",
+              spans);
+}
+
 #if defined(__aarch64__) && defined(__GNUC__)
 // The paired sample block (short_samples2) against two runs of the single one
 // (short_samples1), every output bit for bit (unused samples' lanes too): both spans 17 .. 64
