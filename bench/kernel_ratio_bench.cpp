@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "asm/kernels.h"
+#include "bench/flythrough_args.h"
 #include "engine/core/log.h"
 #include "engine/host/camera_path.h"
 #include "engine/host/content.h"
@@ -34,9 +35,6 @@ using namespace sb;
 
 constexpr size_t kBlockMiB = 160;
 
-void quiet_sink(void*, LogLevel level, const char* line) {
-  if (level != LogLevel::Info) std::fprintf(stderr, "%s\n", line);
-}
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
@@ -105,44 +103,18 @@ struct Row {
   bool same_pixels;
 };
 
-std::vector<std::string> split(const char* s) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (; *s; ++s) {
-    if (*s == ',') {
-      if (!cur.empty()) out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += *s;
-    }
-  }
-  if (!cur.empty()) out.push_back(cur);
-  return out;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string markdown;
-  int frames = 300;
-  std::vector<std::string> maps = {"start", "lq_e0m1", "lq_e1m1"};
-  std::vector<std::pair<int, int>> res = {{320, 200}, {640, 480}, {1280, 720}, {1920, 1080}};
-  for (int i = 1; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--markdown=", 11) == 0) markdown = argv[i] + 11;
-    else if (std::strncmp(argv[i], "--frames=", 9) == 0) frames = std::max(1, std::atoi(argv[i] + 9));
-    else if (std::strncmp(argv[i], "--maps=", 7) == 0) maps = split(argv[i] + 7);
-    else if (std::strncmp(argv[i], "--res=", 6) == 0) {
-      res.clear();
-      for (const std::string& r : split(argv[i] + 6)) {
-        int w = 0, h = 0;
-        if (std::sscanf(r.c_str(), "%dx%d", &w, &h) == 2 && w > 0 && h > 0) res.push_back({w, h});
-      }
-    } else {
-      std::fprintf(stderr, "usage: %s [--markdown=FILE] [--frames=N] [--maps=a,b] [--res=WxH,...]\n", argv[0]);
-      return 2;
-    }
-  }
-  set_log_sink(quiet_sink, nullptr);
+  bench::FlythroughArgs args;
+  args.res = {{320, 200}, {640, 480}, {1280, 720}, {1920, 1080}};
+  if (!bench::parse_flythrough_args(argc, argv, args)) return 2;
+  const std::string& markdown = args.markdown;
+  const int frames = args.frames;
+  const std::vector<std::string>& maps = args.maps;
+  const std::vector<std::pair<int, int>>& res = args.res;
+  set_log_sink(bench::quiet_sink, nullptr);
   const char* env = std::getenv("STARBOW_QUAKE_DIR");
   const std::string quake_dir = env && *env ? env : STARBOW_QUAKE_DIR;
   const bool forced_before = simd::scalar_forced();

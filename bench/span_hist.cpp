@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "asm/kernels.h"
+#include "bench/flythrough_args.h"
 #include "engine/core/log.h"
 #include "engine/host/camera_path.h"
 #include "engine/host/content.h"
@@ -123,24 +124,7 @@ void counting_spans(const simd::PerspItem* items, int count, const uint8_t* texe
   g_tuned->surface_spans_persp(items, count, texels, width, height);
 }
 
-void quiet_sink(void*, LogLevel level, const char* line) {
-  if (level != LogLevel::Info) std::fprintf(stderr, "%s\n", line);
-}
 
-std::vector<std::string> split(const char* s) {
-  std::vector<std::string> out;
-  std::string cur;
-  for (; *s; ++s) {
-    if (*s == ',') {
-      if (!cur.empty()) out.push_back(cur);
-      cur.clear();
-    } else {
-      cur += *s;
-    }
-  }
-  if (!cur.empty()) out.push_back(cur);
-  return out;
-}
 
 // One map at one resolution: every path frame drawn once; false (with a message) when the
 // map or memory is missing.
@@ -183,26 +167,14 @@ bool run(std::vector<uint8_t>& block, const std::string& quake_dir, const std::s
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string markdown;
-  int frames = 300;
-  std::vector<std::string> maps = {"start", "lq_e0m1", "lq_e1m1"};
-  std::vector<std::pair<int, int>> res = {{320, 240}, {640, 480}, {1920, 1080}};
-  for (int i = 1; i < argc; ++i) {
-    if (std::strncmp(argv[i], "--markdown=", 11) == 0) markdown = argv[i] + 11;
-    else if (std::strncmp(argv[i], "--frames=", 9) == 0) frames = std::max(1, std::atoi(argv[i] + 9));
-    else if (std::strncmp(argv[i], "--maps=", 7) == 0) maps = split(argv[i] + 7);
-    else if (std::strncmp(argv[i], "--res=", 6) == 0) {
-      res.clear();
-      for (const std::string& r : split(argv[i] + 6)) {
-        int w = 0, h = 0;
-        if (std::sscanf(r.c_str(), "%dx%d", &w, &h) == 2 && w > 0 && h > 0) res.push_back({w, h});
-      }
-    } else {
-      std::fprintf(stderr, "usage: %s [--frames=N] [--maps=a,b] [--res=WxH,...] [--markdown=FILE]\n", argv[0]);
-      return 2;
-    }
-  }
-  set_log_sink(quiet_sink, nullptr);
+  bench::FlythroughArgs args;
+  args.res = {{320, 240}, {640, 480}, {1920, 1080}};
+  if (!bench::parse_flythrough_args(argc, argv, args)) return 2;
+  const std::string& markdown = args.markdown;
+  const int frames = args.frames;
+  const std::vector<std::string>& maps = args.maps;
+  const std::vector<std::pair<int, int>>& res = args.res;
+  set_log_sink(bench::quiet_sink, nullptr);
   const char* env = std::getenv("STARBOW_QUAKE_DIR");
   const std::string quake_dir = env && *env ? env : STARBOW_QUAKE_DIR;
   simd::force_scalar(false);
