@@ -94,23 +94,30 @@ static_assert(offsetof(TinyTable, c) == 816 && offsetof(PerspItem, span) == 16 &
               "second_order at 80, dzi at 24; items 88 bytes apart");
 constexpr TinyTable kTiny;
 
+#include "asm/span_persp_a64tinydraw.h"
+
 // One run of n = 1 .. 16 pixels from the packed position x (v 2^32 + u), steps d, dd (Run16's
-// packing): draw_last's chunks (8, 4, 2, 1 by n's bits; n = 16 as two chunks of 8).
+// packing): draw_last's chunks, as asm blocks searched against llvm-mca's A53 model
+// (asm/span_persp_a64tinydraw.h): 8 pixels when n & 8 (n = 16: twice), then the last n & 7
+// pixels in one block (draw_last's chunks of 4, 2 and 1 as separate blocks: each one or two
+// pixel chunk bound by its own latency chain; A53 persp16 22.22 -> 21.34 c/px).
 SB_INLINE void draw_tiny(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint64_t x,
                          uint64_t d, uint64_t dd) {
   TailPos p{x, d, dd};
-  auto chunk = [&](auto cc) SB_LAMBDA_INLINE {
-    constexpr int C = decltype(cc)::value;
-    uint8_t t[C];
-    p = tail_load<C, true>(t, texels, w, p);
-    tail_store<C>(dest, t);
-    dest += C;
-  };
-  if (n & 16) chunk(std::integral_constant<int, 8>{}), chunk(std::integral_constant<int, 8>{});
-  if (n & 8) chunk(std::integral_constant<int, 8>{});
-  if (n & 4) chunk(std::integral_constant<int, 4>{});
-  if (n & 2) chunk(std::integral_constant<int, 2>{});
-  if (n & 1) chunk(std::integral_constant<int, 1>{});
+  if (n & 16) tiny_chunk8(dest, texels, w, p), tiny_chunk8(dest, texels, w, p);
+  if (n & 8) tiny_chunk8(dest, texels, w, p);
+  // The last n & 7 pixels: one block each (a tree of bit tests to it).
+  if (n & 4) {
+    if (n & 2) {
+      if (n & 1) tiny_tail<7>(dest, texels, w, p); else tiny_tail<6>(dest, texels, w, p);
+    } else {
+      if (n & 1) tiny_tail<5>(dest, texels, w, p); else tiny_tail<4>(dest, texels, w, p);
+    }
+  } else if (n & 2) {
+    if (n & 1) tiny_tail<3>(dest, texels, w, p); else tiny_tail<2>(dest, texels, w, p);
+  } else if (n & 1) {
+    tiny_tail<1>(dest, texels, w, p);
+  }
 }
 
 // What tiny_samples gives for spans a (lane 0) and b (lane 1): the clamped samples as packed
@@ -274,8 +281,7 @@ void tiny_one_a64(uint8_t* dest, int n, const uint8_t* texels, int width, const 
 // Page-aligned (its code's place against qemu's 4 KiB page cuts does not move with the code
 // before it); the attributes schedule the C++ around the block (t16a's figures with the
 // C++ block: A53 26.83 -> 26.19, A72 13.32 -> 12.78).
-__attribute__((aligned(4096), optimize("sched2-use-superblocks", "no-sched-dep-count-heuristic",
-                                       "no-sched-last-insn-heuristic"))) const PerspItem*
+__attribute__((aligned(4096))) const PerspItem*
 tiny_curve_run_a64(const PerspItem* it, const PerspItem* end, const uint8_t* texels, int width) {
   const uint32_t w = uint32_t(width);
   const PerspItem* a = it;

@@ -1,0 +1,194 @@
+#!/usr/bin/env python3
+# bench/mca_a53_tinydraw/gen_chunk_asm.py: draw_tiny's chunks (asm/span_persp_a64tiny.cpp) as
+# asm statements, asm/span_persp_a64tinydraw.h:
+#   tiny_chunk8: 8 pixels, tail_load<8, true>'s recurrence (even and odd pixels in two chains:
+#     x_{k+2} = x_k + e_k, e_{k+2} = e_k + 4 dd, e_0 = 2 d + dd, e_1 = 2 d + 3 dd; the same
+#     integers modulo 2^64), each texel at (x >> 48) w + (u32(x) >> 16) (32-bit madd, as
+#     tail_load), the bytes gathered into one word by a tree of orr (little-endian), stored
+#     with a post-increment; position and step left 8 pixels on (x_8 from the even chain,
+#     d + 8 dd).
+#   tiny_tail<M>: a span's last M = 1 .. 7 pixels in one block (no outputs), stored by M's
+#     bits (4, 2, 1 bytes).
+# Usage:
+#   gen_chunk_asm.py 8 raw > c8_in.s     a block with concrete registers (t1 .. t7: the tails),
+#                                        for ../order_search.py IN.s OUT.s
+#   gen_chunk_asm.py 8 embed c8_s.s      a searched order back as the asm statement's lines
+#   gen_chunk_asm.py header bench/mca_a53_tinydraw > asm/span_persp_a64tinydraw.h
+#                                        the header from c8_s.s and t1_s.s .. t7_s.s
+import re, sys
+
+def block(C):
+    # Operands: X (position, in / out), D (step, in / out), DD, T (texels), W (width), P (dest,
+    # in / out: post-incremented); temps a0 .. a{C-1} (address then texel), h0 .. h3 (v parts),
+    # xo (odd chain), ee, eo (the two chains' increments).
+    names = ["X", "D", "DD", "T", "W", "P", "xo", "ee", "eo"] + [f"a{k}" for k in range(C)] + [f"h{k}" for k in range(4)]
+    conc = {n: f"x{i}" for i, n in enumerate(names[:6])}
+    free = [f"x{i}" for i in list(range(6, 18)) + [19, 20, 21, 22, 23]]
+    for n in names[6:]:
+        conc[n] = free.pop(0)
+
+    L = []
+
+    def op(s):
+        L.append(s)
+
+    op("add {xo}, {X}, {D}")
+    op("add {ee}, {DD}, {D}, lsl #1")
+    op("add {eo}, {ee}, {DD}, lsl #1")
+    for k in range(C):
+        p = "X" if k % 2 == 0 else "xo"
+        h = f"h{k % 4}"
+        a = f"a{k}"
+        op(f"lsr {{{h}}}, {{{p}}}, #48")
+        op(f"lsr {{{a}:w}}, {{{p}:w}}, #16")
+        op(f"madd {{{a}:w}}, {{{h}:w}}, {{W:w}}, {{{a}:w}}")
+        op(f"ldrb {{{a}:w}}, [{{T}}, {{{a}:w}}, uxtw]")
+        # advance the chain this pixel used (the last pixels' chains: the even one to x_C only)
+        if k % 2 == 0:
+            op("add {X}, {X}, {ee}")
+            if k + 2 < C:
+                op("add {ee}, {ee}, {DD}, lsl #2")
+        elif k + 2 < C:
+            op("add {xo}, {xo}, {eo}")
+            if k + 4 < C:
+                op("add {eo}, {eo}, {DD}, lsl #2")
+    op(f"add {{D}}, {{D}}, {{DD}}, lsl #{C.bit_length() - 1}")
+    # the gather tree
+    for k in range(0, C, 2):
+        op(f"orr {{a{k}:w}}, {{a{k}:w}}, {{a{k + 1}:w}}, lsl #8")
+    for k in range(0, C, 4):
+        op(f"orr {{a{k}:w}}, {{a{k}:w}}, {{a{k + 2}:w}}, lsl #16")
+    if C == 8:
+        op("orr {a0}, {a0}, {a4}, lsl #32")
+        op("str {a0}, [{P}], #8")
+    else:
+        op("str {a0:w}, [{P}], #4")
+
+    return L, conc
+
+
+
+def tail_block(m):
+    """A span's m = 1 .. 16 pixels from X, D, DD (inputs only: nothing after it; m <= 7: the
+    last n & 7 pixels after the chunks of 8): the even pixels' chain in xe, pixel k's address
+    and texel in a(k mod 8), the stores in pieces of 8 (one or two), 4, 2, 1 bytes."""
+    temps = ["xo", "xe", "ee", "eo"] + [f"a{k}" for k in range(min(m, 8))] + [f"h{k}" for k in range(min(m, 4))]
+    conc = {n: f"x{i}" for i, n in enumerate(["X", "D", "DD", "T", "W", "P"])}
+    free = [f"x{i}" for i in list(range(6, 18)) + [19, 20, 21, 22, 23]]
+    for n in temps:
+        conc[n] = free.pop(0)
+    sizes = ([8] if m >= 8 else []) + ([8] if m == 16 else []) + [c for c in (4, 2, 1) if m & c]
+    pieces, off = [], 0
+    for c in sizes:
+        pieces.append((off, c))
+        off += c
+    L = []
+    if m >= 2:
+        L.append("add {xo}, {X}, {D}")
+    if m >= 3:
+        L.append("add {ee}, {DD}, {D}, lsl #1")
+    if m >= 4:
+        L.append("add {eo}, {ee}, {DD}, lsl #1")
+    st = {8: "str", 4: "str", 2: "strh", 1: "strb"}
+    for k in range(m):
+        if k >= 2 and k % 2 == 0:
+            L.append("add {xe}, " + ("{X}" if k == 2 else "{xe}") + ", {ee}")
+            if k + 2 < m:
+                L.append("add {ee}, {ee}, {DD}, lsl #2")
+        if k >= 3 and k % 2 == 1:
+            L.append("add {xo}, {xo}, {eo}")
+            if k + 2 < m:
+                L.append("add {eo}, {eo}, {DD}, lsl #2")
+        p = "X" if k == 0 else ("xe" if k % 2 == 0 else "xo")
+        h, a = f"h{k % 4}", f"a{k % 8}"
+        L.append(f"lsr {{{h}}}, {{{p}}}, #48")
+        L.append(f"lsr {{{a}:w}}, {{{p}:w}}, #16")
+        L.append(f"madd {{{a}:w}}, {{{h}:w}}, {{W:w}}, {{{a}:w}}")
+        L.append(f"ldrb {{{a}:w}}, [{{T}}, {{{a}:w}}, uxtw]")
+        for o, c in pieces:
+            if o + c - 1 != k:
+                continue
+            r = lambda j: f"a{(o + j) % 8}"
+            for step in (1, 2, 4):
+                if step < c:
+                    for j in range(0, c, 2 * step):
+                        x = "" if step == 4 else ":w"
+                        L.append(f"orr {{{r(j)}{x}}}, {{{r(j)}{x}}}, {{{r(j + step)}{x}}}, lsl #{8 * step}")
+            x = "" if c == 8 else ":w"
+            L.append(f"{st[c]} {{{r(0)}{x}}}, [{{P}}, #{o}]" if o else f"{st[c]} {{{r(0)}{x}}}, [{{P}}]")
+    used = [t for t in temps if any("{" + t + "}" in l or "{" + t + ":w}" in l for l in L)]
+    return L, conc, used
+
+def render(line, f):
+    return re.sub(r"\{(\w+)(:w)?\}", lambda m: f(m.group(1), bool(m.group(2))), line)
+
+
+def get(C):
+    if isinstance(C, str):
+        L, conc, _ = tail_block(int(C[1:]))
+        return L, conc
+    return block(C)
+
+
+def raw(C):
+    L, conc = get(C)
+    return [render(l, lambda n, w: ("w" + conc[n][1:]) if w else conc[n]) for l in L]
+
+
+def embed(C, order_file):
+    L, conc = get(C)
+    back = {r: l for r, l in zip(raw(C), L)}
+    order = [l.strip() for l in open(order_file) if l.strip() and not l.startswith("#")]
+    assert sorted(order) == sorted(raw(C)), f"{order_file} is not a reordering of the {C}-pixel block"
+    return ['      "' + render(back[l], lambda n, w: f"%{'w' if w else 'x'}[{n}]") + '\\n"' for l in order]
+
+
+def header(d):
+    """The header from the searched orders in directory d: c8_s.s, t1_s.s .. t7_s.s."""
+    out = ["// asm/span_persp_a64tinydraw.h: generated by bench/mca_a53_tinydraw/gen_chunk_asm.py (do not",
+           "// edit; the orders: bench/mca_a53_tinydraw/*_s.s, bench/order_search.py against llvm-mca's",
+           "// Cortex-A53 model). aarch64 only, internal to asm/span_persp_a64tiny.cpp (anonymous",
+           "// namespace): draw_tiny's chunks as asm statements: tiny_chunk8 (tail_load<8, true> +",
+           "// tail_store<8>: position, step and dest 8 pixels on) and tiny_tail<M> (a span's last",
+           "// M = n & 7 pixels in one block: draw_last's chunks of 4, 2, 1 by M's bits). The same",
+           "// recurrence modulo 2^64, so the same bytes (bench/mca_a53_tinydraw/README.md).",
+           "#pragma once", ""]
+    def operands(outs, ins):
+        text = "      : " + ", ".join(outs) + "\n      : " + ", ".join(ins)
+        return text.split("\n")
+    for C in (8,):
+        temps = ["xo", "ee", "eo"] + [f"a{k}" for k in range(C)] + [f"h{k}" for k in range(4)]
+        out += [f"// {C} pixels from p stored at dest; p and dest {C} pixels on.",
+                f"SB_INLINE void tiny_chunk{C}(uint8_t* __restrict& dest, const uint8_t* texels, uint32_t w, TailPos& p) {{",
+                "  uint64_t " + ", ".join(temps) + ";",
+                "  __asm__ volatile("]
+        out += embed(C, f"{d}/c{C}_s.s")
+        out += operands(['[X] "+r"(p.x)', '[D] "+r"(p.d)', '[P] "+r"(dest)'] + [f'[{t}] "=&r"({t})' for t in temps],
+                        ['[DD] "r"(p.dd)', '[T] "r"(texels)', '[W] "r"(w)'])
+        out += ['      : "memory");', "}", ""]
+    out += ["// A span's last M = 1 .. 7 pixels (n & 7) from p at dest (nothing after: no outputs).",
+            "template <int M>",
+            "SB_INLINE void tiny_tail(uint8_t* dest, const uint8_t* texels, uint32_t w, const TailPos& p);"]
+    for m in range(1, 8):
+        _, _, used = tail_block(m)
+        out += ["template <>",
+                f"SB_INLINE void tiny_tail<{m}>(uint8_t* dest, const uint8_t* texels, uint32_t w, const TailPos& p) {{",
+                "  uint64_t " + ", ".join(used) + ";",
+                "  __asm__ volatile("]
+        out += embed(f"t{m}", f"{d}/t{m}_s.s")
+        ins = ['[X] "r"(p.x)', '[D] "r"(p.d)', '[DD] "r"(p.dd)', '[T] "r"(texels)', '[W] "r"(w)', '[P] "r"(dest)']
+        out += operands([f'[{t}] "=&r"({t})' for t in used], ins)
+        out += ['      : "memory");', "}"]
+    out += [""]
+    return out
+
+
+if __name__ == "__main__":
+    if sys.argv[1] == "header":
+        print("\n".join(header(sys.argv[2])))
+    elif sys.argv[2] == "raw":
+        C = sys.argv[1]
+        print("\n".join(raw(C if C.startswith("t") else int(C))))
+    else:
+        C = sys.argv[1]
+        print("\n".join(embed(C if C.startswith("t") else int(C), sys.argv[3])))
