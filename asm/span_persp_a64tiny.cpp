@@ -97,26 +97,34 @@ constexpr TinyTable kTiny;
 #include "asm/span_persp_a64tinydraw.h"
 
 // One run of n = 1 .. 16 pixels from the packed position x (v 2^32 + u), steps d, dd (Run16's
-// packing): draw_last's chunks, as asm blocks searched against llvm-mca's A53 model
-// (asm/span_persp_a64tinydraw.h): 8 pixels when n & 8 (n = 16: twice), then the last n & 7
-// pixels in one block (draw_last's chunks of 4, 2 and 1 as separate blocks: each one or two
-// pixel chunk bound by its own latency chain; A53 persp16 22.22 -> 21.34 c/px).
-SB_INLINE void draw_tiny(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint64_t x,
-                         uint64_t d, uint64_t dd) {
-  TailPos p{x, d, dd};
-  if (n & 16) tiny_chunk8(dest, texels, w, p), tiny_chunk8(dest, texels, w, p);
-  if (n & 8) tiny_chunk8(dest, texels, w, p);
-  // The last n & 7 pixels: one block each (a tree of bit tests to it).
+// packing): all n pixels in one asm block, tiny_tail<n> (asm/span_persp_a64tinydraw.h:
+// draw_last's chunks as straight-line code, its order searched against llvm-mca's A53 model),
+// reached by a tree of bit tests on n. draw_last's chunks as blocks of their own (one a chunk
+// of 8, 4, 2 or 1 pixels) ran each chunk's latency chain alone: A53 persp16 22.22 -> 21.34
+// with the chunk of 8 and the last n & 7 pixels as asm blocks, -> ... with one block a span.
+template <int B>
+SB_INLINE void draw_tiny_low(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const TailPos& p) {
   if (n & 4) {
     if (n & 2) {
-      if (n & 1) tiny_tail<7>(dest, texels, w, p); else tiny_tail<6>(dest, texels, w, p);
+      if (n & 1) tiny_tail<B + 7>(dest, texels, w, p); else tiny_tail<B + 6>(dest, texels, w, p);
     } else {
-      if (n & 1) tiny_tail<5>(dest, texels, w, p); else tiny_tail<4>(dest, texels, w, p);
+      if (n & 1) tiny_tail<B + 5>(dest, texels, w, p); else tiny_tail<B + 4>(dest, texels, w, p);
     }
   } else if (n & 2) {
-    if (n & 1) tiny_tail<3>(dest, texels, w, p); else tiny_tail<2>(dest, texels, w, p);
+    if (n & 1) tiny_tail<B + 3>(dest, texels, w, p); else tiny_tail<B + 2>(dest, texels, w, p);
   } else if (n & 1) {
-    tiny_tail<1>(dest, texels, w, p);
+    tiny_tail<B + 1>(dest, texels, w, p);
+  } else if constexpr (B == 8) {
+    tiny_tail<8>(dest, texels, w, p);
+  }
+}
+SB_INLINE void draw_tiny(uint8_t* __restrict dest, int n, const uint8_t* __restrict texels, uint32_t w, uint64_t x,
+                         uint64_t d, uint64_t dd) {
+  const TailPos p{x, d, dd};
+  if (n & 24) {
+    if (n & 16) tiny_tail<16>(dest, texels, w, p); else draw_tiny_low<8>(dest, n, texels, w, p);
+  } else {
+    draw_tiny_low<0>(dest, n, texels, w, p);
   }
 }
 

@@ -1,0 +1,39 @@
+add x8, x2, x1, lsl #1
+add x6, x0, x1
+lsr x16, x0, #48
+lsr w10, w0, #16
+add x9, x8, x2, lsl #1
+lsr x17, x6, #48
+lsr w11, w6, #16
+add x7, x0, x8
+add x8, x8, x2, lsl #2
+madd w10, w16, w4, w10
+add x6, x6, x9
+add x9, x9, x2, lsl #2
+lsr x19, x7, #48
+lsr w12, w7, #16
+add x7, x7, x8
+madd w11, w17, w4, w11
+lsr x20, x6, #48
+lsr w13, w6, #16
+add x6, x6, x9
+madd w12, w19, w4, w12
+madd w13, w20, w4, w13
+lsr x16, x7, #48
+lsr w14, w7, #16
+ldrb w10, [x3, w10, uxtw]
+lsr x17, x6, #48
+lsr w15, w6, #16
+ldrb w11, [x3, w11, uxtw]
+madd w14, w16, w4, w14
+ldrb w12, [x3, w12, uxtw]
+madd w15, w17, w4, w15
+ldrb w13, [x3, w13, uxtw]
+orr w10, w10, w11, lsl #8
+ldrb w14, [x3, w14, uxtw]
+ldrb w15, [x3, w15, uxtw]
+orr w12, w12, w13, lsl #8
+orr w10, w10, w12, lsl #16
+orr w14, w14, w15, lsl #8
+str w10, [x5]
+strh w14, [x5, #4]
