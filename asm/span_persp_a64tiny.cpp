@@ -101,7 +101,8 @@ constexpr TinyTable kTiny;
 // draw_last's chunks as straight-line code, its order searched against llvm-mca's A53 model),
 // reached by a tree of bit tests on n. draw_last's chunks as blocks of their own (one a chunk
 // of 8, 4, 2 or 1 pixels) ran each chunk's latency chain alone: A53 persp16 22.22 -> 21.34
-// with the chunk of 8 and the last n & 7 pixels as asm blocks, -> ... with one block a span.
+// with the chunk of 8 and the last n & 7 pixels as asm blocks, -> 21.22 with one block a span
+// (bench/mca_a53_tinydraw/README.md).
 template <int B>
 SB_INLINE void draw_tiny_low(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const TailPos& p) {
   if (n & 4) {

@@ -1,77 +1,25 @@
 #!/usr/bin/env python3
-# bench/mca_a53_tinydraw/gen_chunk_asm.py: draw_tiny's chunks (asm/span_persp_a64tiny.cpp) as
-# asm statements, asm/span_persp_a64tinydraw.h:
-#   tiny_chunk8: 8 pixels, tail_load<8, true>'s recurrence (even and odd pixels in two chains:
-#     x_{k+2} = x_k + e_k, e_{k+2} = e_k + 4 dd, e_0 = 2 d + dd, e_1 = 2 d + 3 dd; the same
-#     integers modulo 2^64), each texel at (x >> 48) w + (u32(x) >> 16) (32-bit madd, as
-#     tail_load), the bytes gathered into one word by a tree of orr (little-endian), stored
-#     with a post-increment; position and step left 8 pixels on (x_8 from the even chain,
-#     d + 8 dd).
-#   tiny_tail<M>: a span's last M = 1 .. 7 pixels in one block (no outputs), stored by M's
-#     bits (4, 2, 1 bytes).
+# bench/mca_a53_tinydraw/gen_chunk_asm.py: draw_tiny (asm/span_persp_a64tiny.cpp) as asm
+# statements, asm/span_persp_a64tinydraw.h: tiny_tail<M>, a span of M = 1 .. 16 pixels in one
+# block: tail_load's recurrence (even and odd pixels in two chains: x_{k+2} = x_k + e_k,
+# e_{k+2} = e_k + 4 dd, e_0 = 2 d + dd, e_1 = 2 d + 3 dd; the same integers modulo 2^64), each
+# texel at (x >> 48) w + (u32(x) >> 16) (32-bit madd, as tail_load), the bytes gathered by a
+# tree of orr (little-endian) into draw_last's pieces (8 bytes, twice for 16, then 4, 2, 1 by
+# M's bits), one store a piece; pixel k's address and texel in a(k mod 8), its v part in
+# h(k mod 4) (16 temporaries at most).
 # Usage:
-#   gen_chunk_asm.py 8 raw > c8_in.s     a block with concrete registers (t1 .. t7: the tails),
-#                                        for ../order_search.py IN.s OUT.s
-#   gen_chunk_asm.py 8 embed c8_s.s      a searched order back as the asm statement's lines
+#   gen_chunk_asm.py t15 raw > t15_in.s  the block with concrete registers (program order), for
+#                                        lsched.py t15_in.s > t15_ls.s (a list schedule), then
+#                                        ../order_search.py t15_ls.s t15_s.s
+#   gen_chunk_asm.py t15 embed t15_s.s   a searched order back as the asm statement's lines
 #   gen_chunk_asm.py header bench/mca_a53_tinydraw > asm/span_persp_a64tinydraw.h
-#                                        the header from c8_s.s and t1_s.s .. t7_s.s
+#                                        the header from t1_s.s .. t16_s.s
 import re, sys
 
-def block(C):
-    # Operands: X (position, in / out), D (step, in / out), DD, T (texels), W (width), P (dest,
-    # in / out: post-incremented); temps a0 .. a{C-1} (address then texel), h0 .. h3 (v parts),
-    # xo (odd chain), ee, eo (the two chains' increments).
-    names = ["X", "D", "DD", "T", "W", "P", "xo", "ee", "eo"] + [f"a{k}" for k in range(C)] + [f"h{k}" for k in range(4)]
-    conc = {n: f"x{i}" for i, n in enumerate(names[:6])}
-    free = [f"x{i}" for i in list(range(6, 18)) + [19, 20, 21, 22, 23]]
-    for n in names[6:]:
-        conc[n] = free.pop(0)
-
-    L = []
-
-    def op(s):
-        L.append(s)
-
-    op("add {xo}, {X}, {D}")
-    op("add {ee}, {DD}, {D}, lsl #1")
-    op("add {eo}, {ee}, {DD}, lsl #1")
-    for k in range(C):
-        p = "X" if k % 2 == 0 else "xo"
-        h = f"h{k % 4}"
-        a = f"a{k}"
-        op(f"lsr {{{h}}}, {{{p}}}, #48")
-        op(f"lsr {{{a}:w}}, {{{p}:w}}, #16")
-        op(f"madd {{{a}:w}}, {{{h}:w}}, {{W:w}}, {{{a}:w}}")
-        op(f"ldrb {{{a}:w}}, [{{T}}, {{{a}:w}}, uxtw]")
-        # advance the chain this pixel used (the last pixels' chains: the even one to x_C only)
-        if k % 2 == 0:
-            op("add {X}, {X}, {ee}")
-            if k + 2 < C:
-                op("add {ee}, {ee}, {DD}, lsl #2")
-        elif k + 2 < C:
-            op("add {xo}, {xo}, {eo}")
-            if k + 4 < C:
-                op("add {eo}, {eo}, {DD}, lsl #2")
-    op(f"add {{D}}, {{D}}, {{DD}}, lsl #{C.bit_length() - 1}")
-    # the gather tree
-    for k in range(0, C, 2):
-        op(f"orr {{a{k}:w}}, {{a{k}:w}}, {{a{k + 1}:w}}, lsl #8")
-    for k in range(0, C, 4):
-        op(f"orr {{a{k}:w}}, {{a{k}:w}}, {{a{k + 2}:w}}, lsl #16")
-    if C == 8:
-        op("orr {a0}, {a0}, {a4}, lsl #32")
-        op("str {a0}, [{P}], #8")
-    else:
-        op("str {a0:w}, [{P}], #4")
-
-    return L, conc
-
-
-
 def tail_block(m):
-    """A span's m = 1 .. 16 pixels from X, D, DD (inputs only: nothing after it; m <= 7: the
-    last n & 7 pixels after the chunks of 8): the even pixels' chain in xe, pixel k's address
-    and texel in a(k mod 8), the stores in pieces of 8 (one or two), 4, 2, 1 bytes."""
+    """A span's m = 1 .. 16 pixels from X, D, DD (inputs only): the even pixels' chain in xe,
+    pixel k's address and texel in a(k mod 8), the stores in pieces of 8 (one or two), 4, 2, 1
+    bytes, each right after its last texel's load (in program order)."""
     temps = ["xo", "xe", "ee", "eo"] + [f"a{k}" for k in range(min(m, 8))] + [f"h{k}" for k in range(min(m, 4))]
     conc = {n: f"x{i}" for i, n in enumerate(["X", "D", "DD", "T", "W", "P"])}
     free = [f"x{i}" for i in list(range(6, 18)) + [19, 20, 21, 22, 23]]
@@ -124,10 +72,8 @@ def render(line, f):
 
 
 def get(C):
-    if isinstance(C, str):
-        L, conc, _ = tail_block(int(C[1:]))
-        return L, conc
-    return block(C)
+    L, conc, _ = tail_block(int(C[1:]))
+    return L, conc
 
 
 def raw(C):
@@ -177,8 +123,6 @@ if __name__ == "__main__":
     if sys.argv[1] == "header":
         print("\n".join(header(sys.argv[2])))
     elif sys.argv[2] == "raw":
-        C = sys.argv[1]
-        print("\n".join(raw(C if C.startswith("t") else int(C))))
+        print("\n".join(raw(sys.argv[1])))
     else:
-        C = sys.argv[1]
-        print("\n".join(embed(C if C.startswith("t") else int(C), sys.argv[3])))
+        print("\n".join(embed(sys.argv[1], sys.argv[3])))

@@ -20,13 +20,13 @@ lsr x19, x6, #48
 lsr w13, w6, #16
 madd w13, w19, w4, w13
 ldrb w13, [x3, w13, uxtw]
+orr w10, w10, w11, lsl #8
+orr w12, w12, w13, lsl #8
+orr w10, w10, w12, lsl #16
+str w10, [x5]
 add x7, x7, x8
 lsr x15, x7, #48
 lsr w14, w7, #16
 madd w14, w15, w4, w14
 ldrb w14, [x3, w14, uxtw]
-orr w10, w10, w11, lsl #8
-orr w12, w12, w13, lsl #8
-orr w10, w10, w12, lsl #16
-str w10, [x5]
 strb w14, [x5, #4]

@@ -21,6 +21,10 @@ lsr x20, x6, #48
 lsr w13, w6, #16
 madd w13, w20, w4, w13
 ldrb w13, [x3, w13, uxtw]
+orr w10, w10, w11, lsl #8
+orr w12, w12, w13, lsl #8
+orr w10, w10, w12, lsl #16
+str w10, [x5]
 add x7, x7, x8
 lsr x16, x7, #48
 lsr w14, w7, #16
@@ -31,9 +35,5 @@ lsr x17, x6, #48
 lsr w15, w6, #16
 madd w15, w17, w4, w15
 ldrb w15, [x3, w15, uxtw]
-orr w10, w10, w11, lsl #8
-orr w12, w12, w13, lsl #8
-orr w10, w10, w12, lsl #16
-str w10, [x5]
 orr w14, w14, w15, lsl #8
 strh w14, [x5, #4]

@@ -21,6 +21,10 @@ lsr x21, x6, #48
 lsr w13, w6, #16
 madd w13, w21, w4, w13
 ldrb w13, [x3, w13, uxtw]
+orr w10, w10, w11, lsl #8
+orr w12, w12, w13, lsl #8
+orr w10, w10, w12, lsl #16
+str w10, [x5]
 add x7, x7, x8
 add x8, x8, x2, lsl #2
 lsr x17, x7, #48
@@ -32,15 +36,11 @@ lsr x19, x6, #48
 lsr w15, w6, #16
 madd w15, w19, w4, w15
 ldrb w15, [x3, w15, uxtw]
+orr w14, w14, w15, lsl #8
+strh w14, [x5, #4]
 add x7, x7, x8
 lsr x20, x7, #48
 lsr w16, w7, #16
 madd w16, w20, w4, w16
 ldrb w16, [x3, w16, uxtw]
-orr w10, w10, w11, lsl #8
-orr w12, w12, w13, lsl #8
-orr w10, w10, w12, lsl #16
-str w10, [x5]
-orr w14, w14, w15, lsl #8
-strh w14, [x5, #4]
 strb w16, [x5, #6]
