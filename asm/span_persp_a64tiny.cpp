@@ -99,10 +99,10 @@ constexpr TinyTable kTiny;
 // One run of n = 1 .. 16 pixels from the packed position x (v 2^32 + u), steps d, dd (Run16's
 // packing): all n pixels in one asm block, tiny_tail<n> (asm/span_persp_a64tinydraw.h and
 // span_persp_a64tinydraw2.h: draw_last's chunks as straight-line code, its order searched
-// against llvm-mca's A53 model), reached by a tree of bit tests on n. draw_last's chunks as blocks of their own (one a chunk
-// of 8, 4, 2 or 1 pixels) ran each chunk's latency chain alone: A53 persp16 22.22 -> 21.34
-// with the chunk of 8 and the last n & 7 pixels as asm blocks, -> 21.22 with one block a span
-// (bench/mca_a53_tinydraw/README.md).
+// against llvm-mca's A53 model), reached by a tree of bit tests on n. draw_last's chunks as
+// blocks of their own (one a chunk of 8, 4, 2 or 1 pixels) ran each chunk's latency chain
+// alone: A53 persp16 22.22 -> 21.34 with the chunk of 8 and the last n & 7 pixels as asm
+// blocks, -> 21.22 with one block a span (bench/mca_a53_tinydraw/README.md).
 template <int B>
 SB_INLINE void draw_tiny_low(uint8_t* dest, int n, const uint8_t* texels, uint32_t w, const TailPos& p) {
   if (n & 4) {
