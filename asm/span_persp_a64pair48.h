@@ -18,7 +18,7 @@
 // - then every line whose result nothing reads dropped (bench/mca_a53_few/dce.py, live out
 //   v5 v19 v9 v1 v3 v31 and the core outputs): sample 4's reciprocal steps (frecpe, frecps,
 //   the fused steps), its divide in the fallback, its [u, v] products, conversions and
-//   clamps, span a's S44 and c23 (227 -> 214 lines; its order short_samples2's),
+//   clamps, span a's S44 and c23 (227 -> 214 lines),
 // - the next pair's test for n = 17 .. 48 (n - 17 - 32 negative: #32 for #48), so the loop of
 //   these pairs goes on only while both next spans have two or three runs.
 // The divide fallback's test still covers sample 4's depth (its lanes computed for it): a
@@ -26,7 +26,11 @@
 // Outputs: outa in registers (S01 v5, S23 v19, zs01 v9, zs23 v1 (lane 0), c01 v3), outb
 // stored (S01, S23, zs01, zs23 (lane 0 meaningful), c01; S44 and c23 left unwritten), the rest
 // as short_samples2's. A53 model as two blocks (head to b.ne, tail from 2:), llvm-mca as loops:
-// 162 + 70 -> 159 + 62 cycles (A57 95 + 48 -> 82 + 40).
+// 162 + 70 -> 159 + 62 cycles (A57 95 + 48 -> 82 + 40) in short_samples2's order; then the head
+// (to b.ne 2f) searched as qemu cuts it in pairs48_a64 (bench/order_search.py, the compiler's 11
+// lines first, the page cut after 126 lines: 173 -> 166 cycles) and the tail (from 2:, with
+// the compiler's 7 lines after it: 71 -> 63, A57 43 -> 40); bench/mca_a53_p32i/s48_s.s, spliced
+// with ss_in.py (README there).
 #pragma once
 #include <cstddef>
 #include <cstdint>
@@ -202,65 +206,65 @@ SB_INLINE void short_samples48(const PerspSpan& a, int na, const PerspSpan& b, i
         "fdiv v29.2d, v3.2d, v1.2d\n\t"
         "fdiv v30.2d, v3.2d, v13.2d\n\t"
         "2:\n\t"
-        "fmul v18.2d, v18.2d, v30.d[0]\n\t"
+        "sub %w[n1], %w[n1], #17\n\t"
+        "sub %w[n0], %w[n0], #17\n\t"
         "fmul v16.2d, v16.2d, v27.d[0]\n\t"
         "fmul v22.2d, v22.2d, v29.d[0]\n\t"
+        "fmul v14.2d, v31.2d, v20.2d\n\t"
         "fadd v6.2d, v28.2d, v29.2d\n\t"
-        "fmul v24.2d, v24.2d, v29.d[1]\n\t"
-        "fadd v8.2d, v29.2d, v30.2d\n\t"
-        "fcvtzu v16.2d, v16.2d, #16\n\t"
         "fmul v2.2d, v2.2d, v28.d[0]\n\t"
-        "fcvtzu v18.2d, v18.2d, #16\n\t"
+        "fmul v24.2d, v24.2d, v29.d[1]\n\t"
+        "fcvtzu v16.2d, v16.2d, #16\n\t"
         "fadd v0.2d, v27.2d, v28.2d\n\t"
-        "fcvtzu v22.2d, v22.2d, #16\n\t"
+        "fadd v8.2d, v29.2d, v30.2d\n\t"
         "fmul v26.2d, v26.2d, v27.d[1]\n\t"
+        "fcvtzu v22.2d, v22.2d, #16\n\t"
+        "fmul v18.2d, v18.2d, v30.d[0]\n\t"
         "fcvtzu v2.2d, v2.2d, #16\n\t"
-        "uqxtn v5.2s, v16.2d\n\t"
         "fcvtzu v24.2d, v24.2d, #16\n\t"
-        "uqxtn v19.2s, v22.2d\n\t"
-        "mov v1.16b, v8.16b\n\t"
-        "fmul v23.2d, v23.2d, v28.d[1]\n\t"
-        "uqxtn2 v5.4s, v2.2d\n\t"
-        "fmul v25.2d, v25.2d, v30.d[1]\n\t"
+        "uqxtn v5.2s, v16.2d\n\t"
         "fcvtzu v26.2d, v26.2d, #16\n\t"
+        "uqxtn v19.2s, v22.2d\n\t"
+        "fmul v23.2d, v23.2d, v28.d[1]\n\t"
         "trn1 v9.2d, v0.2d, v6.2d\n\t"
-        "ld1r {v2.2d}, [x8]\n\t"
-        "fcvtzu v23.2d, v23.2d, #16\n\t"
-        "uqxtn v10.2s, v26.2d\n\t"
+        "fmul v25.2d, v25.2d, v30.d[1]\n\t"
+        "uqxtn2 v5.4s, v2.2d\n\t"
+        "fcvtzu v18.2d, v18.2d, #16\n\t"
         "uqxtn v11.2s, v24.2d\n\t"
+        "uqxtn v10.2s, v26.2d\n\t"
+        "fcvtzu v23.2d, v23.2d, #16\n\t"
         "fcvtzu v25.2d, v25.2d, #16\n\t"
-        "dup v22.2d, v8.d[1]\n\t"
+        "trn2 v4.2d, v0.2d, v6.2d\n\t"
         "uqxtn2 v19.4s, v18.2d\n\t"
+        "ld1r {v2.2d}, [x8]\n\t"
+        "tst %[z0], #0x7fffffffffffffff\n\t"
         "uqxtn2 v10.4s, v23.2d\n\t"
         "ld1r {v18.2d}, [x13]\n\t"
-        "fmul v14.2d, v31.2d, v20.2d\n\t"
         "uqxtn2 v11.4s, v25.2d\n\t"
+        "mov v1.16b, v8.16b\n\t"
         "fmov v20.2d, #0.5\n\t"
         "umin v19.4s, v19.4s, v2.4s\n\t"
-        "trn2 v4.2d, v0.2d, v6.2d\n\t"
         "umin v10.4s, v10.4s, v18.4s\n\t"
+        "umin v5.4s, v5.4s, v2.4s\n\t"
         "umin v11.4s, v11.4s, v18.4s\n\t"
-        "fmul v31.2d, v31.2d, v20.2d\n\t"
         "fmul v27.2d, v4.2d, v14.d[1]\n\t"
         "fmul v3.2d, v9.2d, v14.d[0]\n\t"
+        "fmul v31.2d, v31.2d, v20.2d\n\t"
+        "dup v22.2d, v8.d[1]\n\t"
         "stp q10, q11, [%[out], #0]\n\t"
-        "tst %[z0], #0x7fffffffffffffff\n\t"
         "and %w[fl], %w[fl], %w[s1]\n\t"
-        "sub %w[n1], %w[n1], #17\n\t"
         "str q4, [%[out], #48]\n\t"
-        "sub %w[n0], %w[n0], #17\n\t"
-        "stp q22, q27, [%[out], #64]\n\t"
         "sub %[n1], %[n1], #32\n\t"
         "sub %[n0], %[n0], #32\n\t"
         "lsl %[z1], %[z1], #1\n\t"
-        "and %[n0], %[n0], %[n1]\n\t"
         "ccmp %[z1], #0, #4, ne\n\t"
-        "lsr %[n0], %[n0], #63\n\t"
         "and %w[fl], %w[fl], %w[h]\n\t"
+        "and %[n0], %[n0], %[n1]\n\t"
+        "lsr %[n0], %[n0], #63\n\t"
         "and %w[fl], %w[fl], %w[n0]\n\t"
-        "add %[n1], %[it], #176\n\t"
         "ccmp %w[fl], #0, #4, ne\n\t"
-        "umin v5.4s, v5.4s, v2.4s\n\t"
+        "stp q22, q27, [%[out], #64]\n\t"
+        "add %[n1], %[it], #176\n\t"
         "str q31, %[zb]\n\t"
         "csel %[fl], %[n1], xzr, ne"
 // END short_samples48

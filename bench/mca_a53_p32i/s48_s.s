@@ -151,64 +151,64 @@ fdiv v28.2d, v3.2d, v11.2d
 fdiv v29.2d, v3.2d, v1.2d
 fdiv v30.2d, v3.2d, v13.2d
 2:
-fmul v18.2d, v18.2d, v30.d[0]
+sub w3, w3, #17
+sub w2, w2, #17
 fmul v16.2d, v16.2d, v27.d[0]
 fmul v22.2d, v22.2d, v29.d[0]
+fmul v14.2d, v31.2d, v20.2d
 fadd v6.2d, v28.2d, v29.2d
-fmul v24.2d, v24.2d, v29.d[1]
-fadd v8.2d, v29.2d, v30.2d
-fcvtzu v16.2d, v16.2d, #16
 fmul v2.2d, v2.2d, v28.d[0]
-fcvtzu v18.2d, v18.2d, #16
+fmul v24.2d, v24.2d, v29.d[1]
+fcvtzu v16.2d, v16.2d, #16
 fadd v0.2d, v27.2d, v28.2d
-fcvtzu v22.2d, v22.2d, #16
+fadd v8.2d, v29.2d, v30.2d
 fmul v26.2d, v26.2d, v27.d[1]
+fcvtzu v22.2d, v22.2d, #16
+fmul v18.2d, v18.2d, v30.d[0]
 fcvtzu v2.2d, v2.2d, #16
-uqxtn v5.2s, v16.2d
 fcvtzu v24.2d, v24.2d, #16
-uqxtn v19.2s, v22.2d
-mov v1.16b, v8.16b
-fmul v23.2d, v23.2d, v28.d[1]
-uqxtn2 v5.4s, v2.2d
-fmul v25.2d, v25.2d, v30.d[1]
+uqxtn v5.2s, v16.2d
 fcvtzu v26.2d, v26.2d, #16
+uqxtn v19.2s, v22.2d
+fmul v23.2d, v23.2d, v28.d[1]
 trn1 v9.2d, v0.2d, v6.2d
-ld1r {v2.2d}, [x8]
-fcvtzu v23.2d, v23.2d, #16
-uqxtn v10.2s, v26.2d
+fmul v25.2d, v25.2d, v30.d[1]
+uqxtn2 v5.4s, v2.2d
+fcvtzu v18.2d, v18.2d, #16
 uqxtn v11.2s, v24.2d
+uqxtn v10.2s, v26.2d
+fcvtzu v23.2d, v23.2d, #16
 fcvtzu v25.2d, v25.2d, #16
-dup v22.2d, v8.d[1]
+trn2 v4.2d, v0.2d, v6.2d
 uqxtn2 v19.4s, v18.2d
+ld1r {v2.2d}, [x8]
+tst x5, #0x7fffffffffffffff
 uqxtn2 v10.4s, v23.2d
 ld1r {v18.2d}, [x13]
-fmul v14.2d, v31.2d, v20.2d
 uqxtn2 v11.4s, v25.2d
+mov v1.16b, v8.16b
 fmov v20.2d, #0.5
 umin v19.4s, v19.4s, v2.4s
-trn2 v4.2d, v0.2d, v6.2d
 umin v10.4s, v10.4s, v18.4s
+umin v5.4s, v5.4s, v2.4s
 umin v11.4s, v11.4s, v18.4s
-fmul v31.2d, v31.2d, v20.2d
 fmul v27.2d, v4.2d, v14.d[1]
 fmul v3.2d, v9.2d, v14.d[0]
+fmul v31.2d, v31.2d, v20.2d
+dup v22.2d, v8.d[1]
 stp q10, q11, [x21, #0]
-tst x5, #0x7fffffffffffffff
 and w28, w28, w4
-sub w3, w3, #17
 str q4, [x21, #48]
-sub w2, w2, #17
-stp q22, q27, [x21, #64]
 sub x3, x3, #32
 sub x2, x2, #32
 lsl x16, x16, #1
-and x2, x2, x3
 ccmp x16, #0, #4, ne
-lsr x2, x2, #63
 and w28, w28, w1
+and x2, x2, x3
+lsr x2, x2, #63
 and w28, w28, w2
-add x3, x25, #176
 ccmp w28, #0, #4, ne
-umin v5.4s, v5.4s, v2.4s
+stp q22, q27, [x21, #64]
+add x3, x25, #176
 str q31, [x29]
 csel x28, x3, xzr, ne
