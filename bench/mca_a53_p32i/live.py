@@ -1,3 +1,7 @@
+#!/usr/bin/env python3
+# bench/mca_a53_p32i/live.py BLOCK.s ..: the core (x) and vector (v) registers live along each
+# block (bench/order_search.py's syntax; live out x23 x24 x25): the peak and the peak of each
+# tenth of the block (why two span blocks' vector parts do not fit side by side: README.md).
 import sys
 sys.path.insert(0, '/work/wt-p32i/bench')
 from order_search import parse

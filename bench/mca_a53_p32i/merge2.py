@@ -5,7 +5,7 @@
 # allocated again on the zipped order. For the paired second-order spans (span a three runs,
 # span b two runs): each block alone is latency-bound, the other's instructions fill its gaps.
 #
-#   merge2.py A.s B.s OUT.s --bin=ALIASES [--bias=K] [--free=N]
+#   merge2.py A.s B.s OUT.s [--bias=K] [--free=N]   (--free: registers B leaves to A)
 #
 # A's and B's registers: A keeps its live-in registers (PIN_A); B's live-ins that A shares
 # (SHARED) are A's values; B's other live-ins get registers of their own (printed). Live-out:
