@@ -73,7 +73,9 @@ constexpr double kOneE9 = 1e9;  // last_steps' |ddf| < 1e9 range
 // span's dzi). width: an int's value (int64_t: the single-span entry sign-extends it in its
 // test's block, so the steps block takes it without a sxtw of its own).
 // kLikely4 (persp_short_curve<true>, the single-span entry): runs == 4 as the likely branch.
-template <bool kCurve, bool kLikely4 = false>
+// kMax3 (the batch loop's pairs of 17 .. 48 px spans, short_samples48): runs is 2 or 3 (the
+// four-run path folds away; S44 and c23 are not read).
+template <bool kCurve, bool kLikely4 = false, bool kMax3 = false>
 SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texels, int64_t width, double zh,
                           int32x4_t S01, int32x4_t S23, int32x4_t S44, float64x2_t zs01, float64x2_t zs23,
                           float64x2_t c01, float64x2_t c23) {
@@ -273,7 +275,7 @@ SB_INLINE void short_rest(uint8_t* dest, int runs, int last, const uint8_t* texe
     }
   };
   // Four runs first: of the short spans, those hold the most pixels (a branch less for them).
-  if (kLikely4 ? __builtin_expect(runs == 4, 1) : runs == 4) {
+  if (!kMax3 && (kLikely4 ? __builtin_expect(runs == 4, 1) : runs == 4)) {
     rest(std::integral_constant<int, 3>{});
   } else {
     // S01, S23 kept in v5, v19 (where the pair block leaves span a's and steps_k3v_pass takes

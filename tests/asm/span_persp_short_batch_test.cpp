@@ -432,3 +432,71 @@ TEST(AsmSpanPerspBatch, TinySpanDrawsMatchForEveryLength) {
   }
   std::printf("[ asm      ] span_persp batch: %ld spans, tiny draws of every length, every variant identical\n", spans);
 }
+
+// Batches starting with pairs of second-order spans of 17 .. 48 pixels (aarch64: pairs48_a64,
+// asm/span_persp_a64pair48.h, taken at a batch's start when four such lengths come first; the
+// samples block without sample 4): every length 17 .. 48 as span a and as span b of the first
+// pair (every last-run length of two- and three-run spans in either place), then a second
+// pair of such lengths, then what ends the chain or goes on: a third pair, a 49 .. 64 px span
+// (the four-run pairs' loop), a 1 .. 16 px one, a linear one, dzi +-0, n 0, or the batch's end;
+// the gradients pick_span's (clamped u / v, steep, behind the eye, non-finite or huge values,
+// the reciprocal's divide fallback in either span) with u or v pushed past the surface's edges
+// in some, second order with dzi != 0 in the pairs; each span between guard bytes.
+TEST(AsmSpanPerspBatch, PairsOf17To48PxSpansAtABatchStartMatchForEveryLengthPair) {
+  std::mt19937 rng(4848);
+  const int sw = 61, sh = 37;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 37 + 11);
+  auto span = [&](int n) {
+    PerspSpan p = pick_span(rng, sw, sh);
+    p.second_order = true;
+    if (p.dzi == 0.0) p.dzi = rng() % 2 ? 2e-7 : -5e-6;
+    switch (rng() % 8) {
+      case 0: p.uz0 *= 1e3, p.duz *= 1e3; break;                      // u past umax
+      case 1: p.vz0 = -std::fabs(p.vz0) * 4.0; break;                 // v below 0
+      case 2: p.duz = -p.duz * 300.0, p.dvz = p.dvz * 300.0; break;   // across the clamps
+      case 3: p.dzi *= 1e4; break;                                    // steep
+      default: break;
+    }
+    return PerspItem{nullptr, n, p};
+  };
+  auto mid = [&]() { return 17 + int(rng() % 32); };
+  long spans = 0;
+  for (int na = 17; na <= 48; ++na) {
+    for (int nb = 17; nb <= 48; ++nb) {
+      for (int k = 0; k < 3; ++k) {
+        std::vector<PerspItem> items;
+        items.push_back(span(na));
+        items.push_back(span(nb));
+        items.push_back(span(mid()));
+        items.push_back(span(mid()));
+        switch ((na + nb + k) % 8) {
+          case 0: items.push_back(span(mid())), items.push_back(span(mid())); break;  // a third pair
+          case 1: {  // a 49 .. 64 px span as a or b of the next pair
+            const bool first = rng() % 2;
+            items.push_back(span(first ? 49 + int(rng() % 16) : mid()));
+            items.push_back(span(first ? mid() : 49 + int(rng() % 16)));
+            break;
+          }
+          case 2: items.push_back(span(1 + int(rng() % 16))); break;
+          case 3: {  // linear, or dzi +-0
+            PerspItem x = span(mid());
+            if (rng() % 2) {
+              x.span.second_order = false;
+            } else {
+              x.span.dzi = rng() % 2 ? 0.0 : -0.0;
+            }
+            items.push_back(x), items.push_back(span(mid()));
+            break;
+          }
+          case 4: items.push_back(span(0)), items.push_back(span(mid())); break;
+          case 5: items.push_back(span(mid())); break;  // a lone one after the pairs
+          default: break;  // the batch's end
+        }
+        ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " na " << na << " nb " << nb << " k " << k;
+        spans += long(items.size());
+      }
+    }
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans from pairs of 17 .. 48 px, every variant identical\n", spans);
+}
