@@ -151,6 +151,11 @@ void lit_span_prepare(LitSpanSource& src, int grid_count, uint32_t* wide) {
   src.toff_mod = uint32_t(pos_mod(src.toff, src.tex_height));
   src.s_recip = ((uint64_t(1) << 32) + uint64_t(src.tex_width) - 1) / uint64_t(src.tex_width);
   src.t_recip = ((uint64_t(1) << 32) + uint64_t(src.tex_height) - 1) / uint64_t(src.tex_height);
+  const uint32_t wrap[5] = {src.soff_mod, src.toff_mod, uint32_t(src.tex_width - 1), uint32_t(src.tex_height - 1),
+                            uint32_t(src.tex_width)};
+  for (int i = 0; i < 8; ++i) src.wrap16[i] = i < 5 ? uint16_t(wrap[i]) : 0;
+  const bool pow2 = (src.tex_width & (src.tex_width - 1)) == 0 && (src.tex_height & (src.tex_height - 1)) == 0;
+  src.wrap16[5] = pow2 && src.tex_width * src.tex_height <= 65536 ? 1 : 0;
   src.prepared = true;
 }
 
