@@ -5,7 +5,8 @@
 # order it for the Cortex-A53 model (README.md).
 #
 # Each group of 8 pixels takes its light from two cells: A, its first pixel's, and B, its
-# last pixel's (the same cell mostly); a lane uses B when its cell differs from A's. That is
+# last pixel's; a lane uses B when its cell differs from A's. When both groups lie in one
+# cell each (their first and last pixels' cells agree) the block skips cells B (branch to 1:). That is
 # exact when every pixel of the group is in A or B: the positions are monotonic within the
 # group (the steps keep their sign: the first and last steps' signs agree) and the cells
 # differ by at most one column or one row, not both. Otherwise the block flags the group
@@ -51,19 +52,6 @@ e("uzp2 v7.8h, v26.8h, v27.8h")
 e("uzp2 v16.8h, v28.8h, v29.8h")
 e("uzp2 v17.8h, v30.8h, v31.8h")
 e("ldp q30, q31, [x%tab, #128]")      # B - 1, log B (u16 lanes)
-# lanes whose cell differs from the group's first pixel's: (U ^ U_0) | (V ^ V_0) > B - 1
-e("dup v18.8h, v6.h[0]")
-e("dup v19.8h, v16.h[0]")
-e("dup v20.8h, v7.h[0]")
-e("dup v21.8h, v17.h[0]")
-e("eor v18.16b, v18.16b, v6.16b")
-e("eor v19.16b, v19.16b, v16.16b")
-e("eor v20.16b, v20.16b, v7.16b")
-e("eor v21.16b, v21.16b, v17.16b")
-e("orr v18.16b, v18.16b, v19.16b")
-e("orr v20.16b, v20.16b, v21.16b")
-e("cmhi v24.8h, v18.8h, v30.8h")     # group a: lanes in cell B
-e("cmhi v25.8h, v20.8h, v30.8h")     # group b
 # ---------------------------------------------------------------- NEON: texel indices
 # ((V + to) & tmask) * tex_width + ((U + so) & smask) in 16 bits (textures of at most 2^16
 # texels only)
@@ -121,17 +109,14 @@ def track(c, d, dd):
     e(f"eor w%{c}sb, w%{c}sb, w%{c}d8")
 
 
-track("u", "du", "ddu")
-track("v", "dv", "ddv")
-e("orr w%sa, w%usa, w%vsa")
-e("orr w%sb, w%usb, w%vsb")
-
-
-def cell(g, pu, pv, cvec, acc0, acc1):
-    """Corners of the cell of (pu, pv): C = [cx, cy, dd, 0] (16-bit) in d{cvec}, B^2 g00 in
-    v{acc0}, v{acc1}; leaves gx, gy in %{g}x, %{g}y."""
+def cellxy(g, pu, pv):
     e(f"lsr w%{g}x, w%{pu}, w%l16")
     e(f"lsr w%{g}y, w%{pv}, w%l16")
+
+
+def cell(g, cvec, acc0, acc1):
+    """Corners of the cell (%{g}x, %{g}y): C = [cx, cy, dd, 0] (16-bit) in d{cvec},
+    B^2 g00 in v{acc0}, v{acc1}."""
     e(f"madd x%{g}p, x%{g}y, x9, x8")
     e(f"add x%{g}p, x%{g}p, x%{g}x, lsl #1")
     e(f"ldrh w%{g}00, [x%{g}p]")
@@ -151,68 +136,117 @@ def cell(g, pu, pv, cvec, acc0, acc1):
     e(f"dup v{acc1}.4s, w%{g}00")
 
 
-def test(a, b, sign, out):
-    """out = nonzero when cells a, b differ by more than one step or in both axes, or the
-    group's steps change sign (bit 31 of sign)."""
+def test(a, b, out):
+    """out |= nonzero when cells a, b differ by more than one step or in both axes."""
     e(f"sub w%{out}dx, w%{b}x, w%{a}x")
     e(f"sub w%{out}dy, w%{b}y, w%{a}y")
     e(f"add w%{out}ax, w%{out}dx, #1")
     e(f"add w%{out}ay, w%{out}dy, #1")
     e(f"cmp w%{out}ax, #2")
-    e(f"cset w%{out}, hi")
+    e(f"cset w%{out}t, hi")
     e(f"cmp w%{out}ay, #2")
-    e(f"cinc w%{out}, w%{out}, hi")
+    e(f"cinc w%{out}t, w%{out}t, hi")
     e(f"cmp w%{out}dx, #0")
     e(f"ccmp w%{out}dy, #0, #4, ne")
-    e(f"cinc w%{out}, w%{out}, ne")
-    e(f"orr w%{out}, w%{out}, w%{sign}, lsr #31")
+    e(f"cinc w%{out}t, w%{out}t, ne")
+    e(f"orr w%{out}, w%{out}, w%{out}t")
 
 
-cell("aa", "u", "v", 6, 16, 17)       # group a, cell A (pixel 0)
-cell("ab", "u7", "v7", 0, 26, 27)     # group a, cell B (pixel 7)
-test("aa", "ab", "sa", "fa")
-cell("ba", "u8", "v8", 7, 1, 3)       # group b, cell A (pixel 8)
-cell("bb", "u15", "v15", 2, 28, 29)   # group b, cell B (pixel 15)
-test("ba", "bb", "sb", "fb")
-# ---------------------------------------------------------------- NEON: light
-# num = B^2 g00 + B fx cx + B fy cy + fx fy dd per cell, then (num >> S + 8) << 8 of the
-# lane's cell (16-bit)
-for acc0, acc1, c, bx, by, xy in ((16, 17, 6, 18, 19, 5), (26, 27, 0, 18, 19, 5),
-                                  (1, 3, 7, 20, 21, 30), (28, 29, 2, 20, 21, 30)):
+def light(acc0, acc1, c, bx, by, xy):
+    """num = B^2 g00 + B fx cx + B fy cy + fx fy dd (32-bit lanes) from the cell in d{c}."""
     e(f"smlal v{acc0}.4s, v{bx}.4h, v{c}.h[0]")
     e(f"smlal2 v{acc1}.4s, v{bx}.8h, v{c}.h[0]")
     e(f"smlal v{acc0}.4s, v{by}.4h, v{c}.h[1]")
     e(f"smlal2 v{acc1}.4s, v{by}.8h, v{c}.h[1]")
     e(f"smlal v{acc0}.4s, v{xy}.4h, v{c}.h[2]")
     e(f"smlal2 v{acc1}.4s, v{xy}.8h, v{c}.h[2]")
-for r in (16, 17, 26, 27, 1, 3, 28, 29):
+
+
+track("u", "du", "ddu")
+track("v", "dv", "ddv")
+# a step changing sign within a group: flag it (the caller draws it again)
+e("orr w%fa, w%usa, w%vsa")
+e("orr w%fb, w%usb, w%vsb")
+e("lsr w%fa, w%fa, #31")
+e("lsr w%fb, w%fb, #31")
+# any group not in one cell (its first and last pixels' cells differ)?
+e("eor w%x1, w%u, w%u7")
+e("eor w%x2, w%v, w%v7")
+e("eor w%x3, w%u8, w%u15")
+e("eor w%x4, w%v8, w%v15")
+e("orr w%x1, w%x1, w%x2")
+e("orr w%x3, w%x3, w%x4")
+e("orr w%x1, w%x1, w%x3")
+e("lsr w%nb, w%x1, w%l16")
+cellxy("aa", "u", "v")                # group a, cell A (pixel 0), B (pixel 7)
+cellxy("ab", "u7", "v7")
+cellxy("ba", "u8", "v8")              # group b, cell A (pixel 8), B (pixel 15)
+cellxy("bb", "u15", "v15")
+cell("aa", 0, 26, 27)
+cell("ba", 2, 28, 29)
+# ---------------------------------------------------------------- NEON: light of cells A
+# num = B^2 g00 + B fx cx + B fy cy + fx fy dd, then (num >> S + 8) (16-bit): group a in v26,
+# group b in v27
+for acc0, acc1, c, bx, by, xy in ((26, 27, 0, 18, 19, 5), (28, 29, 2, 20, 21, 30)):
+    light(acc0, acc1, c, bx, by, xy)
+for r in (26, 27, 28, 29):
     e(f"ushl v{r}.4s, v{r}.4s, v31.4s")
-e("uzp1 v16.8h, v16.8h, v17.8h")      # group a, cell A
-e("uzp1 v26.8h, v26.8h, v27.8h")      # group a, cell B
-e("uzp1 v1.8h, v1.8h, v3.8h")
-e("uzp1 v28.8h, v28.8h, v29.8h")
-e("bsl v24.16b, v26.16b, v16.16b")
-e("bsl v25.16b, v28.16b, v1.16b")
-e("shl v24.8h, v24.8h, #8")
-e("shl v25.8h, v25.8h, #8")
+e("uzp1 v26.8h, v26.8h, v27.8h")
+e("uzp1 v27.8h, v28.8h, v29.8h")
+e("cbz w%nb, 1f")
+# ---------------------------------------------------------------- cells B (groups that cross)
+cell("ab", 1, 22, 23)
+cell("bb", 3, 24, 25)
+test("aa", "ab", "fa")
+test("ba", "bb", "fb")
+for acc0, acc1, c, bx, by, xy in ((22, 23, 1, 18, 19, 5), (24, 25, 3, 20, 21, 30)):
+    light(acc0, acc1, c, bx, by, xy)
+for r in (22, 23, 24, 25):
+    e(f"ushl v{r}.4s, v{r}.4s, v31.4s")
+e("uzp1 v22.8h, v22.8h, v23.8h")
+e("uzp1 v24.8h, v24.8h, v25.8h")
+# lanes whose cell differs from the group's first pixel's: (U ^ U_0) | (V ^ V_0) > B - 1
+e("ldr q29, [x%tab, #128]")           # B - 1
+e("dup v0.8h, v6.h[0]")
+e("dup v2.8h, v16.h[0]")
+e("eor v0.16b, v0.16b, v6.16b")
+e("eor v2.16b, v2.16b, v16.16b")
+e("orr v0.16b, v0.16b, v2.16b")
+e("cmhi v0.8h, v0.8h, v29.8h")
+e("dup v4.8h, v7.h[0]")
+e("dup v2.8h, v17.h[0]")
+e("eor v4.16b, v4.16b, v7.16b")
+e("eor v2.16b, v2.16b, v17.16b")
+e("orr v4.16b, v4.16b, v2.16b")
+e("cmhi v4.8h, v4.8h, v29.8h")
+e("bit v26.16b, v22.16b, v0.16b")
+e("bit v27.16b, v24.16b, v4.16b")
+e("1:")
+e("shl v26.8h, v26.8h, #8")
+e("shl v27.8h, v27.8h, #8")
 e("add x%lp, x%fr, #32")                # the light's loads depend on %lp, as above
-e("st1 {v24.8h, v25.8h}, [x%lp], #32")
+e("st1 {v26.8h, v27.8h}, [x%lp], #32")
 
 
 # ---------------------------------------------------------------- core: pixels
 def pixels(g, base):
-    """8 pixels: texel, then colormap[(num >> S + 8) << 8 + texel]; one 64-bit word."""
+    """8 pixels: texel, then colormap[(num >> S + 8) << 8 + texel]; one 64-bit word. The
+    indices and the light come 4 a load (ldr x: one load-unit cycle, ldp w two)."""
     for i in range(2):
-        e(f"ldp w%{g}w{2 * i}, w%{g}w{2 * i + 1}, [x%tp, #{base - 32 + 8 * i}]")
-        e(f"ldp w%{g}s{2 * i}, w%{g}s{2 * i + 1}, [x%lp, #{base - 32 + 8 * i}]")
+        e(f"ldr x%{g}w{i}, [x%tp, #{base - 32 + 8 * i}]")
+        e(f"ldr x%{g}s{i}, [x%lp, #{base - 32 + 8 * i}]")
     for j in range(8):
-        w = f"%{g}w{j // 2}"
-        e(f"and w%{g}t{j}, w{w}, #0xffff" if j % 2 == 0 else f"lsr w%{g}t{j}, w{w}, #16")
+        w = f"%{g}w{j // 4}"
+        e((f"and w%{g}t{j}, w{w}, #0xffff", f"lsr w%{g}t{j}, w{w}, #16", f"ubfx x%{g}t{j}, x{w}, #32, #16",
+           f"lsr x%{g}t{j}, x{w}, #48")[j % 4])
     for j in range(8):
         e(f"ldrb w%{g}t{j}, [x6, x%{g}t{j}]")
     for j in range(8):
-        s = f"%{g}s{j // 2}"
-        e(f"add w%{g}t{j}, w%{g}t{j}, w{s}, uxth" if j % 2 == 0 else f"add w%{g}t{j}, w%{g}t{j}, w{s}, lsr #16")
+        s = f"%{g}s{j // 4}"
+        if j % 4 == 2:
+            e(f"ubfx x%{g}h{j}, x{s}, #32, #16")
+        e((f"add w%{g}t{j}, w%{g}t{j}, w{s}, uxth", f"add w%{g}t{j}, w%{g}t{j}, w{s}, lsr #16",
+           f"add w%{g}t{j}, w%{g}t{j}, w%{g}h{j}", f"add x%{g}t{j}, x%{g}t{j}, x{s}, lsr #48")[j % 4])
     for j in range(8):
         e(f"ldrb w%{g}t{j}, [x7, x%{g}t{j}]")
     e(f"orr x%{g}t0, x%{g}t0, x%{g}t1, lsl #8")

@@ -35,18 +35,6 @@ uzp2 v7.8h, v26.8h, v27.8h
 uzp2 v16.8h, v28.8h, v29.8h
 uzp2 v17.8h, v30.8h, v31.8h
 ldp q30, q31, [x12, #128]
-dup v18.8h, v6.h[0]
-dup v19.8h, v16.h[0]
-dup v20.8h, v7.h[0]
-dup v21.8h, v17.h[0]
-eor v18.16b, v18.16b, v6.16b
-eor v19.16b, v19.16b, v16.16b
-eor v20.16b, v20.16b, v7.16b
-eor v21.16b, v21.16b, v17.16b
-orr v18.16b, v18.16b, v19.16b
-orr v20.16b, v20.16b, v21.16b
-cmhi v24.8h, v18.8h, v30.8h
-cmhi v25.8h, v20.8h, v30.8h
 add x13, x11, #64
 ld4r {v0.8h, v1.8h, v2.8h, v3.8h}, [x13]
 ldr q4, [x11, #64]
@@ -94,246 +82,275 @@ add w27, w5, w5, lsl #1
 add w28, w3, w27, lsl #1
 eor w28, w28, w3
 add w13, w3, w27
-lsl w12, w13, #3
-sub w12, w12, w13
-add w12, w1, w12
-add w20, w3, w5, lsl #3
-sub w4, w20, w5
-add w4, w12, w4
-add w24, w20, w27
-lsl w17, w24, #3
-sub w17, w17, w24
-add w17, w4, w17
-add w22, w20, w27, lsl #1
-eor w22, w22, w20
-orr w13, w19, w28
-orr w5, w26, w22
-lsr w24, w0, w15
-lsr w27, w1, w15
-madd x20, x27, x9, x8
-add x20, x20, x24, lsl #1
-ldrh w19, [x20]
-ldrh w28, [x20, #2]
-add x20, x20, x9
-ldrh w26, [x20]
-ldrh w22, [x20, #2]
-sub w22, w22, w28
-sub w28, w28, w19
-sub w26, w26, w19
-sub w22, w22, w26
-lsl w19, w19, w16
-bfi w28, w26, #16, #16
-bfi x28, x22, #32, #16
-fmov d6, x28
-dup v16.4s, w19
-dup v17.4s, w19
-lsr w0, w21, w15
-lsr w1, w12, w15
-madd x20, x1, x9, x8
-add x20, x20, x0, lsl #1
-ldrh w26, [x20]
-ldrh w22, [x20, #2]
-add x20, x20, x9
-ldrh w28, [x20]
-ldrh w19, [x20, #2]
-sub w19, w19, w22
-sub w22, w22, w26
-sub w28, w28, w26
-sub w19, w19, w28
-lsl w26, w26, w16
-bfi w22, w28, #16, #16
-bfi x22, x19, #32, #16
-fmov d0, x22
-dup v26.4s, w26
-dup v27.4s, w26
-sub w21, w0, w24
-sub w12, w1, w27
-add w20, w21, #1
-add w28, w12, #1
-cmp w20, #2
-cset w2, hi
-cmp w28, #2
-cinc w2, w2, hi
-cmp w21, #0
-ccmp w12, #0, #4, ne
-cinc w2, w2, ne
-orr w2, w2, w13, lsr #31
-lsr w19, w23, w15
-lsr w22, w4, w15
-madd x26, x22, x9, x8
-add x26, x26, x19, lsl #1
-ldrh w0, [x26]
-ldrh w24, [x26, #2]
-add x26, x26, x9
-ldrh w1, [x26]
-ldrh w27, [x26, #2]
-sub w27, w27, w24
-sub w24, w24, w0
-sub w1, w1, w0
-sub w27, w27, w1
-lsl w0, w0, w16
-bfi w24, w1, #16, #16
-bfi x24, x27, #32, #16
-fmov d7, x24
-dup v1.4s, w0
-dup v3.4s, w0
-lsr w20, w25, w15
-lsr w28, w17, w15
-madd x21, x28, x9, x8
-add x21, x21, x20, lsl #1
-ldrh w12, [x21]
-ldrh w13, [x21, #2]
-add x21, x21, x9
-ldrh w23, [x21]
-ldrh w4, [x21, #2]
-sub w4, w4, w13
-sub w13, w13, w12
-sub w23, w23, w12
-sub w4, w4, w23
-lsl w12, w12, w16
-bfi w13, w23, #16, #16
-bfi x13, x4, #32, #16
-fmov d2, x13
-dup v28.4s, w12
-dup v29.4s, w12
-sub w26, w20, w19
-sub w1, w28, w22
-add w27, w26, #1
-add w24, w1, #1
-cmp w27, #2
-cset w3, hi
-cmp w24, #2
-cinc w3, w3, hi
-cmp w26, #0
-ccmp w1, #0, #4, ne
-cinc w3, w3, ne
-orr w3, w3, w5, lsr #31
-smlal v16.4s, v18.4h, v6.h[0]
-smlal2 v17.4s, v18.8h, v6.h[0]
-smlal v16.4s, v19.4h, v6.h[1]
-smlal2 v17.4s, v19.8h, v6.h[1]
-smlal v16.4s, v5.4h, v6.h[2]
-smlal2 v17.4s, v5.8h, v6.h[2]
+lsl w20, w13, #3
+sub w20, w20, w13
+add w20, w1, w20
+add w4, w3, w5, lsl #3
+sub w24, w4, w5
+add w24, w20, w24
+add w17, w4, w27
+lsl w22, w17, #3
+sub w22, w22, w17
+add w22, w24, w22
+add w13, w4, w27, lsl #1
+eor w13, w13, w4
+orr w2, w19, w28
+orr w3, w26, w13
+lsr w2, w2, #31
+lsr w3, w3, #31
+eor w5, w0, w21
+eor w17, w1, w20
+eor w27, w23, w25
+eor w4, w24, w22
+orr w5, w5, w17
+orr w27, w27, w4
+orr w5, w5, w27
+lsr w19, w5, w15
+lsr w28, w0, w15
+lsr w26, w1, w15
+lsr w13, w21, w15
+lsr w17, w20, w15
+lsr w4, w23, w15
+lsr w27, w24, w15
+lsr w5, w25, w15
+lsr w0, w22, w15
+madd x1, x26, x9, x8
+add x1, x1, x28, lsl #1
+ldrh w21, [x1]
+ldrh w20, [x1, #2]
+add x1, x1, x9
+ldrh w23, [x1]
+ldrh w24, [x1, #2]
+sub w24, w24, w20
+sub w20, w20, w21
+sub w23, w23, w21
+sub w24, w24, w23
+lsl w21, w21, w16
+bfi w20, w23, #16, #16
+bfi x20, x24, #32, #16
+fmov d0, x20
+dup v26.4s, w21
+dup v27.4s, w21
+madd x25, x27, x9, x8
+add x25, x25, x4, lsl #1
+ldrh w22, [x25]
+ldrh w15, [x25, #2]
+add x25, x25, x9
+ldrh w1, [x25]
+ldrh w23, [x25, #2]
+sub w23, w23, w15
+sub w15, w15, w22
+sub w1, w1, w22
+sub w23, w23, w1
+lsl w22, w22, w16
+bfi w15, w1, #16, #16
+bfi x15, x23, #32, #16
+fmov d2, x15
+dup v28.4s, w22
+dup v29.4s, w22
 smlal v26.4s, v18.4h, v0.h[0]
 smlal2 v27.4s, v18.8h, v0.h[0]
 smlal v26.4s, v19.4h, v0.h[1]
 smlal2 v27.4s, v19.8h, v0.h[1]
 smlal v26.4s, v5.4h, v0.h[2]
 smlal2 v27.4s, v5.8h, v0.h[2]
-smlal v1.4s, v20.4h, v7.h[0]
-smlal2 v3.4s, v20.8h, v7.h[0]
-smlal v1.4s, v21.4h, v7.h[1]
-smlal2 v3.4s, v21.8h, v7.h[1]
-smlal v1.4s, v30.4h, v7.h[2]
-smlal2 v3.4s, v30.8h, v7.h[2]
 smlal v28.4s, v20.4h, v2.h[0]
 smlal2 v29.4s, v20.8h, v2.h[0]
 smlal v28.4s, v21.4h, v2.h[1]
 smlal2 v29.4s, v21.8h, v2.h[1]
 smlal v28.4s, v30.4h, v2.h[2]
 smlal2 v29.4s, v30.8h, v2.h[2]
-ushl v16.4s, v16.4s, v31.4s
-ushl v17.4s, v17.4s, v31.4s
 ushl v26.4s, v26.4s, v31.4s
 ushl v27.4s, v27.4s, v31.4s
-ushl v1.4s, v1.4s, v31.4s
-ushl v3.4s, v3.4s, v31.4s
 ushl v28.4s, v28.4s, v31.4s
 ushl v29.4s, v29.4s, v31.4s
-uzp1 v16.8h, v16.8h, v17.8h
 uzp1 v26.8h, v26.8h, v27.8h
-uzp1 v1.8h, v1.8h, v3.8h
-uzp1 v28.8h, v28.8h, v29.8h
-bsl v24.16b, v26.16b, v16.16b
-bsl v25.16b, v28.16b, v1.16b
-shl v24.8h, v24.8h, #8
-shl v25.8h, v25.8h, #8
-add x0, x11, #32
-st1 {v24.8h, v25.8h}, [x0], #32
-ldp w25, w17, [x14, #-32]
-ldp w15, w21, [x0, #-32]
-ldp w16, w23, [x14, #-24]
-ldp w4, w13, [x0, #-24]
-and w12, w25, #0xffff
-lsr w20, w25, #16
-and w19, w17, #0xffff
-lsr w28, w17, #16
-and w22, w16, #0xffff
-lsr w27, w16, #16
-and w24, w23, #0xffff
-lsr w26, w23, #16
-ldrb w12, [x6, x12]
+uzp1 v27.8h, v28.8h, v29.8h
+cbz w19, 1f
+madd x24, x17, x9, x8
+add x24, x24, x13, lsl #1
+ldrh w20, [x24]
+ldrh w21, [x24, #2]
+add x24, x24, x9
+ldrh w25, [x24]
+ldrh w1, [x24, #2]
+sub w1, w1, w21
+sub w21, w21, w20
+sub w25, w25, w20
+sub w1, w1, w25
+lsl w20, w20, w16
+bfi w21, w25, #16, #16
+bfi x21, x1, #32, #16
+fmov d1, x21
+dup v22.4s, w20
+dup v23.4s, w20
+madd x23, x0, x9, x8
+add x23, x23, x5, lsl #1
+ldrh w15, [x23]
+ldrh w22, [x23, #2]
+add x23, x23, x9
+ldrh w19, [x23]
+ldrh w24, [x23, #2]
+sub w24, w24, w22
+sub w22, w22, w15
+sub w19, w19, w15
+sub w24, w24, w19
+lsl w15, w15, w16
+bfi w22, w19, #16, #16
+bfi x22, x24, #32, #16
+fmov d3, x22
+dup v24.4s, w15
+dup v25.4s, w15
+sub w25, w13, w28
+sub w1, w17, w26
+add w21, w25, #1
+add w20, w1, #1
+cmp w21, #2
+cset w23, hi
+cmp w20, #2
+cinc w23, w23, hi
+cmp w25, #0
+ccmp w1, #0, #4, ne
+cinc w23, w23, ne
+orr w2, w2, w23
+sub w16, w5, w4
+sub w19, w0, w27
+add w24, w16, #1
+add w22, w19, #1
+cmp w24, #2
+cset w15, hi
+cmp w22, #2
+cinc w15, w15, hi
+cmp w16, #0
+ccmp w19, #0, #4, ne
+cinc w15, w15, ne
+orr w3, w3, w15
+smlal v22.4s, v18.4h, v1.h[0]
+smlal2 v23.4s, v18.8h, v1.h[0]
+smlal v22.4s, v19.4h, v1.h[1]
+smlal2 v23.4s, v19.8h, v1.h[1]
+smlal v22.4s, v5.4h, v1.h[2]
+smlal2 v23.4s, v5.8h, v1.h[2]
+smlal v24.4s, v20.4h, v3.h[0]
+smlal2 v25.4s, v20.8h, v3.h[0]
+smlal v24.4s, v21.4h, v3.h[1]
+smlal2 v25.4s, v21.8h, v3.h[1]
+smlal v24.4s, v30.4h, v3.h[2]
+smlal2 v25.4s, v30.8h, v3.h[2]
+ushl v22.4s, v22.4s, v31.4s
+ushl v23.4s, v23.4s, v31.4s
+ushl v24.4s, v24.4s, v31.4s
+ushl v25.4s, v25.4s, v31.4s
+uzp1 v22.8h, v22.8h, v23.8h
+uzp1 v24.8h, v24.8h, v25.8h
+ldr q29, [x12, #128]
+dup v0.8h, v6.h[0]
+dup v2.8h, v16.h[0]
+eor v0.16b, v0.16b, v6.16b
+eor v2.16b, v2.16b, v16.16b
+orr v0.16b, v0.16b, v2.16b
+cmhi v0.8h, v0.8h, v29.8h
+dup v4.8h, v7.h[0]
+dup v2.8h, v17.h[0]
+eor v4.16b, v4.16b, v7.16b
+eor v2.16b, v2.16b, v17.16b
+orr v4.16b, v4.16b, v2.16b
+cmhi v4.8h, v4.8h, v29.8h
+bit v26.16b, v22.16b, v0.16b
+bit v27.16b, v24.16b, v4.16b
+1:
+shl v26.8h, v26.8h, #8
+shl v27.8h, v27.8h, #8
+add x13, x11, #32
+st1 {v26.8h, v27.8h}, [x13], #32
+ldr x28, [x14, #-32]
+ldr x17, [x13, #-32]
+ldr x26, [x14, #-24]
+ldr x21, [x13, #-24]
+and w20, w28, #0xffff
+lsr w25, w28, #16
+ubfx x1, x28, #32, #16
+lsr x23, x28, #48
+and w5, w26, #0xffff
+lsr w4, w26, #16
+ubfx x0, x26, #32, #16
+lsr x27, x26, #48
 ldrb w20, [x6, x20]
-ldrb w19, [x6, x19]
-ldrb w28, [x6, x28]
-ldrb w22, [x6, x22]
-ldrb w27, [x6, x27]
-ldrb w24, [x6, x24]
-ldrb w26, [x6, x26]
-add w12, w12, w15, uxth
-add w20, w20, w15, lsr #16
-add w19, w19, w21, uxth
-add w28, w28, w21, lsr #16
-add w22, w22, w4, uxth
-add w27, w27, w4, lsr #16
-add w24, w24, w13, uxth
-add w26, w26, w13, lsr #16
-ldrb w12, [x7, x12]
-ldrb w20, [x7, x20]
-ldrb w19, [x7, x19]
-ldrb w28, [x7, x28]
-ldrb w22, [x7, x22]
-ldrb w27, [x7, x27]
-ldrb w24, [x7, x24]
-ldrb w26, [x7, x26]
-orr x12, x12, x20, lsl #8
-orr x19, x19, x28, lsl #8
-orr x22, x22, x27, lsl #8
-orr x24, x24, x26, lsl #8
-orr x12, x12, x19, lsl #16
-orr x22, x22, x24, lsl #16
-orr x12, x12, x22, lsl #32
-ldp w1, w5, [x14, #-16]
-ldp w25, w17, [x0, #-16]
-ldp w16, w23, [x14, #-8]
-ldp w15, w21, [x0, #-8]
-and w4, w1, #0xffff
-lsr w13, w1, #16
-and w20, w5, #0xffff
-lsr w28, w5, #16
-and w27, w16, #0xffff
-lsr w26, w16, #16
-and w19, w23, #0xffff
-lsr w24, w23, #16
+ldrb w25, [x6, x25]
+ldrb w1, [x6, x1]
+ldrb w23, [x6, x23]
+ldrb w5, [x6, x5]
 ldrb w4, [x6, x4]
-ldrb w13, [x6, x13]
-ldrb w20, [x6, x20]
-ldrb w28, [x6, x28]
+ldrb w0, [x6, x0]
 ldrb w27, [x6, x27]
-ldrb w26, [x6, x26]
-ldrb w19, [x6, x19]
-ldrb w24, [x6, x24]
-add w4, w4, w25, uxth
-add w13, w13, w25, lsr #16
 add w20, w20, w17, uxth
-add w28, w28, w17, lsr #16
-add w27, w27, w15, uxth
-add w26, w26, w15, lsr #16
-add w19, w19, w21, uxth
-add w24, w24, w21, lsr #16
-ldrb w4, [x7, x4]
-ldrb w13, [x7, x13]
+add w25, w25, w17, lsr #16
+ubfx x24, x17, #32, #16
+add w1, w1, w24
+add x23, x23, x17, lsr #48
+add w5, w5, w21, uxth
+add w4, w4, w21, lsr #16
+ubfx x22, x21, #32, #16
+add w0, w0, w22
+add x27, x27, x21, lsr #48
 ldrb w20, [x7, x20]
-ldrb w28, [x7, x28]
+ldrb w25, [x7, x25]
+ldrb w1, [x7, x1]
+ldrb w23, [x7, x23]
+ldrb w5, [x7, x5]
+ldrb w4, [x7, x4]
+ldrb w0, [x7, x0]
 ldrb w27, [x7, x27]
+orr x20, x20, x25, lsl #8
+orr x1, x1, x23, lsl #8
+orr x5, x5, x4, lsl #8
+orr x0, x0, x27, lsl #8
+orr x20, x20, x1, lsl #16
+orr x5, x5, x0, lsl #16
+orr x20, x20, x5, lsl #32
+ldr x16, [x14, #-16]
+ldr x19, [x13, #-16]
+ldr x15, [x14, #-8]
+ldr x12, [x13, #-8]
+and w28, w16, #0xffff
+lsr w26, w16, #16
+ubfx x24, x16, #32, #16
+lsr x17, x16, #48
+and w22, w15, #0xffff
+lsr w21, w15, #16
+ubfx x25, x15, #32, #16
+lsr x23, x15, #48
+ldrb w28, [x6, x28]
+ldrb w26, [x6, x26]
+ldrb w24, [x6, x24]
+ldrb w17, [x6, x17]
+ldrb w22, [x6, x22]
+ldrb w21, [x6, x21]
+ldrb w25, [x6, x25]
+ldrb w23, [x6, x23]
+add w28, w28, w19, uxth
+add w26, w26, w19, lsr #16
+ubfx x4, x19, #32, #16
+add w24, w24, w4
+add x17, x17, x19, lsr #48
+add w22, w22, w12, uxth
+add w21, w21, w12, lsr #16
+ubfx x27, x12, #32, #16
+add w25, w25, w27
+add x23, x23, x12, lsr #48
+ldrb w28, [x7, x28]
 ldrb w26, [x7, x26]
-ldrb w19, [x7, x19]
 ldrb w24, [x7, x24]
-orr x4, x4, x13, lsl #8
-orr x20, x20, x28, lsl #8
-orr x27, x27, x26, lsl #8
-orr x19, x19, x24, lsl #8
-orr x4, x4, x20, lsl #16
-orr x27, x27, x19, lsl #16
-orr x4, x4, x27, lsl #32
-stp x12, x4, [x10]
+ldrb w17, [x7, x17]
+ldrb w22, [x7, x22]
+ldrb w21, [x7, x21]
+ldrb w25, [x7, x25]
+ldrb w23, [x7, x23]
+orr x28, x28, x26, lsl #8
+orr x24, x24, x17, lsl #8
+orr x22, x22, x21, lsl #8
+orr x25, x25, x23, lsl #8
+orr x28, x28, x24, lsl #16
+orr x22, x22, x25, lsl #16
+orr x28, x28, x22, lsl #32
+stp x20, x28, [x10]
