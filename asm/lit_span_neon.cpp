@@ -33,6 +33,96 @@ inline uint32x4_t wrap_recip(uint32x4_t c, uint32x2_t recip, uint32x4_t one, uin
   return vmlsq_u32(c, vaddq_u32(q, vandq_u32(c, one)), size);
 }
 
+// The per-pixel light (the "fast" variant's packed-pair blend on grid_wide, whatever the
+// cells): for steps that cross cells within a group of 8 (mips above 0 at about a texel a
+// pixel), where the one-cell path would fall back per lane. NEON lanes for the indices and
+// weights, packed two words a pixel (gi | fy << 24, ti | fx << 24).
+template <int kMip, bool kPow2>
+void lit_span_neon_pp_t(uint8_t* __restrict dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v, uint32_t du,
+                     uint32_t dv, uint32_t ddu, uint32_t ddv) {
+  constexpr int kLog = 4 - kMip;
+  constexpr int kShift = 2 * kLog;
+  constexpr uint32_t kB = 1u << kLog;
+  static constexpr uint32_t kLane[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+  static constexpr uint32_t kTri[8] = {0, 0, 1, 3, 6, 10, 15, 21};      // k (k - 1) / 2
+  static constexpr uint32_t kInc[8] = {28, 36, 44, 52, 60, 68, 76, 84};  // 8 k + 28
+  // Lanes 0..3 ([0]) and 4..7 ([1]) of u_k, v_k and their steps to pixel k + 8
+  // (u_{k+8} - u_k = 8 du + (8 k + 28) ddu, which grows by 64 ddu a step).
+  uint32x4_t uu[2], vv[2], iu[2], iv[2];
+#pragma GCC unroll 2
+  for (int h = 0; h < 2; ++h) {
+    const uint32x4_t lane = vld1q_u32(kLane + 4 * h), tri = vld1q_u32(kTri + 4 * h), inc = vld1q_u32(kInc + 4 * h);
+    uu[h] = vmlaq_n_u32(vmlaq_n_u32(vdupq_n_u32(u), lane, du), tri, ddu);
+    vv[h] = vmlaq_n_u32(vmlaq_n_u32(vdupq_n_u32(v), lane, dv), tri, ddv);
+    iu[h] = vmlaq_n_u32(vdupq_n_u32(8 * du), inc, ddu);
+    iv[h] = vmlaq_n_u32(vdupq_n_u32(8 * dv), inc, ddv);
+  }
+  const uint32x4_t iiu = vdupq_n_u32(64 * ddu), iiv = vdupq_n_u32(64 * ddv);
+  const uint32x4_t frac = vdupq_n_u32(kB - 1), gw = vdupq_n_u32(uint32_t(src.grid_width));
+  const uint32x4_t so = vdupq_n_u32(src.soff_mod), to = vdupq_n_u32(src.toff_mod);
+  const uint32x4_t tw = vdupq_n_u32(uint32_t(src.tex_width)), th = vdupq_n_u32(uint32_t(src.tex_height));
+  const uint32x4_t smask = vsubq_u32(tw, vdupq_n_u32(1)), tmask = vsubq_u32(th, vdupq_n_u32(1));
+  (void)smask;  // used by the power-of-two wrap only
+  (void)tmask;
+  const uint32x2_t srec = vdup_n_u32(uint32_t(src.s_recip)), trec = vdup_n_u32(uint32_t(src.t_recip));
+  const uint32x4_t sone = vdupq_n_u32(src.s_recip >> 32 ? ~0u : 0u), tone = vdupq_n_u32(src.t_recip >> 32 ? ~0u : 0u);
+  (void)srec;  // used by the other wrap only
+  (void)trec;
+  (void)sone;
+  (void)tone;
+  const uint32_t* __restrict grid = src.grid_wide;
+  const uint32_t* __restrict grid1 = grid + src.grid_width;  // row gy + 1
+  const uint8_t* __restrict texels = src.texels;
+  const uint8_t* __restrict cm = src.colormap;
+  alignas(16) uint64_t rec[8];  // per pixel: gi | fy << 24, ti | fx << 24
+  for (int k = 0; k < n; k += 8) {
+#pragma GCC unroll 2
+    for (int h = 0; h < 2; ++h) {
+      const uint32x4_t U = vshrq_n_u32(uu[h], 16), V = vshrq_n_u32(vv[h], 16);
+      const uint32x4_t gi = vmlaq_u32(vshrq_n_u32(U, kLog), vshrq_n_u32(V, kLog), gw);
+      uint32x4_t s = vaddq_u32(U, so), t = vaddq_u32(V, to);
+      if constexpr (kPow2) {
+        s = vandq_u32(s, smask);
+        t = vandq_u32(t, tmask);
+      } else {
+        s = wrap_recip(s, srec, sone, tw);
+        t = wrap_recip(t, trec, tone, th);
+      }
+      uint32x4x2_t p;
+      p.val[0] = vsliq_n_u32(gi, vandq_u32(V, frac), 24);
+      p.val[1] = vsliq_n_u32(vmlaq_u32(s, t, tw), vandq_u32(U, frac), 24);
+      vst2q_u32(reinterpret_cast<uint32_t*>(rec + 4 * h), p);
+      uu[h] = vaddq_u32(uu[h], iu[h]);
+      vv[h] = vaddq_u32(vv[h], iv[h]);
+      iu[h] = vaddq_u32(iu[h], iiu);
+      iv[h] = vaddq_u32(iv[h], iiv);
+    }
+    // Lanes past n hold indices outside the contract: never dereferenced.
+    const int m = n - k < 8 ? n - k : 8;
+    uint64_t out = 0;
+    auto pixel = [&](int j) {
+      const uint64_t r = rec[j];
+      const uint32_t gi = uint32_t(r) & 0xffffffu, fy = uint32_t(r) >> 24;
+      const uint32_t ti = uint32_t(r >> 32) & 0xffffffu, fx = uint32_t(r >> 56);
+      uint64_t p0, p1;
+      std::memcpy(&p0, grid + gi, 8);
+      std::memcpy(&p1, grid1 + gi, 8);
+      // The "fast" variant's blend: both grid columns vertically at once, then horizontally
+      // by one multiply with fx | (B - fx) << 32 (asm/lit_span.cpp, Weights).
+      const uint64_t pv = (p0 << kLog) + (p1 - p0) * fy;
+      const uint32_t num = uint32_t((pv * (uint64_t(fx) | uint64_t(kB - fx) << 32)) >> 32);
+      return cm[((num >> kShift) & 0xff00u) + texels[ti]];
+    };
+    if (m == 8) {
+#pragma GCC unroll 8
+      for (int j = 0; j < 8; ++j) out |= uint64_t(pixel(j)) << (8 * j);
+      std::memcpy(dest + k, &out, 8);
+    } else {
+      for (int j = 0; j < m; ++j) dest[k + j] = pixel(j);
+    }
+  }
+}
+
 // The high halves of a's and b's lanes (u >> 16 of 16.16 values below 2^28) as 8 lanes.
 inline uint16x8_t high_halves(uint32x4_t a, uint32x4_t b) {
 #if defined(__aarch64__)
@@ -238,6 +328,31 @@ void lit_span_neon_t(uint8_t* __restrict dest, int n, const LitSpanSource& src, 
 }
 
 template <bool kPow2>
+void neon_pp_by_mip(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v, uint32_t du, uint32_t dv,
+                    uint32_t ddu, uint32_t ddv) {
+  switch (src.mip) {
+    case 0: return lit_span_neon_pp_t<0, kPow2>(dest, n, src, u, v, du, dv, ddu, ddv);
+    case 1: return lit_span_neon_pp_t<1, kPow2>(dest, n, src, u, v, du, dv, ddu, ddv);
+    case 2: return lit_span_neon_pp_t<2, kPow2>(dest, n, src, u, v, du, dv, ddu, ddv);
+    default: return lit_span_neon_pp_t<3, kPow2>(dest, n, src, u, v, du, dv, ddu, ddv);
+  }
+}
+
+// Whether a group of 8 pixels from here most likely stays within one cell or crosses one
+// edge (the one-cell path and lit16_block's cells A / B hold it): it moves less than a cell
+// (8 (|du| + |dv|) + 128 (|ddu| + |ddv|) < B texels). A guess only: both check the cells.
+// ARMv7: always (the per-pixel kernel's 64-bit blend is slow there: lit16m2 Cortex-A9 62
+// against 44 cycles a pixel).
+inline bool few_cells(const LitSpanSource& src, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+#if !defined(__aarch64__)
+  (void)src, (void)du, (void)dv, (void)ddu, (void)ddv;
+  return true;
+#endif
+  auto mag = [](uint32_t x) { return uint64_t(int64_t(int32_t(x)) < 0 ? -int64_t(int32_t(x)) : int64_t(int32_t(x))); };
+  return 8 * (mag(du) + mag(dv)) + 128 * (mag(ddu) + mag(ddv)) < (uint64_t(16 >> src.mip) << 16);
+}
+
+template <bool kPow2>
 void neon_by_mip(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v, uint32_t du, uint32_t dv,
                  uint32_t ddu, uint32_t ddv) {
   switch (src.mip) {
@@ -253,11 +368,11 @@ void neon_by_mip(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uin
 // by the general path. Out of line: rare, and the block's caller stays small.
 __attribute__((noinline)) void redo_groups(unsigned redo, uint8_t* dest, const LitSpanSource& src, uint32_t u,
                                            uint32_t v, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-  if (redo & 1) neon_by_mip<true>(dest, 8, src, u, v, du, dv, ddu, ddv);
+  if (redo & 1) neon_pp_by_mip<true>(dest, 8, src, u, v, du, dv, ddu, ddv);
   // u_{k+8} = u_k + 8 du_k + 28 ddu, du_{k+8} = du_k + 8 ddu.
   if (redo & 2)
-    neon_by_mip<true>(dest + 8, 8, src, u + 8 * du + 28 * ddu, v + 8 * dv + 28 * ddv, du + 8 * ddu, dv + 8 * ddv, ddu,
-                      ddv);
+    neon_pp_by_mip<true>(dest + 8, 8, src, u + 8 * du + 28 * ddu, v + 8 * dv + 28 * ddv, du + 8 * ddu, dv + 8 * ddv,
+                         ddu, ddv);
 }
 
 // One 16-pixel run (the engine's full runs) by lit16_block, flagged groups again by the
@@ -274,14 +389,22 @@ inline void run16(uint8_t* dest, const LitSpanSource& src, uint32_t u, uint32_t 
 __attribute__((noinline)) void runs16(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v,
                                       uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
   for (; n >= 16; n -= 16, dest += 16) {
-    run16(dest, src, u, v, du, dv, ddu, ddv);
+    if (few_cells(src, du, dv, ddu, ddv))
+      run16(dest, src, u, v, du, dv, ddu, ddv);
+    else
+      neon_pp_by_mip<true>(dest, 16, src, u, v, du, dv, ddu, ddv);
     // u_{k+16} = u_k + 16 du_k + 120 ddu, du_{k+16} = du_k + 16 ddu.
     u += 16 * du + 120 * ddu;
     v += 16 * dv + 120 * ddv;
     du += 16 * ddu;
     dv += 16 * ddv;
   }
-  if (n > 0) neon_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+  if (n > 0) {
+    if (few_cells(src, du, dv, ddu, ddv))
+      neon_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+    else
+      neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+  }
 }
 #endif
 
@@ -290,16 +413,18 @@ inline bool is_pow2(int x) { return x > 0 && (x & (x - 1)) == 0; }
 // Every case but aarch64's 16-pixel runs. Out of line: the entry stays small.
 __attribute__((noinline)) void neon_general(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v,
                                             uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+  const bool few = few_cells(src, du, dv, ddu, ddv);
   if (is_pow2(src.tex_width) && is_pow2(src.tex_height)) {
 #if defined(__aarch64__) && defined(__GNUC__)
     // Power-of-two textures of at most 2^16 texels (lit16_block's 16-bit texel indices):
     // full 16-pixel runs by the asm block (asm/lit_span_a64.h).
     if (n > 16 && src.tex_width * src.tex_height <= 65536) return runs16(dest, n, src, u, v, du, dv, ddu, ddv);
 #endif
-    neon_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
-  } else {
-    neon_by_mip<false>(dest, n, src, u, v, du, dv, ddu, ddv);
+    if (few) return neon_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+    return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
   }
+  if (few) return neon_by_mip<false>(dest, n, src, u, v, du, dv, ddu, ddv);
+  neon_pp_by_mip<false>(dest, n, src, u, v, du, dv, ddu, ddv);
 }
 
 }  // namespace
@@ -313,7 +438,7 @@ void lit_span_neon(uint8_t* dest, int n, const LitSpanSource& src, int32_t u, in
 #if defined(__aarch64__) && defined(__GNUC__)
   // The engine's full runs: one asm block (wrap16[5]: lit_span_prepare's "power-of-two
   // texture of at most 2^16 texels").
-  if (n == 16 && src.wrap16[5] != 0)
+  if (n == 16 && src.wrap16[5] != 0 && few_cells(src, uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv)))
     return run16(dest, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
 #endif
   neon_general(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
