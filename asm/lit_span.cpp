@@ -156,6 +156,7 @@ void lit_span_prepare(LitSpanSource& src, int grid_count, uint32_t* wide) {
   for (int i = 0; i < 8; ++i) src.wrap16[i] = i < 5 ? uint16_t(wrap[i]) : 0;
   const bool pow2 = (src.tex_width & (src.tex_width - 1)) == 0 && (src.tex_height & (src.tex_height - 1)) == 0;
   src.wrap16[5] = pow2 && src.tex_width * src.tex_height <= 65536 ? 1 : 0;
+  src.wrap16[6] = pow2 ? 1 : 0;
   src.prepared = true;
 }
 

@@ -327,8 +327,10 @@ void lit_span_neon_t(uint8_t* __restrict dest, int n, const LitSpanSource& src, 
   }
 }
 
+// Out of line: compiled on its own it keeps its loop in registers (inlined into
+// neon_general it spilled: lit16m2 A53 39.3 against 34.5 cycles a pixel).
 template <bool kPow2>
-void neon_pp_by_mip(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v, uint32_t du, uint32_t dv,
+__attribute__((noinline)) void neon_pp_by_mip(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v, uint32_t du, uint32_t dv,
                     uint32_t ddu, uint32_t ddv) {
   switch (src.mip) {
     case 0: return lit_span_neon_pp_t<0, kPow2>(dest, n, src, u, v, du, dv, ddu, ddv);
@@ -436,10 +438,18 @@ void lit_span_neon(uint8_t* dest, int n, const LitSpanSource& src, int32_t u, in
   if (n <= 0) return;
   if (!src.prepared) return lit_span_scalar(dest, n, src, u, v, du, dv, ddu, ddv);
 #if defined(__aarch64__) && defined(__GNUC__)
-  // The engine's full runs: one asm block (wrap16[5]: lit_span_prepare's "power-of-two
-  // texture of at most 2^16 texels").
-  if (n == 16 && src.wrap16[5] != 0 && few_cells(src, uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv)))
-    return run16(dest, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
+  if (few_cells(src, uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv))) {
+    // The engine's full runs: one asm block (wrap16[5]: lit_span_prepare's "power-of-two
+    // texture of at most 2^16 texels").
+    if (n == 16 && src.wrap16[5] != 0)
+      return run16(dest, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
+  } else if (n <= 16) {  // straight to the per-pixel kernel (wrap16[6]: power-of-two texture)
+    if (src.wrap16[6] != 0)
+      return neon_pp_by_mip<true>(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu),
+                                  uint32_t(ddv));
+    return neon_pp_by_mip<false>(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu),
+                                 uint32_t(ddv));
+  }
 #endif
   neon_general(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
 }
