@@ -341,17 +341,18 @@ __attribute__((noinline)) void neon_pp_by_mip(uint8_t* dest, int n, const LitSpa
 }
 
 // Whether a group of 8 pixels from here most likely stays within one cell or crosses one
-// edge (the one-cell path and lit16_block's cells A / B hold it): it moves less than a cell
-// (8 (|du| + |dv|) + 128 (|ddu| + |ddv|) < B texels). A guess only: both check the cells.
-// ARMv7: always (the per-pixel kernel's 64-bit blend is slow there: lit16m2 Cortex-A9 62
-// against 44 cycles a pixel).
+// edge (the one-cell path and lit16_block's cells A / B hold it): it moves less than a cell,
+// 8 (|du| + |dv| + 16 (|ddu| + |ddv|)) < B texels, with x ^ (x >> 31) for |x| (one less for
+// negative x). A guess only: both check the cells. ARMv7: always (the per-pixel kernel's
+// 64-bit blend is slow there: lit16m2 Cortex-A9 62 against 44 cycles a pixel).
 inline bool few_cells(const LitSpanSource& src, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-#if !defined(__aarch64__)
+#if defined(__aarch64__)
+  auto mag = [](uint32_t x) { return uint64_t(x ^ uint32_t(int32_t(x) >> 31)); };
+  return mag(du) + mag(dv) + 16 * (mag(ddu) + mag(ddv)) < (uint64_t(0x20000) >> src.mip);
+#else
   (void)src, (void)du, (void)dv, (void)ddu, (void)ddv;
   return true;
 #endif
-  auto mag = [](uint32_t x) { return uint64_t(int64_t(int32_t(x)) < 0 ? -int64_t(int32_t(x)) : int64_t(int32_t(x))); };
-  return 8 * (mag(du) + mag(dv)) + 128 * (mag(ddu) + mag(ddv)) < (uint64_t(16 >> src.mip) << 16);
 }
 
 template <bool kPow2>
