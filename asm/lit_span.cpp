@@ -151,6 +151,12 @@ void lit_span_prepare(LitSpanSource& src, int grid_count, uint32_t* wide) {
   src.toff_mod = uint32_t(pos_mod(src.toff, src.tex_height));
   src.s_recip = ((uint64_t(1) << 32) + uint64_t(src.tex_width) - 1) / uint64_t(src.tex_width);
   src.t_recip = ((uint64_t(1) << 32) + uint64_t(src.tex_height) - 1) / uint64_t(src.tex_height);
+  const uint32_t wrap[5] = {src.soff_mod, src.toff_mod, uint32_t(src.tex_width - 1), uint32_t(src.tex_height - 1),
+                            uint32_t(src.tex_width)};
+  for (int i = 0; i < 8; ++i) src.wrap16[i] = i < 5 ? uint16_t(wrap[i]) : 0;
+  const bool pow2 = (src.tex_width & (src.tex_width - 1)) == 0 && (src.tex_height & (src.tex_height - 1)) == 0;
+  src.wrap16[5] = pow2 && src.tex_width * src.tex_height <= 65536 ? 1 : 0;
+  src.wrap16[6] = pow2 ? 1 : 0;
   src.prepared = true;
 }
 
@@ -183,9 +189,12 @@ const Table& table() {
     if (lit_span_neon_compiled()) {
       r.v[r.count++] = {"neon", lit_span_neon, true};
 #if defined(__aarch64__)
-      // bench/counts.md lit16: neon 34.8 against fast 38.7 cycles/px (Cortex-A53 model),
-      // 15.6 against 26.5 (A72). On armv7, fast stays: 34.3 against neon's 56.1 (Cortex-A9),
-      // whose 64-bit blend takes several 32-bit multiplies.
+      // bench/counts.md lit16: neon 21.7 against fast 38.7 cycles/px (Cortex-A53 model),
+      // 12.3 against 26.5 (A72); lit16m2 (mip 2): 34.5 against 38.7, 16.5 against 26.5.
+      // On armv7, fast stays: lit16 34.3 against neon's 33.3 (Cortex-A9 model), lit16m2
+      // 34.2 against 44.4; and neon's per-group lane moves to core registers (the one-cell
+      // test, lane 0's cell) stall a real Cortex-A9 for many cycles, which llvm-mca does
+      // not model.
       r.tuned = r.count - 1;
 #endif
     }

@@ -37,9 +37,15 @@
 //   avx2    8 pixels per step, texel, light and colormap read by gathers;
 //   avx2s   8 pixels' addresses and weights in AVX2 lanes, the loads and the blend scalar
 //           (fast's packed pairs). The tuned choice on x86-64 with AVX2;
-//   neon    the same split in NEON lanes (aarch64, armv7 with NEON), one 64-bit load of a
-//           pixel's packed indices and weights, the 8 bytes stored as one word. The tuned
-//           choice on aarch64 (on armv7, fast: its 64-bit blend costs more there).
+//   neon    NEON lanes (aarch64, armv7 with NEON) for the positions, texel indices and the
+//           light of a group of 8 pixels lying in one grid cell (loaded once: num from the
+//           cell's corner differences by widening multiply-adds), the reference's formula
+//           per pixel for a group that does not; texel and colormap loads by the core. On
+//           aarch64 a full 16-pixel run with a power-of-two texture of at most 2^16 texels
+//           is one asm block (asm/lit_span_a64.h: two cells a group, the lane's chosen), and
+//           runs that move more than a cell a group (mips above 0) take a per-pixel kernel
+//           (packed indices and weights a pixel, fast's packed-pair blend). The tuned
+//           choice on aarch64 (on armv7, fast: see lit_span.cpp).
 // Dispatch: lit_span_active() is the scalar reference while simd::force_scalar() is on,
 // otherwise the tuned choice, fixed at first use (bench/lit_span_bench measures them).
 // Nothing here allocates.
@@ -67,6 +73,10 @@ struct LitSpanSource {
   const uint32_t* grid_wide = nullptr;
   uint32_t soff_mod = 0, toff_mod = 0;  // soff mod tex_width, toff mod tex_height (positive)
   uint64_t s_recip = 0, t_recip = 0;    // ceil(2^32 / tex_width), ceil(2^32 / tex_height)
+  // soff_mod, toff_mod, tex_width - 1, tex_height - 1, tex_width (16-bit; the aarch64 neon
+  // variant's wrap of power-of-two textures), 1 for a power-of-two texture of at most 2^16
+  // texels (else 0), 1 for a power-of-two texture (else 0), then a zero.
+  uint16_t wrap16[8] = {};
   bool prepared = false;
 };
 

@@ -11,6 +11,8 @@
 // Cases (units per repetition):
 //   span16       one 1920-pixel span of a 256x256 surface in runs of 16 (the engine's calls)
 //   span1920     the same span in one call (linear steps): the loop without per-call cost
+//   lit16m2      the same kernel at mip 2 (64x64 surface, 16x16 texture): 120 runs of 16 px
+//                from their own starts, 0.5-1 texel a pixel, second order (see lit_m2_runs)
 //   lit16        single-pass lit span (asm/lit_span.h): span16's runs over a 256x256 surface at
 //                mip 0, 64x64 texture, 17x17 light grid (its own variants: scalar, fast, avx2,
 //                avx2s where compiled and supported)
@@ -103,7 +105,7 @@ const Kernels* find_variant(const char* name) {
   return nullptr;
 }
 
-const char* const kCases[] = {"span16", "span1920", "lit16", "block_mip0", "block_mip1",
+const char* const kCases[] = {"span16", "span1920", "lit16", "lit16m2", "block_mip0", "block_mip1",
                               "block_mip2", "block_mip3", "z1920", "palette", "palette2", "palette3", "palette4", "alias32", "alias1920h",
                               "persp1920", "persp64", "persp1920lin", "persp64lin", "persp64single",
                               "persp192", "persp192lin", "persp32", "persp16", "persp72", "persp32mix"};
@@ -171,7 +173,7 @@ long units_of(const char* c) {
     return sum;
   }
   if (std::strncmp(c, "span", 4) == 0 || std::strcmp(c, "z1920") == 0 || std::strncmp(c, "alias", 5) == 0 ||
-      std::strcmp(c, "lit16") == 0)
+      std::strncmp(c, "lit16", 5) == 0)
     return kSpan;
   if (std::strncmp(c, "block_mip", 9) == 0) {
     const int e = kSurf >> (c[9] - '0');
@@ -322,7 +324,27 @@ sb::simd::LitSpanFn find_lit_variant(const char* name) {
   return nullptr;
 }
 
-uint32_t run_lit(sb::simd::LitSpanFn fn, long reps) {
+// lit16m2: 120 runs of 16 pixels at mip 2 (64x64 surface, 16x16 texture, B = 4), each from
+// its own start, 0.5-1 texel a pixel along u, -0.3-0.3 along v, second order (the step
+// drifts by up to 0.01 texel a pixel): the engine's steps at a mip above 0, where an
+// 8-pixel group spans two or three light cells.
+std::vector<Run> lit_m2_runs(Lcg& rng, std::vector<int32_t>& dd) {
+  std::vector<Run> runs;
+  const int surf = kSurf >> 2;
+  for (int x = 0; x < kSpan; x += 16) {
+    const int32_t du = int32_t(32768 + rng.next() % 32768), dv = int32_t(rng.next() % 39322) - 19661;
+    const int32_t ddu = int32_t(rng.next() % 1311) - 655, ddv = int32_t(rng.next() % 1311) - 655;
+    // 16 pixels move at most 16 * 1.2 texels: start inside [20, surf - 20) texels.
+    const int32_t u = int32_t((20 << 16) + rng.next() % uint32_t((surf - 40) << 16));
+    const int32_t v = int32_t((20 << 16) + rng.next() % uint32_t((surf - 40) << 16));
+    runs.push_back({x, 16, u, v, du, dv});
+    dd.push_back(ddu);
+    dd.push_back(ddv);
+  }
+  return runs;
+}
+
+uint32_t run_lit(sb::simd::LitSpanFn fn, long reps, bool mip2) {
   Lcg rng;
   constexpr int kTex = 64, kGrid = (kSurf - 1) / 16 + 2;
   std::vector<uint8_t> tex(kTex * kTex), cm(64 * 256), dest(kSpan);
@@ -341,10 +363,27 @@ uint32_t run_lit(sb::simd::LitSpanFn fn, long reps) {
   src.mip = 0;
   src.width = src.height = kSurf;
   src.colormap = cm.data();
+  std::vector<int32_t> dd;
+  std::vector<Run> runs = span_runs();
+  if (mip2) {  // the same grid (17 x 17 covers 64 texels at B = 4), texture 16x16
+    src.mip = 2;
+    src.width = src.height = kSurf >> 2;
+    src.tex_width = src.tex_height = kTex >> 2;
+    src.soff = 2;
+    src.toff = -6;
+    runs = lit_m2_runs(rng, dd);
+  }
   sb::simd::lit_span_prepare(src, int(grid.size()), wide.data());
-  const std::vector<Run> runs = span_runs();
-  for (long r = 0; r < reps; ++r)
-    for (const Run& run : runs) fn(dest.data() + run.offset, run.n, src, run.u, run.v, run.du, run.dv, 0, 0);
+  if (!mip2) {  // lit16's loop as it always was (its rows' driver instructions unchanged)
+    for (long r = 0; r < reps; ++r)
+      for (const Run& run : runs) fn(dest.data() + run.offset, run.n, src, run.u, run.v, run.du, run.dv, 0, 0);
+  } else {
+    for (long r = 0; r < reps; ++r)
+      for (size_t i = 0; i < runs.size(); ++i) {
+        const Run& run = runs[i];
+        fn(dest.data() + run.offset, run.n, src, run.u, run.v, run.du, run.dv, dd[2 * i], dd[2 * i + 1]);
+      }
+  }
   return checksum(dest.data(), dest.size());
 }
 
@@ -353,7 +392,7 @@ uint32_t run_lit(sb::simd::LitSpanFn fn, long reps) {
 int main(int argc, char** argv) {
   if (argc == 2 && std::strcmp(argv[1], "list") == 0) {
     for (const char* c : kCases) {
-      if (std::strcmp(c, "lit16") == 0) {
+      if (std::strncmp(c, "lit16", 5) == 0) {
         for (int i = 0; i < sb::simd::lit_span_variant_count(); ++i)
           if (sb::simd::lit_span_variant(i).supported)
             std::printf("%s %s %ld\n", c, sb::simd::lit_span_variant(i).name, units_of(c));
@@ -380,13 +419,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   const long units = units_of(argv[1]), reps = std::atol(argv[3]);
-  if (std::strcmp(argv[1], "lit16") == 0) {
+  if (std::strncmp(argv[1], "lit16", 5) == 0) {
     const sb::simd::LitSpanFn fn = find_lit_variant(argv[2]);
     if (!fn || reps < 0) {
       std::fprintf(stderr, "unknown variant (or unsupported here): %s %s\n", argv[1], argv[2]);
       return 2;
     }
-    std::printf("%s %s %ld %08x\n", argv[1], argv[2], units, run_lit(fn, reps));
+    std::printf("%s %s %ld %08x\n", argv[1], argv[2], units, run_lit(fn, reps, argv[1][5] == 'm'));
     return 0;
   }
   const Kernels* k = find_variant(argv[2]);

@@ -43,6 +43,7 @@ CPU_NOTE = {"cortex-a72": "cortex-a72 (LLVM 14 times it with its Cortex-A57 mode
 
 KERNEL = {"span16": "surface_span (16-px runs)", "span1920": "surface_span (1 call, 1920 px)",
           "lit16": "lit_span (single pass, 16-px runs, mip 0)",
+          "lit16m2": "lit_span (single pass, 16-px runs, mip 2, 0.5-1 texel/px, second order)",
           "block_mip0": "surface_block mip 0", "block_mip1": "surface_block mip 1",
           "block_mip2": "surface_block mip 2", "block_mip3": "surface_block mip 3",
           "z1920": "z_span", "palette": "expand_palette (x1)",
@@ -470,7 +471,7 @@ def main():
                 cells.append("")
             else:
                 mark = "†" if gather and c == "znver3" and variant in ("avx2g",) or (
-                    gather and c == "znver3" and case in ("palette", "palette2", "lit16") and variant == "avx2") else ""
+                    gather and c == "znver3" and case in ("palette", "palette2", "lit16", "lit16m2") and variant == "avx2") else ""
                 cells.append(fmt(cyc[c]) + mark)
         ratio = fmt(s_ipu / ipu) if s_ipu and ipu else "—"
         cr = [s_cyc[c] / cyc[c] for c in cyc if cyc.get(c) and s_cyc.get(c)]

@@ -81,7 +81,7 @@ def parse(l):
     post = bool(mem) and ("]!" in rest or "," in rest[mem[-1].end():])
     if is_branch(op):
         return set(rs) | {"nzcv"}, set(), False, True
-    if op in ("stp", "str", "strb", "strh", "st1", "st4", "stur"):
+    if op in ("stp", "str", "strb", "strh", "st1", "st2", "st3", "st4", "stur"):
         reads |= set(rs)
         store = True
         if post:

@@ -6,6 +6,7 @@
 // 16..4096 at the largest offset). Destinations carry guard bytes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <random>
@@ -211,3 +212,93 @@ TEST(AsmLitSpan, WrapIsExactForEveryTextureWidth) {
 }
 
 }  // namespace
+
+namespace {
+
+// A walk of n pixels whose coordinate crosses a cell boundary (B texels) between pixels p
+// and p + 1 (p < 0: none), stepping d (16.16, may be negative) with second difference dd,
+// starting near cell `cell`.
+int32_t start_for_cross(int b, int cell, int p, int32_t d) {
+  if (p < 0) return int32_t((int64_t(cell) * b << 16) + (b << 15));  // mid-cell
+  // u_p just inside the boundary, u_{p+1} beyond it.
+  const int64_t edge = int64_t(cell) * b << 16;
+  const int64_t up = d >= 0 ? edge - 1 - (d > 1 ? int64_t(d) / 3 : 0) : edge + (d < -1 ? -int64_t(d) / 3 : 0);
+  return int32_t(up - int64_t(p) * d);
+}
+
+}  // namespace
+
+// asm/lit_span_a64.h (aarch64 neon): 16-pixel runs whose 8-pixel groups lie in one cell,
+// cross one cell boundary in u, v or both (at the same or different pixels), two boundaries,
+// step backwards, bend (second order, also changing direction within a group); every lane
+// position of the crossing, every mip, textures up to and beyond 2^16 texels; n 16, 17, 31,
+// 32, 48 (16-pixel blocks then the general path). Everywhere else the same variants too.
+TEST(AsmLitSpan, RunsOf16AcrossCellBoundaries) {
+  std::mt19937 rng(1616);
+  struct Tex {
+    int w, h;
+  };
+  const Tex texs[] = {{64, 64}, {256, 256}, {512, 256}, {16, 8}};
+  int cases = 0;
+  for (int mip = 0; mip < 4; ++mip) {
+    const int b = 16 >> mip;
+    for (const Tex& t : texs) {
+      const int size = b * 40;
+      const LitCase c = make_case(rng, mip, size, size, std::max(1, t.w >> mip), std::max(1, t.h >> mip),
+                                  int(rng() % 64) - 32, int(rng() % 64) - 32, int(rng() % 4));
+      for (int p = -1; p < 16; ++p) {
+        for (int mode = 0; mode < 9; ++mode) {
+          for (int n : {16, 17, 31, 32, 48}) {
+            // Steps between 0.05 and 2 texels a pixel (mode 5: about B / 3, two crossings
+            // in a group), signs by mode.
+            const int32_t small = int32_t(3277 + rng() % 127795);
+            int32_t du = small, dv = int32_t(rng() % 30000), ddu = 0, ddv = 0;
+            int pu = p, pv = -1;
+            switch (mode) {
+              case 0: break;                                          // u crosses at p
+              case 1: std::swap(du, dv); pu = -1; pv = p; break;      // v crosses at p
+              case 2: dv = du; pv = p; break;                         // both at p
+              case 3: pv = p < 0 ? -1 : (p + 5) % 16; dv = du; break; // both, other pixels
+              case 4: du = -du; break;                                // backwards
+              case 5: du = int32_t((b << 16) / 3 + rng() % 1000); break;
+              case 6: ddu = int32_t(rng() % 4001) - 2000; ddv = int32_t(rng() % 4001) - 2000; break;
+              case 7: du = int32_t(rng() % 20000) - 10000; ddu = du > 0 ? -int32_t(3000 + rng() % 2000)
+                                                                         : int32_t(3000 + rng() % 2000); break;
+              default: du = 0; dv = 0; ddu = int32_t(rng() % 2001) - 1000; ddv = 0; break;  // still, then drifting
+            }
+            const int cell = 12 + int(rng() % 8);
+            Walk w{n, start_for_cross(b, cell, pu, du), start_for_cross(b, cell, pv, dv), du, dv, ddu, ddv};
+            if (!walk_valid(c, w)) continue;
+            check(c, w, "runs of 16 across cells", false);
+            if (testing::Test::HasFatalFailure()) return;
+            ++cases;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(cases, 2000);
+  std::printf("[ asm      ] lit_span: %d runs across cell boundaries compared\n", cases);
+}
+
+// The last texel of the surface (u, v at the clamp edge) in 16-pixel runs, every mip, and
+// bytes after a 16-pixel run untouched (check()'s guards).
+TEST(AsmLitSpan, RunsOf16AtTheSurfaceEdge) {
+  std::mt19937 rng(1717);
+  for (int mip = 0; mip < 4; ++mip) {
+    for (int rep = 0; rep < 40; ++rep) {
+      const int b = 16 >> mip;
+      const int width = b * int(1 + rng() % 20) - int(rng() % b), height = b * int(1 + rng() % 20) - int(rng() % b);
+      const LitCase c = make_case(rng, mip, std::max(1, width), std::max(1, height), 64 >> mip, 32 >> mip, 5, -9,
+                                  int(rng() % 4));
+      const int32_t umax = (c.width << 16) - 1, vmax = (c.height << 16) - 1;
+      for (int n : {16, 32}) {
+        check(c, Walk{n, umax, vmax, 0, 0, 0, 0}, "last texel, still");
+        const int32_t d = int32_t(rng() % 40000);
+        if (int64_t(d) * (n - 1) <= umax) check(c, Walk{n, int32_t(umax - d * (n - 1)), vmax, d, 0, 0, 0}, "to the edge");
+        if (int64_t(d) * (n - 1) <= vmax) check(c, Walk{n, umax, vmax, 0, -d, 0, 0}, "from the corner");
+        if (testing::Test::HasFatalFailure()) return;
+      }
+    }
+  }
+}

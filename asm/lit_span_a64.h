@@ -1,0 +1,454 @@
+// asm/lit_span_a64.h: aarch64 only: one full 16-pixel run of the single-pass lit span kernel
+// (contract: asm/lit_span.h) as one asm block, lit16_block, for asm/lit_span_neon.cpp.
+// Internal: included by lit_span_neon.cpp only (anonymous namespace: internal linkage).
+//
+// The block takes power-of-two textures of at most 2^16 texels only. Each 8-pixel group
+// takes its light from cell A (its first pixel's) and, when its last pixel's cell B
+// differs (then a branch to the cells-B part), B for the lanes outside A. That is exact
+// when every pixel is in A or B: the group's steps keep their sign (its first and last
+// steps agree) and A, B are at most one column or one row apart, not both. Otherwise the
+// block returns the group's flag and the caller draws the group again by the general path
+// (about 1% of lit16's groups).
+//
+// NEON lanes: the 16 positions (16.16, second order) from the lane tables, U and V as
+// 16-bit lanes, the texel index ((V + toff) & tmask) * tex_width + ((U + soff) & smask) in
+// 16-bit lanes, and the light of a cell:
+//   num = B^2 g00 + B fx (g10 - g00) + B fy (g01 - g00) + fx fy (g11 - g10 - g01 + g00),
+// exactly the reference's numerator (the three differences fit 16 bits: |.| <= 2 * 0x3fff),
+// by widening multiply-adds by lane. The 16 texel indices and the 16 (num >> S + 8) << 8
+// are stored as two 16-bit arrays (the indices first, so the texel loads can start before
+// the light is done); the core then loads each texel and colormap[texel + (num >> S + 8) << 8]
+// and merges 8 bytes into a word. The core computes the cells' corners and the tests
+// meanwhile.
+//
+// Generated: bench/mca_a53_lit/gen_lit16.py writes the block in dependency order,
+// bench/mca_a53_lit/sched3.sh list-schedules its three parts for the Cortex-A53 model
+// (bench/order_search.py may refine them), bench/to_inline.py writes it below (commands:
+// bench/mca_a53_lit/README.md).
+#pragma once
+#include <cstddef>
+#include <cstdint>
+
+#include "asm/lit_span.h"
+
+namespace sb::simd {
+namespace {
+
+#if defined(__aarch64__) && defined(__GNUC__)
+// Per mip: pixel numbers j, j (j - 1) / 2 (u32), B - 1 and log B (u16 lanes), -(S + 8)
+// (u32 lanes: ushl by a negative count shifts right), then 16 + log B and S for the core.
+struct alignas(16) LitA64Tab {
+  uint32_t lane[16], tri[16];
+  uint16_t frac[8], logb[8];
+  int32_t nshift[4];
+  uint32_t l16, s;
+};
+static_assert(offsetof(LitA64Tab, tri) == 64 && offsetof(LitA64Tab, frac) == 128 &&
+                  offsetof(LitA64Tab, nshift) == 160 && offsetof(LitA64Tab, l16) == 176,
+              "lit16_block's table offsets");
+
+constexpr LitA64Tab lit_a64_tab(int mip) {
+  LitA64Tab t{};
+  const int lg = 4 - mip;
+  for (int j = 0; j < 16; ++j) {
+    t.lane[j] = uint32_t(j);
+    t.tri[j] = uint32_t(j * (j - 1) / 2);
+  }
+  for (int j = 0; j < 8; ++j) {
+    t.frac[j] = uint16_t((1 << lg) - 1);
+    t.logb[j] = uint16_t(lg);
+  }
+  for (int j = 0; j < 4; ++j) t.nshift[j] = -(2 * lg + 8);
+  t.l16 = uint32_t(16 + lg);
+  t.s = uint32_t(2 * lg);
+  return t;
+}
+alignas(16) constexpr LitA64Tab kLitA64Tab[4] = {lit_a64_tab(0), lit_a64_tab(1), lit_a64_tab(2), lit_a64_tab(3)};
+
+// The block's stack frame: the 16 texel indices, the 16 (num >> S + 8) << 8, then
+// soff_mod, toff_mod, tex_width - 1, tex_height - 1, tex_width (LitSpanSource::wrap16).
+struct alignas(16) LitA64Frame {
+  uint16_t ti[16], light[16];
+  uint16_t wrap[8];
+};
+static_assert(offsetof(LitA64Frame, wrap) == 64, "lit16_block's frame offsets");
+
+// Draws dest[0..15] (see above); bit 0 / bit 1 of the result: pixels 0-7 / 8-15 must be
+// drawn again. Power-of-two textures of at most 2^16 texels only.
+inline unsigned lit16_block(uint8_t* dest, const LitSpanSource& src, LitA64Frame& fr, const LitA64Tab& tab,
+                            uint32_t u32, uint32_t v32, uint32_t du32, uint32_t dv32, uint32_t ddu32,
+                            uint32_t ddv32) {
+  uint64_t u = u32, v = v32, du = du32, dv = dv32, ddu = ddu32, ddv = ddv32;
+  const uint64_t gw2 = uint64_t(src.grid_width) * 2;
+  const LitA64Tab* tp = &tab;
+  asm volatile(
+      // BEGIN lit16_block
+      "fmov s5, %w[du]\n\t"
+      "dup v24.4s, %w[u]\n\t"
+      "dup v25.4s, %w[u]\n\t"
+      "dup v26.4s, %w[u]\n\t"
+      "dup v28.4s, %w[v]\n\t"
+      "dup v29.4s, %w[v]\n\t"
+      "mov v5.s[1], %w[dv]\n\t"
+      "ldp q16, q17, [%[tab]]\n\t"
+      "add w27, %w[ddv], %w[ddv], lsl #1\n\t"
+      "add x13, %[fr], #64\n\t"
+      "add w17, %w[ddu], %w[ddu], lsl #1\n\t"
+      "dup v31.4s, %w[v]\n\t"
+      "dup v27.4s, %w[u]\n\t"
+      "mov v5.s[2], %w[ddu]\n\t"
+      "ld4r {v0.8h, v1.8h, v2.8h, v3.8h}, [x13]\n\t"
+      "dup v30.4s, %w[v]\n\t"
+      "ldp q18, q19, [%[tab], #32]\n\t"
+      "add w20, %w[du], w17\n\t"
+      "add w22, %w[du], %w[ddu], lsl #3\n\t"
+      "add w13, %w[dv], w27\n\t"
+      "add w19, %w[du], w17, lsl #1\n\t"
+      "mov v5.s[3], %w[ddv]\n\t"
+      "ldp q20, q21, [%[tab], #64]\n\t"
+      "add w24, w22, w17\n\t"
+      "sub w23, w22, %w[ddu]\n\t"
+      "lsl w21, w20, #3\n\t"
+      "add w26, w22, w17, lsl #1\n\t"
+      "add %w[ddu], %w[dv], %w[ddv], lsl #3\n\t"
+      "sub w21, w21, w20\n\t"
+      "add w28, %w[dv], w27, lsl #1\n\t"
+      "mla v24.4s, v16.4s, v5.s[0]\n\t"
+      "mla v28.4s, v16.4s, v5.s[1]\n\t"
+      "mla v25.4s, v17.4s, v5.s[0]\n\t"
+      "mla v29.4s, v17.4s, v5.s[1]\n\t"
+      "mla v30.4s, v18.4s, v5.s[1]\n\t"
+      "mla v27.4s, v19.4s, v5.s[0]\n\t"
+      "mla v31.4s, v19.4s, v5.s[1]\n\t"
+      "mla v24.4s, v20.4s, v5.s[2]\n\t"
+      "mla v28.4s, v20.4s, v5.s[3]\n\t"
+      "mla v25.4s, v21.4s, v5.s[2]\n\t"
+      "mla v26.4s, v18.4s, v5.s[0]\n\t"
+      "ldp q22, q23, [%[tab], #96]\n\t"
+      "eor w26, w26, w22\n\t"
+      "add w17, %w[ddu], w27\n\t"
+      "lsl w22, w17, #3\n\t"
+      "lsl w20, w13, #3\n\t"
+      "add w21, %w[u], w21\n\t"
+      "lsl w25, w24, #3\n\t"
+      "sub w20, w20, w13\n\t"
+      "sub w25, w25, w24\n\t"
+      "add w13, %w[ddu], w27, lsl #1\n\t"
+      "eor w28, w28, %w[dv]\n\t"
+      "sub w24, %w[ddu], %w[ddv]\n\t"
+      "add w23, w21, w23\n\t"
+      "add w20, %w[v], w20\n\t"
+      "add w25, w23, w25\n\t"
+      "sub w22, w22, w17\n\t"
+      "eor w13, w13, %w[ddu]\n\t"
+      "eor w19, w19, %w[du]\n\t"
+      "add w24, w20, w24\n\t"
+      "orr %w[dv], w26, w13\n\t"
+      "ldp w15, w16, [%[tab], #176]\n\t"
+      "eor w17, %w[v], w20\n\t"
+      "mla v29.4s, v21.4s, v5.s[3]\n\t"
+      "mla v26.4s, v22.4s, v5.s[2]\n\t"
+      "uzp2 v6.8h, v24.8h, v25.8h\n\t"
+      "mla v27.4s, v23.4s, v5.s[2]\n\t"
+      "mla v30.4s, v22.4s, v5.s[3]\n\t"
+      "mla v31.4s, v23.4s, v5.s[3]\n\t"
+      "uzp2 v16.8h, v28.8h, v29.8h\n\t"
+      "ldr q4, [%[fr], #64]\n\t"
+      "orr %w[du], w19, w28\n\t"
+      "add w22, w24, w22\n\t"
+      "lsr w26, %w[v], w15\n\t"
+      "eor w27, w23, w25\n\t"
+      "eor %w[ddv], %w[u], w21\n\t"
+      "uzp2 v7.8h, v26.8h, v27.8h\n\t"
+      "uzp2 v17.8h, v30.8h, v31.8h\n\t"
+      "add v18.8h, v6.8h, v0.8h\n\t"
+      "add v20.8h, v16.8h, v1.8h\n\t"
+      "madd %[v], x26, %[gw2], %[grid]\n\t"
+      "ldp q30, q31, [%[tab], #128]\n\t"
+      "eor %w[ddu], w24, w22\n\t"
+      "orr %w[ddv], %w[ddv], w17\n\t"
+      "lsr w17, w20, w15\n\t"
+      "lsr w13, w21, w15\n\t"
+      "lsr w28, %w[u], w15\n\t"
+      "add v19.8h, v7.8h, v0.8h\n\t"
+      "add v21.8h, v17.8h, v1.8h\n\t"
+      "and v22.16b, v18.16b, v2.16b\n\t"
+      "and v20.16b, v20.16b, v3.16b\n\t"
+      "and v18.16b, v6.16b, v30.16b\n\t"
+      "and v23.16b, v19.16b, v2.16b\n\t"
+      "and v21.16b, v21.16b, v3.16b\n\t"
+      "and v19.16b, v16.16b, v30.16b\n\t"
+      "mla v22.8h, v20.8h, v4.h[4]\n\t"
+      "and v20.16b, v7.16b, v30.16b\n\t"
+      "orr w27, w27, %w[ddu]\n\t"
+      "add %[v], %[v], x28, lsl #1\n\t"
+      "lsr %w[u], w22, w15\n\t"
+      "mla v23.8h, v21.8h, v4.h[4]\n\t"
+      "mul v5.8h, v18.8h, v19.8h\n\t"
+      "and v21.16b, v17.16b, v30.16b\n\t"
+      "ldrh w20, [%[v], #2]\n\t"
+      "ushl v19.8h, v19.8h, v31.8h\n\t"
+      "ldrh w21, [%[v]]\n\t"
+      "orr %w[ddv], %w[ddv], w27\n\t"
+      "add %[v], %[v], %[gw2]\n\t"
+      "lsr w27, w24, w15\n\t"
+      "mul v30.8h, v20.8h, v21.8h\n\t"
+      "ushl v21.8h, v21.8h, v31.8h\n\t"
+      "ushl v20.8h, v20.8h, v31.8h\n\t"
+      "ushl v18.8h, v18.8h, v31.8h\n\t"
+      "ldrh w24, [%[v], #2]\n\t"
+      "lsr %w[ddu], w23, w15\n\t"
+      "ldrh w23, [%[v]]\n\t"
+      "mov x14, %[fr]\n\t"
+      "lsr w19, %w[ddv], w15\n\t"
+      "lsr %w[ddv], w25, w15\n\t"
+      "ldr q31, [%[tab], #160]\n\t"
+      "madd x25, x27, %[gw2], %[grid]\n\t"
+      "sub w23, w23, w21\n\t"
+      "sub w24, w24, w20\n\t"
+      "add x25, x25, %[ddu], lsl #1\n\t"
+      "sub w20, w20, w21\n\t"
+      "lsl w21, w21, w16\n\t"
+      "bfi w20, w23, #16, #16\n\t"
+      "lsr %w[du], %w[du], #31\n\t"
+      "lsr %w[dv], %w[dv], #31\n\t"
+      "ldrh w22, [x25]\n\t"
+      "sub w24, w24, w23\n\t"
+      "ldrh w15, [x25, #2]\n\t"
+      "add x25, x25, %[gw2]\n\t"
+      "dup v27.4s, w21\n\t"
+      "dup v26.4s, w21\n\t"
+      "ldrh w23, [x25, #2]\n\t"
+      "ldrh %w[v], [x25]\n\t"
+      "bfi x20, x24, #32, #16\n\t"
+      "sub w23, w23, w15\n\t"
+      "sub %w[v], %w[v], w22\n\t"
+      "fmov d0, x20\n\t"
+      "sub w23, w23, %w[v]\n\t"
+      "sub w15, w15, w22\n\t"
+      "lsl w22, w22, w16\n\t"
+      "bfi w15, %w[v], #16, #16\n\t"
+      "bfi x15, x23, #32, #16\n\t"
+      "dup v28.4s, w22\n\t"
+      "fmov d2, x15\n\t"
+      "smlal v26.4s, v18.4h, v0.h[0]\n\t"
+      "smlal2 v27.4s, v18.8h, v0.h[0]\n\t"
+      "dup v29.4s, w22\n\t"
+      "smlal v28.4s, v20.4h, v2.h[0]\n\t"
+      "smlal v26.4s, v19.4h, v0.h[1]\n\t"
+      "smlal2 v27.4s, v19.8h, v0.h[1]\n\t"
+      "smlal2 v29.4s, v20.8h, v2.h[0]\n\t"
+      "smlal v28.4s, v21.4h, v2.h[1]\n\t"
+      "smlal v26.4s, v5.4h, v0.h[2]\n\t"
+      "smlal2 v27.4s, v5.8h, v0.h[2]\n\t"
+      "smlal2 v29.4s, v21.8h, v2.h[1]\n\t"
+      "smlal v28.4s, v30.4h, v2.h[2]\n\t"
+      "ushl v26.4s, v26.4s, v31.4s\n\t"
+      "ushl v27.4s, v27.4s, v31.4s\n\t"
+      "smlal2 v29.4s, v30.8h, v2.h[2]\n\t"
+      "ushl v28.4s, v28.4s, v31.4s\n\t"
+      "uzp1 v26.8h, v26.8h, v27.8h\n\t"
+      "ushl v29.4s, v29.4s, v31.4s\n\t"
+      "uzp1 v27.8h, v28.8h, v29.8h\n\t"
+      "st1 {v22.8h, v23.8h}, [x14], #32\n\t"
+      "cbz w19, 1f\n\t"
+      "madd x24, x17, %[gw2], %[grid]\n\t"
+      "dup v0.8h, v6.h[0]\n\t"
+      "dup v2.8h, v16.h[0]\n\t"
+      "dup v4.8h, v7.h[0]\n\t"
+      "madd x23, %[u], %[gw2], %[grid]\n\t"
+      "ldr q29, [%[tab], #128]\n\t"
+      "add x24, x24, x13, lsl #1\n\t"
+      "eor v0.16b, v0.16b, v6.16b\n\t"
+      "eor v2.16b, v2.16b, v16.16b\n\t"
+      "eor v4.16b, v4.16b, v7.16b\n\t"
+      "ldrh w20, [x24]\n\t"
+      "ldrh w21, [x24, #2]\n\t"
+      "add x24, x24, %[gw2]\n\t"
+      "add x23, x23, %[ddv], lsl #1\n\t"
+      "orr v0.16b, v0.16b, v2.16b\n\t"
+      "dup v2.8h, v17.h[0]\n\t"
+      "ldrh %w[v], [x24, #2]\n\t"
+      "ldrh w25, [x24]\n\t"
+      "ldrh w15, [x23]\n\t"
+      "ldrh w22, [x23, #2]\n\t"
+      "add x23, x23, %[gw2]\n\t"
+      "cmhi v0.8h, v0.8h, v29.8h\n\t"
+      "eor v2.16b, v2.16b, v17.16b\n\t"
+      "ldrh w24, [x23, #2]\n\t"
+      "ldrh w19, [x23]\n\t"
+      "sub %w[v], %w[v], w21\n\t"
+      "sub w25, w25, w20\n\t"
+      "sub w21, w21, w20\n\t"
+      "lsl w20, w20, w16\n\t"
+      "sub %w[v], %w[v], w25\n\t"
+      "sub w24, w24, w22\n\t"
+      "bfi w21, w25, #16, #16\n\t"
+      "sub w25, w13, w28\n\t"
+      "sub w19, w19, w15\n\t"
+      "sub w22, w22, w15\n\t"
+      "bfi x21, %[v], #32, #16\n\t"
+      "dup v22.4s, w20\n\t"
+      "dup v23.4s, w20\n\t"
+      "fmov d1, x21\n\t"
+      "orr v4.16b, v4.16b, v2.16b\n\t"
+      "add w21, w25, #1\n\t"
+      "sub w24, w24, w19\n\t"
+      "bfi w22, w19, #16, #16\n\t"
+      "sub %w[v], w17, w26\n\t"
+      "lsl w15, w15, w16\n\t"
+      "smlal v22.4s, v18.4h, v1.h[0]\n\t"
+      "smlal2 v23.4s, v18.8h, v1.h[0]\n\t"
+      "dup v24.4s, w15\n\t"
+      "dup v25.4s, w15\n\t"
+      "cmhi v4.8h, v4.8h, v29.8h\n\t"
+      "smlal v22.4s, v19.4h, v1.h[1]\n\t"
+      "smlal2 v23.4s, v19.8h, v1.h[1]\n\t"
+      "cmp w21, #2\n\t"
+      "add w20, %w[v], #1\n\t"
+      "bfi x22, x24, #32, #16\n\t"
+      "sub w16, %w[ddv], %w[ddu]\n\t"
+      "sub w19, %w[u], w27\n\t"
+      "smlal v22.4s, v5.4h, v1.h[2]\n\t"
+      "fmov d3, x22\n\t"
+      "smlal2 v23.4s, v5.8h, v1.h[2]\n\t"
+      "cset w23, hi\n\t"
+      "cmp w20, #2\n\t"
+      "add w24, w16, #1\n\t"
+      "add w22, w19, #1\n\t"
+      "smlal v24.4s, v20.4h, v3.h[0]\n\t"
+      "smlal2 v25.4s, v20.8h, v3.h[0]\n\t"
+      "ushl v22.4s, v22.4s, v31.4s\n\t"
+      "ushl v23.4s, v23.4s, v31.4s\n\t"
+      "cinc w23, w23, hi\n\t"
+      "cmp w25, #0\n\t"
+      "smlal v24.4s, v21.4h, v3.h[1]\n\t"
+      "smlal2 v25.4s, v21.8h, v3.h[1]\n\t"
+      "uzp1 v22.8h, v22.8h, v23.8h\n\t"
+      "ccmp %w[v], #0, #4, ne\n\t"
+      "smlal v24.4s, v30.4h, v3.h[2]\n\t"
+      "smlal2 v25.4s, v30.8h, v3.h[2]\n\t"
+      "bit v26.16b, v22.16b, v0.16b\n\t"
+      "cinc w23, w23, ne\n\t"
+      "cmp w24, #2\n\t"
+      "ushl v24.4s, v24.4s, v31.4s\n\t"
+      "ushl v25.4s, v25.4s, v31.4s\n\t"
+      "cset w15, hi\n\t"
+      "cmp w22, #2\n\t"
+      "orr %w[du], %w[du], w23\n\t"
+      "cinc w15, w15, hi\n\t"
+      "cmp w16, #0\n\t"
+      "uzp1 v24.8h, v24.8h, v25.8h\n\t"
+      "ccmp w19, #0, #4, ne\n\t"
+      "cinc w15, w15, ne\n\t"
+      "bit v27.16b, v24.16b, v4.16b\n\t"
+      "orr %w[dv], %w[dv], w15\n\t"
+      "1:\n\t"
+      "shl v27.8h, v27.8h, #8\n\t"
+      "shl v26.8h, v26.8h, #8\n\t"
+      "ldr x28, [x14, #-32]\n\t"
+      "add x13, %[fr], #32\n\t"
+      "ldr x26, [x14, #-24]\n\t"
+      "ldr x16, [x14, #-16]\n\t"
+      "ldr x15, [x14, #-8]\n\t"
+      "st1 {v26.8h, v27.8h}, [x13], #32\n\t"
+      "and %w[ddv], w26, #0xffff\n\t"
+      "and w20, w28, #0xffff\n\t"
+      "lsr x27, x26, #48\n\t"
+      "lsr w25, w28, #16\n\t"
+      "lsr x23, x28, #48\n\t"
+      "ubfx %[v], x28, #32, #16\n\t"
+      "lsr %w[ddu], w26, #16\n\t"
+      "ldrb w25, [%[tex], x25]\n\t"
+      "ldrb w20, [%[tex], x20]\n\t"
+      "ldr x17, [x13, #-32]\n\t"
+      "ldrb w23, [%[tex], x23]\n\t"
+      "ldr x21, [x13, #-24]\n\t"
+      "ldrb %w[ddu], [%[tex], %[ddu]]\n\t"
+      "ldrb %w[ddv], [%[tex], %[ddv]]\n\t"
+      "add w20, w20, w17, uxth\n\t"
+      "ldrb %w[v], [%[tex], %[v]]\n\t"
+      "add x23, x23, x17, lsr #48\n\t"
+      "add w25, w25, w17, lsr #16\n\t"
+      "ubfx %[u], x26, #32, #16\n\t"
+      "ubfx x22, x21, #32, #16\n\t"
+      "ubfx x24, x17, #32, #16\n\t"
+      "ldrb w27, [%[tex], x27]\n\t"
+      "add %w[v], %w[v], w24\n\t"
+      "ldrb %w[u], [%[tex], %[u]]\n\t"
+      "add %w[ddv], %w[ddv], w21, uxth\n\t"
+      "ldrb w25, [%[cm], x25]\n\t"
+      "add %w[ddu], %w[ddu], w21, lsr #16\n\t"
+      "ldr %[tab], [x13, #-8]\n\t"
+      "and w28, w16, #0xffff\n\t"
+      "ldrb %w[v], [%[cm], %[v]]\n\t"
+      "ldr x19, [x13, #-16]\n\t"
+      "add %w[u], %w[u], w22\n\t"
+      "ldrb w20, [%[cm], x20]\n\t"
+      "ldrb w23, [%[cm], x23]\n\t"
+      "lsr x17, x16, #48\n\t"
+      "ldrb %w[ddv], [%[cm], %[ddv]]\n\t"
+      "and w22, w15, #0xffff\n\t"
+      "ldrb %w[u], [%[cm], %[u]]\n\t"
+      "orr x20, x20, x25, lsl #8\n\t"
+      "ldrb %w[ddu], [%[cm], %[ddu]]\n\t"
+      "orr %[v], %[v], x23, lsl #8\n\t"
+      "ldrb w28, [%[tex], x28]\n\t"
+      "add x27, x27, x21, lsr #48\n\t"
+      "ldrb w17, [%[tex], x17]\n\t"
+      "lsr w26, w16, #16\n\t"
+      "lsr w21, w15, #16\n\t"
+      "lsr x23, x15, #48\n\t"
+      "ubfx x25, x15, #32, #16\n\t"
+      "ubfx x24, x16, #32, #16\n\t"
+      "ldrb w27, [%[cm], x27]\n\t"
+      "orr %[ddv], %[ddv], %[ddu], lsl #8\n\t"
+      "ldrb w26, [%[tex], x26]\n\t"
+      "ubfx %[ddu], x19, #32, #16\n\t"
+      "ldrb w22, [%[tex], x22]\n\t"
+      "orr %[u], %[u], x27, lsl #8\n\t"
+      "ldrb w21, [%[tex], x21]\n\t"
+      "add w26, w26, w19, lsr #16\n\t"
+      "ldrb w24, [%[tex], x24]\n\t"
+      "add w28, w28, w19, uxth\n\t"
+      "ldrb w25, [%[tex], x25]\n\t"
+      "add x17, x17, x19, lsr #48\n\t"
+      "add w22, w22, %w[tab], uxth\n\t"
+      "ubfx x27, %[tab], #32, #16\n\t"
+      "ldrb w23, [%[tex], x23]\n\t"
+      "add w24, w24, %w[ddu]\n\t"
+      "ldrb w26, [%[cm], x26]\n\t"
+      "add w21, w21, %w[tab], lsr #16\n\t"
+      "ldrb w28, [%[cm], x28]\n\t"
+      "add w25, w25, w27\n\t"
+      "ldrb w17, [%[cm], x17]\n\t"
+      "ldrb w22, [%[cm], x22]\n\t"
+      "add x23, x23, %[tab], lsr #48\n\t"
+      "ldrb w24, [%[cm], x24]\n\t"
+      "orr x28, x28, x26, lsl #8\n\t"
+      "ldrb w25, [%[cm], x25]\n\t"
+      "ldrb w21, [%[cm], x21]\n\t"
+      "orr x20, x20, %[v], lsl #16\n\t"
+      "ldrb w23, [%[cm], x23]\n\t"
+      "orr %[ddv], %[ddv], %[u], lsl #16\n\t"
+      "orr x24, x24, x17, lsl #8\n\t"
+      "orr x25, x25, x23, lsl #8\n\t"
+      "orr x20, x20, %[ddv], lsl #32\n\t"
+      "orr x22, x22, x21, lsl #8\n\t"
+      "orr x28, x28, x24, lsl #16\n\t"
+      "orr x22, x22, x25, lsl #16\n\t"
+      "orr x28, x28, x22, lsl #32\n\t"
+      "stp x20, x28, [%[dest]]"
+      // END lit16_block
+      : [u] "+r"(u), [v] "+r"(v), [du] "+r"(du), [dv] "+r"(dv), [ddu] "+r"(ddu), [ddv] "+r"(ddv), [tab] "+r"(tp)
+      : [tex] "r"(src.texels), [cm] "r"(src.colormap), [grid] "r"(src.grid), [gw2] "r"(gw2), [dest] "r"(dest),
+        [fr] "r"(&fr)
+      : "x13", "x14", "x15", "x16", "x17", "x19", "x20", "x21", "x22", "x23", "x24", "x25", "x26", "x27", "x28", "v0",
+        "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24",
+        "v25", "v26", "v27", "v28", "v29", "v30", "v31", "cc", "memory");
+  return (du != 0 ? 1u : 0u) | (dv != 0 ? 2u : 0u);
+}
+#endif
+
+}  // namespace
+}  // namespace sb::simd
