@@ -200,7 +200,8 @@ inline __attribute__((always_inline)) void long_passes2(LongPass& st, const Pers
       "orr x5, x1, x3, lsl #16\n\t" "orr x1, x10, x9, lsl #8\n\t" "orr x3, x1, x2, lsl #16\n\t" "ldr x1, %[s32]\n\t"
       "str w5, [x0, #24]\n\t" "mov x27, v0.d[1]\n\t" "fmov x26, d0\n\t" "mov v26.16b, v2.16b\n\t"
       "str w3, [x0, #28]\n\t" "add x0, x0, #32\n\t" "cmp x0, x1\n\t" "b.lo 1b\n\t"
-      "b.ne 2f\n\t" "ldr q19, %[s48]\n\t" "b 1b\n\t" "2:"
+      "b.ne 2f\n\t" "ldr q19, %[s48]\n\t" "b 1b\n\t" "nop\n\t"
+      "nop\n\t" "2:"
       : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_dd4), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "=w"(r_z23), "=w"(r_zsn), "=w"(r_cc), "+r"(r_tx), "+r"(r_w), [s0] "=m"(s0), [s16] "=m"(s16), [s32] "=m"(s32), [s48] "=m"(s48)
       : [kmin] "S"(kLongMin)
       : "x3", "x4", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v28", "v30", "v31", "cc", "memory");

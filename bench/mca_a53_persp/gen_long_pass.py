@@ -610,7 +610,11 @@ def emit_header3(ins, outh, setup):
     # branch over the padding (never run). A span of one pass only (full = 0 in x21, n = 65 ..
     # 80) falls through that branch (a cbnz, as the b it replaced one instruction for the
     # others) to k32 = offl, the last pass's, and enters the loop from there.
-    allx = su + ["cbnz w21, 1f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1f", ".p2align 11", "1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b", "2:"]
+    # PAD never-run nops after the loop's last branch: the code after the loop (the tail, and
+    # persp_lin_a64 and lin_pairs_a64 after persp_long_a64) at the addresses it had with the
+    # 330-instruction body (REUSE_U took 2 out; persp192lin's A72 4.859 -> 4.879 by its qemu cuts).
+    pad = ["nop"] * max(0, 330 - len(lines))
+    allx = su + ["cbnz w21, 1f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1f", ".p2align 11", "1:"] + lines + ["b.ne 2f", f"ldr q{PIN['k32'][1:]}, [sp, #48]", "b 1b"] + pad + ["2:"]
     # The four stack slots (the searched code's [sp], [sp, #16], [sp, #32], [sp, #48]) as memory
     # operands in the caller's frame: no sp adjustment (the first load after the asm used to
     # wait for its add sp).
