@@ -68,28 +68,43 @@ alignas(16) constexpr LitA64Tab kLitA64Tab[4] = {lit_a64_tab(0), lit_a64_tab(1),
 
 // The block's stack frame: the 16 texel indices, the 16 (num >> S + 8) << 8, then
 // soff_mod, toff_mod, tex_width - 1, tex_height - 1, tex_width (LitSpanSource::wrap16).
+// The caller keeps the run's arguments after them (the block does not read them): read
+// back only when a group is drawn again, so no register holds them across the block.
 struct alignas(16) LitA64Frame {
   uint16_t ti[16], light[16];
   uint16_t wrap[8];
+  uint8_t* dest;
+  const LitSpanSource* src;
+  uint32_t args[6];  // u, v, du, dv, ddu, ddv
 };
 static_assert(offsetof(LitA64Frame, wrap) == 64, "lit16_block's frame offsets");
 
 // Draws dest[0..15] (see above); bit 0 / bit 1 of the result: pixels 0-7 / 8-15 must be
 // drawn again. Power-of-two textures of at most 2^16 texels only.
-inline unsigned lit16_block(uint8_t* dest, const LitSpanSource& src, LitA64Frame& fr, const LitA64Tab& tab,
-                            uint32_t u32, uint32_t v32, uint32_t du32, uint32_t dv32, uint32_t ddu32,
-                            uint32_t ddv32) {
-  uint64_t u = u32, v = v32, du = du32, dv = dv32, ddu = ddu32, ddv = ddv32;
+// Always inlined (into run16, asm/lit_span_neon.cpp): a call passed four of its ten
+// arguments on the stack and saved the callee-saved registers twice (caller and block).
+__attribute__((always_inline)) inline unsigned lit16_block(uint8_t* dest, const LitSpanSource& src, LitA64Frame& fr,
+                                                           const LitA64Tab& tab, uint32_t u32, uint32_t v32,
+                                                           uint32_t du32, uint32_t dv32, uint32_t ddu32,
+                                                           uint32_t ddv32) {
   // Every operand is read-write: bench/mca_a53_lit/regalloc.py reuses a dead input's
   // register as scratch (fewer callee-saved clobbers: each pair costs the function an stp
-  // and an ldp).
-  uint64_t gw2 = uint64_t(src.grid_width) * 2;
-  const LitA64Tab* tp = &tab;
-  const uint8_t* tex = src.texels;
-  const uint8_t* cm = src.colormap;
-  const uint16_t* grid = src.grid;
-  uint8_t* dp = dest;
-  LitA64Frame* fp = &fr;
+  // and an ldp). The operands are pinned to x0-x12: left free, GCC put some in x27 / x28
+  // and saved those too. The pins follow run16's arguments (dest, n, src, u, v, du, dv,
+  // ddu in x0-x7, ddv on the stack), so few moves precede the block.
+  register uint64_t u asm("x3") = u32;
+  register uint64_t v asm("x4") = v32;
+  register uint64_t du asm("x5") = du32;
+  register uint64_t dv asm("x6") = dv32;
+  register uint64_t ddu asm("x7") = ddu32;
+  register uint64_t ddv asm("x1") = ddv32;
+  register const uint8_t* tex asm("x8") = src.texels;
+  register const uint8_t* cm asm("x9") = src.colormap;
+  register const uint16_t* grid asm("x10") = src.grid;
+  register uint64_t gw2 asm("x11") = uint64_t(src.grid_width) * 2;
+  register uint8_t* dp asm("x0") = dest;
+  register LitA64Frame* fp asm("x2") = &fr;
+  register const LitA64Tab* tp asm("x12") = &tab;
   asm volatile(
       // BEGIN lit16_block
       "fmov s5, %w[du]\n\t"
