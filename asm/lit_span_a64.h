@@ -91,13 +91,15 @@ __attribute__((always_inline)) inline unsigned lit16_block(uint8_t* dest, const 
   // register as scratch (fewer callee-saved clobbers: each pair costs the function an stp
   // and an ldp). The operands are pinned to x0-x12: left free, GCC put some in x27 / x28
   // and saved those too. The pins follow run16's arguments (dest, n, src, u, v, du, dv,
-  // ddu in x0-x7, ddv on the stack), so few moves precede the block.
-  register uint64_t u asm("x3") = u32;
-  register uint64_t v asm("x4") = v32;
-  register uint64_t du asm("x5") = du32;
-  register uint64_t dv asm("x6") = dv32;
-  register uint64_t ddu asm("x7") = ddu32;
-  register uint64_t ddv asm("x1") = ddv32;
+  // ddu in x0-x7, ddv on the stack), so few moves precede the block. u..ddv stay 32-bit
+  // (no zero-extending moves): the block reads their entry values as w registers only
+  // (bench/mca_a53_lit/regalloc.py checks it) and writes the flags as w registers.
+  register uint32_t u asm("x3") = u32;
+  register uint32_t v asm("x4") = v32;
+  register uint32_t du asm("x5") = du32;
+  register uint32_t dv asm("x6") = dv32;
+  register uint32_t ddu asm("x7") = ddu32;
+  register uint32_t ddv asm("x1") = ddv32;
   register const uint8_t* tex asm("x8") = src.texels;
   register const uint8_t* cm asm("x9") = src.colormap;
   register const uint16_t* grid asm("x10") = src.grid;

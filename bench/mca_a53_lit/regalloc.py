@@ -13,7 +13,8 @@
 # inline asm's operands, bench/to_inline.py), and so do du / dv (x2, x3) at the end (the
 # flags the caller reads); other webs take the lowest register free over their live range:
 # x0-x12 (every operand is read-write in the header, so a dead operand is scratch), x13-x17,
-# then x19-x28. Prints the callee-saved registers used (the header's clobbers).
+# then x19-x28. Prints the callee-saved registers used (the header's clobbers). Stops if the
+# entry value of u..ddv (32-bit operands in the header) is read as an x register.
 import re, sys
 
 REG = re.compile(r"\b([xw])([0-9]|[12][0-9]|30)\b")
@@ -21,6 +22,7 @@ STORES = ("st", "stp", "str", "strb", "strh", "stur", "st1", "st2", "st3", "st4"
 NODEF = ("cmp", "cmn", "tst", "ccmp", "ccmn", "cbz", "cbnz", "tbz", "tbnz", "b", "fcmp")
 RMW = ("bfi", "bfxil", "movk")
 OPERANDS = range(13)
+W32 = range(6)  # u..ddv: 32-bit in the header (their entry values must be read as w only)
 LIVE_OUT = (2, 3)
 
 
@@ -166,6 +168,11 @@ def main(inp, out):
         taken = {color[b] for b in adj[w] if b in color}
         color[w] = next(r for r in pool if r not in taken)
     maxlive = max(len(live_out[i]) for i in range(n))
+    for i in range(n):
+        for r in ins[i][2] if i != lab else ():
+            if any(find(use_defs[(i, r)]) == find((-1, q)) for q in W32) and \
+                    re.search(r"\bx%d\b" % r, lines[i].partition(" ")[2]):
+                sys.exit(f"line {i + 1}: a 32-bit operand's entry value read as x{r}: {lines[i]}")
     # Rewrite.
     res = []
     for i, l in enumerate(lines):
