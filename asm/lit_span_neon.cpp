@@ -463,18 +463,18 @@ __attribute__((noinline)) void neon_general(uint8_t* dest, int n, const LitSpanS
   neon_pp_by_mip<false>(dest, n, src, u, v, du, dv, ddu, ddv);
 }
 
-// Every run but the block's (a prepared source, n > 0): the per-pixel kernel for short runs
-// that move more than a cell a group, else neon_general.
+#if defined(__aarch64__) && defined(__GNUC__)
+// aarch64: every run but the block's (a prepared source, n > 0): the per-pixel kernel for
+// short runs that move more than a cell a group, else neon_general.
 __attribute__((noinline)) void neon_rest(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v,
                                          uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-#if defined(__aarch64__) && defined(__GNUC__)
   if (!few_cells(src, du, dv, ddu, ddv) && n <= 16) {  // wrap16[6]: power-of-two texture
     if (src.wrap16[6] != 0) return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
     return neon_pp_by_mip<false>(dest, n, src, u, v, du, dv, ddu, ddv);
   }
-#endif
   neon_general(dest, n, src, u, v, du, dv, ddu, ddv);
 }
+#endif
 
 }  // namespace
 
@@ -488,8 +488,10 @@ void lit_span_neon(uint8_t* dest, int n, const LitSpanSource& src, int32_t u, in
   // The engine's full runs: run16 tests the rest.
   if (n == 16)
     return run16(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
-#endif
   neon_rest(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
+#else
+  neon_general(dest, n, src, uint32_t(u), uint32_t(v), uint32_t(du), uint32_t(dv), uint32_t(ddu), uint32_t(ddv));
+#endif
 }
 
 }  // namespace sb::simd
