@@ -189,8 +189,8 @@ const Table& table() {
     if (lit_span_neon_compiled()) {
       r.v[r.count++] = {"neon", lit_span_neon, true};
 #if defined(__aarch64__)
-      // bench/counts.md lit16: neon 21.7 against fast 38.7 cycles/px (Cortex-A53 model),
-      // 12.3 against 26.5 (A72); lit16m2 (mip 2): 34.5 against 38.7, 16.5 against 26.5.
+      // bench/counts.md lit16: neon 20.6 against fast 38.7 cycles/px (Cortex-A53 model),
+      // 11.5 against 26.5 (A72); lit16m2 (mip 2): 33.5 against 38.7, 15.9 against 26.5.
       // On armv7, fast stays: lit16 34.3 against neon's 33.3 (Cortex-A9 model), lit16m2
       // 34.2 against 44.4; and neon's per-group lane moves to core registers (the one-cell
       // test, lane 0's cell) stall a real Cortex-A9 for many cycles, which llvm-mca does
