@@ -741,7 +741,7 @@ void batch_from(const PerspItem* it, const PerspItem* end, const uint8_t* texels
   if (it != end && tiny_curve_a64(*it)) return tiny_then_batch(it, end, texels, width);
   // A pair of 17 .. 48 px spans with two more such lengths after it (one pair alone costs
   // pairs48_a64's entry more than its block saves: persp32mix A53 +0.08); the lengths first
-  // (one short block: the whole test as one block cost the other rows up to +0.03)
+  // (one short block: the whole test as one block cost the other rows up to +0.03).
   if (end - it >= 4 && ((uint32_t(it[0].n) - 17u < 32u) & (uint32_t(it[1].n) - 17u < 32u) &
                         (uint32_t(it[2].n) - 17u < 32u) & (uint32_t(it[3].n) - 17u < 32u))) {
     if (pair48_a64(it[0]) & pair48_a64(it[1])) return pairs48_a64(it, end, texels, width);
