@@ -210,7 +210,13 @@ void move_camera(HostState& h, const HostInput& in, double dt) {
 }  // namespace
 
 void render_frame(HostState& h) {
-  light_styles_at(h.time, h.animate_styles ? h.animate_styles->value != 0.0f : true, h.styles);
+  const float style_mode = h.animate_styles ? h.animate_styles->value : 1.0f;
+  light_styles_at(h.time, style_mode != 0.0f, h.styles);
+  if (style_mode == 2.0f) {  // every style value new every frame, as starbow_bench --styles=dynamic:
+    // every lit surface in view rebuilds each frame in the cached path (bench/singlepass_arm.sh)
+    for (int i = 0; i < kMaxLightStyleSlots; ++i) h.styles[i] = 240 + 8 * int((h.rendered_frames + unsigned(i)) % 4u);
+  }
+  ++h.rendered_frames;
   h.memory.begin_frame();
   if (!h.world) {
     for (int y = 0; y < h.fb.height; ++y) std::memset(h.fb.pixels + size_t(y) * size_t(h.fb.stride), 0, size_t(h.fb.width));

@@ -214,7 +214,7 @@ Status register_commands(HostState& h) {
   SB_TRY(c.add_command("help", cmd_help, &h, "list commands and cvars"));
   h.fov = c.add_cvar("fov", "90", "horizontal field of view in degrees (10..170)", fov_changed, &h);
   h.speed = c.add_cvar("cl_speed", "320", "free-fly speed in units per second (shift: 3x)");
-  h.animate_styles = c.add_cvar("r_lightstyles", "1", "1 = animate light styles, 0 = all normal");
+  h.animate_styles = c.add_cvar("r_lightstyles", "1", "1 = animate light styles, 0 = all normal, 2 = every style changes every frame (benchmark)");
   h.single_pass = c.add_cvar("r_singlepass", "0",
                              "1 = world surfaces drawn single pass (texture x light per pixel, no surface cache)");
   if (!h.fov || !h.speed || !h.animate_styles || !h.single_pass) return make_error("console: cvar table is full");

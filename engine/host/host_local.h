@@ -64,6 +64,7 @@ struct HostState {
   ViewParams view;
   double time = 0.0;            // seconds of game time (light styles, animation)
   int styles[kMaxLightStyleSlots] = {};
+  unsigned rendered_frames = 0;  // render_frame calls (r_lightstyles 2 steps every style per frame)
   RenderStats stats;
   bool render_error_logged = false;
 

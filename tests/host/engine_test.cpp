@@ -174,6 +174,37 @@ TEST_F(HostTest, ResizeWithinTheReservedSizeAndClampAbove) {
   EXPECT_EQ(f.height, 200);
 }
 
+// r_lightstyles 2 (the benchmark's "dynamic" light, bench/singlepass_arm.py): every style value
+// changes every frame (240, 248, 256, 264 in turn), so a still view changes from frame to frame
+// and differs from r_lightstyles 0 (all 256) in most frames. Both paths draw the same picture.
+TEST_F(HostTest, LightStylesTwoChangesEveryStyleEveryFrame) {
+  SB_REQUIRE_QUAKE_DATA();
+  std::vector<std::vector<uint8_t>> pics[2][2];  // [mode 0 / 2][cached / single] frames
+  for (int m = 0; m < 2; ++m) {
+    for (int single = 0; single < 2; ++single) {
+      EngineSession engine({"-basedir", quake_dir(), "-res", "320x200", "+viewmap", "start", "+r_lightstyles",
+                            m ? "2" : "0", "+r_singlepass", single ? "1" : "0"});
+      ASSERT_TRUE(engine.init_status().is_ok());
+      for (int k = 0; k < 8; ++k) {
+        HostFrame f = engine.frame();
+        ASSERT_NE(f.pixels, nullptr);
+        std::vector<uint8_t> pic;
+        for (int y = 0; y < f.height; ++y) pic.insert(pic.end(), f.pixels + y * f.stride, f.pixels + y * f.stride + f.width);
+        pics[m][single].push_back(pic);
+      }
+    }
+  }
+  int changes = 0, unlike_static = 0;
+  for (size_t k = 2; k < 8; ++k) {
+    changes += pics[1][0][k] != pics[1][0][k - 1];
+    unlike_static += pics[1][0][k] != pics[0][0][k];
+  }
+  EXPECT_GE(changes, 5) << "r_lightstyles 2: the picture should change every frame";
+  EXPECT_GE(unlike_static, 4) << "r_lightstyles 2: most frames should differ from all-normal styles";
+  for (int m = 0; m < 2; ++m)
+    for (size_t k = 0; k < 8; ++k) EXPECT_TRUE(pics[m][0][k] == pics[m][1][k]) << "mode " << m << " frame " << k;
+}
+
 TEST_F(HostTest, FlythroughPrintsFiguresThenRunsTheRestOfTheBuffer) {
   SB_REQUIRE_QUAKE_DATA();
   EngineSession engine({"-basedir", quake_dir(), "-res", "320x200", "+viewmap", "start", "+flythrough", "20",
