@@ -124,9 +124,7 @@ void flythrough(benchmark::State& state, std::string map, int width, int height,
     in.view = host::camera_path_view(path.value(), frame % kPathFrames, kPathFrames, 90.0f);
     in.time = frame * (1.0 / 30.0);
     host::light_styles_at(in.time, light == kAnimated, styles);
-    if (light == kDynamic) {
-      for (int i = 0; i < kMaxLightStyleSlots; ++i) styles[i] = 240 + 8 * ((frame + i) % 4);  // new every frame
-    }
+    if (light == kDynamic) host::light_styles_every_frame(unsigned(frame), styles);
     in.lightstyles = styles;
     in.colormap = colormap;
     double seconds = 0.0;

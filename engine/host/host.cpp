@@ -212,10 +212,8 @@ void move_camera(HostState& h, const HostInput& in, double dt) {
 void render_frame(HostState& h) {
   const float style_mode = h.animate_styles ? h.animate_styles->value : 1.0f;
   light_styles_at(h.time, style_mode != 0.0f, h.styles);
-  if (style_mode == 2.0f) {  // every style value new every frame, as starbow_bench --styles=dynamic:
-    // every lit surface in view rebuilds each frame in the cached path (bench/singlepass_arm.sh)
-    for (int i = 0; i < kMaxLightStyleSlots; ++i) h.styles[i] = 240 + 8 * int((h.rendered_frames + unsigned(i)) % 4u);
-  }
+  // r_lightstyles 2: every style new every frame (bench/singlepass_arm.py's "dynamic").
+  if (style_mode == 2.0f) light_styles_every_frame(h.rendered_frames, h.styles);
   ++h.rendered_frames;
   h.memory.begin_frame();
   if (!h.world) {

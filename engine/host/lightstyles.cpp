@@ -36,6 +36,10 @@ int light_style_letter_value(char c) {
   return (c - 'a') * kLightStyleNormal / 12;
 }
 
+void light_styles_every_frame(unsigned frame, int* out) {
+  for (int i = 0; i < kMaxLightStyleSlots; ++i) out[i] = 240 + 8 * int((frame + unsigned(i)) % 4u);
+}
+
 void light_styles_at(double seconds, bool animate, int* out) {
   for (int i = 0; i < kMaxLightStyleSlots; ++i) out[i] = kLightStyleNormal;
   if (!animate) return;

@@ -25,4 +25,10 @@ int light_style_letter_value(char c);
 // When animate is false every style is 256.
 void light_styles_at(double seconds, bool animate, int* out);
 
+// Fills out[kMaxLightStyleSlots] with values that all change every frame (240 .. 264 in
+// steps of 8, each style a frame ahead of the one before): a benchmark mode in which every
+// lit surface in view rebuilds each frame in the cached path (r_lightstyles 2,
+// starbow_bench --styles=dynamic).
+void light_styles_every_frame(unsigned frame, int* out);
+
 }  // namespace sb::host

@@ -158,6 +158,25 @@ TEST(LightStyles, NormalUnanimatedAndPatternsAt10Hz) {
   EXPECT_EQ(light_style_pattern(32), nullptr);
 }
 
+// The benchmark mode (r_lightstyles 2): every style's value differs from the frame before,
+// near normal brightness, and style i is one frame ahead of style i - 1.
+TEST(LightStyles, EveryFrameModeChangesEveryStyleEachFrame) {
+  int prev[kMaxLightStyleSlots], s[kMaxLightStyleSlots];
+  light_styles_every_frame(0, prev);
+  for (unsigned f = 1; f < 9; ++f) {
+    light_styles_every_frame(f, s);
+    for (int i = 0; i < kMaxLightStyleSlots; ++i) {
+      EXPECT_NE(s[i], prev[i]) << "style " << i << " frame " << f;
+      EXPECT_GE(s[i], 240);
+      EXPECT_LE(s[i], 264);
+      if (i > 0) {
+        EXPECT_EQ(s[i - 1], prev[i]) << "style " << i << " frame " << f;
+      }
+    }
+    std::memcpy(prev, s, sizeof s);
+  }
+}
+
 TEST(MapFileName, AddsFolderAndExtensionOnce) {
   char out[64];
   ASSERT_TRUE(map_file_name("start", out, sizeof out));
