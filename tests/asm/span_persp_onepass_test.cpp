@@ -16,6 +16,7 @@
 
 #include "asm/kernels.h"
 #include "asm/span_persp.h"
+#include "tests/asm/span_persp_batch_util.h"
 
 namespace {
 
@@ -119,37 +120,6 @@ PerspSpan one_pass_span(std::mt19937& rng, int kind, int sw, int sh) {
   return ::testing::AssertionSuccess();
 }
 
-// Batches: each variant's surface_spans_persp against the reference item by item, each
-// item's dest between guard bytes.
-::testing::AssertionResult batch_matches(std::vector<PerspItem> items, const uint8_t* surf, int sw, int sh) {
-  size_t size = kGuard;
-  std::vector<size_t> offsets;
-  for (const PerspItem& it : items) {
-    offsets.push_back(size);
-    size += size_t(std::max(it.n, 0)) + kGuard;
-  }
-  std::vector<uint8_t> ref(size, kGuardByte), got(size);
-  for (size_t i = 0; i < items.size(); ++i)
-    sb::simd::surface_span_persp_scalar(ref.data() + offsets[i], items[i].n, surf, sw, sh, items[i].span);
-  for (int v = 0; v < sb::simd::variant_count(); ++v) {
-    const sb::simd::Variant var = sb::simd::variant(v);
-    if (!var.kernels || !var.supported) continue;
-    std::fill(got.begin(), got.end(), kGuardByte);
-    for (size_t i = 0; i < items.size(); ++i) items[i].dest = got.data() + offsets[i];
-    var.kernels->surface_spans_persp(items.data(), int(items.size()), surf, sw, sh);
-    const auto d = std::mismatch(ref.begin(), ref.end(), got.begin());
-    if (d.first != ref.end()) {
-      const size_t at = size_t(d.first - ref.begin());
-      const size_t item = size_t(std::upper_bound(offsets.begin(), offsets.end(), at) - offsets.begin());
-      auto r = ::testing::AssertionFailure() << var.kernels->name << " wrote " << int(*d.second) << " for "
-                                             << int(*d.first) << " at buffer byte " << at;
-      if (item > 0) r << ", item " << item - 1 << " (n " << items[item - 1].n << ", byte " << at - offsets[item - 1] << ")";
-      return r;
-    }
-  }
-  return ::testing::AssertionSuccess();
-}
-
 std::vector<uint8_t> make_surface(std::mt19937& rng, int sw, int sh) {
   std::vector<uint8_t> surf(size_t(sw) * sh);
   for (auto& b : surf) b = uint8_t(rng());
@@ -207,7 +177,7 @@ TEST(AsmSpanPerspOnePass, EveryLengthMatchesInBatches) {
           if (shape == 4 && i + 1 < count) other();  // broken runs
         }
         if (shape & 2) other();
-        ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " n " << n << " shape " << shape << " sw " << sw;
+        ASSERT_TRUE(sb::test_persp::batch_matches(items, surf.data(), sw, sh)) << " n " << n << " shape " << shape << " sw " << sw;
         spans += long(items.size());
       }
     }
