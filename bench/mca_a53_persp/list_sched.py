@@ -26,13 +26,15 @@ def unit(l):
 CAP = dict(alu=2, mac=1, ls=1, fp=1, br=1)
 
 
-def greedy(body, lat, info, unit, cap, limit=None):
+def greedy(body, lat, info, unit, cap, limit=None, pinned=lambda x: False, hard=False):
     """The greedy in-order list schedule of body (one region, no branch targets inside):
     info[j] = (reads, writes, is_store[, barrier]) as sets of register names; a consumer waits
     for its producer's latency, other orderings (write after read or write, store after store,
     barriers) only keep their order; two issues a cycle within cap[unit]; results write back in
     order. limit: at most that many virtual vector names ("V..." in info) live where a
-    candidate that fits exists (vsched.py). Returns (order, span in cycles)."""
+    candidate that fits exists (vsched.py). pinned(name): names outside the allocation pool,
+    not counted against the limit. hard: where no candidate fits the limit, only those that free
+    the most registers are taken (otherwise any ready one). Returns (order, span in cycles)."""
     n = len(body)
     bar = [len(x) > 3 and x[3] for x in info]
     preds = [[] for _ in range(n)]  # (pred, min distance in issue cycles)
@@ -57,13 +59,13 @@ def greedy(body, lat, info, unit, cap, limit=None):
         for x in info[j][0] | info[j][1]:
             if x.startswith("V"):
                 uses[x] = uses.get(x, 0) + 1
-    live = set(x for x in uses if not any(x in info[j][1] for j in range(n)))
+    live = set(x for x in uses if not any(x in info[j][1] for j in range(n)) and not pinned(x))
     left = dict(uses)
 
     def net(j):
         r, w = info[j][:2]
-        new = len([x for x in w if x.startswith("V") and x not in live])
-        dead = len([x for x in (r | w) if x.startswith("V") and left[x] == 1 and (x in live or x in w)])
+        new = len([x for x in w if x.startswith("V") and x not in live and not pinned(x)])
+        dead = len([x for x in (r | w) if x.startswith("V") and not pinned(x) and left[x] == 1 and (x in live or x in w)])
         return new - dead
     done, issue, order = set(), {}, []
     t, used, lastW = 0, {}, 0
@@ -71,6 +73,9 @@ def greedy(body, lat, info, unit, cap, limit=None):
         best = None
         ok = [j for j in range(n) if j not in done and all(i in done for i, _ in preds[j])]
         fit = [j for j in ok if limit is None or len(live) + net(j) <= limit]
+        if not fit and hard:  # over the limit: only the candidates that free the most
+            low = min(net(j) for j in ok)
+            fit = [j for j in ok if net(j) == low]
         for j in (fit or ok):
             e = max([t] + [issue[i] + d for i, d in preds[j]] + [lastW - lat[j]])
             while True:
@@ -83,7 +88,7 @@ def greedy(body, lat, info, unit, cap, limit=None):
                 best = (key, j, e)
         (_, j, e) = best
         for x in info[j][0] | info[j][1]:
-            if x.startswith("V"):
+            if x.startswith("V") and not pinned(x):
                 left[x] -= 1
                 if left[x] == 0:
                     live.discard(x)

@@ -6,7 +6,7 @@
 #
 #   gen_pair_asm.py OUT.s          the block in program order, registers allocated least
 #                                  recently freed first (v0 .. v28)
-#   gen_pair_asm.py --vs OUT.vs    the same with virtual registers (vsched_hard.py's input; then
+#   gen_pair_asm.py --vs OUT.vs    the same with virtual registers (input of ../mca_a53_pair/vsched.py --hard; then
 #                                  bench/mca_a53_p64/alloc.py OUT.vs A.s `gen_pair_asm.py --pins` 0,..,28)
 #   gen_pair_asm.py --embed IN.s NOTE > asm/span_persp_a64tiny_pair.h
 #                                  the (searched) block as the header's asm statement
