@@ -2,7 +2,8 @@
 // order from bench/order_search.py (standalone, A53 64 cycles as a loop, A57 25.5; then in its qemu
 // block, GCC's ddi and pass_last's head pinned, --head=2 --tail=91: 129.03 -> 126.03, wt-l192e). Written
 // into the header by tail_inline.py (tail2_steps) here. Registers: operands w0 du, w1 dv, w2 d1u, w3 d1v
-// (inputs); d0 cc, d1 y, d2 sf, d3 z1, d4 z2, d5 zh (inputs); x4 b_d, x5 b_dd, w6 lnu, w7 lnv,
+// (inputs); d0 cc, d1 y, d2 sf, v3 z23 = [z1, z2] (the loop's z23, its lanes added by faddp:
+// no lane moves before the block), d5 zh (inputs); x4 b_d, x5 b_dd, w6 lnu, w7 lnv,
 // w8 ddu, w18 ddv (outputs); x9 - x17 and v16 - v25 fixed scratch (clobbers).
 sxtw x11, w2
 cmp x11, #0
@@ -15,7 +16,7 @@ cmp x12, #0
 scvtf d25, w3
 fmul d24, d24, d0
 fmul d18, d16, d1
-fadd d20, d3, d4
+faddp d20, v3.2d
 fmov d23, #-2.0
 fmul d19, d17, d1
 cneg x16, x12, lt
