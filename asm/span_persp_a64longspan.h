@@ -24,10 +24,13 @@ namespace {
 // double(d1u) cc, dd = fcvtzs(ddf), then steps16_dd in the long loop's 12-op form) beside the
 // last run's step groups 0 .. 6 of persp_long_a64_inl's tail (the same operations: du, dv the
 // last run's deltas, y = kRecipSteps[s], sf = double(s), z23 its two depths [z1, z2] as the
-// loop leaves them (their sum by faddp: no lane moves in the block before), zh = zc / 2;
+// loop leaves them (their sum by faddp: no lane moves in the block before), zc (the curve
+// factor c2 = -(zc (z1 + z2)) by one fnmul: the same bits as step groups 2, 3's -2 ((zc / 2)
+// (z1 + z2)), the scalings by 1/2 and -2 being exact unless c2 is subnormal or overflows, where
+// both give the same infinity or a dd of 0; no zc / 2 multiply in the block before);
 // outputs lnu, lnv = trunc(q), ddu, ddv = the range-masked dd, for last_steps_ddi).
 SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, double cc, double y, double sf,
-                           float64x2_t z23, double zh, uint64_t& b_d, uint64_t& b_dd, int32_t& l_u,
+                           float64x2_t z23, double zc, uint64_t& b_d, uint64_t& b_dd, int32_t& l_u,
                            int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
   __asm__(
       // BEGIN tail2_steps
@@ -43,14 +46,13 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
       "fmul d24, d24, %d[cc]\n\t"
       "fmul d18, d16, %d[y]\n\t"
       "faddp d20, %[z23].2d\n\t"
-      "fmov d23, #-2.0\n\t"
       "fmul d19, d17, %d[y]\n\t"
       "cneg x16, x12, lt\n\t"
       "fmul d25, d25, %d[cc]\n\t"
       "fcvtzs w9, d24\n\t"
       "fmsub d21, d18, %d[sf], d16\n\t"
       "fmsub d22, d19, %d[sf], d17\n\t"
-      "fmul d20, %d[zh], d20\n\t"
+      "fnmul d20, %d[zc], d20\n\t"
       "fcvtzs w10, d25\n\t"
       "sbfiz x13, x9, #7, #32\n\t"
       "sub x13, x13, w9, sxtw #3\n\t"
@@ -60,7 +62,6 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
       "cmp x17, x15, lsl #1\n\t"
       "fmadd d19, d22, %d[y], d19\n\t"
       "fmadd d18, d21, %d[y], d18\n\t"
-      "fmul d20, d20, d23\n\t"
       "csel x13, x13, xzr, ls\n\t"
       "add %[bdd], x14, x16\n\t"
       "csel w9, w9, wzr, ls\n\t"
@@ -97,7 +98,7 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
       // END tail2_steps
       : [bd] "=&r"(b_d), [bdd] "=&r"(b_dd), [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
       : [du] "r"(du), [dv] "r"(dv), [d1u] "r"(d1u), [d1v] "r"(d1v), [cc] "w"(cc), [y] "w"(y), [sf] "w"(sf),
-        [z23] "w"(z23), [zh] "w"(zh)
+        [z23] "w"(z23), [zc] "w"(zc)
       : "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21",
         "v22", "v23", "v24", "v25", "cc");
 }
@@ -107,10 +108,11 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
 // (bench/mca_a53_persp/tail1_steps.s, written in by tail_inline.py (tail1_steps) there): the step groups 0 ..
 // 6 of persp_long_a64_inl's tail (du, dv the last run's deltas, y = kRecipSteps[s], sf =
 // double(s), s = max(steps, 1), z1 and z2's lane 0 its two depths (z2: the loop's z23 as it
-// leaves it, read as its d register: no lane move), zh = zc / 2) then last_steps_ddi's
+// leaves it, read as its d register: no lane move), zc (c2 = -(zc (z1 + z2)) by one fnmul, as
+// tail2_steps)) then last_steps_ddi's
 // operations (asm/span_persp_arm.h; s, T = steps (steps - 1) / 2, s - 1 and the steps > 1 mask
 // computed here from steps); outputs the last run's steps lu = {l_u, dd_u}, lv = {l_v, dd_v}.
-SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double sf, double z1, float64x2_t z2, double zh,
+SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double sf, double z1, float64x2_t z2, double zc,
                            int32_t& l_u, int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
   // du, dv in registers the code after the asm (runs_k3) does not write: where qemu cuts the
   // two into one block, llvm-mca times it as a loop, and an input written later in the block
@@ -129,11 +131,9 @@ SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double s
       "fmul d18, d16, %d[y]\n\t"
       "fmul d19, d17, %d[y]\n\t"
       "mov w13, #0xc9ff\n\t"
-      "fmov d23, #-2.0\n\t"
-      "fmul d20, %d[zh], d20\n\t"
+      "fnmul d20, %d[zc], d20\n\t"
       "fmsub d21, d18, %d[sf], d16\n\t"
       "fmsub d22, d19, %d[sf], d17\n\t"
-      "fmul d20, d20, d23\n\t"
       "movk w13, #0x3b9a, lsl #16\n\t"
       "fmadd d18, d21, %d[y], d18\n\t"
       "fmadd d19, d22, %d[y], d19\n\t"
@@ -206,7 +206,7 @@ SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double s
       // END tail1_steps
       : [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
       : [du] "r"(r_du), [dv] "r"(r_dv), [st] "r"(steps), [y] "w"(y), [sf] "w"(sf), [z1] "w"(z1), [z2] "w"(z2),
-        [zh] "w"(zh)
+        [zc] "w"(zc)
       : "x3", "x4", "x5", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x19", "v16", "v17",
         "v18", "v19", "v20", "v21", "v22", "v23", "cc");
 }
@@ -352,7 +352,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
         // block (pass_last: short_pass's two runs, then runs_k3's chunks of the last run).
         // The depths t1.z, s2.z as the loop's z23 = [sB.z, sC.z] (t1 = sB, s2 = sC but for steps
         // == 0: du = dv = 0 there, so dd is 0 whatever the depths, and steps <= 1 masks it).
-        tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), st.z23, zc * 0.5, b_d,
+        tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), st.z23, zc, b_d,
                     b_dd, lnu, lnv, ddu, ddv);
         step(integral_constant<int, 9>{});
         // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
@@ -393,7 +393,7 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       // short_pass takes it above), the last run packed as Run16 packs it.
       // s2.z as lane 0 of the loop's z23 (sB.z; s2 = s1 only for steps == 0, where du = dv = 0
       // make dd 0 whatever the depth, and the steps > 1 mask clears it).
-      tail1_steps(du, dv, steps, kRecipSteps[sd], double(sd), t1.z, st.z23, zc * 0.5, lnu, lnv, ddu, ddv);
+      tail1_steps(du, dv, steps, kRecipSteps[sd], double(sd), t1.z, st.z23, zc, lnu, lnv, ddu, ddv);
       lu = RunSteps{lnu, ddu}, lv = RunSteps{lnv, ddv};
       runs_k3(dest - 32, texels, uint64_t(width), last, st.c0, dp, uint64_t(ddp),
               uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));
