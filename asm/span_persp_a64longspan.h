@@ -231,18 +231,13 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   // left = n - 32 (k + 1), k = (n - 49) / 32 (n > 64; k = 0 for 65 .. 80): (n - 81) mod 32 + 17
   // (the unsigned wrap of n - 81 < 0 keeps the residue: n = 65 .. 80 leave n - 32 = 33 .. 48).
   int left = int(uint32_t(n - 81) & 31u) + 17;
-  Sample s0, s1;
-  RunSteps su, sv;
   dest = reinterpret_cast<uint8_t*>(st.d);
   // Run r's steps from its chains (c1 - c0 = its packed step, dd4 = 4 times its packed second
-  // step, |parts| < 2^31); s0.z is not read below.
+  // step, |parts| < 2^31), packed (c0 its packed start); unpacked (run0_parts) only where
+  // Run16 draws run r (left > 32 with last == 16), not in the loop-exit block of every span.
   const uint64_t dp = st.c1 - st.c0;
   const int64_t ddp = int64_t(st.dd4) >> 2;
-  s0 = Sample{int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), 0.0};
-  s1 = Sample{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
-  su = RunSteps{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
-  sv = RunSteps{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
-                int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+  const Sample s1{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
   const double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
   // The tail (left = 17 .. 48), persp_fast's; samples r + 2, r + 3 (sample(pos2, z2),
   // sample(pos3, z3)) as the last pass converted them (nB, nC: to_fixed, see persp_fast).
@@ -365,7 +360,10 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       } else {
         // last == 16: run r + 1's steps in run r's stage slots 0 .. 4, one dependent step a
         // group, and the last run's step groups 0 .. 5 in slots 4 .. 9.
-        Run16<true> run0(s0.u, s0.v, su, sv);
+        const RunSteps su{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
+        const RunSteps sv{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
+                          int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+        Run16<true> run0(int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), su, sv);
         run0.draw(dest, texels, w, stage1);
         dest += 16;
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
@@ -381,8 +379,8 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
         step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
         step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
-        short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
-                         pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd),
+        // run r from the loop's packed c0, dp, ddp (as pass_last and runs_k3 take it).
+        short_pass<true>(dest, texels, uint64_t(width), st.c0, dp, uint64_t(ddp),
                          uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pack_steps(lv.d, lu.d),
                          pack_steps(lv.dd, lu.dd));
         return;
