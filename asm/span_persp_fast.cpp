@@ -652,15 +652,7 @@ __attribute__((noinline, aligned(4096))) void persp_long_a64(uint8_t* dest, int 
     // q = &it->span from the test's block (no latch block, and the set-up's block does not
     // compute it from a register it rewrites later: llvm-mca times that block as a loop).
     const bool is_long = long_next_a64(*it, n, dest, q);
-    if (!is_long) {
-      // 64 bytes of never-run padding (this exit is taken once a batch at most, when a long
-      // item is followed by another kind): the tail's code after the loop got 64 bytes shorter
-      // (wt-tail192), and the functions after this one (persp_lin_a64, lin_pairs_a64) keep
-      // their addresses, so qemu cuts their blocks where it did (persp64lin A72 4.44 -> 4.46
-      // without it). Change with this function's size.
-      __asm__ volatile("b 91f\n\t.skip 60\n91:");
-      return batch_from(it, end, texels, width);
-    }
+    if (!is_long) return batch_from(it, end, texels, width);
   }
 }
 // A linear span of more than kShortMax pixels (persp_one's persp_fast<false>) as the first
