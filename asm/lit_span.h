@@ -42,9 +42,11 @@
 //           cell's corner differences by widening multiply-adds), the reference's formula
 //           per pixel for a group that does not; texel and colormap loads by the core. On
 //           aarch64 a full 16-pixel run with a power-of-two texture of at most 2^16 texels
-//           is one asm block (asm/lit_span_a64.h: two cells a group, the lane's chosen), and
-//           runs that move more than a cell a group (mips above 0) take a per-pixel kernel
-//           (packed indices and weights a pixel, fast's packed-pair blend). The tuned
+//           is one asm block (asm/lit_span_a64.h: two cells a group, the lane's chosen);
+//           such runs that move more than a cell a group (mips above 0) another
+//           (asm/lit_span_a64win.h: a 3 x 3-cell window a group, corners by tbl), and the
+//           rest of those a per-pixel kernel (packed indices and weights a pixel, fast's
+//           packed-pair blend). The tuned
 //           choice on aarch64 (on armv7, fast: see lit_span.cpp).
 // Dispatch: lit_span_active() is the scalar reference while simd::force_scalar() is on,
 // otherwise the tuned choice, fixed at first use (bench/lit_span_bench measures them).
