@@ -103,15 +103,8 @@ e("ushl v19.8h, v19.8h, v31.8h")
 e("ushl v20.8h, v20.8h, v31.8h")
 e("ushl v21.8h, v21.8h, v31.8h")
 e("ldr q31, [x%tab, #160]")           # -(S + 8) (u32 lanes)
-# ---------------------------------------------------------------- core: constants
-# v4 = [0x0202, 0x0808, B^2, ..] (16-bit lanes: multipliers by element)
-e("ldr w%s, [x%tab, #180]")           # S = 2 log B
-e("mov w%cst, #0x0202")
-e("movk w%cst, #0x0808, lsl #16")
-e("mov w%one, #1")
-e("lsl w%bsq, w%one, w%s")
-e("orr x%cst, x%cst, x%bsq, lsl #32")
-e("fmov d4, x%cst")
+# v4 = [514, 2056, B^2, ..] (16-bit lanes: multipliers by element; LitA64Tab::win)
+e("ldr q4, [x%tab, #192]")
 # ---------------------------------------------------------------- core: window origins, the test
 e("mvn x%nrg, x%rg")
 e("ubfx x%xa, x%nrg, #32, #8")        # min gx a
@@ -126,19 +119,18 @@ e("cmp w%xb, w13")
 e("csel w%xb, w%xb, w13, lt")
 e("cmp w%yb, w14")
 e("csel w%yb, w%yb, w14, lt")
-e("and w%mxa, w%rg, #0xff")            # max gx a ..
-e("ubfx w%mya, w%rg, #8, #8")
-e("ubfx w%mxb, w%rg, #16, #8")
-e("ubfx w%myb, w%rg, #24, #8")
-e("sub w%mxa, w%mxa, w%xa")            # spans from the origin (>= 0)
-e("sub w%mya, w%mya, w%ya")
-e("sub w%mxb, w%mxb, w%xb")
-e("sub w%myb, w%myb, w%yb")
-e("cmp w%mxa, #2")
-e("ccmp w%mya, #2, #2, ls")
-e("ccmp w%mxb, #2, #2, ls")
-e("ccmp w%myb, #2, #2, ls")
-e("cset w%fl, hi")                      # a span beyond 2 cells: draw again
+# the spans D = max - min of the four coordinates, bytewise: max + ~min + 1 with the carries
+# chained (each byte sum is 256 + max - min: its carry is the next byte's + 1); some D >= 3?
+# D >= 4 sets a bit of 0xfc, D = 3 (bits 0 and 1) sets bit 2 of (D & D >> 1) << 2 (its other
+# bits there only where D >= 4, or in bit 1 of a byte: outside the mask). (Equivalent to
+# max - ox <= 2 with the clamped origin: max <= limx + 2.)
+e("lsr x%hi, x%rg, #32")
+e("add w%sp, w%rg, w%hi")
+e("add w%sp, w%sp, #1")
+e("and w%s3, w%sp, w%sp, lsr #1")
+e("orr w%sp, w%sp, w%s3, lsl #2")
+e("tst w%sp, #0xfcfcfcfc")
+e("cset w%fl, ne")                      # a span beyond 2 cells: draw again
 # ---------------------------------------------------------------- windows: v0, v1 (a); v2, v3 (b)
 for g, t0, t1 in (("a", 0, 1), ("b", 2, 3)):
     e(f"madd x%p{g}, x%y{g}, x9, x8")

@@ -17,11 +17,10 @@ add x0, x11, #64
 ldr q4, [x11, #64]
 mov v5.s[3], w5
 ld4r {v0.8h, v1.8h, v2.8h, v3.8h}, [x0]
-ldr w0, [x12, #180]
-mov w1, #1
-mov w2, #0x0202
-mov x3, x11
-mov w4, #514
+mov x0, x11
+mov w1, #514
+mov w2, #256
+mov w3, #256
 mla v30.4s, v18.4s, v5.s[1]
 mla v31.4s, v19.4s, v5.s[1]
 mla v28.4s, v16.4s, v5.s[1]
@@ -59,101 +58,94 @@ and v20.16b, v20.16b, v3.16b
 and v18.16b, v6.16b, v30.16b
 uzp1 v0.16b, v24.16b, v26.16b
 uzp1 v1.16b, v25.16b, v27.16b
-and v19.16b, v16.16b, v30.16b
+movi v29.16b, #2
 mla v23.8h, v21.8h, v4.h[4]
 mla v22.8h, v20.8h, v4.h[4]
 and v20.16b, v7.16b, v30.16b
 mvn v2.16b, v0.16b
 mvn v3.16b, v1.16b
 umaxp v0.16b, v0.16b, v1.16b
-mul v5.8h, v18.8h, v19.8h
-and v21.16b, v17.16b, v30.16b
-ushl v18.8h, v18.8h, v31.8h
-ushl v19.8h, v19.8h, v31.8h
-movi v29.16b, #2
-umaxp v2.16b, v2.16b, v3.16b
 movi v7.16b, #10
+and v21.16b, v17.16b, v30.16b
+movi v6.16b, #8
+and v19.16b, v16.16b, v30.16b
+umaxp v2.16b, v2.16b, v3.16b
+st1 {v22.8h, v23.8h}, [x0], #32
+ldr q4, [x12, #192]
 mul v30.8h, v20.8h, v21.8h
 ushl v20.8h, v20.8h, v31.8h
 ushl v21.8h, v21.8h, v31.8h
-movi v6.16b, #8
+mul v5.8h, v18.8h, v19.8h
+ushl v18.8h, v18.8h, v31.8h
 umaxp v0.16b, v0.16b, v2.16b
+ushl v19.8h, v19.8h, v31.8h
 ldr q31, [x12, #160]
-st1 {v22.8h, v23.8h}, [x3], #32
-movk w2, #0x0808, lsl #16
-lsl w0, w1, w0
-mov w1, #256
+add x4, x11, #32
+ldr x5, [x0, #-32]
 umaxp v0.16b, v0.16b, v0.16b
-orr x0, x2, x0, lsl #32
-mov w2, #256
-fmov x5, d0
-fmov d4, x0
-add x0, x11, #32
-mvn x11, x5
-and w12, w5, #0xff
-ubfx w15, w5, #8, #8
-ubfx w16, w5, #16, #8
-ubfx w5, w5, #24, #8
-ubfx x17, x11, #32, #8
-ubfx x19, x11, #40, #8
-ubfx x20, x11, #48, #8
-lsr x11, x11, #56
-cmp w17, w13
-ldr x21, [x3, #-32]
-csel w17, w17, w13, lt
-cmp w19, w14
-csel w19, w19, w14, lt
-cmp w20, w13
-sub w12, w12, w17
-csel w13, w20, w13, lt
-cmp w11, w14
-madd x20, x19, x9, x8
-add w22, w17, w19, lsl #2
-sub w15, w15, w19
-csel w11, w11, w14, lt
-cmp w12, #2
-sub w12, w16, w13
-ldr x14, [x3, #-24]
-add x16, x20, x17, lsl #1
-msub w1, w22, w4, w1
-madd x8, x11, x9, x8
-add w17, w13, w11, lsl #2
-ccmp w15, #2, #2, ls
+fmov x11, d0
+mvn x12, x11
+lsr x15, x11, #32
+ubfx x16, x12, #32, #8
+ubfx x17, x12, #40, #8
+ubfx x19, x12, #48, #8
+lsr x12, x12, #56
+cmp w16, w13
+add w11, w11, w15
+ldr x15, [x0, #-24]
+csel w16, w16, w13, lt
+cmp w17, w14
+add w11, w11, #1
+csel w17, w17, w14, lt
+cmp w19, w13
+and w20, w11, w11, lsr #1
+csel w13, w19, w13, lt
+cmp w12, w14
+madd x19, x17, x9, x8
+add w17, w16, w17, lsl #2
+orr w11, w11, w20, lsl #2
+csel w12, w12, w14, lt
+and w14, w5, #0xffff
+lsr w20, w15, #16
+add x16, x19, x16, lsl #1
+msub w2, w17, w1, w2
+madd x8, x12, x9, x8
+ldrb w14, [x6, x14]
+add w12, w13, w12, lsl #2
+tst w11, #0xfcfcfcfc
 ldr d0, [x16]
-dup v22.8h, w1
-msub w1, w17, w4, w2
-ldr x4, [x3, #-16]
-add x2, x8, x13, lsl #1
-add x8, x16, x9
-sub w5, w5, w11
-ccmp w12, #2, #2, ls
-and w11, w21, #0xffff
-and w12, w14, #0xffff
-ldr d2, [x2]
-ld1 {v0.d}[1], [x8]
+dup v22.8h, w2
+msub w1, w12, w1, w3
+ldrb w3, [x6, x20]
+add x8, x8, x13, lsl #1
+add x11, x16, x9
+and w12, w15, #0xffff
+ldr x13, [x0, #-16]
+cset w2, ne
+ldr d2, [x8]
+ld1 {v0.d}[1], [x11]
 mla v22.8h, v24.8h, v4.h[0]
 dup v23.8h, w1
-ldrb w1, [x6, x11]
-add x2, x2, x9
+ldrb w1, [x6, x12]
 add x8, x8, x9
-ccmp w5, #2, #2, ls
-ldrb w5, [x6, x12]
+add x11, x11, x9
+lsr w12, w5, #16
+ubfx x16, x15, #32, #16
 mla v22.8h, v26.8h, v4.h[1]
 mla v23.8h, v25.8h, v4.h[0]
-ld1 {v2.d}[1], [x2]
-ldr d1, [x8]
-add x2, x2, x9
+ld1 {v2.d}[1], [x8]
+ldr d1, [x11]
 add x8, x8, x9
-lsr w11, w21, #16
-lsr w12, w14, #16
+add x11, x11, x9
+ldrb w12, [x6, x12]
 add v24.8h, v22.8h, v29.8h
 mla v23.8h, v27.8h, v4.h[1]
 add v26.8h, v22.8h, v7.8h
 add v25.8h, v22.8h, v6.8h
-ldr d3, [x2]
-ld1 {v1.d}[1], [x8]
-add x2, x2, x9
-ldrb w8, [x6, x11]
+ldr d3, [x8]
+ld1 {v1.d}[1], [x11]
+add x8, x8, x9
+ldrb w9, [x6, x16]
 add v27.8h, v23.8h, v29.8h
 add v17.8h, v23.8h, v7.8h
 tbl v24.16b, {v0.16b, v1.16b}, v24.16b
@@ -161,8 +153,8 @@ tbl v26.16b, {v0.16b, v1.16b}, v26.16b
 add v16.8h, v23.8h, v6.8h
 tbl v22.16b, {v0.16b, v1.16b}, v22.16b
 tbl v25.16b, {v0.16b, v1.16b}, v25.16b
-ld1 {v3.d}[1], [x2]
-ldrb w9, [x6, x12]
+ld1 {v3.d}[1], [x8]
+ldr x0, [x0, #-8]
 sub v26.8h, v26.8h, v24.8h
 sub v24.8h, v24.8h, v22.8h
 umull v6.4s, v22.4h, v4.h[2]
@@ -189,95 +181,91 @@ smlal v6.4s, v5.4h, v26.4h
 smlal v28.4s, v21.4h, v16.4h
 smlal2 v7.4s, v5.8h, v26.8h
 smlal2 v29.4s, v21.8h, v16.8h
-ldr x3, [x3, #-8]
 ushl v6.4s, v6.4s, v31.4s
 smlal v28.4s, v30.4h, v17.4h
 ushl v7.4s, v7.4s, v31.4s
 smlal2 v29.4s, v30.8h, v17.8h
-cset w2, hi
 ushl v28.4s, v28.4s, v31.4s
 uzp1 v6.8h, v6.8h, v7.8h
 ushl v29.4s, v29.4s, v31.4s
-ubfx x11, x21, #32, #16
-lsr x12, x21, #48
+ubfx x8, x5, #32, #16
+lsr x5, x5, #48
 shl v6.8h, v6.8h, #8
 uzp1 v7.8h, v28.8h, v29.8h
-ldrb w11, [x6, x11]
-ldrb w12, [x6, x12]
-ubfx x13, x14, #32, #16
-lsr x14, x14, #48
+ldrb w8, [x6, x8]
+ldrb w5, [x6, x5]
+lsr x11, x15, #48
+and w15, w13, #0xffff
 shl v7.8h, v7.8h, #8
+ldrb w11, [x6, x11]
+ldrb w15, [x6, x15]
+st1 {v6.8h, v7.8h}, [x4], #32
+ldr x16, [x4, #-32]
+ldr x17, [x4, #-24]
+ldr x19, [x4, #-16]
+ldr x4, [x4, #-8]
+add w14, w14, w16, uxth
+add w12, w12, w16, lsr #16
+ubfx x20, x16, #32, #16
+add x5, x5, x16, lsr #48
+add w1, w1, w17, uxth
+add w3, w3, w17, lsr #16
+add w8, w8, w20
+ldrb w14, [x7, x14]
+ldrb w12, [x7, x12]
+ldrb w5, [x7, x5]
+ldrb w8, [x7, x8]
+ldrb w1, [x7, x1]
+ldrb w3, [x7, x3]
+add x11, x11, x17, lsr #48
+orr x12, x14, x12, lsl #8
+ubfx x14, x17, #32, #16
+orr x5, x8, x5, lsl #8
+and w8, w0, #0xffff
+add w15, w15, w19, uxth
+add w9, w9, w14
+ldrb w11, [x7, x11]
+orr x1, x1, x3, lsl #8
+orr x3, x12, x5, lsl #16
+lsr w5, w13, #16
+ubfx x12, x13, #32, #16
+ldrb w9, [x7, x9]
+ldrb w5, [x6, x5]
+ldrb w12, [x6, x12]
+ldrb w8, [x6, x8]
+orr x9, x9, x11, lsl #8
+ldrb w11, [x7, x15]
+add w5, w5, w19, lsr #16
+lsr x13, x13, #48
+lsr w14, w0, #16
+ubfx x15, x0, #32, #16
+lsr x0, x0, #48
 ldrb w13, [x6, x13]
 ldrb w14, [x6, x14]
-and w15, w4, #0xffff
-st1 {v6.8h, v7.8h}, [x0], #32
 ldrb w15, [x6, x15]
-ldr x16, [x0, #-32]
-ldr x17, [x0, #-24]
-ldr x19, [x0, #-16]
-ldr x0, [x0, #-8]
-add w1, w1, w16, uxth
-add w8, w8, w16, lsr #16
-ubfx x20, x16, #32, #16
-add x12, x12, x16, lsr #48
-add w5, w5, w17, uxth
-add w9, w9, w17, lsr #16
-add w11, w11, w20
-ldrb w1, [x7, x1]
-ldrb w8, [x7, x8]
-ldrb w12, [x7, x12]
-ldrb w11, [x7, x11]
+ldrb w0, [x6, x0]
+add x6, x13, x19, lsr #48
+add w8, w8, w4, uxth
+ubfx x13, x19, #32, #16
+ubfx x16, x4, #32, #16
+add w14, w14, w4, lsr #16
 ldrb w5, [x7, x5]
-ldrb w9, [x7, x9]
-add x14, x14, x17, lsr #48
-orr x1, x1, x8, lsl #8
-ubfx x8, x17, #32, #16
-orr x11, x11, x12, lsl #8
-and w12, w3, #0xffff
-add w15, w15, w19, uxth
-add w8, w13, w8
-ldrb w13, [x7, x14]
-orr x5, x5, x9, lsl #8
-orr x1, x1, x11, lsl #16
-lsr w9, w4, #16
-ubfx x11, x4, #32, #16
-ldrb w8, [x7, x8]
-ldrb w9, [x6, x9]
-ldrb w11, [x6, x11]
-ldrb w12, [x6, x12]
-orr x8, x8, x13, lsl #8
-ldrb w13, [x7, x15]
-add w9, w9, w19, lsr #16
-lsr x4, x4, #48
-lsr w14, w3, #16
-ubfx x15, x3, #32, #16
-lsr x3, x3, #48
-ldrb w4, [x6, x4]
-ldrb w14, [x6, x14]
-ldrb w15, [x6, x15]
-ldrb w3, [x6, x3]
-add x4, x4, x19, lsr #48
-add w6, w12, w0, uxth
-ubfx x12, x19, #32, #16
-ubfx x16, x0, #32, #16
-add w14, w14, w0, lsr #16
-ldrb w9, [x7, x9]
-add w11, w11, w12
-add w12, w15, w16
-add x0, x3, x0, lsr #48
-ldrb w3, [x7, x4]
+add w12, w12, w13
+add w13, w15, w16
+add x0, x0, x4, lsr #48
 ldrb w4, [x7, x6]
-ldrb w6, [x7, x11]
-ldrb w11, [x7, x14]
-ldrb w12, [x7, x12]
+ldrb w6, [x7, x8]
+ldrb w8, [x7, x12]
+ldrb w12, [x7, x14]
+ldrb w13, [x7, x13]
 ldrb w0, [x7, x0]
-orr x7, x13, x9, lsl #8
-orr x3, x6, x3, lsl #8
-orr x4, x4, x11, lsl #8
-orr x5, x5, x8, lsl #16
-orr x0, x12, x0, lsl #8
-orr x3, x7, x3, lsl #16
-orr x1, x1, x5, lsl #32
-orr x0, x4, x0, lsl #16
-orr x0, x3, x0, lsl #32
+orr x5, x11, x5, lsl #8
+orr x4, x8, x4, lsl #8
+orr x6, x6, x12, lsl #8
+orr x1, x1, x9, lsl #16
+orr x0, x13, x0, lsl #8
+orr x4, x5, x4, lsl #16
+orr x1, x3, x1, lsl #32
+orr x0, x6, x0, lsl #16
+orr x0, x4, x0, lsl #32
 stp x1, x0, [x10]
