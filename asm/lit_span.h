@@ -77,7 +77,8 @@ struct LitSpanSource {
   uint64_t s_recip = 0, t_recip = 0;    // ceil(2^32 / tex_width), ceil(2^32 / tex_height)
   // soff_mod, toff_mod, tex_width - 1, tex_height - 1, tex_width (16-bit; the aarch64 neon
   // variant's wrap of power-of-two textures), 1 for a power-of-two texture of at most 2^16
-  // texels (else 0), 1 for a power-of-two texture (else 0), then a zero.
+  // texels (else 0), 1 for a power-of-two texture (else 0), then on aarch64 the window
+  // block's limits (lit_span_prepare; asm/lit_span_a64win.h), elsewhere a zero.
   uint16_t wrap16[8] = {};
   bool prepared = false;
 };

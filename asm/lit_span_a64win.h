@@ -52,16 +52,28 @@ inline bool window_steps(const LitSpanSource& src, uint32_t du, uint32_t dv, uin
 // core values registers again (x19, x20 the only callee-saved), bench/to_inline.py writes it
 // below (commands: bench/mca_a53_lit/README.md, "Runs across several cells").
 __attribute__((always_inline)) inline unsigned win16_block(uint8_t* dest, const LitSpanSource& src, LitA64Frame& fr,
-                                                           const LitA64Tab& tab, uint32_t u, uint32_t v, uint32_t du,
-                                                           uint32_t dv, uint32_t ddu, uint32_t ddv, uint64_t limx,
-                                                           uint64_t limy) {
-  const uint8_t* tex = src.texels;
-  const uint8_t* cm = src.colormap;
-  const uint16_t* grid = src.grid;
-  uint64_t gw2 = uint64_t(src.grid_width) * 2;
-  uint8_t* dp = dest;
-  LitA64Frame* fp = &fr;
-  const LitA64Tab* tp = &tab;
+                                                           const LitA64Tab& tab, uint32_t u32, uint32_t v32,
+                                                           uint32_t du32, uint32_t dv32, uint32_t ddu32, uint32_t ddv32,
+                                                           uint64_t limx64, uint64_t limy64) {
+  // The operands pinned as lit16_block's (asm/lit_span_a64.h): in the registers win16_go's
+  // arguments arrive in where they can (dest x0, u..ddu x3-x7, ddv x1 for n), the others in
+  // x8-x14. Left to GCC, its choices moved bench/count.sh's A72 figure by up to 1.4 cycles
+  // a pixel (where the C++ lines and the block's first qemu block meet).
+  register uint32_t u asm("x3") = u32;
+  register uint32_t v asm("x4") = v32;
+  register uint32_t du asm("x5") = du32;
+  register uint32_t dv asm("x6") = dv32;
+  register uint32_t ddu asm("x7") = ddu32;
+  register uint32_t ddv asm("x1") = ddv32;
+  register const uint8_t* tex asm("x8") = src.texels;
+  register const uint8_t* cm asm("x9") = src.colormap;
+  register const uint16_t* grid asm("x10") = src.grid;
+  register uint64_t gw2 asm("x11") = uint64_t(src.grid_width) * 2;
+  register uint8_t* dp asm("x0") = dest;
+  register LitA64Frame* fp asm("x2") = &fr;
+  register const LitA64Tab* tp asm("x12") = &tab;
+  register uint64_t limx asm("x13") = limx64;
+  register uint64_t limy asm("x14") = limy64;
   asm volatile(
       // BEGIN win16_block
       "fmov s5, %w[du]\n\t"

@@ -421,17 +421,16 @@ __attribute__((noinline)) void redo_win(const LitA64Frame& fr) {
 // frame (read only for a redo), so nothing lives across the block.
 __attribute__((noipa)) void win16_go(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v,
                                      uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
-  const int lg = 4 - src.mip;
-  const int cx = (src.width - 1) >> lg, cy = (src.height - 1) >> lg;
-  if (!window_steps(src, du, dv, ddu, ddv) || ((cx | cy) >> 8) != 0 || cx < 2 || cy < 2)
-    return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+  // wrap16[7]: (limx << 8 | limy) + 1, 0 where no window fits (lit_span_prepare).
+  const uint32_t lim = src.wrap16[7];
+  if (lim == 0 || !window_steps(src, du, dv, ddu, ddv)) return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
   LitA64Frame fr;
   std::memcpy(fr.wrap, src.wrap16, sizeof fr.wrap);
   fr.dest = dest;
   fr.src = &src;
   fr.args[0] = u, fr.args[1] = v, fr.args[2] = du, fr.args[3] = dv, fr.args[4] = ddu, fr.args[5] = ddv;
-  if (__builtin_expect(win16_block(dest, src, fr, kLitA64Tab[src.mip & 3], u, v, du, dv, ddu, ddv, uint64_t(cx - 2),
-                                   uint64_t(cy - 2)) != 0,
+  if (__builtin_expect(win16_block(dest, src, fr, kLitA64Tab[src.mip & 3], u, v, du, dv, ddu, ddv, (lim - 1) >> 8,
+                                   (lim - 1) & 0xff) != 0,
                        0))
     redo_win(fr);
 }
