@@ -423,7 +423,8 @@ __attribute__((noipa)) void win16_go(uint8_t* dest, int n, const LitSpanSource& 
                                      uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
   // wrap16[7]: (limx << 8 | limy) + 1, 0 where no window fits (lit_span_prepare).
   const uint32_t lim = src.wrap16[7];
-  if (lim == 0 || !window_steps(src, du, dv, ddu, ddv)) return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+  if (lim == 0 || !window_steps(src, du, dv, ddu, ddv))
+    return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
   LitA64Frame fr;
   std::memcpy(fr.wrap, src.wrap16, sizeof fr.wrap);
   fr.dest = dest;
