@@ -34,8 +34,8 @@ namespace {
 #if defined(__aarch64__) && defined(__GNUC__)
 
 // Whether a run's 8-pixel groups most likely span at most 3 cells each way (the window
-// kernel's case): 8 (|d| + 16 |dd|) < 2.5 B texels along u and along v. A guess only
-// (the kernel checks every group): beyond it most groups would take the per-pixel formula.
+// block's case): 8 (|d| + 16 |dd|) < 2.5 B texels along u and along v. A guess only (the
+// block checks every group): beyond it most runs would be flagged and drawn twice.
 inline bool window_steps(const LitSpanSource& src, uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
   auto mag = [](uint32_t x) { return uint64_t(x ^ uint32_t(int32_t(x) >> 31)); };
   const uint64_t lim = uint64_t(0x50000) >> src.mip;

@@ -414,9 +414,9 @@ __attribute__((noinline)) void redo_win(const LitA64Frame& fr) {
 
 // A 16-pixel run that moves more than a cell a group, with a texture lit16_block takes:
 // win16_block (asm/lit_span_a64win.h) when its groups likely span at most 3 cells a way
-// (window_steps; else the per-pixel kernel), unless the surface
-// is too small (fewer than 3 cells a way: no window fits) or too large (cells beyond 255:
-// the block's byte-wide ranges); a flagged run again by the per-pixel kernel. lit_span_neon's
+// (window_steps; else the per-pixel kernel), unless the surface is too small (fewer than 3
+// cells a way: no window fits) or too large (cells beyond 255: the block's byte-wide
+// ranges; both wrap16[7] = 0); a flagged run again by the per-pixel kernel. lit_span_neon's
 // arguments (n unused), reached by a branch from run16. The run's arguments wait in the
 // frame (read only for a redo), so nothing lives across the block.
 __attribute__((noipa)) void win16_go(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v,
