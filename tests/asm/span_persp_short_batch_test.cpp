@@ -373,6 +373,67 @@ TEST(AsmSpanPerspBatch, TinyRunsBeforeItemsOfEveryKindMatch) {
               spans);
 }
 
+// Short second-order spans switching kind many times in one batch (ARMv7: persp_mid_run_v7
+// draws both kinds after its first 17 .. 48 pixel span, its loops going from one to the other
+// by a branch; persp_one_v7 hands over to it): sequences of up to 24 spans whose kinds follow a trial's bit
+// pattern (one-run, 17 .. 48), every length of each kind right after each kind and in every
+// position of a one-run pair, the sequence at the batch's start or after a linear, long or
+// empty span, ended by the batch's end or a span neither loop takes (n 0, 49 .. 80, linear,
+// dzi +-0); plane rows or pick_span's edge gradients (clamped u / v, steep, huge), guard bytes
+// after every span.
+TEST(AsmSpanPerspBatch, ShortSpansSwitchingKindMatch) {
+  std::mt19937 rng(1648);
+  const int sw = 53, sh = 31;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (size_t i = 0; i < surf.size(); ++i) surf[i] = uint8_t(i * 37 + (i >> 2));
+  long spans = 0;
+  for (int trial = 0; trial < 1536; ++trial) {
+    const PerspSpan plane = pick_span(rng, sw, sh);
+    auto curve = [&](int n) {
+      PerspSpan p = rng() % 3 ? plane : pick_span(rng, sw, sh);
+      if (rng() % 2) p.zi0 += double(rng() % 50) * 1e-5, p.vz0 += double(rng() % 50) * 0.01;
+      if (rng() % 8 == 0) p.uz0 *= -2.0, p.vz0 *= 3.0;  // clamped at 0 / vmax
+      p.second_order = true;
+      if (p.dzi == 0.0) p.dzi = rng() % 2 ? 2e-7 : -5e-6;
+      p.px0 = double(rng() % 600) + 0.5;
+      return PerspItem{nullptr, n, p};
+    };
+    std::vector<PerspItem> items;
+    switch (trial % 4) {  // what comes before the sequence
+      case 1: {
+        PerspItem x = curve(17 + int(rng() % 48));
+        x.span.second_order = false;
+        items.push_back(x);
+        break;
+      }
+      case 2: items.push_back(curve(49 + int(rng() % 100))); break;
+      case 3: items.push_back(curve(0)); break;
+      default: break;  // the batch's start
+    }
+    const uint32_t kinds = uint32_t(rng());  // bit i: span i is one-run
+    const int len = 2 + int(rng() % 23);
+    for (int i = 0; i < len; ++i) {
+      const bool one = (kinds >> i) & 1;
+      // Every length of each kind at each place over the trials.
+      const int n = one ? 1 + (trial + i * 5) % 16 : 17 + (trial * 3 + i * 11) % 32;
+      items.push_back(curve(n));
+    }
+    if (rng() % 3) {
+      PerspItem x = curve(1 + int(rng() % 48));
+      switch (rng() % 4) {
+        case 0: x.n = 0; break;
+        case 1: x.n = 49 + int(rng() % 32); break;
+        case 2: x.span.second_order = false; break;
+        default: x.span.dzi = rng() % 2 ? 0.0 : -0.0; break;
+      }
+      items.push_back(x);
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld short spans switching kind, every variant identical\n", spans);
+}
+
 }  // namespace
 
 // The tiny spans' draws (aarch64: draw_tiny's asm chunks of 8 and 4 pixels and its one-block
