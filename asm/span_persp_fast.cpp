@@ -7,6 +7,7 @@
 
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
+#include "asm/span_persp_a64lin_pass.h"
 #include "asm/span_persp_a64long.h"
 #include "asm/span_persp_a64longspan.h"
 #include "asm/span_persp_a64pair.h"
