@@ -19,7 +19,7 @@ GPR = ["x%d" % i for i in list(range(1, 18)) + list(range(19, 29)) + [30, 18]]
 VEC = ["v%d" % i for i in range(32)]
 
 body = []  # (slot G, text)
-PAD = int(next((a.split("=")[1] for a in sys.argv if a.startswith("--pad=")), "588"))
+PAD = int(next((a.split("=")[1] for a in sys.argv if a.startswith("--pad=")), "584"))
 
 
 def E(g, *lines):
