@@ -16,6 +16,7 @@
 #include "asm/span_persp_v7mid.h"
 #include "asm/span_persp_v7pass.h"
 #include "asm/span_persp_v7one.h"
+#include "asm/span_persp_v7five.h"
 #include "asm/span_persp_x86short.h"
 #include "asm/surface_span.h"
 

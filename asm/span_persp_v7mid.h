@@ -373,15 +373,23 @@ SB_INLINE RunRegs run_regs(int32_t u, int32_t v, const RunSteps& su, const RunSt
 // quotient, curve = (zix / 2) (z_3 + z_4), then run_steps' test, which last_steps_i computes
 // for any step count); runs 0 .. 2 drawn, run 3's registers returned in *run3 (the caller
 // draws it, with its own work beside: persp_five_run_v7).
-template <bool kOwnSave = false, bool kFour = false>
+// Hook (kFour): called with std::integral_constant<int, K>: K = 0 after the prologue's
+// statement, 1 after run 0's, 2 after run 1's (persp_five_run_v7 starts the last run's
+// set-up there, in d8 .. d15, which the prologue's outputs and runs 0 .. 2 leave alone).
+struct MidNoHook {
+  template <typename K>
+  SB_INLINE void operator()(K) const {}
+};
+template <bool kOwnSave = false, bool kFour = false, typename Hook = MidNoHook>
 SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int width, const PerspSpan& p,
-                            RunRegs* run3 = nullptr, double* uv4out = nullptr) {
+                            RunRegs* run3 = nullptr, double* uv4out = nullptr, Hook hook = {}) {
   const uint32_t w = uint32_t(width);
   const int steps = kFour ? 16 : n - 49;  // the last run's (1 .. 15; kFour: 16)
   if (kFour && n != 64) __builtin_unreachable();
   double r[9];
   RunSteps su, sv;
   register V4 qd __asm__("d24") = mid_prologue<kOwnSave, kFour>(p, n, r, &su, &sv);
+  hook(std::integral_constant<int, 0>{});
   // The quotients [qv, qu] (d24, d25: q12, which run 0 leaves alone) until run 1 reads them.
   // The prologue's registers kept (asm operands bound to them: no copies or spills).
   register double uv1 __asm__("d1") = r[1];
@@ -573,6 +581,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
     *ou = RunSteps{a, c}, *ov = RunSteps{b, e};
   };
   // d6: the last run's ddf, converted (I); d0: trunc(q) (L); d2: scratch (delta in run 1).
+  hook(std::integral_constant<int, 1>{});
   // Runs 1 and 2 keep to d0 .. d7, d16 .. d31 (no callee-saved register: see mid_prologue).
   register double qi __asm__("d6");
   register double sdr __asm__("d0");
@@ -751,6 +760,7 @@ SB_INLINE void persp_mid_v7(uint8_t* dest, int n, const uint8_t* texels, int wid
                      : SB_V7_RUN_INPUTS(d1), [cv] "w"(curve), [uv3] "w"(uv3), [uv4] "w"(uv4), [k] "r"(kk)
                      : "memory", "d2", "d16", "d17");
   }
+  hook(std::integral_constant<int, 2>{});
   // Run 2; beside it the rest of the last run's steps.
   u0 = u1, v0 = v1;
   SB_V7_LANES(uv3, u1, v1);

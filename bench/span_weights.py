@@ -58,6 +58,8 @@ def main():
             old = counts(a[6:])
     new = counts(os.path.join(ROOT, "counts.md"))
     maps = hist(os.path.join(ROOT, "span_hist.md"), res)
+    if not maps:
+        sys.exit(f"span_weights.py: bench/span_hist.md has no section for {res}")
     print(f"Span drawer, estimated kilocycles a frame at {res} (classes with a count row; "
           f"their share of the drawer's pixels in brackets)")
     print("| map | " + " | ".join(c for *_, c, _ in CORES) + " |")
@@ -75,6 +77,25 @@ def main():
             else:
                 cells.append(f"{k:.0f}")
         print(f"| {name} ({100 * covered / total:.0f}%) | " + " | ".join(cells) + " |")
+    print()
+    # The same sums over the pixels they cover: a frame's mean cycles a pixel, the figure to set
+    # beside Quake's 7.5 (a Pentium's inner loop) for the frame as a whole.
+    print(f"Mean cycles a pixel over those classes' pixels (Quake's span drawer: 7.5 on a Pentium)")
+    print("| map | " + " | ".join(c for *_, c, _ in CORES) + " |")
+    print("|---" * (len(CORES) + 1) + "|")
+    for name, classes in maps.items():
+        cells = []
+        for _, _, core, _ in CORES:
+            got = [(px, new[(row, core)]) for _, row, px in classes if row and (row, core) in new]
+            px_sum = sum(px for px, _ in got)
+            mean = sum(px * c for px, c in got) / px_sum if px_sum else 0.0
+            if old:
+                mo = sum(px * old.get((row, core), new[(row, core)]) for _, row, px in classes
+                         if row and (row, core) in new) / px_sum if px_sum else 0.0
+                cells.append(f"{mo:.2f} → {mean:.2f}")
+            else:
+                cells.append(f"{mean:.2f}")
+        print(f"| {name} | " + " | ".join(cells) + " |")
     print()
     print("Largest terms (kilocycles a frame, the first map):")
     name, classes = next(iter(maps.items()))

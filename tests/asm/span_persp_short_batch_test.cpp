@@ -500,3 +500,51 @@ TEST(AsmSpanPerspBatch, PairsOf17To48PxSpansAtABatchStartMatchForEveryLengthPair
   }
   std::printf("[ asm      ] span_persp batch: %ld spans from pairs of 17 .. 48 px, every variant identical\n", spans);
 }
+
+// Pairs of second-order spans of 17 .. 48 pixels (aarch64: steps_k1v_pass / steps_k2v_pass,
+// asm/span_persp_a64few.h, from pairs48_a64 at a batch's start and from spans_range after a
+// 1 .. 16 px span) on wide surfaces: ShortSecondOrderSpansOnWideSurfacesMatch's gradients, where
+// the last run's range test -1e9 < ddf < 1e9 decides (last runs of 3 pixels) or the monotone
+// test rejects (steep), and every other last-run length with steps near either test's bound;
+// four to seven such spans a batch, each between guard bytes.
+TEST(AsmSpanPerspBatch, PairsOf17To48PxSpansOnWideSurfacesMatch) {
+  std::mt19937 rng(3248);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  long spans = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int sw = 32767 - int(rng() % 2000), sh = 1 + int(rng() % 3);
+    std::vector<uint8_t> surf(size_t(sw) * sh);
+    for (auto& b : surf) b = uint8_t(rng());
+    auto span = [&](int n) {
+      PerspSpan p{};
+      p.zi0 = std::ldexp(1.0, -int(rng() % 20));
+      p.dzi = p.zi0 * r(rng) * (rng() % 2 ? 0.5 : 0.02);
+      if (p.dzi == 0.0) p.dzi = 1e-9;
+      p.uz0 = p.zi0 * sw * (0.5 + 0.5 * r(rng));
+      p.duz = p.zi0 * sw * r(rng) * (rng() % 2 ? 1.0 : 0.3);
+      p.vz0 = p.zi0 * sh * 0.5, p.dvz = p.dzi * sh * r(rng);
+      p.px0 = double(rng() % 64) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1), p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+      p.second_order = true;
+      if (rng() % 2) {
+        // The last run's 3 pixels across the range test's bound (as in the test above).
+        const double k = 1.0 + 0.1 * r(rng), ku = sw / 32767.0 * (1.0 + 0.02 * r(rng));
+        p.zi0 = 1.0, p.dzi = 1.5 * k, p.px0 = 0.5 - double(n - 3);
+        p.uz0 = -36330.0 * ku, p.duz = 75332.0 * ku;
+        if (rng() % 2) p.uz0 = 60000.0 * ku, p.duz = -17000.0 * ku;
+        p.vz0 = 0.5, p.dvz = 0.0;
+        if (rng() % 4 == 0) p.dzi *= 1e3;  // steep: rejected by the monotone test
+      }
+      return PerspItem{nullptr, n, p};
+    };
+    auto len = [&]() { return rng() % 2 ? 19 + 16 * int(rng() % 2) : 17 + int(rng() % 32); };
+    std::vector<PerspItem> items;
+    if (trial % 2) items.push_back(span(1 + int(rng() % 16)));  // spans_range's pairs
+    const int count = 4 + int(rng() % 4);
+    for (int i = 0; i < count; ++i) items.push_back(span(len()));
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " trial " << trial;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld spans of 17 .. 48 px in pairs on wide surfaces, every variant identical\n",
+              spans);
+}

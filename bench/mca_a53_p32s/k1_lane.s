@@ -1,0 +1,193 @@
+ext v7.16b, v5.16b, v19.16b, #8
+ext v0.16b, v5.16b, v5.16b, #8
+ldp q6, q17, [x27, #32]
+str q5, [x28]
+add x30, x27, x30, lsl #7
+sub v7.4s, v7.4s, v5.4s
+sub v0.4s, v0.4s, v5.4s
+ldp q23, q24, [x30, #128]
+ldp q21, q22, [x30, #96]
+saddw2 v29.2d, v6.2d, v7.4s
+saddw v26.2d, v6.2d, v0.2s
+fsub v29.2d, v29.2d, v6.2d
+fsub v26.2d, v26.2d, v6.2d
+fmul d31, d31, v1.d[1]
+ldr q25, [x30, #160]
+fmul v30.2d, v29.2d, v24.d[0]
+fmul v26.2d, v26.2d, v3.d[0]
+ldp q18, q20, [x30, #64]
+fmls v29.2d, v30.2d, v24.d[1]
+fcvtzs v26.2d, v26.2d
+fmul d31, d31, v25.d[0]
+sqxtn v6.2s, v26.2d
+fmla v30.2d, v29.2d, v24.d[0]
+sshr v28.4s, v0.4s, #31
+sshr v29.4s, v7.4s, #31
+ldp q2, q4, [x27]
+fcvtzs v25.2d, v30.2d
+fmul v30.2d, v30.2d, v31.d[0]
+abs v27.4s, v7.4s
+abs v26.4s, v0.4s
+ushr v9.4s, v28.4s, #28
+abs v3.4s, v6.4s
+abs v25.2d, v25.2d
+fcvtzs v30.2d, v30.2d
+ushr v31.4s, v27.4s, #4
+umin v3.4s, v3.4s, v4.4s
+mul v7.4s, v6.4s, v2.s[0]
+sqxtn2 v1.4s, v30.2d
+xtn2 v31.4s, v25.2d
+mov v25.16b, v27.16b
+add v9.4s, v0.4s, v9.4s
+abs v0.4s, v1.4s
+mul v4.4s, v20.4s, v1.4s
+mls v25.4s, v18.4s, v31.4s
+sshr v24.4s, v9.4s, #4
+mul v3.4s, v3.4s, v2.4s
+shsub v9.4s, v9.4s, v7.4s
+cmhi v16.4s, v17.4s, v0.4s
+umin v0.4s, v0.4s, v22.4s
+cmhi v25.4s, v23.4s, v25.4s
+eor v30.16b, v31.16b, v29.16b
+sshr v22.4s, v4.4s, #1
+sshr v9.4s, v9.4s, #3
+srshr v4.4s, v4.4s, #1
+mul v0.4s, v0.4s, v21.4s
+eor v25.16b, v25.16b, v29.16b
+cmhs v3.4s, v26.4s, v3.4s
+sub v30.4s, v30.4s, v29.4s
+cmhs v0.4s, v27.4s, v0.4s
+bit v22.16b, v4.16b, v25.16b
+and v6.16b, v6.16b, v3.16b
+bit v24.16b, v9.16b, v3.16b
+fmov x13, d5
+and v0.16b, v0.16b, v16.16b
+sub v21.4s, v30.4s, v22.4s
+fmov x10, d6
+fmov x9, d24
+and v1.16b, v1.16b, v0.16b
+bit v30.16b, v21.16b, v0.16b
+and x1, x9, #0xffffffff00000000
+and x2, x10, #0xffffffff00000000
+add x9, x1, w9, sxtw
+add x10, x2, w10, sxtw
+lsl x20, x10, #2
+lsr x1, x13, #48
+add x17, x10, x9, lsl #1
+stp q30, q1, [x28, #16]
+add x14, x13, x9
+add x19, x17, x10, lsl #1
+lsr w9, w13, #16
+lsr x2, x14, #48
+add x15, x13, x17
+add x17, x17, x20
+lsr w10, w14, #16
+lsr x3, x15, #48
+add x13, x15, x17
+madd w1, w1, w0, w9
+add x16, x14, x19
+add x19, x19, x20
+lsr w9, w13, #16
+add x17, x17, x20
+lsr x5, x13, #48
+lsr w11, w15, #16
+add x15, x13, x17
+madd w3, w3, w0, w11
+madd w2, w2, w0, w10
+ldrb w1, [x18, w1, uxtw]
+add x14, x16, x19
+add x17, x17, x20
+lsr x6, x14, #48
+lsr x7, x15, #48
+lsr w11, w15, #16
+add x13, x15, x17
+lsr x4, x16, #48
+lsr w12, w16, #16
+add x19, x19, x20
+madd w5, w5, w0, w9
+ldrb w2, [x18, w2, uxtw]
+madd w4, w4, w0, w12
+add x16, x14, x19
+ldrb w3, [x18, w3, uxtw]
+add x17, x17, x20
+add x19, x19, x20
+lsr w10, w14, #16
+lsr x8, x16, #48
+ldrb w4, [x18, w4, uxtw]
+madd w7, w7, w0, w11
+orr x21, x1, x2, lsl #8
+madd w6, w6, w0, w10
+add x15, x13, x17
+add x17, x17, x20
+lsr w9, w13, #16
+lsr w11, w15, #16
+add x14, x16, x19
+orr x22, x3, x4, lsl #8
+lsr x1, x13, #48
+lsr w10, w14, #16
+add x13, x15, x17
+lsr w12, w16, #16
+add x19, x19, x20
+lsr x3, x15, #48
+orr x15, x21, x22, lsl #16
+ldrb w6, [x18, w6, uxtw]
+madd w8, w8, w0, w12
+add x16, x14, x19
+ldrb w5, [x18, w5, uxtw]
+madd w1, w1, w0, w9
+str w15, [x26]
+madd w3, w3, w0, w11
+ldrb w7, [x18, w7, uxtw]
+add x17, x17, x20
+ldrb w8, [x18, w8, uxtw]
+add x15, x13, x17
+add x19, x19, x20
+lsr x2, x14, #48
+lsr w11, w15, #16
+orr x21, x5, x6, lsl #8
+madd w2, w2, w0, w10
+add x14, x16, x19
+orr x22, x7, x8, lsl #8
+lsr x4, x16, #48
+add x19, x19, x20
+lsr w12, w16, #16
+lsr x7, x15, #48
+add x16, x14, x19
+orr x15, x21, x22, lsl #16
+lsr x5, x13, #48
+lsr w10, w14, #16
+lsr x6, x14, #48
+lsr w9, w13, #16
+madd w6, w6, w0, w10
+ldrb w1, [x18, w1, uxtw]
+str w15, [x26, #4]
+madd w4, w4, w0, w12
+madd w5, w5, w0, w9
+ldrb w3, [x18, w3, uxtw]
+ldrb w2, [x18, w2, uxtw]
+madd w7, w7, w0, w11
+ldrb w6, [x18, w6, uxtw]
+ldrb w4, [x18, w4, uxtw]
+lsr w12, w16, #16
+orr x21, x1, x2, lsl #8
+ldrb w7, [x18, w7, uxtw]
+orr x22, x3, x4, lsl #8
+lsr x8, x16, #48
+orr x15, x21, x22, lsl #16
+madd w8, w8, w0, w12
+ldrb w5, [x18, w5, uxtw]
+str w15, [x26, #8]
+ldrb w8, [x18, w8, uxtw]
+orr x21, x5, x6, lsl #8
+ldr x24, [x28, #24]
+orr x22, x7, x8, lsl #8
+orr x15, x21, x22, lsl #16
+str w15, [x26, #12]
+and x13, x24, #0xffffffff00000000
+ldr x25, [x28, #40]
+add x24, x13, w24, sxtw
+ldr w1, [x30, #72]
+ldr x23, [x28, #8]
+and x13, x25, #0xffffffff00000000
+cmp w1, #0xf
+add x25, x13, w25, sxtw
