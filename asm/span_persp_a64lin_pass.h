@@ -156,12 +156,12 @@ inline __attribute__((always_inline)) void lin_passes(LinPass& st, const PerspSp
       "fmov x26, d0\n\t" "mov x27, v0.d[1]\n\t" "ldr x1, %[s32]\n\t" "fadd v24.2d, v24.2d, v18.2d\n\t"
       "str w3, [x0, #28]\n\t" "add x0, x0, #32\n\t" "cmp x0, x1\n\t" "add x17, x5, x5\n\t"
       "b.lo 1b\n\t" "b.ne 2f\n\t" "ldr q19, %[s48]\n\t" "b 1b\n\t"
-      ".rept 592\n\t" "nop\n\t" ".endr\n\t" "2:"
-      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "+r"(r_tx), "+r"(r_w),
+      ".rept 612\n\t" "nop\n\t" ".endr\n\t" "2:"
+      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC),
         [s0] "=m"(s0), [s16] "=m"(s16), [s32] "=m"(s32), [s48] "=m"(s48)
-      : [kmin] "S"(kLinMin)
+      : "r"(r_tx), "r"(r_w), [kmin] "S"(kLinMin)
       : "x1", "x3", "x5", "x6", "x7", "x8", "x9", "x10", "x11", "x12", "x15", "x16", "x17", "x19", "x20", "x21", "x22", "x28", "x30", "x18", "v0", "v1", "v2", "v3", "v4", "v5", "v6", "v7", "v16", "v17", "v18", "v19", "v20", "v21", "v22", "v23", "v24", "v25", "v26", "v27", "v28", "v29", "v30", "v31", "cc", "memory");
-  st.d = r_d, st.c0 = r_c0, st.c1 = r_c1, st.nA = r_nA, st.nB = r_nB, st.nC = r_nC, st.tx = r_tx, st.w = r_w;
+  st.d = r_d, st.c0 = r_c0, st.c1 = r_c1, st.nA = r_nA, st.nB = r_nB, st.nC = r_nC;
 }
 
 }  // namespace

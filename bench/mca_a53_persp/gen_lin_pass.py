@@ -26,7 +26,7 @@ GPR = ["x%d" % i for i in list(range(1, 18)) + list(range(19, 29)) + [30, 18]]
 VEC = ["v%d" % i for i in range(32)]
 
 body = []  # (slot G, text)
-PAD = int(next((a.split("=")[1] for a in sys.argv if a.startswith("--pad=")), "592"))
+PAD = int(next((a.split("=")[1] for a in sys.argv if a.startswith("--pad=")), "612"))
 
 
 def E(g, *lines):
@@ -269,11 +269,11 @@ inline __attribute__((always_inline)) void lin_passes(LinPass& st, const PerspSp
   register uint64_t r_w __asm__("x24") = st.w;
   __asm__ volatile(
 %(body)s
-      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC), "+r"(r_tx), "+r"(r_w),
+      : "+r"(r_d), "+r"(r_p), "+r"(r_n), "=r"(r_c0), "=r"(r_c1), "=r"(r_nA), "=r"(r_nB), "=r"(r_nC),
         [s0] "=m"(s0), [s16] "=m"(s16), [s32] "=m"(s32), [s48] "=m"(s48)
-      : [kmin] "S"(kLinMin)
+      : "r"(r_tx), "r"(r_w), [kmin] "S"(kLinMin)
       : %(clob)s, "cc", "memory");
-  st.d = r_d, st.c0 = r_c0, st.c1 = r_c1, st.nA = r_nA, st.nB = r_nB, st.nC = r_nC, st.tx = r_tx, st.w = r_w;
+  st.d = r_d, st.c0 = r_c0, st.c1 = r_c1, st.nA = r_nA, st.nB = r_nB, st.nC = r_nC;
 }
 
 }  // namespace
