@@ -8,97 +8,97 @@
 // #48] offl = [min(l - 33, 32), l - 49] (full = (n - 49) / 32, l = n - 32 full) and x10 =
 // full (the header's entry branch). Taken from the compiler's block for the head asm and the
 // set-up (its registers); reloads nothing it stores (order_search --mem keeps the stores).
-ldr d0, [x4, #48]
 ldp d1, d2, [x4]
-ldp d3, d6, [x4, #16]
 fmov d16, #16.0
-ldp d5, d7, [x4, #32]
+ldr d0, [x4, #48]
+ldp d3, d6, [x4, #16]
 adrp x30, kLinMin
+ldp d5, d7, [x4, #32]
+sub w9, w2, #49
 dup v28.2d, v0.d[0]
 fmov v30.2d, #16.0
 dup v22.2d, v1.d[0]
-zip1 v19.2d, v3.2d, v5.2d
-zip1 v17.2d, v6.2d, v7.2d
 ldr d4, [x4, #56]
+zip1 v17.2d, v6.2d, v7.2d
+dup v27.2d, v1.d[0]
 fadd v29.2d, v28.2d, v16.2d
 fadd v31.2d, v30.2d, v30.2d
-dup v27.2d, v1.d[0]
-ldr q23, [x30, :lo12:kLinMin]
-zip1 v18.2d, v3.2d, v5.2d
-zip1 v20.2d, v3.2d, v5.2d
 fmov v6.2d, #1.0
+zip1 v18.2d, v3.2d, v5.2d
+zip1 v19.2d, v3.2d, v5.2d
+ldr q23, [x30, :lo12:kLinMin]
+zip1 v20.2d, v3.2d, v5.2d
 fadd v28.2d, v29.2d, v31.2d
 fmla v22.2d, v29.2d, v2.d[0]
 zip1 v21.2d, v3.2d, v5.2d
-fmla v18.2d, v17.2d, v0.d[0]
 fmla v19.2d, v17.2d, v29.d[0]
+fmla v18.2d, v17.2d, v0.d[0]
 fmla v27.2d, v28.2d, v2.d[0]
 fmaxnm v22.2d, v22.2d, v23.2d
-fmla v20.2d, v17.2d, v28.d[0]
 fmla v21.2d, v17.2d, v28.d[1]
+fmla v20.2d, v17.2d, v28.d[0]
 fmaxnm v27.2d, v27.2d, v23.2d
 fdiv v22.2d, v6.2d, v22.2d
 dup v16.2d, v2.d[0]
-dup v25.2d, v1.d[0]
 fadd d24, d29, d30
+dup v25.2d, v1.d[0]
 fdiv v27.2d, v6.2d, v27.2d
 fmul v19.2d, v19.2d, v22.d[0]
 fmul v18.2d, v18.2d, v22.d[1]
-sub w9, w2, #49
+zip1 v26.2d, v3.2d, v5.2d
 lsr w10, w9, #5
 fcvtzu v19.2d, v19.2d, #16
 fcvtzu v18.2d, v18.2d, #16
-fmul v21.2d, v21.2d, v27.d[1]
 fmul v20.2d, v20.2d, v27.d[0]
-str q25, [sp]
-zip1 v26.2d, v3.2d, v5.2d
+fmul v21.2d, v21.2d, v27.d[1]
+sub w9, w2, w10, lsl #5
 uqxtn v19.2s, v19.2d
 uqxtn v18.2s, v18.2d
+str q25, [sp]
 fcvtzu v21.2d, v21.2d, #16
-str q26, [sp, #16]
+fcvtzu v20.2d, v20.2d, #16
 umin v19.2s, v19.2s, v4.2s
 umin v18.2s, v18.2s, v4.2s
-fcvtzu v20.2d, v20.2d, #16
+str q26, [sp, #16]
 uqxtn v21.2s, v21.2d
-sub w9, w2, w10, lsl #5
+uqxtn v20.2s, v20.2d
+dup v22.2d, v4.d[0]
 fmov x25, d19
 fmov x13, d18
-uqxtn v20.2s, v20.2d
 umin v0.2s, v21.2s, v4.2s
-sub w1, w25, w13
-lsr x3, x25, #32
 add x11, x0, x10, lsl #5
+lsr x3, x25, #32
 lsr x4, x13, #32
 sub w3, w3, w4
+sub w1, w25, w13
 asr w5, w1, #31
 asr w4, w3, #31
 add w1, w1, w5, lsr #28
 add w3, w3, w4, lsr #28
-sbfx x1, x1, #4, #28
 asr w3, w3, #4
+sbfx x1, x1, #4, #28
 add x1, x1, x3, lsl #32
 mov x26, v0.d[0]
 umin v0.2s, v20.2s, v4.2s
 str x11, [sp, #32]
 sub w11, w9, #33
+mov w3, #32
 cmp w11, #32
 sub w9, w9, #49
 add x14, x13, x1
 add x12, x1, x1
-mov w3, #32
 add x15, x13, x12
+add x16, x14, x12
 csel w11, w11, w3, lt
-fadd d29, d24, d30
 scvtf d1, w9
 mov x27, v0.d[0]
 scvtf d0, w11
-fmov v20.2d, #1.0
+fadd d29, d24, d30
 fmov v18.2d, #16.0
-dup v22.2d, v4.d[0]
+fmov v20.2d, #1.0
 mov v0.d[1], v1.d[0]
-fadd v19.2d, v18.2d, v18.2d
-ldr q21, [x30, :lo12:kLinMin]
 zip1 v24.2d, v24.2d, v29.2d
+ldr q21, [x30, :lo12:kLinMin]
+fadd v19.2d, v18.2d, v18.2d
 str q0, [sp, #48]
-add x16, x14, x12
 add x17, x12, x12
