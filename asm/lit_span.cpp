@@ -157,6 +157,13 @@ void lit_span_prepare(LitSpanSource& src, int grid_count, uint32_t* wide) {
   const bool pow2 = (src.tex_width & (src.tex_width - 1)) == 0 && (src.tex_height & (src.tex_height - 1)) == 0;
   src.wrap16[5] = pow2 && src.tex_width * src.tex_height <= 65536 ? 1 : 0;
   src.wrap16[6] = pow2 ? 1 : 0;
+#if defined(__aarch64__)
+  // asm/lit_span_a64win.h's window (aarch64 only): the origin's largest column / row
+  // (limx, limy) = ((width - 1) / B - 2, (height - 1) / B - 2) as (limx << 8 | limy) + 1 when
+  // both are in 0..253 (at least 3 cells a way, cells below 256), else 0.
+  const int cx = (src.width - 1) >> (4 - src.mip), cy = (src.height - 1) >> (4 - src.mip);
+  if (cx >= 2 && cx <= 255 && cy >= 2 && cy <= 255) src.wrap16[7] = uint16_t(((cx - 2) << 8 | (cy - 2)) + 1);
+#endif
   src.prepared = true;
 }
 

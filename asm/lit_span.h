@@ -42,9 +42,11 @@
 //           cell's corner differences by widening multiply-adds), the reference's formula
 //           per pixel for a group that does not; texel and colormap loads by the core. On
 //           aarch64 a full 16-pixel run with a power-of-two texture of at most 2^16 texels
-//           is one asm block (asm/lit_span_a64.h: two cells a group, the lane's chosen), and
-//           runs that move more than a cell a group (mips above 0) take a per-pixel kernel
-//           (packed indices and weights a pixel, fast's packed-pair blend). The tuned
+//           is one asm block (asm/lit_span_a64.h: two cells a group, the lane's chosen);
+//           such runs that move more than a cell a group (mips above 0) another
+//           (asm/lit_span_a64win.h: a 3 x 3-cell window a group, corners by tbl), and the
+//           rest of those a per-pixel kernel (packed indices and weights a pixel, fast's
+//           packed-pair blend). The tuned
 //           choice on aarch64 (on armv7, fast: see lit_span.cpp).
 // Dispatch: lit_span_active() is the scalar reference while simd::force_scalar() is on,
 // otherwise the tuned choice, fixed at first use (bench/lit_span_bench measures them).
@@ -75,7 +77,8 @@ struct LitSpanSource {
   uint64_t s_recip = 0, t_recip = 0;    // ceil(2^32 / tex_width), ceil(2^32 / tex_height)
   // soff_mod, toff_mod, tex_width - 1, tex_height - 1, tex_width (16-bit; the aarch64 neon
   // variant's wrap of power-of-two textures), 1 for a power-of-two texture of at most 2^16
-  // texels (else 0), 1 for a power-of-two texture (else 0), then a zero.
+  // texels (else 0), 1 for a power-of-two texture (else 0), then on aarch64 the window
+  // block's limits (lit_span_prepare; asm/lit_span_a64win.h), elsewhere a zero.
   uint16_t wrap16[8] = {};
   bool prepared = false;
 };

@@ -37,16 +37,20 @@ namespace {
 
 #if defined(__aarch64__) && defined(__GNUC__)
 // Per mip: pixel numbers j, j (j - 1) / 2 (u32), B - 1 and log B (u16 lanes), -(S + 8)
-// (u32 lanes: ushl by a negative count shifts right), then 16 + log B and S for the core.
+// (u32 lanes: ushl by a negative count shifts right), then 16 + log B and S for the core;
+// win: 514, 2056, B^2 (u16 lanes: win16_block's multipliers, asm/lit_span_a64win.h).
 struct alignas(16) LitA64Tab {
   uint32_t lane[16], tri[16];
   uint16_t frac[8], logb[8];
   int32_t nshift[4];
   uint32_t l16, s;
+  uint32_t pad[2];
+  uint16_t win[8];
 };
 static_assert(offsetof(LitA64Tab, tri) == 64 && offsetof(LitA64Tab, frac) == 128 &&
-                  offsetof(LitA64Tab, nshift) == 160 && offsetof(LitA64Tab, l16) == 176,
-              "lit16_block's table offsets");
+                  offsetof(LitA64Tab, nshift) == 160 && offsetof(LitA64Tab, l16) == 176 &&
+                  offsetof(LitA64Tab, win) == 192,
+              "lit16_block's and win16_block's table offsets");
 
 constexpr LitA64Tab lit_a64_tab(int mip) {
   LitA64Tab t{};
@@ -62,6 +66,9 @@ constexpr LitA64Tab lit_a64_tab(int mip) {
   for (int j = 0; j < 4; ++j) t.nshift[j] = -(2 * lg + 8);
   t.l16 = uint32_t(16 + lg);
   t.s = uint32_t(2 * lg);
+  t.win[0] = 514;
+  t.win[1] = 2056;
+  t.win[2] = uint16_t(1 << (2 * lg));
   return t;
 }
 alignas(16) constexpr LitA64Tab kLitA64Tab[4] = {lit_a64_tab(0), lit_a64_tab(1), lit_a64_tab(2), lit_a64_tab(3)};

@@ -21,6 +21,7 @@
 #include <arm_neon.h>
 
 #include "asm/lit_span_a64.h"
+#include "asm/lit_span_a64win.h"
 
 namespace sb::simd {
 namespace {
@@ -405,6 +406,36 @@ __attribute__((noipa)) void run16_go(uint8_t* dest, int /*n*/, const LitSpanSour
   run16_block(dest, src, u, v, du, dv, ddu, ddv);
 }
 
+// The run win16_block flagged, by the per-pixel kernel (the run's arguments from the
+// frame). Out of line: rare, and win16_go stays small.
+__attribute__((noinline)) void redo_win(const LitA64Frame& fr) {
+  neon_pp_by_mip<true>(fr.dest, 16, *fr.src, fr.args[0], fr.args[1], fr.args[2], fr.args[3], fr.args[4], fr.args[5]);
+}
+
+// A 16-pixel run that moves more than a cell a group, with a texture lit16_block takes:
+// win16_block (asm/lit_span_a64win.h) when its groups likely span at most 3 cells a way
+// (window_steps; else the per-pixel kernel), unless the surface is too small (fewer than 3
+// cells a way: no window fits) or too large (cells beyond 255: the block's byte-wide
+// ranges; both wrap16[7] = 0); a flagged run again by the per-pixel kernel. lit_span_neon's
+// arguments (n unused), reached by a branch from run16. The run's arguments wait in the
+// frame (read only for a redo), so nothing lives across the block.
+__attribute__((noipa)) void win16_go(uint8_t* dest, int n, const LitSpanSource& src, uint32_t u, uint32_t v,
+                                     uint32_t du, uint32_t dv, uint32_t ddu, uint32_t ddv) {
+  // wrap16[7]: (limx << 8 | limy) + 1, 0 where no window fits (lit_span_prepare).
+  const uint32_t lim = src.wrap16[7];
+  if (lim == 0 || !window_steps(src, du, dv, ddu, ddv))
+    return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
+  LitA64Frame fr;
+  std::memcpy(fr.wrap, src.wrap16, sizeof fr.wrap);
+  fr.dest = dest;
+  fr.src = &src;
+  fr.args[0] = u, fr.args[1] = v, fr.args[2] = du, fr.args[3] = dv, fr.args[4] = ddu, fr.args[5] = ddv;
+  if (__builtin_expect(win16_block(dest, src, fr, kLitA64Tab[src.mip & 3], u, v, du, dv, ddu, ddv, (lim - 1) >> 8,
+                                   (lim - 1) & 0xff) != 0,
+                       0))
+    redo_win(fr);
+}
+
 // The entry's 16-pixel runs: the block when the run moves less than a cell a group and the
 // texture suits it (wrap16[5]: lit_span_prepare's "power-of-two texture of at most 2^16
 // texels"), else the per-pixel kernel or neon_rest. Frameless: the tests and the branches
@@ -416,7 +447,9 @@ __attribute__((noipa)) void run16(uint8_t* dest, int n, const LitSpanSource& src
     if (__builtin_expect(src.wrap16[5] != 0, 1)) return run16_go(dest, n, src, u, v, du, dv, ddu, ddv);
     return neon_rest(dest, n, src, u, v, du, dv, ddu, ddv);
   }
-  // Straight to the per-pixel kernel (wrap16[6]: power-of-two texture).
+  // Groups over at most 3 x 3 cells: the window block (win16_go tests it), else straight to
+  // the per-pixel kernel (wrap16[6]: power-of-two texture).
+  if (src.wrap16[5] != 0) return win16_go(dest, n, src, u, v, du, dv, ddu, ddv);
   if (src.wrap16[6] != 0) return neon_pp_by_mip<true>(dest, n, src, u, v, du, dv, ddu, ddv);
   return neon_pp_by_mip<false>(dest, n, src, u, v, du, dv, ddu, ddv);
 }

@@ -23,10 +23,14 @@ namespace {
 // written in by tail_inline.py (tail2_steps) there): run r + 1's steps packed (b_d, b_dd as pack_steps: ddf =
 // double(d1u) cc, dd = fcvtzs(ddf), then steps16_dd in the long loop's 12-op form) beside the
 // last run's step groups 0 .. 6 of persp_long_a64_inl's tail (the same operations: du, dv the
-// last run's deltas, y = kRecipSteps[s], sf = double(s), z1, z2 its two depths, zh = zc / 2;
+// last run's deltas, y = kRecipSteps[s], sf = double(s), z23 its two depths [z1, z2] as the
+// loop leaves them (their sum by faddp: no lane moves in the block before), zc (the curve
+// factor c2 = -(zc (z1 + z2)) by one fnmul: the same bits as step groups 2, 3's -2 ((zc / 2)
+// (z1 + z2)), the scalings by 1/2 and -2 being exact unless c2 is subnormal or overflows, where
+// both give the same infinity or a dd of 0; no zc / 2 multiply in the block before);
 // outputs lnu, lnv = trunc(q), ddu, ddv = the range-masked dd, for last_steps_ddi).
 SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, double cc, double y, double sf,
-                           double z1, double z2, double zh, uint64_t& b_d, uint64_t& b_dd, int32_t& l_u,
+                           float64x2_t z23, double zc, uint64_t& b_d, uint64_t& b_dd, int32_t& l_u,
                            int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
   __asm__(
       // BEGIN tail2_steps
@@ -41,15 +45,14 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
       "scvtf d25, %w[d1v]\n\t"
       "fmul d24, d24, %d[cc]\n\t"
       "fmul d18, d16, %d[y]\n\t"
-      "fadd d20, %d[z1], %d[z2]\n\t"
-      "fmov d23, #-2.0\n\t"
+      "faddp d20, %[z23].2d\n\t"
       "fmul d19, d17, %d[y]\n\t"
       "cneg x16, x12, lt\n\t"
       "fmul d25, d25, %d[cc]\n\t"
       "fcvtzs w9, d24\n\t"
       "fmsub d21, d18, %d[sf], d16\n\t"
       "fmsub d22, d19, %d[sf], d17\n\t"
-      "fmul d20, %d[zh], d20\n\t"
+      "fnmul d20, %d[zc], d20\n\t"
       "fcvtzs w10, d25\n\t"
       "sbfiz x13, x9, #7, #32\n\t"
       "sub x13, x13, w9, sxtw #3\n\t"
@@ -59,7 +62,6 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
       "cmp x17, x15, lsl #1\n\t"
       "fmadd d19, d22, %d[y], d19\n\t"
       "fmadd d18, d21, %d[y], d18\n\t"
-      "fmul d20, d20, d23\n\t"
       "csel x13, x13, xzr, ls\n\t"
       "add %[bdd], x14, x16\n\t"
       "csel w9, w9, wzr, ls\n\t"
@@ -96,7 +98,7 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
       // END tail2_steps
       : [bd] "=&r"(b_d), [bdd] "=&r"(b_dd), [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
       : [du] "r"(du), [dv] "r"(dv), [d1u] "r"(d1u), [d1v] "r"(d1v), [cc] "w"(cc), [y] "w"(y), [sf] "w"(sf),
-        [z1] "w"(z1), [z2] "w"(z2), [zh] "w"(zh)
+        [z23] "w"(z23), [zc] "w"(zc)
       : "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "v16", "v17", "v18", "v19", "v20", "v21",
         "v22", "v23", "v24", "v25", "cc");
 }
@@ -105,10 +107,12 @@ SB_INLINE void tail2_steps(int32_t du, int32_t dv, int32_t d1u, int32_t d1v, dou
 // registers (x3 - x5, x9 - x17, x19, v16 - v23), in an order from bench/order_search.py
 // (bench/mca_a53_persp/tail1_steps.s, written in by tail_inline.py (tail1_steps) there): the step groups 0 ..
 // 6 of persp_long_a64_inl's tail (du, dv the last run's deltas, y = kRecipSteps[s], sf =
-// double(s), s = max(steps, 1), z1, z2 its two depths, zh = zc / 2) then last_steps_ddi's
+// double(s), s = max(steps, 1), z1 and z2's lane 0 its two depths (z2: the loop's z23 as it
+// leaves it, read as its d register: no lane move), zc (c2 = -(zc (z1 + z2)) by one fnmul, as
+// tail2_steps)) then last_steps_ddi's
 // operations (asm/span_persp_arm.h; s, T = steps (steps - 1) / 2, s - 1 and the steps > 1 mask
 // computed here from steps); outputs the last run's steps lu = {l_u, dd_u}, lv = {l_v, dd_v}.
-SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double sf, double z1, double z2, double zh,
+SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double sf, double z1, float64x2_t z2, double zc,
                            int32_t& l_u, int32_t& l_v, int32_t& dd_u, int32_t& dd_v) {
   // du, dv in registers the code after the asm (runs_k3) does not write: where qemu cuts the
   // two into one block, llvm-mca times it as a loop, and an input written later in the block
@@ -127,11 +131,9 @@ SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double s
       "fmul d18, d16, %d[y]\n\t"
       "fmul d19, d17, %d[y]\n\t"
       "mov w13, #0xc9ff\n\t"
-      "fmov d23, #-2.0\n\t"
-      "fmul d20, %d[zh], d20\n\t"
+      "fnmul d20, %d[zc], d20\n\t"
       "fmsub d21, d18, %d[sf], d16\n\t"
       "fmsub d22, d19, %d[sf], d17\n\t"
-      "fmul d20, d20, d23\n\t"
       "movk w13, #0x3b9a, lsl #16\n\t"
       "fmadd d18, d21, %d[y], d18\n\t"
       "fmadd d19, d22, %d[y], d19\n\t"
@@ -204,7 +206,7 @@ SB_INLINE void tail1_steps(int32_t du, int32_t dv, int steps, double y, double s
       // END tail1_steps
       : [lu] "=&r"(l_u), [lv] "=&r"(l_v), [ddu] "=&r"(dd_u), [ddv] "=&r"(dd_v)
       : [du] "r"(r_du), [dv] "r"(r_dv), [st] "r"(steps), [y] "w"(y), [sf] "w"(sf), [z1] "w"(z1), [z2] "w"(z2),
-        [zh] "w"(zh)
+        [zc] "w"(zc)
       : "x3", "x4", "x5", "x9", "x10", "x11", "x12", "x13", "x14", "x15", "x16", "x17", "x19", "v16", "v17",
         "v18", "v19", "v20", "v21", "v22", "v23", "cc");
 }
@@ -229,18 +231,13 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   // left = n - 32 (k + 1), k = (n - 49) / 32 (n > 64; k = 0 for 65 .. 80): (n - 81) mod 32 + 17
   // (the unsigned wrap of n - 81 < 0 keeps the residue: n = 65 .. 80 leave n - 32 = 33 .. 48).
   int left = int(uint32_t(n - 81) & 31u) + 17;
-  Sample s0, s1;
-  RunSteps su, sv;
   dest = reinterpret_cast<uint8_t*>(st.d);
   // Run r's steps from its chains (c1 - c0 = its packed step, dd4 = 4 times its packed second
-  // step, |parts| < 2^31); s0.z is not read below.
+  // step, |parts| < 2^31), packed (c0 its packed start); unpacked (run0_parts) only where
+  // Run16 draws run r (left > 32 with last == 16), not in the loop-exit block of every span.
   const uint64_t dp = st.c1 - st.c0;
   const int64_t ddp = int64_t(st.dd4) >> 2;
-  s0 = Sample{int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), 0.0};
-  s1 = Sample{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
-  su = RunSteps{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
-  sv = RunSteps{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
-                int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+  const Sample s1{int32_t(uint32_t(st.nA)), int32_t(uint32_t(st.nA >> 32)), vgetq_lane_f64(st.zsn, 0)};
   const double z2 = vgetq_lane_f64(st.z23, 0), z3 = vgetq_lane_f64(st.z23, 1);
   // The tail (left = 17 .. 48), persp_fast's; samples r + 2, r + 3 (sample(pos2, z2),
   // sample(pos3, z3)) as the last pass converted them (nB, nC: to_fixed, see persp_fast).
@@ -258,7 +255,10 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
   auto tail = [&](auto two, const Sample& t1, const Sample& tB) SB_LAMBDA_INLINE {
     constexpr bool kTwo = decltype(two)::value;
     const int last = left - (kTwo ? 32 : 16), steps = last - 1;
-    const Sample s2 = steps > 0 ? tB : t1;
+    // steps == 0 (last == 1, 1 span in 16) marked unlikely as last == 16 is below: the
+    // compiler's copy of the tail for it then sits out of the way (A72 persp72 6.7234 ->
+    // 6.6916, persp192 5.5386 -> 5.5322; A53 unchanged).
+    const Sample s2 = __builtin_expect(steps > 0, 1) ? tB : t1;
     RunSteps lu, lv;
     const int32_t du = s2.u - t1.u, dv = s2.v - t1.v;  // 0 <= u, v < 2^31: no overflow
     const uint32_t sd = uint32_t(steps > 1 ? steps : 1);
@@ -344,11 +344,17 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
         if constexpr (G >= 4) step(integral_constant<int, G - 4>{});
         r1steps(g);
       };
-      if (last != 16) {
+      // last == 16 (1 span in 16) marked unlikely: the compiler then lays the common tail out
+      // straight after its tests, with no block of its own ending in a `b` to it (persp72 A53
+      // 10.2399 -> 10.1954, persp192 8.2538 -> 8.2474; A72 6.7063 -> 6.7229, 5.5287 -> 5.5386,
+      // persp1920 4.8257 -> 4.8127: its one span takes the last == 16 path).
+      if (__builtin_expect(last != 16, 1)) {
         // Run r + 1's steps and the last run's step groups side by side (two independent
         // chains, tail2_steps), last_steps_ddi, then runs r, r + 1 and the last run as one asm
         // block (pass_last: short_pass's two runs, then runs_k3's chunks of the last run).
-        tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, b_d,
+        // The depths t1.z, s2.z as the loop's z23 = [sB.z, sC.z] (t1 = sB, s2 = sC but for steps
+        // == 0: du = dv = 0 there, so dd is 0 whatever the depths, and steps <= 1 masks it).
+        tail2_steps(du, dv, t1.u - s1.u, t1.v - s1.v, cc1, kRecipSteps[sd], double(sd), st.z23, zc, b_d,
                     b_dd, lnu, lnv, ddu, ddv);
         step(integral_constant<int, 9>{});
         // run r from the loop's packed start and steps (c0, dp, ddp: pack_steps(sv.d, su.d) ==
@@ -361,7 +367,10 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       } else {
         // last == 16: run r + 1's steps in run r's stage slots 0 .. 4, one dependent step a
         // group, and the last run's step groups 0 .. 5 in slots 4 .. 9.
-        Run16<true> run0(s0.u, s0.v, su, sv);
+        const RunSteps su{int32_t(uint32_t(dp)), int32_t(uint32_t(ddp))};
+        const RunSteps sv{int32_t(uint32_t((dp - uint64_t(int64_t(int32_t(uint32_t(dp))))) >> 32)),
+                          int32_t(uint32_t(uint64_t(ddp - int64_t(int32_t(uint32_t(ddp)))) >> 32))};
+        Run16<true> run0(int32_t(uint32_t(st.c0)), int32_t(uint32_t(st.c0 >> 32)), su, sv);
         run0.draw(dest, texels, w, stage1);
         dest += 16;
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
@@ -372,13 +381,13 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
         return;
       }
     } else {
-      if (last == 16) {
+      if (__builtin_expect(last == 16, 0)) {  // (as above)
         // Two full runs left: the steps first, then both runs as one short_pass.
         step(integral_constant<int, 0>{}), step(integral_constant<int, 1>{}), step(integral_constant<int, 2>{});
         step(integral_constant<int, 3>{}), step(integral_constant<int, 4>{}), step(integral_constant<int, 5>{});
         step(integral_constant<int, 6>{}), step(integral_constant<int, 9>{});
-        short_pass<true>(dest, texels, uint64_t(width), uint64_t(uint32_t(s0.v)) << 32 | uint32_t(s0.u),
-                         pack_steps(sv.d, su.d), pack_steps(sv.dd, su.dd),
+        // run r from the loop's packed c0, dp, ddp (as pass_last and runs_k3 take it).
+        short_pass<true>(dest, texels, uint64_t(width), st.c0, dp, uint64_t(ddp),
                          uint64_t(uint32_t(s1.v)) << 32 | uint32_t(s1.u), pack_steps(lv.d, lu.d),
                          pack_steps(lv.dd, lu.dd));
         return;
@@ -387,7 +396,9 @@ SB_INLINE void persp_long_a64_inl(uint8_t* dest, int n, const uint8_t* texels, i
       // block: runs_k3 (asm/span_persp_a64mid.h; its d is the span's pixel 32 before run r:
       // it writes d[32 .. 47 + last] only), run r from the loop's packed c0, dp, ddp (as
       // short_pass takes it above), the last run packed as Run16 packs it.
-      tail1_steps(du, dv, steps, kRecipSteps[sd], double(sd), t1.z, s2.z, zc * 0.5, lnu, lnv, ddu, ddv);
+      // s2.z as lane 0 of the loop's z23 (sB.z; s2 = s1 only for steps == 0, where du = dv = 0
+      // make dd 0 whatever the depth, and the steps > 1 mask clears it).
+      tail1_steps(du, dv, steps, kRecipSteps[sd], double(sd), t1.z, st.z23, zc, lnu, lnv, ddu, ddv);
       lu = RunSteps{lnu, ddu}, lv = RunSteps{lnv, ddv};
       runs_k3(dest - 32, texels, uint64_t(width), last, st.c0, dp, uint64_t(ddp),
               uint64_t(uint32_t(t1.v)) << 32 | uint32_t(t1.u), pack_steps(lv.d, lu.d), pack_steps(lv.dd, lu.dd));

@@ -4,7 +4,11 @@
 # callee-saved register the block clobbers costs its C++ function a save and a restore
 # (lit16_block is out of line: 5 stp + 5 ldp for x19-x28 before this script).
 #
-#   regalloc.py IN.s OUT.s
+#   regalloc.py IN.s OUT.s [--operands=N] [--live-out=R[,R..]]
+#
+# A block without the cbz / 1: parts (win16_block) is one straight part; --operands (13 by
+# default: x0-x12) and --live-out (2,3: du / dv) give another block's operands and the
+# registers the caller reads after it (win16_block: --operands=15 --live-out=2).
 #
 # The instruction order is kept; only core register numbers change. Values are webs (the
 # definitions that reach a common use, read-modify-write destinations such as bfi and
@@ -24,6 +28,11 @@ RMW = ("bfi", "bfxil", "movk")
 OPERANDS = range(13)
 W32 = range(6)  # u..ddv: 32-bit in the header (their entry values must be read as w only)
 LIVE_OUT = (2, 3)
+for a in sys.argv[3:]:
+    if a.startswith("--operands="):
+        OPERANDS = range(int(a.split("=")[1]))
+    elif a.startswith("--live-out="):
+        LIVE_OUT = tuple(int(x) for x in a.split("=")[1].split(","))
 
 
 def parse(line):
@@ -60,12 +69,13 @@ def parse(line):
 def main(inp, out):
     lines = [l.rstrip("\n") for l in open(inp) if l.strip()]
     n = len(lines)
-    cbz = next(i for i, l in enumerate(lines) if l.startswith("cbz"))
-    lab = lines.index("1:")
+    cbz = next((i for i, l in enumerate(lines) if l.startswith("cbz")), None)
+    lab = lines.index("1:") if cbz is not None else None
     ins = [parse(l) if i != lab else ("label", [], [], []) for i, l in enumerate(lines)]
     succ = {i: [i + 1] for i in range(n - 1)}
     succ[n - 1] = []
-    succ[cbz] = [cbz + 1, lab]
+    if cbz is not None:
+        succ[cbz] = [cbz + 1, lab]
     pred = {i: [] for i in range(n)}
     for i, s in succ.items():
         for j in s:

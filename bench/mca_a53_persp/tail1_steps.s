@@ -2,7 +2,7 @@
 // order from bench/order_search.py (standalone, A53 98 -> 78 cycles as a loop, A57 30.7; then in its
 // qemu block with runs_k3's head pinned, --tail=76: 118.07 -> 114.07, A57 60.67 -> 60.17, wt-l192e).
 // Written into the header by tail_inline.py (tail1_steps) here. Registers: operands w0 du, w1 dv, w2 steps,
-// d1 y, d2 sf, d3 z1, d4 z2, d5 zh (inputs); w6 lnu, w7 lnv, w8 ddu, w18 ddv (outputs);
+// d1 y, d2 sf, d3 z1, d4 z2 (lane 0 of the loop's z23 vector: no lane move before the block), d5 zc (inputs; the curve factor c2 = -(zc (z1 + z2)) by one fnmul); w6 lnu, w7 lnv, w8 ddu, w18 ddv (outputs);
 // x3 - x5, x9 - x17, x19 and v16 - v23 fixed scratch (clobbers).
 cmp w2, #1
 scvtf d16, w0
@@ -13,11 +13,9 @@ fadd d20, d3, d4
 fmul d18, d16, d1
 fmul d19, d17, d1
 mov w13, #0xc9ff
-fmov d23, #-2.0
-fmul d20, d5, d20
+fnmul d20, d5, d20
 fmsub d21, d18, d2, d16
 fmsub d22, d19, d2, d17
-fmul d20, d20, d23
 movk w13, #0x3b9a, lsl #16
 fmadd d18, d21, d1, d18
 fmadd d19, d22, d1, d19

@@ -2,7 +2,8 @@
 // order from bench/order_search.py (standalone, A53 64 cycles as a loop, A57 25.5; then in its qemu
 // block, GCC's ddi and pass_last's head pinned, --head=2 --tail=91: 129.03 -> 126.03, wt-l192e). Written
 // into the header by tail_inline.py (tail2_steps) here. Registers: operands w0 du, w1 dv, w2 d1u, w3 d1v
-// (inputs); d0 cc, d1 y, d2 sf, d3 z1, d4 z2, d5 zh (inputs); x4 b_d, x5 b_dd, w6 lnu, w7 lnv,
+// (inputs); d0 cc, d1 y, d2 sf, v3 z23 = [z1, z2] (the loop's z23, its lanes added by faddp:
+// no lane moves before the block), d5 zc (inputs; the curve factor c2 = -(zc (z1 + z2)) by one fnmul); x4 b_d, x5 b_dd, w6 lnu, w7 lnv,
 // w8 ddu, w18 ddv (outputs); x9 - x17 and v16 - v25 fixed scratch (clobbers).
 sxtw x11, w2
 cmp x11, #0
@@ -15,15 +16,14 @@ cmp x12, #0
 scvtf d25, w3
 fmul d24, d24, d0
 fmul d18, d16, d1
-fadd d20, d3, d4
-fmov d23, #-2.0
+faddp d20, v3.2d
 fmul d19, d17, d1
 cneg x16, x12, lt
 fmul d25, d25, d0
 fcvtzs w9, d24
 fmsub d21, d18, d2, d16
 fmsub d22, d19, d2, d17
-fmul d20, d5, d20
+fnmul d20, d5, d20
 fcvtzs w10, d25
 sbfiz x13, x9, #7, #32
 sub x13, x13, w9, sxtw #3
@@ -33,7 +33,6 @@ sub x14, x14, w10, sxtw #3
 cmp x17, x15, lsl #1
 fmadd d19, d22, d1, d19
 fmadd d18, d21, d1, d18
-fmul d20, d20, d23
 csel x13, x13, xzr, ls
 add x5, x14, x16
 csel w9, w9, wzr, ls

@@ -8,17 +8,19 @@
 #   python3 tail_inline.py tail2_steps tail2_steps.s ../../asm/span_persp_a64longspan.h
 import re, sys
 
-# Per block: x / w placeholder number -> operand, d placeholder number -> operand.
+# Per block: x / w placeholder number -> operand, d placeholder number -> operand, v placeholder
+# number -> (vector) operand.
 OPERANDS = {
     "tail1_steps": ({"0": "du", "1": "dv", "2": "st", "6": "lu", "7": "lv", "8": "ddu", "18": "ddv"},
-                    {"1": "y", "2": "sf", "3": "z1", "4": "z2", "5": "zh"}),
+                    {"1": "y", "2": "sf", "3": "z1", "4": "z2", "5": "zc"}, {}),
     "tail2_steps": ({"0": "du", "1": "dv", "2": "d1u", "3": "d1v", "4": "bd", "5": "bdd", "6": "lu", "7": "lv",
                      "8": "ddu", "18": "ddv"},
-                    {"0": "cc", "1": "y", "2": "sf", "3": "z1", "4": "z2", "5": "zh"}),
+                    {"0": "cc", "1": "y", "2": "sf", "5": "zc"}, {"3": "z23"}),
 }
 
 
-def sub(l, xw, d):
+def sub(l, xw, d, v):
+    l = re.sub(r"\bv(\d+)\b", lambda g: "%[" + v[g.group(1)] + "]" if g.group(1) in v else g.group(0), l)
     l = re.sub(r"\b([xw])(\d+)\b",
                lambda g: "%" + ("w" if g.group(1) == "w" else "") + "[" + xw[g.group(2)] + "]" if g.group(2) in xw
                else g.group(0), l)
@@ -26,8 +28,8 @@ def sub(l, xw, d):
 
 
 def main(name, src, hdr):
-    xw, d = OPERANDS[name]
-    body = [sub(l.split("//")[0].strip(), xw, d) for l in open(src)]
+    xw, d, v = OPERANDS[name]
+    body = [sub(l.split("//")[0].strip(), xw, d, v) for l in open(src)]
     body = [l for l in body if l]
     text = "".join(f'      "{l}\\n\\t"\n' for l in body[:-1]) + f'      "{body[-1]}"\n'
     h = open(hdr).read()

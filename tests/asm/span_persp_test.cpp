@@ -352,6 +352,38 @@ TEST(AsmSpanPersp, LongSpansMatchOnEveryTailLength) {
   std::printf("[ asm      ] span_persp: %d long spans of every tail length, every variant identical\n", cases);
 }
 
+// The long tails' curve factors at the ends of the double range (aarch64: the tail's depth sum
+// comes straight from the pass loop's z23 lanes, faddp; the last run's dd is 0 whatever the
+// depths where its steps are 0): every length 65 .. 208 with dzi huge (the curve overflows),
+// tiny or subnormal (it underflows), infinite or NaN (clamped as the engine clamps them), and
+// depths from the 1e-9 clamp (z = 1e9) to ordinary ones, the span's bytes and its guards.
+TEST(AsmSpanPersp, LongSpansMatchOnEveryTailLengthWithExtremeCurves) {
+  std::mt19937 rng(31);
+  const int sw = 64, sh = 64;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  const double inf = std::numeric_limits<double>::infinity();
+  const double dzis[] = {1e300, -1e300, std::numeric_limits<double>::max(), 1e-300, -1e-300, 0x1p-1070, -0x1p-1074,
+                         1e-310, inf, -inf, std::numeric_limits<double>::quiet_NaN(), 3e-12, -7e-13};
+  int cases = 0;
+  for (int n = 65; n <= 208; ++n) {
+    for (const double dzi : dzis) {
+      sb::simd::PerspSpan p{};
+      p.zi0 = rng() & 1 ? 1e-12 : 0.002 + 0.01 * double(rng() % 1000) / 1000.0;  // 1e-12: z at the clamp
+      p.dzi = dzi;
+      p.uz0 = double(rng() % (sw << 16)) / 65536.0 * 0.004, p.duz = (double(rng() % 2001) - 1000.0) * 1e-6;
+      p.vz0 = double(rng() % (sh << 16)) / 65536.0 * 0.004, p.dvz = (double(rng() % 2001) - 1000.0) * 1e-6;
+      p.px0 = double(rng() % 100) + 0.5;
+      p.umax = int32_t((uint32_t(sw) << 16) - 1);
+      p.vmax = int32_t((uint32_t(sh) << 16) - 1);
+      p.second_order = true;
+      ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " n " << n << " dzi " << dzi;
+      ++cases;
+    }
+  }
+  std::printf("[ asm      ] span_persp: %d long spans with extreme curves, every variant identical\n", cases);
+}
+
 // The same depths on long second-order spans (the aarch64 pass loop's reciprocals, computed
 // a pass ahead without a divide, take its divide branch there): every sample sits next to a
 // texel boundary that a reciprocal one ulp off would cross.
