@@ -7,6 +7,7 @@
 
 #include "asm/span_persp_arm.h"
 #include "asm/span_persp_run.h"
+#include "asm/span_persp_a64lin_pass.h"
 #include "asm/span_persp_a64long.h"
 #include "asm/span_persp_a64longspan.h"
 #include "asm/span_persp_a64pair.h"
@@ -338,6 +339,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
   }
 #endif
   Sample t2{}, t3{};
+  // aarch64 linear (kPre): run r packed (start, step) as the asm leaves it (below), for the tail.
+  [[maybe_unused]] uint64_t run_a0 = 0, run_d0 = 0;
 #if defined(__aarch64__) && defined(__GNUC__)
 #include "asm/span_persp_fast_a64vec.inc"  // the aarch64 vector pipeline (see there)
 #endif
@@ -565,7 +568,8 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
     const Sample s2 = kPre ? t2 : sample(pos2, z2);
     const double c1 = zc * 0.5 * (s1.z + s2.z);
     const RunSteps u1 = steps16<kCurve>(s1.u, s2.u, c1), v1 = steps16<kCurve>(s1.v, s2.v, c1);
-    draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
+    draw16_or_packed<kCurve, kPre>(dest, texels, w, run_a0, run_d0, s0.u, s0.v, su, sv);
+    if constexpr (kPre) run_a0 = (uint64_t(uint32_t(s1.v)) << 32) + uint32_t(s1.u), run_d0 = pack_steps(v1.d, u1.d);
     next_run(s2, u1, v1);
   }
   // left = 17 .. 32: run r (full, its steps known), then the last run of left - 16 pixels,
@@ -574,7 +578,7 @@ SB_PERSP_FAST_BODY(uint8_t* dest, int n, const uint8_t* texels, int width, const
 #if defined(__arm__) && !defined(__aarch64__)
 #include "asm/span_persp_fast_v7last.inc"  // run r and the last run (ARMv7)
 #else
-  draw16<kCurve>(dest, texels, w, s0.u, s0.v, su, sv);
+  draw16_or_packed<kCurve, kPre>(dest, texels, w, run_a0, run_d0, s0.u, s0.v, su, sv);
   dest += 16;
   const int last = left - 16, steps = last - 1;
   const Sample s2 = kPre ? t2 : steps > 0 ? sample(pos2, z2) : s1;

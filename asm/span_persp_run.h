@@ -541,6 +541,27 @@ SB_INLINE void draw16(uint8_t* __restrict dest, const uint8_t* __restrict texels
   Run16<kCurve> run(u0, v0, su, sv);
   run.draw(dest, texels, w);
 }
+#if defined(SB_SPAN_PACKED)
+// The same from the packed start a0 = v 2^32 + u and linear step d0 = dv 2^32 + du (du
+// sign-extended), as Run16's constructor packs them (no second-order step).
+template <bool kCurve>
+SB_INLINE void draw16_packed(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w, uint64_t a0,
+                             uint64_t d0) {
+  Run16<kCurve> run(a0, d0, 0, typename Run16<kCurve>::Packed{});
+  run.draw(dest, texels, w);
+}
+#endif
+// draw16_packed when kPacked (aarch64 linear long spans: run r as lin_passes leaves it),
+// else draw16 from the start and steps.
+template <bool kCurve, bool kPacked>
+SB_INLINE void draw16_or_packed(uint8_t* __restrict dest, const uint8_t* __restrict texels, uint32_t w,
+                                [[maybe_unused]] uint64_t a0, [[maybe_unused]] uint64_t d0, int32_t u0, int32_t v0,
+                                const RunSteps& su, const RunSteps& sv) {
+#if defined(SB_SPAN_PACKED)
+  if constexpr (kPacked) return draw16_packed<kCurve>(dest, texels, w, a0, d0);
+#endif
+  draw16<kCurve>(dest, texels, w, u0, v0, su, sv);
+}
 
 // ---------------------------------------------------------------- the partial last run
 //

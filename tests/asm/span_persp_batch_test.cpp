@@ -324,6 +324,36 @@ TEST(AsmSpanPerspBatch, RunsOfOneKindOfLongSpanMatch) {
   std::printf("[ asm      ] span_persp batch: %ld spans in runs of one long kind, every variant identical\n", spans);
 }
 
+// Runs of long linear spans through the batch entry (aarch64: persp_lin_a64's loop over
+// consecutive such items, each span's passes one generated asm loop): lengths 65 .. 2000 in
+// steps of 7 (every residue mod 32: each tail and last-run length, odd and even pass counts),
+// two to five per run, second_order off or dzi == 0, on a texture 32767 texels wide with
+// steps up to 1000 times the edge cases' (samples clamped at 0 and at umax / vmax).
+TEST(AsmSpanPerspBatch, RunsOfLongLinearSpansMatchUpTo2000Pixels) {
+  std::mt19937 rng(2000);
+  const int sw = 32767, sh = 5;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  long spans = 0;
+  for (int n0 = 65; n0 <= 2000; n0 += 7) {
+    std::vector<PerspItem> items;
+    const int count = 2 + int(rng() % 4);
+    for (int i = 0; i < count; ++i) {
+      PerspSpan p = pick_span(rng, sw, sh);
+      if (rng() % 2) p.duz *= 1000.0, p.dvz *= -300.0;
+      if (rng() % 2) {
+        p.second_order = false;
+      } else {
+        p.dzi = 0.0;
+      }
+      items.push_back(PerspItem{nullptr, std::min(2000, n0 + 32 * i + i), p});
+    }
+    ASSERT_TRUE(batch_matches(items, surf.data(), sw, sh)) << " n " << n0;
+    spans += long(items.size());
+  }
+  std::printf("[ asm      ] span_persp batch: %ld long linear spans up to 2000 px, every variant identical\n", spans);
+}
+
 // Five-run second-order spans (65 .. 80 pixels; ARMv7: persp_five_run_v7, reached from the
 // batch loop through persp_long_run_v7's test, drawing the consecutive ones in one call):
 // every length in batches of such spans (each length first, last and between others), the

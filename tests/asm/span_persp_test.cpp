@@ -298,6 +298,32 @@ TEST(AsmSpanPersp, LongSpansMatchOnExtremeSteps) {
   std::printf("[ asm      ] span_persp: %d long extreme-step spans, every variant identical\n", cases);
 }
 
+// Long linear spans (aarch64: persp_fast's linear passes as one generated asm loop,
+// asm/span_persp_a64lin_pass.h) with extreme steps on a texture 32767 texels wide, so that
+// samples clamp at 0 and at umax / vmax and the per-run deltas reach +-2^31: every length 65 ..
+// 2000 (each pass count, odd and even, and each tail and last-run length), second_order off
+// and dzi == 0 alike, no byte outside the span written (variants_match's guards).
+TEST(AsmSpanPersp, LongLinearSpansMatchOnExtremeSteps) {
+  std::mt19937 rng(192);
+  const int sw = 32767, sh = 3;
+  std::vector<uint8_t> surf(size_t(sw) * sh);
+  for (auto& b : surf) b = uint8_t(rng());
+  int cases = 0;
+  for (int n = 65; n <= 2000; ++n) {
+    for (int kind = 0; kind < 2; ++kind) {
+      sb::simd::PerspSpan p = extreme_step_span(rng, sw, sh, -3);
+      if (kind == 0) {
+        p.second_order = false;  // dzi kept: the depth varies, the steps stay linear
+      } else {
+        p.dzi = 0.0;  // a constant depth, duz / dvz as drawn
+      }
+      ASSERT_TRUE(variants_match(n, surf.data(), sw, sh, p)) << " n " << n << " kind " << kind;
+      ++cases;
+    }
+  }
+  std::printf("[ asm      ] span_persp: %d long linear extreme-step spans, every variant identical\n", cases);
+}
+
 // Every long-span tail shape (aarch64: 17 .. 48 pixels after the passes, two or three runs,
 // the last 1 .. 16 pixels; two full runs drawn as one pass): each length 65 .. 208 on
 // random gradients, with sharp curves (the last run's dd accepted and rejected), no byte
